@@ -1,0 +1,7 @@
+// CLI subcommands. argv[0] is the subcommand's name; each returns the process exit status.
+#pragma once
+
+namespace ps {
+int run_render(int argc, char** argv);
+int run_compare(int argc, char** argv);  // src/app/compare_cmd.cpp
+}  // namespace ps

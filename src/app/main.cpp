@@ -1,0 +1,40 @@
+// pseudoshadow: makes touch visible. Entry point: dispatches to the subcommands.
+#include <cstdio>
+#include <cstring>
+
+#include "app/commands.h"
+
+namespace {
+
+constexpr const char* kHelp = R"(usage: pseudoshadow <command> [options]
+
+Draws the pseudo-shadow of a probe on virtual surfaces: a translucent shadow-like projection
+whose opacity shows proximity, whose Gabor texture shows the surface's tactile texture
+(amplitude following probe speed), and whose displacement pushes the probe out of the surface.
+
+commands:
+  render    render a scene headless and write the image, AOVs and stats
+  compare   compare two images pixel by pixel (exit 0 pass, 1 fail, 2 error)
+
+Run `pseudoshadow <command> --help` for the options of a command.
+Units: lengths in mm, speeds in mm/s, frequencies in Hz (docs/scene-format.md).
+)";
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  if (argc < 2 || !std::strcmp(argv[1], "-h") || !std::strcmp(argv[1], "--help") ||
+      !std::strcmp(argv[1], "help")) {
+    std::fputs(kHelp, argc < 2 ? stderr : stdout);
+    return argc < 2 ? 2 : 0;
+  }
+  if (!std::strcmp(argv[1], "--version")) {
+    std::puts("pseudoshadow " PS_VERSION);
+    return 0;
+  }
+  const char* cmd = argv[1];
+  if (!std::strcmp(cmd, "render")) return ps::run_render(argc - 1, argv + 1);
+  if (!std::strcmp(cmd, "compare")) return ps::run_compare(argc - 1, argv + 1);
+  std::fprintf(stderr, "pseudoshadow: unknown command '%s' (commands: render, compare; see --help)\n", cmd);
+  return 2;
+}

@@ -1,0 +1,27 @@
+// Private to src/gl: per-backend factories and the shared "load GL and check 4.5 core" step.
+// Backend files that include platform headers pulling in <GL/gl.h> (osmesa.h) must not include
+// gl/gl.h as well: its `#define glFoo ps_glFoo` macros would rename gl.h's prototypes.
+#pragma once
+
+#include <memory>
+#include <string>
+
+#include "core/result.h"
+#include "gl/context.h"
+
+namespace ps::gl::detail {
+
+using Loader = void* (*)(const char* name);
+
+// Fills the GL table with `loader`, then checks every core entry point resolved and that the
+// current context is 4.5 core; reads GL_RENDERER / GL_VERSION. Error text has no backend prefix.
+Status load_gl_and_query(Loader loader, std::string& renderer, std::string& version);
+// Nulls the table; called by each context's destructor before the context goes away.
+void unload_gl();
+
+// Each returns an error message without the "no OpenGL 4.5 context: <backend>: " prefix.
+Result<std::unique_ptr<Context>> create_egl_context(const ContextDesc& desc);
+Result<std::unique_ptr<Context>> create_osmesa_context(const ContextDesc& desc);
+Result<std::unique_ptr<Context>> create_glfw_context(const ContextDesc& desc);
+
+}  // namespace ps::gl::detail

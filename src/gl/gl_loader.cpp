@@ -1,0 +1,57 @@
+// load_gl / gl_loaded over the generated pointer table (gl_loader_generated.cpp).
+#include <cassert>
+
+#include "gl/context_internal.h"
+#include "gl/gl.h"
+
+namespace ps::gl {
+namespace {
+bool g_loaded = false;  // render thread only, like every GL call
+
+int fill_table(ProcLoader loader, const char** first_missing) {
+  const int missing = ps_gl_load_table(loader, first_missing);
+  g_loaded = glGetString != nullptr && glGetIntegerv != nullptr;
+  return missing;
+}
+
+}  // namespace
+
+int load_gl(ProcLoader loader) {
+  assert(loader != nullptr && "load_gl: loader is null");
+  const char* first_missing = nullptr;
+  return fill_table(loader, &first_missing);
+}
+
+bool gl_loaded() { return g_loaded; }
+
+namespace detail {
+
+Status load_gl_and_query(ProcLoader loader, std::string& renderer, std::string& version) {
+  const char* first_missing = nullptr;
+  if (const int missing = fill_table(loader, &first_missing); missing != 0) {
+    unload_gl();
+    return make_error(std::to_string(missing) + " of " + std::to_string(kPsGlCoreEntryPoints) +
+                      " core GL entry points did not resolve (first: " + first_missing + ")");
+  }
+  GLint major = 0, minor = 0, profile = 0;
+  glGetIntegerv(GL_MAJOR_VERSION, &major);
+  glGetIntegerv(GL_MINOR_VERSION, &minor);
+  glGetIntegerv(GL_CONTEXT_PROFILE_MASK, &profile);
+  const auto* r = reinterpret_cast<const char*>(glGetString(GL_RENDERER));
+  const auto* v = reinterpret_cast<const char*>(glGetString(GL_VERSION));
+  renderer = r ? r : "";
+  version = v ? v : "";
+  if (major * 10 + minor < 45 || (profile & GL_CONTEXT_CORE_PROFILE_BIT) == 0) {
+    unload_gl();
+    return make_error("context is not 4.5 core (GL_VERSION \"" + version + "\")");
+  }
+  return ok_status();
+}
+
+void unload_gl() {
+  ps_gl_clear_table();
+  g_loaded = false;
+}
+
+}  // namespace detail
+}  // namespace ps::gl

@@ -1,0 +1,120 @@
+// Run-time program building (compile + link with mapped logs) and the shader directory.
+#include <algorithm>
+#include <cassert>
+#include <cstdlib>
+#include <filesystem>
+#include <sstream>
+
+#include "gl/shader.h"
+
+namespace ps::gl {
+namespace {
+
+namespace fs = std::filesystem;
+
+GLenum gl_stage(Stage stage) {
+  switch (stage) {
+    case Stage::kVertex: return GL_VERTEX_SHADER;
+    case Stage::kFragment: return GL_FRAGMENT_SHADER;
+    case Stage::kCompute: return GL_COMPUTE_SHADER;
+  }
+  assert(false && "gl_stage: Stage value out of range");
+  return GL_VERTEX_SHADER;
+}
+
+std::string shader_log(GLuint shader) {
+  GLint length = 0;
+  glGetShaderiv(shader, GL_INFO_LOG_LENGTH, &length);
+  std::string log(static_cast<size_t>(std::max(length, 1)), '\0');
+  glGetShaderInfoLog(shader, length, nullptr, log.data());
+  log.resize(log.find('\0') == std::string::npos ? log.size() : log.find('\0'));
+  return log;
+}
+
+std::string program_log(GLuint program) {
+  GLint length = 0;
+  glGetProgramiv(program, GL_INFO_LOG_LENGTH, &length);
+  std::string log(static_cast<size_t>(std::max(length, 1)), '\0');
+  glGetProgramInfoLog(program, length, nullptr, log.data());
+  log.resize(log.find('\0') == std::string::npos ? log.size() : log.find('\0'));
+  return log;
+}
+
+// Puts the first line that reads like an error first, so the message starts "file:line: ...";
+// the rest of the (mapped) log follows on the next lines.
+std::string error_first(const std::string& log) {
+  std::istringstream in(log);
+  std::vector<std::string> lines;
+  for (std::string line; std::getline(in, line);) {
+    if (!line.empty()) lines.push_back(line);
+  }
+  auto first = std::find_if(lines.begin(), lines.end(), [](const std::string& l) {
+    return l.find("error") != std::string::npos;
+  });
+  std::string out = first != lines.end() ? *first : std::string();
+  for (auto it = lines.begin(); it != lines.end(); ++it) {
+    if (it == first) continue;
+    out += (out.empty() ? "" : "\n") + *it;
+  }
+  return out;
+}
+
+Result<Shader> compile_stage(const std::string& path, const Defines& defines,
+                             const std::string& glsl_root) {
+  auto source = preprocess_shader(path, defines, glsl_root);
+  if (!source) return source.error();
+  Shader shader(glCreateShader(gl_stage(stage_from_path(path))));
+  const char* text = source->text.c_str();
+  glShaderSource(shader.id(), 1, &text, nullptr);
+  glCompileShader(shader.id());
+  GLint ok = GL_FALSE;
+  glGetShaderiv(shader.id(), GL_COMPILE_STATUS, &ok);
+  if (ok != GL_TRUE) {
+    std::string log = error_first(map_shader_log(shader_log(shader.id()), source->files));
+    return make_error(log.empty() ? path + ": compile failed (empty log)" : log);
+  }
+  return shader;
+}
+
+}  // namespace
+
+Result<Program> build_program(const ProgramDesc& desc, const std::string& glsl_root) {
+  assert(gl_loaded() && "build_program: no current GL context (create_context first)");
+  assert(!desc.stages.empty() && "build_program: ProgramDesc::stages is empty");
+  std::vector<Shader> shaders;
+  std::string names;
+  for (const std::string& stage : desc.stages) {
+    const fs::path path = fs::path(stage).is_absolute() ? fs::path(stage) : fs::path(glsl_root) / stage;
+    auto shader = compile_stage(path.string(), desc.defines, glsl_root);
+    if (!shader) return shader.error();
+    shaders.push_back(std::move(shader.value()));
+    names += (names.empty() ? "" : " + ") + stage;
+  }
+  Program program(glCreateProgram());
+  for (const Shader& s : shaders) glAttachShader(program.id(), s.id());
+  glLinkProgram(program.id());
+  for (const Shader& s : shaders) glDetachShader(program.id(), s.id());
+  GLint ok = GL_FALSE;
+  glGetProgramiv(program.id(), GL_LINK_STATUS, &ok);
+  if (ok != GL_TRUE) {
+    // Link logs carry no file:line (Mesa: "error: ..."), so name the stages.
+    return make_error(names + ": link failed: " + error_first(program_log(program.id())));
+  }
+  return program;
+}
+
+std::string default_glsl_root() {
+  if (const char* env = std::getenv("PSEUDOSHADOW_GLSL_DIR"); env != nullptr && *env != '\0') {
+    return env;
+  }
+  std::error_code ec;
+#ifdef PS_GLSL_SOURCE_DIR
+  if (fs::is_directory(PS_GLSL_SOURCE_DIR, ec)) return PS_GLSL_SOURCE_DIR;
+#endif
+  // Installed layout: <prefix>/bin/exe and <prefix>/share/pseudoshadow/glsl.
+  const fs::path exe = fs::read_symlink("/proc/self/exe", ec);
+  const fs::path base = ec ? fs::current_path(ec) : exe.parent_path();
+  return (base / ".." / "share" / "pseudoshadow" / "glsl").lexically_normal().string();
+}
+
+}  // namespace ps::gl

@@ -1,0 +1,45 @@
+// Float images in memory and their files (OpenImageIO: PNG, EXR, ...).
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "core/result.h"
+
+namespace ps {
+
+// Row 0 is the TOP row (file order). Pixel values are floats; 8-bit files map to [0,1].
+struct Image {
+  int width = 0, height = 0, channels = 0;
+  std::vector<float> pixels;  // width * height * channels, interleaved
+
+  float& at(int x, int y, int c) { return pixels[(static_cast<size_t>(y) * width + x) * channels + c]; }
+  float at(int x, int y, int c) const { return pixels[(static_cast<size_t>(y) * width + x) * channels + c]; }
+};
+
+Result<Image> read_image(const std::string& path);
+// Writes PNG (8 bit, clamped to [0,1], rounded) or EXR (32-bit float) by extension; other
+// extensions go to whatever OIIO writes for them. Written to "<path>.<pid>.tmp" and renamed into
+// place so a crash never leaves a half-written file. Creates missing parent directories.
+// Errors name the path; sizes outside 1..16384 are refused.
+Status write_image(const std::string& path, const Image& image);
+
+struct CompareOptions {
+  float fail_threshold = 1.0f / 255.0f;  // a pixel fails if any channel differs by more
+  double fail_percent = 0.0;             // the comparison fails if more than this % of pixels fail
+};
+
+struct CompareResult {
+  bool passed = false;
+  double max_abs = 0.0;        // largest channel difference
+  double mean_abs = 0.0;       // mean channel difference
+  long failing_pixels = 0;
+  double failing_percent = 0.0;
+  Image diff;                  // |a-b| per channel, amplified x10 and clamped for viewing; alpha
+                               // (2 or 4 channels) is opaque, its difference folded into colour
+};
+
+// Errors: unreadable file, size or channel-count mismatch.
+Result<CompareResult> compare_images(const Image& a, const Image& b, const CompareOptions& options);
+
+}  // namespace ps

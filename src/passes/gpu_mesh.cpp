@@ -1,0 +1,38 @@
+#include "passes/gpu_mesh.h"
+
+#include <vector>
+
+namespace ps {
+
+GpuMesh GpuMesh::upload(const Mesh& mesh) {
+  GpuMesh g;
+  std::vector<float> interleaved;
+  interleaved.reserve(mesh.positions.size() * 6);
+  for (size_t i = 0; i < mesh.positions.size(); ++i) {
+    const glm::vec3 p = mesh.positions[i];
+    const glm::vec3 n = i < mesh.normals.size() ? mesh.normals[i] : glm::vec3(0.0f, 0.0f, 1.0f);
+    interleaved.insert(interleaved.end(), {p.x, p.y, p.z, n.x, n.y, n.z});
+  }
+  g.vertices = gl::make_buffer(static_cast<GLsizeiptr>(interleaved.size() * sizeof(float)),
+                               interleaved.data(), 0);
+  g.indices = gl::make_buffer(static_cast<GLsizeiptr>(mesh.indices.size() * sizeof(std::uint32_t)),
+                              mesh.indices.data(), 0);
+  g.index_count = static_cast<GLsizei>(mesh.indices.size());
+  g.vao = gl::make_vertex_array();
+  const GLuint vao = g.vao.id();
+  glVertexArrayVertexBuffer(vao, 0, g.vertices.id(), 0, 6 * sizeof(float));
+  glVertexArrayElementBuffer(vao, g.indices.id());
+  for (GLuint attr = 0; attr < 2; ++attr) {
+    glEnableVertexArrayAttrib(vao, attr);
+    glVertexArrayAttribFormat(vao, attr, 3, GL_FLOAT, GL_FALSE, attr * 3 * sizeof(float));
+    glVertexArrayAttribBinding(vao, attr, 0);
+  }
+  return g;
+}
+
+void GpuMesh::draw() const {
+  glBindVertexArray(vao.id());
+  glDrawElements(GL_TRIANGLES, index_count, GL_UNSIGNED_INT, nullptr);
+}
+
+}  // namespace ps

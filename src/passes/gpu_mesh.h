@@ -1,0 +1,20 @@
+// A triangle mesh on the GPU: interleaved position/normal (float), 32-bit indices.
+// Attribute locations: 0 = position (mm), 1 = normal.
+#pragma once
+
+#include "gl/objects.h"
+#include "scene/mesh.h"
+
+namespace ps {
+
+struct GpuMesh {
+  gl::VertexArray vao;
+  gl::Buffer vertices;
+  gl::Buffer indices;
+  GLsizei index_count = 0;
+
+  static GpuMesh upload(const Mesh& mesh);
+  void draw() const;
+};
+
+}  // namespace ps

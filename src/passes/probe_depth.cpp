@@ -1,0 +1,77 @@
+#include "passes/probe_depth.h"
+
+#include <cassert>
+
+#include "gl/shader.h"
+
+namespace ps {
+
+namespace {
+constexpr float kFar = 1.0e30f;  // "no probe" height, must match kFar in the shaders
+glm::vec4 v4(const glm::dvec3& v, double w = 0.0) { return glm::vec4(glm::dvec4(v, w)); }
+}  // namespace
+
+Status ProbeDepthPass::init(const std::string& glsl_root, const Params& params) {
+  params_ = params;
+  auto analytic = gl::build_program({{"probe_depth_analytic.vert", "probe_depth_analytic.frag"}, {}}, glsl_root);
+  if (!analytic) return analytic.error();
+  auto mesh = gl::build_program({{"probe_depth_mesh.vert", "probe_depth_mesh.frag"}, {}}, glsl_root);
+  if (!mesh) return mesh.error();
+  analytic_ = std::move(analytic.value());
+  mesh_ = std::move(mesh.value());
+  depth_ = gl::make_texture_2d(params.size, params.size, GL_R32F);
+  glTextureParameteri(depth_.id(), GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+  glTextureParameteri(depth_.id(), GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+  depth_buffer_ = gl::make_renderbuffer(GL_DEPTH_COMPONENT32F, params.size, params.size);
+  fbo_ = gl::make_framebuffer();
+  glNamedFramebufferTexture(fbo_.id(), GL_COLOR_ATTACHMENT0, depth_.id(), 0);
+  glNamedFramebufferRenderbuffer(fbo_.id(), GL_DEPTH_ATTACHMENT, GL_RENDERBUFFER, depth_buffer_.id());
+  if (glCheckNamedFramebufferStatus(fbo_.id(), GL_FRAMEBUFFER) != GL_FRAMEBUFFER_COMPLETE)
+    return make_error("probe depth pass: framebuffer incomplete (R32F + D32F)");
+  ubo_ = gl::make_buffer(sizeof(ProbeDepthBlock), nullptr, GL_DYNAMIC_STORAGE_BIT);
+  empty_vao_ = gl::make_vertex_array();
+  return ok_status();
+}
+
+void ProbeDepthPass::run(const Inputs& in) {
+  assert(in.frame && (in.capsule || in.mesh) && "ProbeDepthPass::run: frame and a probe are required");
+  const PlaneFrame& f = *in.frame;
+  ProbeDepthBlock block;
+  block.model = glm::mat4(in.model);
+  block.ref_n = v4(f.n);
+  block.ref_t = v4(f.t);
+  block.ref_b = v4(f.b);
+  block.window = glm::vec4(glm::dvec4(in.window.center_uv, in.window.half_size_mm, params_.size));
+  if (in.capsule) {
+    block.cap_a = v4(to_plane(f, in.capsule->a), in.capsule->radius);
+    block.cap_b = v4(to_plane(f, in.capsule->b));
+  }
+  block.height_range = glm::vec4(glm::dvec4(in.height_lo, in.height_hi, 0.0, 0.0));
+  glNamedBufferSubData(ubo_.id(), 0, sizeof(block), &block);
+
+  // All state this pass depends on is set here.
+  glBindFramebuffer(GL_FRAMEBUFFER, fbo_.id());
+  glViewport(0, 0, params_.size, params_.size);
+  glDisable(GL_SCISSOR_TEST);
+  glDisable(GL_BLEND);
+  glDisable(GL_CULL_FACE);
+  glDepthMask(GL_TRUE);
+  const float far_height[4] = {kFar, 0.0f, 0.0f, 0.0f};
+  const float one = 1.0f;
+  glClearNamedFramebufferfv(fbo_.id(), GL_COLOR, 0, far_height);
+  glClearNamedFramebufferfv(fbo_.id(), GL_DEPTH, 0, &one);
+  glBindBufferBase(GL_UNIFORM_BUFFER, 0, ubo_.id());
+  if (in.capsule) {
+    glDisable(GL_DEPTH_TEST);
+    glUseProgram(analytic_.id());
+    glBindVertexArray(empty_vao_.id());
+    glDrawArrays(GL_TRIANGLES, 0, 3);
+  } else {
+    glEnable(GL_DEPTH_TEST);
+    glDepthFunc(GL_LESS);
+    glUseProgram(mesh_.id());
+    in.mesh->draw();
+  }
+}
+
+}  // namespace ps

@@ -1,0 +1,66 @@
+// Reductions (thesis Table 4.2 steps 4-5) over the surface pass's targets:
+//   - reference normal: mean of the visible normals = top mip of the normal target (xyz / w);
+//   - exact maximum penetration (compute, glsl/max_penetration.comp): max of -d, and of
+//     resistance * -d, over every pseudo-shadow fragment;
+//   - weighted-average displacement (thesis §4.5.4): glsl/displacement_weights.comp writes
+//     (w * disp, w) into displacement() (RGBA32F, padded power of two, full mip chain) and the
+//     top mip gives average(w * disp) / average(w).
+// Power-of-two RGBA32F only: llvmpipe's mipmap is then the exact mean (ENVIRONMENT.md).
+#pragma once
+
+#include <cstdint>
+#include <string>
+
+#include <glm/glm.hpp>
+
+#include "core/result.h"
+#include "gl/objects.h"
+#include "passes/surface.h"
+
+namespace ps {
+
+// std140 mirror of ReduceBlock in glsl/lib/reduce_block.glsl.
+struct ReduceBlock {
+  glm::ivec4 size;    // image w, h; padded w, h
+  glm::vec4 params;   // x: weight exponent c
+};
+static_assert(sizeof(ReduceBlock) == 32, "ReduceBlock must match std140 layout");
+
+// std430 mirror of MaxBlock.
+struct MaxBlock {
+  std::uint32_t max_penetration_bits = 0;
+  std::uint32_t max_resisted_penetration_bits = 0;
+  std::uint32_t penetrating_fragments = 0;
+  std::uint32_t covered_fragments = 0;
+};
+
+struct ReductionResult {
+  glm::dvec3 normal_sum{0.0};     // mean normal * coverage (not normalised)
+  double normal_coverage = 0.0;   // fraction of the padded target covered by surfaces
+  glm::dvec3 weighted_displacement{0.0};  // average(w * disp) / average(w), mm
+  double max_penetration_mm = 0.0;
+  double max_resisted_penetration_mm = 0.0;
+  std::uint32_t penetrating_fragments = 0;
+  std::uint32_t covered_fragments = 0;
+};
+
+struct ReductionsPass {
+  struct Params {
+    double weight_exponent = 20.0;  // c
+  };
+
+  Status init(const std::string& glsl_root, const SurfacePass& surface);
+  // Normal mean only (shadow == false), or everything.
+  ReductionResult run(const SurfacePass& surface, const Params& params, bool shadow);
+  const gl::Texture& displacement() const { return displacement_; }
+
+ private:
+  gl::Program max_, weights_;
+  gl::Texture displacement_;
+  gl::Buffer ubo_, ssbo_;
+};
+
+// Reads the 1x1 top level of an RGBA32F mip chain.
+glm::dvec4 read_top_level(const gl::Texture& texture, int levels);
+
+}  // namespace ps

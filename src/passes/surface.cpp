@@ -1,0 +1,108 @@
+#include "passes/surface.h"
+
+#include <algorithm>
+#include <bit>
+
+#include "gl/shader.h"
+
+namespace ps {
+
+namespace {
+glm::vec4 v4(const glm::dvec3& v, double w = 0.0) { return glm::vec4(glm::dvec4(v, w)); }
+glm::vec4 v4(double x, double y, double z, double w) { return glm::vec4(glm::dvec4(x, y, z, w)); }
+}  // namespace
+
+int next_pow2(int v) { return static_cast<int>(std::bit_ceil(static_cast<unsigned>(std::max(v, 1)))); }
+
+SurfaceBlock make_surface_block(const SurfaceFrame& fr, const Material& m, const GaborSetup& gs,
+                                double speed_gain, bool has_albedo_tex) {
+  const GaborParams& g = m.gabor;
+  SurfaceBlock b;
+  b.view_proj = glm::mat4(fr.view_proj);
+  b.light_dir = v4(glm::normalize(fr.light->direction), fr.light->ambient);
+  b.light_color = v4(fr.light->color, fr.gamma);
+  b.ref_n = v4(fr.plane.n);
+  b.ref_t = v4(fr.plane.t);
+  b.ref_b = v4(fr.plane.b);
+  b.window = v4(fr.window_center_uv.x, fr.window_center_uv.y, fr.window_half_mm, fr.depth_map_size);
+  b.albedo = v4(m.albedo, has_albedo_tex ? 1.0 : 0.0);
+  b.intensity = v4(m.intensity_floor, m.intensity_scale, m.intensity_offset_mm, m.influence_distance_mm);
+  b.gabor_a = v4(g.a_min, g.a_max, g.lambda_min_mm, g.lambda_max_mm);
+  b.gabor_b = v4(g.theta_min_rad, g.theta_max_rad, g.n_min, g.n_max);
+  b.gabor_c = v4(g.kernel_periods, gs.cell_mm, gs.trunc_factor, gs.sigma_unit);
+  b.modulation = v4(speed_gain, m.onset_distance_mm, m.resistance, fr.contrast_sigmas);
+  b.misc = v4(m.albedo_texture_scale_mm, 0.0, 0.0, 0.0);
+  b.seed = glm::uvec4(fr.seed, static_cast<unsigned>(gs.max_impulses), 0u, 0u);
+  return b;
+}
+
+Status SurfacePass::init(const std::string& glsl_root, const Params& params) {
+  glsl_root_ = glsl_root;
+  params_ = params;
+  padded_ = {next_pow2(params.width), next_pow2(params.height)};
+  levels_ = 1 + std::bit_width(static_cast<unsigned>(std::max(padded_.x, padded_.y))) - 1;
+  color_ = gl::make_texture_2d(padded_.x, padded_.y, GL_RGBA8);
+  normal_ = gl::make_texture_2d(padded_.x, padded_.y, GL_RGBA32F, levels_);
+  aov_ = gl::make_texture_2d(padded_.x, padded_.y, GL_RGBA32F);
+  for (const gl::Texture* t : {&color_, &normal_, &aov_}) {
+    glTextureParameteri(t->id(), GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+    glTextureParameteri(t->id(), GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+  }
+  dummy_ = gl::make_texture_2d(1, 1, GL_R32F);  // bound when a sampler has nothing to read
+  depth_ = gl::make_renderbuffer(GL_DEPTH_COMPONENT32F, padded_.x, padded_.y);
+  fbo_ = gl::make_framebuffer();
+  glNamedFramebufferTexture(fbo_.id(), GL_COLOR_ATTACHMENT0, color_.id(), 0);
+  glNamedFramebufferTexture(fbo_.id(), GL_COLOR_ATTACHMENT1, normal_.id(), 0);
+  glNamedFramebufferTexture(fbo_.id(), GL_COLOR_ATTACHMENT2, aov_.id(), 0);
+  glNamedFramebufferRenderbuffer(fbo_.id(), GL_DEPTH_ATTACHMENT, GL_RENDERBUFFER, depth_.id());
+  const GLenum buffers[3] = {GL_COLOR_ATTACHMENT0, GL_COLOR_ATTACHMENT1, GL_COLOR_ATTACHMENT2};
+  glNamedFramebufferDrawBuffers(fbo_.id(), 3, buffers);
+  if (glCheckNamedFramebufferStatus(fbo_.id(), GL_FRAMEBUFFER) != GL_FRAMEBUFFER_COMPLETE)
+    return make_error("surface pass: MRT framebuffer incomplete (RGBA8 + 2x RGBA32F + D32F)");
+  ubo_ = gl::make_buffer(sizeof(SurfaceBlock), nullptr, GL_DYNAMIC_STORAGE_BIT);
+  auto warm = program(true, true);  // compile the common variant up front: errors surface early
+  if (!warm) return warm.error();
+  return ok_status();
+}
+
+Result<const gl::Program*> SurfacePass::program(bool shadow, bool textured) {
+  const auto key = std::make_pair(shadow, textured && shadow);
+  auto it = programs_.find(key);
+  if (it != programs_.end()) return &it->second;
+  gl::ProgramDesc desc{{"surface.vert", "surface.frag"},
+                       {{"PS_SHADOW", key.first ? "1" : "0"}, {"PS_TEXTURED", key.second ? "1" : "0"}}};
+  auto built = gl::build_program(desc, glsl_root_);
+  if (!built) return built.error();
+  return &programs_.emplace(key, std::move(built.value())).first->second;
+}
+
+Status SurfacePass::run(const std::vector<SurfaceDraw>& draws, const gl::Texture* probe_depth,
+                        const glm::dvec3& background) {
+  glBindFramebuffer(GL_FRAMEBUFFER, fbo_.id());
+  glViewport(0, 0, params_.width, params_.height);
+  glDisable(GL_SCISSOR_TEST);
+  glDisable(GL_BLEND);
+  glDisable(GL_CULL_FACE);  // surfaces may be open or seen from behind (two-sided shading)
+  glEnable(GL_DEPTH_TEST);
+  glDepthFunc(GL_LESS);
+  glDepthMask(GL_TRUE);
+  const glm::vec4 bg(glm::dvec4(background, 1.0));
+  const float zero[4] = {0, 0, 0, 0}, aov_clear[4] = {0, 1.0e30f, 0, 0}, one = 1.0f;
+  glClearNamedFramebufferfv(fbo_.id(), GL_COLOR, 0, &bg.x);
+  glClearNamedFramebufferfv(fbo_.id(), GL_COLOR, 1, zero);
+  glClearNamedFramebufferfv(fbo_.id(), GL_COLOR, 2, aov_clear);
+  glClearNamedFramebufferfv(fbo_.id(), GL_DEPTH, 0, &one);
+  glBindBufferBase(GL_UNIFORM_BUFFER, 0, ubo_.id());
+  glBindTextureUnit(0, probe_depth ? probe_depth->id() : dummy_.id());
+  for (const SurfaceDraw& d : draws) {
+    auto prog = program(d.shadow, d.textured);
+    if (!prog) return prog.error();
+    glUseProgram(prog.value()->id());
+    glBindTextureUnit(1, d.albedo ? d.albedo->id() : dummy_.id());
+    glNamedBufferSubData(ubo_.id(), 0, sizeof(SurfaceBlock), &d.block);
+    d.mesh->draw();
+  }
+  return ok_status();
+}
+
+}  // namespace ps

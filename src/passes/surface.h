@@ -1,0 +1,95 @@
+// Surface pass (thesis Table 4.2 step 3): draws every surface once into an MRT framebuffer.
+//   inputs : surfaces (GpuMesh + material uniforms), probe depth map (R32F), albedo textures
+//   outputs: color()  RGBA8    lit surface with the pseudo-shadow (gamma-encoded)
+//            normal() RGBA32F  (front-facing normal, 1) per covered pixel, full mip chain
+//            aov()    RGBA32F  (intensity, distance d mm, texture in sigmas, resistance);
+//                              cleared to (0, 1e30, 0, 0)
+//   All targets are allocated at the next power of two of the image size (mipmap averages are
+//   exact only for power-of-two RGBA32F on llvmpipe, ENVIRONMENT.md); the viewport covers the
+//   image, the padding stays cleared and drops out of every ratio computed from the mips.
+// Shaders: glsl/surface.{vert,frag}; variants PS_SHADOW, PS_TEXTURED.
+#pragma once
+
+#include <map>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include <glm/glm.hpp>
+
+#include "core/result.h"
+#include "gl/objects.h"
+#include "passes/gpu_mesh.h"
+#include "reference/basis.h"
+#include "reference/gabor.h"
+#include "scene/scene.h"
+
+namespace ps {
+
+// std140 mirror of glsl/lib/surface_block.glsl.
+struct SurfaceBlock {
+  glm::mat4 view_proj{1.0f};
+  glm::vec4 light_dir, light_color, ref_n, ref_t, ref_b, window, albedo, intensity;
+  glm::vec4 gabor_a, gabor_b, gabor_c, modulation, misc;
+  glm::uvec4 seed;
+};
+static_assert(sizeof(SurfaceBlock) == 64 + 14 * 16, "SurfaceBlock must match std140 layout");
+
+// Per-frame values shared by every surface draw.
+struct SurfaceFrame {
+  glm::dmat4 view_proj{1.0};
+  PlaneFrame plane;
+  glm::dvec2 window_center_uv{0.0};
+  double window_half_mm = 1.0;
+  int depth_map_size = 256;
+  const Light* light = nullptr;
+  double gamma = 1.0 / 2.2;
+  double contrast_sigmas = 2.5;  // texture shown as 0.5 +- 0.5 * value / contrast_sigmas
+  std::uint32_t seed = 1;
+};
+
+SurfaceBlock make_surface_block(const SurfaceFrame& frame, const Material& m,
+                                const GaborSetup& gabor, double speed_gain, bool has_albedo_tex);
+
+struct SurfaceDraw {
+  const GpuMesh* mesh = nullptr;
+  SurfaceBlock block;
+  bool shadow = true;    // PS_SHADOW variant
+  bool textured = true;  // PS_TEXTURED variant
+  const gl::Texture* albedo = nullptr;
+};
+
+struct SurfacePass {
+  struct Params {
+    int width = 512, height = 512;
+  };
+
+  Status init(const std::string& glsl_root, const Params& params);
+  Status run(const std::vector<SurfaceDraw>& draws, const gl::Texture* probe_depth,
+             const glm::dvec3& background);
+
+  const gl::Texture& color() const { return color_; }
+  const gl::Texture& normal() const { return normal_; }
+  const gl::Texture& aov() const { return aov_; }
+  int width() const { return params_.width; }
+  int height() const { return params_.height; }
+  glm::ivec2 padded_size() const { return padded_; }
+  int mip_levels() const { return levels_; }
+
+ private:
+  Result<const gl::Program*> program(bool shadow, bool textured);
+
+  std::string glsl_root_;
+  Params params_;
+  glm::ivec2 padded_{1, 1};
+  int levels_ = 1;
+  std::map<std::pair<bool, bool>, gl::Program> programs_;
+  gl::Texture color_, normal_, aov_, dummy_;
+  gl::Renderbuffer depth_;
+  gl::Framebuffer fbo_;
+  gl::Buffer ubo_;
+};
+
+int next_pow2(int v);
+
+}  // namespace ps

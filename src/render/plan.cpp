@@ -1,0 +1,57 @@
+#include "render/plan.h"
+
+#include <algorithm>
+#include <cmath>
+#include <sstream>
+
+namespace ps {
+
+double distance_sphere_aabb(const BoundingSphere& s, const Aabb& box) {
+  const glm::dvec3 closest = glm::clamp(s.center, box.min, box.max);
+  return std::max(0.0, glm::length(s.center - closest) - s.radius);
+}
+
+namespace {
+std::string surface_label(const Scene& scene, size_t i) {
+  std::ostringstream o;
+  o << "surface " << i << " (material '" << scene.surfaces[i].material << "')";
+  return o.str();
+}
+bool has_texture(const Material& m) {
+  return m.textured && (m.gabor.a_min != 0.0 || m.gabor.a_max != 0.0) &&
+         m.gabor.max_impulses_per_cell > 0 && std::max(m.gabor.n_min, m.gabor.n_max) > 0.0;
+}
+}  // namespace
+
+FramePlan make_plan(const Scene& scene, const std::vector<Aabb>& bounds,
+                    const BoundingSphere& probe, const PlaneFrame& frame, int depth_map_size) {
+  FramePlan plan;
+  const size_t n = scene.surfaces.size();
+  plan.surface_shadow.assign(n, false);
+  plan.surface_textured.assign(n, false);
+  plan.surface_distance_mm.assign(n, 0.0);
+  for (size_t i = 0; i < n; ++i) {
+    const Material& m = scene.materials[static_cast<size_t>(scene.surfaces[i].material_index)];
+    const double dist = distance_sphere_aabb(probe, bounds[i]);
+    plan.surface_distance_mm[i] = dist;
+    plan.surface_shadow[i] = dist < m.influence_distance_mm;
+    plan.surface_textured[i] = plan.surface_shadow[i] && has_texture(m);
+    if (!plan.surface_shadow[i]) {
+      plan.skipped.push_back(surface_label(scene, i) + ": pseudo-shadow and Gabor (probe beyond influence distance)");
+    } else if (!plan.surface_textured[i]) {
+      plan.skipped.push_back(surface_label(scene, i) + ": Gabor (material untextured)");
+    }
+    plan.shadow_active = plan.shadow_active || plan.surface_shadow[i];
+  }
+  if (!plan.shadow_active) {
+    plan.skipped.push_back("probe_depth: probe beyond every surface's influence distance");
+    plan.skipped.push_back("reductions: nothing to reduce (reference plane kept)");
+  }
+  const glm::dvec3 c = to_plane(frame, probe.center);
+  plan.window.center_uv = {c.x, c.y};
+  // One texel of margin so the silhouette's edge texels are inside the map.
+  plan.window.half_size_mm = probe.radius * (1.0 + 2.0 / std::max(depth_map_size, 2)) + 1e-6;
+  return plan;
+}
+
+}  // namespace ps

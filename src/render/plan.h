@@ -1,0 +1,42 @@
+// The per-frame plan (CPU only, no GL): what this frame needs and what it can skip.
+//   - a surface farther from the probe than its material's influence distance gets no
+//     pseudo-shadow (PS_SHADOW=0 variant: no depth lookup, no Gabor);
+//   - when no surface is within reach, the probe depth pass and the reductions are skipped;
+//   - untextured materials (textured = false or zero amplitude) use PS_TEXTURED=0;
+//   - inside a shadowed surface the Gabor sum runs only on fragments inside the probe's
+//     footprint and onset distance (a branch in glsl/surface.frag), so its cost follows the
+//     footprint's pixel count rather than the screen size.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include <glm/glm.hpp>
+
+#include "passes/probe_depth.h"
+#include "reference/basis.h"
+#include "reference/probe_geometry.h"
+#include "scene/scene.h"
+
+namespace ps {
+
+struct Aabb {
+  glm::dvec3 min{0.0}, max{0.0};
+};
+
+struct FramePlan {
+  bool shadow_active = false;           // depth pass + reductions run
+  std::vector<bool> surface_shadow;     // per surface: PS_SHADOW
+  std::vector<bool> surface_textured;   // per surface: PS_TEXTURED
+  std::vector<double> surface_distance_mm;  // probe bounds to surface bounds
+  DepthWindow window;
+  std::vector<std::string> skipped;     // human-readable, for --stats
+};
+
+double distance_sphere_aabb(const BoundingSphere& s, const Aabb& box);
+
+// `depth_map_size` sets the margin: the window is the probe's bounding disc plus one texel.
+FramePlan make_plan(const Scene& scene, const std::vector<Aabb>& surface_bounds,
+                    const BoundingSphere& probe, const PlaneFrame& frame, int depth_map_size);
+
+}  // namespace ps

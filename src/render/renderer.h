@@ -1,0 +1,84 @@
+// The frame loop shared by the headless CLI, the window and the tests (one render path):
+//   plan -> probe depth pass -> surface pass -> reductions -> reference plane + displacement.
+// Lives on the render thread; owns every GL object it uses. Needs a current GL context.
+#pragma once
+
+#include <memory>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include <glm/glm.hpp>
+
+#include "core/result.h"
+#include "image/image.h"
+#include "passes/probe_depth.h"
+#include "passes/reductions.h"
+#include "passes/surface.h"
+#include "render/plan.h"
+#include "scene/scene.h"
+
+namespace ps {
+
+struct RendererOptions {
+  std::string glsl_root;          // empty: gl::default_glsl_root()
+  bool time_passes = true;        // glFinish around passes for per-pass wall times
+  double contrast_sigmas = 2.5;   // texture display contrast (see SurfaceFrame)
+};
+
+struct FrameStats {
+  glm::dvec3 reference_normal{0.0, 0.0, 1.0};  // after this frame's update
+  glm::dvec3 displacement{0.0};                // applied to the probe this frame, mm
+  double max_penetration_mm = 0.0;
+  glm::dvec3 probe_position{0.0};              // after the displacement
+  double speed_gain = 0.0;                     // of the first shadowed material
+  std::uint32_t shadow_pixels = 0, penetrating_pixels = 0;
+  std::vector<std::pair<std::string, double>> timings_ms;
+  std::vector<std::string> skipped;
+};
+
+// AOV names accepted by read_aov().
+const std::vector<std::string>& aov_names();
+
+class Renderer {
+ public:
+  static Result<std::unique_ptr<Renderer>> create(const Scene& scene, const RendererOptions& options);
+
+  Status render_frame();
+  Image read_color() const;                        // RGB, top row first, image size
+  Result<Image> read_aov(const std::string& name) const;
+
+  const FrameStats& stats() const { return stats_; }
+  const Scene& scene() const { return scene_; }
+  const PlaneFrame& reference() const { return frame_; }
+  void set_probe_state(const glm::dvec3& position, const glm::dvec3& velocity);
+
+ private:
+  Renderer() = default;
+  Status load_scene_resources();
+  Status init_passes();
+  BoundingSphere current_probe_bounds() const;
+  std::vector<SurfaceDraw> surface_draws(const FramePlan& plan);
+  void apply_reductions(const ReductionResult& r, const FramePlan& plan);
+
+  Scene scene_;
+  RendererOptions options_;
+  PlaneFrame frame_;
+  FrameStats stats_;
+  std::vector<GpuMesh> surface_meshes_;
+  std::vector<Aabb> surface_bounds_;
+  std::vector<GaborSetup> gabor_setups_;     // per material
+  std::vector<gl::Texture> albedo_textures_; // per material (empty texture = none)
+  GpuMesh probe_mesh_;
+  Aabb probe_mesh_bounds_;                   // model space, scaled
+  ProbeDepthPass probe_depth_;
+  SurfacePass surface_;
+  ReductionsPass reductions_;
+};
+
+// Stats as JSON (the CLI's --stats FILE): backend, renderer, reference_normal, displacement,
+// max_penetration, probe_position, timings_ms, skipped, ...
+std::string stats_json(const FrameStats& stats, const std::string& backend,
+                       const std::string& gl_renderer, int frames);
+
+}  // namespace ps

@@ -1,0 +1,37 @@
+#include <nlohmann/json.hpp>
+
+#include "render/renderer.h"
+
+namespace ps {
+
+namespace {
+nlohmann::json vec(const glm::dvec3& v) { return nlohmann::json::array({v.x, v.y, v.z}); }
+}  // namespace
+
+std::string stats_json(const FrameStats& s, const std::string& backend,
+                       const std::string& gl_renderer, int frames) {
+  nlohmann::json j;
+  j["backend"] = backend;
+  j["gl_renderer"] = gl_renderer;
+  j["frames"] = frames;
+  j["reference_normal"] = vec(s.reference_normal);
+  j["displacement"] = vec(s.displacement);
+  j["max_penetration"] = s.max_penetration_mm;
+  j["probe_position"] = vec(s.probe_position);
+  j["speed_gain"] = s.speed_gain;
+  j["shadow_pixels"] = s.shadow_pixels;
+  j["penetrating_pixels"] = s.penetrating_pixels;
+  nlohmann::json t = nlohmann::json::object();
+  double total = 0.0;
+  for (const auto& [name, ms] : s.timings_ms) {
+    t[name] = ms;
+    total += ms;
+  }
+  t["frame"] = total;
+  j["timings_ms"] = t;
+  j["skipped"] = s.skipped;
+  j["units"] = {{"length", "mm"}, {"speed", "mm/s"}, {"time", "ms"}};
+  return j.dump(2) + "\n";
+}
+
+}  // namespace ps

@@ -1,0 +1,64 @@
+// build_surface_mesh and transform_mesh; shapes in mesh_procedural.cpp, files in mesh_file.cpp.
+#include "scene/mesh.h"
+
+#include <glm/gtc/matrix_transform.hpp>
+
+#include "scene/mesh_procedural.h"
+
+namespace ps {
+
+namespace {
+
+// XYZ Euler: rotate about X first, then Y, then Z (R = Rz * Ry * Rx), angles in degrees.
+glm::dmat3 euler_xyz(const glm::dvec3& rotation_deg) {
+  const glm::dvec3 r = glm::radians(rotation_deg);
+  glm::dmat4 m(1.0);
+  m = glm::rotate(m, r.z, glm::dvec3(0, 0, 1));
+  m = glm::rotate(m, r.y, glm::dvec3(0, 1, 0));
+  m = glm::rotate(m, r.x, glm::dvec3(1, 0, 0));
+  return glm::dmat3(m);
+}
+
+Result<Mesh> local_mesh(const Surface& s) {
+  switch (s.type) {
+    case SurfaceType::kPlane: return mesh_detail::make_plane(s.size_mm, s.resolution);
+    case SurfaceType::kSphere: return mesh_detail::make_sphere(s.radius_mm, s.resolution);
+    case SurfaceType::kTorus:
+      return mesh_detail::make_torus(s.radius_mm, s.minor_radius_mm, s.resolution);
+    case SurfaceType::kHeightField:
+      return mesh_detail::make_height_field(s.heightmap, s.size_mm, s.height_mm, s.resolution);
+    case SurfaceType::kMesh: return load_mesh_file(s.mesh_file);
+  }
+  return make_error("build_surface_mesh: unknown surface type");
+}
+
+}  // namespace
+
+Result<Mesh> build_surface_mesh(const Surface& surface) {
+  Result<Mesh> mesh = local_mesh(surface);
+  if (!mesh) return mesh;
+  // `scale` is documented for mesh surfaces; procedural shapes are sized by their own keys.
+  const double scale = surface.type == SurfaceType::kMesh ? surface.scale : 1.0;
+  transform_mesh(*mesh, scale, surface.rotation_deg, surface.center);
+  return mesh;
+}
+
+void transform_mesh(Mesh& mesh, double scale, const glm::dvec3& rotation_deg,
+                    const glm::dvec3& translation) {
+  const glm::dmat3 rotation = euler_xyz(rotation_deg);
+  for (glm::vec3& p : mesh.positions) {
+    p = glm::vec3(rotation * (scale * glm::dvec3(p)) + translation);
+  }
+  // Uniform scale and a rotation: normals only rotate (a negative scale would flip them and
+  // the winding, so it flips both back).
+  const double flip = scale < 0.0 ? -1.0 : 1.0;
+  for (glm::vec3& n : mesh.normals) n = glm::vec3(glm::normalize(flip * (rotation * glm::dvec3(n))));
+  if (scale < 0.0) {
+    for (std::size_t i = 0; i + 2 < mesh.indices.size(); i += 3) {
+      std::swap(mesh.indices[i + 1], mesh.indices[i + 2]);
+    }
+  }
+  mesh_detail::compute_bounds(mesh);
+}
+
+}  // namespace ps

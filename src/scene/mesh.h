@@ -1,0 +1,37 @@
+// Triangle meshes for surfaces and mesh probes.
+#pragma once
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include <glm/glm.hpp>
+
+#include "core/result.h"
+#include "scene/scene.h"
+
+namespace ps {
+
+struct Mesh {
+  std::vector<glm::vec3> positions;  // mm, world space
+  std::vector<glm::vec3> normals;    // unit, outward
+  std::vector<std::uint32_t> indices;  // triangles, counter-clockwise seen from outside
+  glm::dvec3 bounds_min{0.0}, bounds_max{0.0};  // world-space AABB
+};
+
+// Hard limit so a hostile file cannot exhaust memory (documented in docs/scene-format.md).
+inline constexpr std::size_t kMaxMeshTriangles = 4'000'000;
+
+// World-space mesh of a scene surface (procedural shapes tessellated at surface.resolution;
+// height fields from the grey image; meshes through assimp, transformed by centre/rotation/scale).
+Result<Mesh> build_surface_mesh(const Surface& surface);
+
+// Loads all meshes of a file through assimp and merges them (no transform applied).
+// Errors name the file: "<path>: cannot load mesh: <assimp's reason>", empty meshes refused.
+Result<Mesh> load_mesh_file(const std::string& path);
+
+// Applies scale, then XYZ Euler rotation (degrees), then translation; recomputes bounds.
+void transform_mesh(Mesh& mesh, double scale, const glm::dvec3& rotation_deg,
+                    const glm::dvec3& translation);
+
+}  // namespace ps

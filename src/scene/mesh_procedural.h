@@ -1,0 +1,21 @@
+// Procedural local-space shapes (internal to ps_scene); build_surface_mesh() transforms them.
+#pragma once
+
+#include "core/result.h"
+#include "scene/mesh.h"
+
+namespace ps::mesh_detail {
+
+// size_mm.x by size_mm.y in local XY centred at the origin, normal +Z; resolution^2 quads.
+Mesh make_plane(glm::dvec2 size_mm, int resolution);
+// UV sphere: `resolution` segments around Z, resolution/2 (at least 2) rings pole to pole.
+Mesh make_sphere(double radius_mm, int resolution);
+// Ring torus around local Z: `resolution` segments around Z, resolution/2 (>= 3) around the tube.
+Mesh make_torus(double major_radius_mm, double minor_radius_mm, int resolution);
+// Height field over size_mm from a grey image: z = height_mm * value (bilinear).
+Result<Mesh> make_height_field(const std::string& image_path, glm::dvec2 size_mm,
+                               double height_mm, int resolution);
+
+void compute_bounds(Mesh& mesh);
+
+}  // namespace ps::mesh_detail

@@ -1,0 +1,123 @@
+// The scene model: what a scene file (docs/scene-format.md) describes, after parsing and
+// validation. Units everywhere: lengths in millimetres (mm), speeds in mm/s, frequencies in
+// Hz, angles in radians here (degrees in the file), colours linear RGB in [0,1].
+#pragma once
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include <glm/glm.hpp>
+
+namespace ps {
+
+enum class Projection { kPerspective, kOrthographic };
+
+struct Camera {
+  Projection projection = Projection::kPerspective;
+  glm::dvec3 position{0.0, -120.0, 160.0};  // mm
+  glm::dvec3 target{0.0, 0.0, 0.0};         // mm
+  glm::dvec3 up{0.0, 0.0, 1.0};
+  double fov_y_deg = 40.0;        // perspective: vertical field of view
+  double ortho_height_mm = 100.0; // orthographic: height of the view volume
+  double near_mm = 1.0;
+  double far_mm = 5000.0;
+};
+
+// One directional light; `direction` is the direction the light travels.
+struct Light {
+  glm::dvec3 direction{-0.3, 0.4, -1.0};
+  glm::dvec3 color{1.0, 1.0, 1.0};
+  double ambient = 0.25;
+};
+
+// The 8 Gabor parameters of thesis §4.3.1 plus the kernel shape knobs.
+struct GaborParams {
+  double a_min = 1.0, a_max = 1.0;                 // amplitude (element height), unitless
+  double lambda_min_mm = 0.5, lambda_max_mm = 0.5; // wavelength (element width)
+  double theta_min_rad = 0.0, theta_max_rad = 0.0; // orientation range on the reference plane
+  double n_min = 20.0, n_max = 30.0;               // impulses per kernel footprint (element spacing)
+  double kernel_periods = 1.0;   // Gaussian envelope width W = kernel_periods * lambda
+  double truncation = 0.05;      // kernel cut where exp(-r^2/W^2) < truncation
+  int max_impulses_per_cell = 64;  // hard cap so huge n cannot hang the shader
+};
+
+struct Material {
+  std::string name;
+  glm::dvec3 albedo{0.8, 0.8, 0.8};
+  std::string albedo_texture;  // absolute path after loading, empty = none
+  double albedo_texture_scale_mm = 50.0;  // world size of one texture repeat
+  bool textured = true;        // false: no Gabor texture (compiled out of the shader)
+  GaborParams gabor;
+  double onset_distance_mm = 5.0;      // texture shows where probe-surface distance < onset
+  double influence_distance_mm = 50.0; // no pseudo-shadow at all beyond this distance
+  // Pseudo-shadow intensity: 1 if d <= 0, else floor + scale / (d + offset)  (thesis §4.3.2).
+  double intensity_floor = 0.1;
+  double intensity_scale = 0.9;
+  double intensity_offset_mm = 1.25;
+  double resistance = 1.0;  // hardness: fraction of the penetration pushed back per frame
+  // Speed modulation (thesis §4.3.1): amplitude *= exp(-(df/bandwidth)^2), df against peak.
+  double peak_hz = 250.0;
+  double bandwidth_hz = 100.0;
+};
+
+enum class SurfaceType { kPlane, kSphere, kTorus, kHeightField, kMesh };
+
+struct Surface {
+  SurfaceType type = SurfaceType::kPlane;
+  std::string material;      // material name as written
+  int material_index = 0;    // index into Scene::materials (resolved by the parser)
+  glm::dvec3 center{0.0};    // mm
+  glm::dvec3 rotation_deg{0.0};  // XYZ Euler rotation applied to the local shape
+  // plane / height field: local XY extent; normal is local +Z
+  glm::dvec2 size_mm{200.0, 200.0};
+  // sphere radius; torus major radius
+  double radius_mm = 50.0;
+  // torus tube radius
+  double minor_radius_mm = 15.0;
+  // height field: grey image (absolute path after loading) scaled to [0, height_mm]
+  std::string heightmap;
+  double height_mm = 5.0;
+  // mesh: file loaded through assimp (absolute path after loading), uniform scale
+  std::string mesh_file;
+  double scale = 1.0;
+  int resolution = 64;       // tessellation of procedural shapes (segments)
+  int line = 0;              // line in the scene file, for error messages
+};
+
+enum class ProbeShape { kSphere, kCapsule, kMesh };
+
+struct Probe {
+  ProbeShape shape = ProbeShape::kSphere;
+  double radius_mm = 8.0;        // sphere and capsule radius
+  double length_mm = 30.0;       // capsule: distance between the two cap centres
+  glm::dvec3 axis{0.0, 0.0, 1.0};  // capsule: direction from tip cap centre to the other
+  std::string mesh_file;         // mesh probe (absolute path after loading)
+  double mesh_scale = 1.0;
+  glm::dvec3 position{0.0, 0.0, 10.0};  // mm; sphere centre / capsule tip-cap centre / mesh origin
+  glm::dvec3 velocity{0.0, 0.0, 0.0};   // mm/s
+};
+
+enum class DisplacementMethod { kWeightedAverage, kExactMax };
+
+struct RenderSettings {
+  int width = 512, height = 512;
+  int frames = 1;
+  int depth_map_size = 256;         // probe depth map resolution (square)
+  glm::dvec3 background{0.18, 0.19, 0.22};
+  DisplacementMethod displacement = DisplacementMethod::kWeightedAverage;
+  double weight_exponent = 20.0;    // c in weight = (1 - d)^c (thesis §4.5.4)
+  std::uint32_t seed = 1;           // Gabor impulse seed
+};
+
+struct Scene {
+  std::string path;  // file the scene came from ("<embedded default>" for the built-in one)
+  Camera camera;
+  Light light;
+  Probe probe;
+  RenderSettings render;
+  std::vector<Material> materials;
+  std::vector<Surface> surfaces;
+};
+
+}  // namespace ps

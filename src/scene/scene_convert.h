@@ -1,0 +1,27 @@
+// Converters from the TOML tables of a scene file to the Scene model (internal to ps_scene).
+#pragma once
+
+#include <toml++/toml.h>
+
+#include "core/result.h"
+#include "scene/scene.h"
+#include "scene/scene_reader.h"
+
+namespace ps::scene_detail {
+
+// Each converter checks unknown keys, reads every known key (absent keys keep the defaults of
+// scene.h) and validates ranges. `table` may be null (section absent).
+Status read_camera(const ParseContext& ctx, const toml::table* table, Camera& out);
+Status read_light(const ParseContext& ctx, const toml::table* table, Light& out);
+Status read_probe(const ParseContext& ctx, const toml::table* table, Probe& out);
+Status read_render(const ParseContext& ctx, const toml::table* table, RenderSettings& out);
+Status read_material(const ParseContext& ctx, const toml::table& table, const std::string& name,
+                     Material& out);
+// `material_names` resolves Surface::material to Surface::material_index.
+Status read_surface(const ParseContext& ctx, const toml::table& table, int index,
+                    const std::vector<std::string>& material_names, Surface& out);
+
+// Applies one "KEY=VALUE" override to the parsed document and records it in ctx.overridden.
+Status apply_override(toml::table& root, const std::string& text, ParseContext& ctx);
+
+}  // namespace ps::scene_detail

@@ -1,0 +1,144 @@
+// parse_scene / load_scene: TOML text -> overrides -> section converters -> Scene.
+#include "scene/scene_io.h"
+
+#include <algorithm>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+#include "scene/scene_convert.h"
+
+namespace ps {
+namespace {
+
+using scene_detail::ParseContext;
+
+std::string line_of(const ParseContext& ctx, const toml::node& node) {
+  const auto line = std::max<long>(1, static_cast<long>(node.source().begin.line));
+  return ctx.source_name + ":" + std::to_string(line);
+}
+
+// A section that is present must be a table; an absent one keeps the defaults.
+Result<const toml::table*> section(const ParseContext& ctx, const toml::table& root,
+                                   std::string_view name) {
+  const toml::node* node = root.get(name);
+  if (!node) return static_cast<const toml::table*>(nullptr);
+  if (!node->is_table()) {
+    return make_error(line_of(ctx, *node) + ": '" + std::string(name) + "' must be a table");
+  }
+  return node->as_table();
+}
+
+// Materials in file order (toml++ keeps keys sorted); ones added by --set go last.
+Status read_materials(const ParseContext& ctx, const toml::table& root, Scene& scene) {
+  Result<const toml::table*> table = section(ctx, root, "materials");
+  if (!table) return table.error();
+  if (!*table || (*table)->empty()) {
+    return make_error(ctx.source_name + ":1: the scene defines no materials; add at least one "
+                      "[materials.NAME] table");
+  }
+  std::vector<std::pair<std::string, const toml::table*>> entries;
+  for (const auto& [name, node] : **table) {
+    if (!node.is_table()) {
+      return make_error(line_of(ctx, node) + ": 'materials." + std::string(name.str()) +
+                        "' must be a table ([materials." + std::string(name.str()) + "])");
+    }
+    entries.emplace_back(std::string(name.str()), node.as_table());
+  }
+  auto order = [](const toml::table* t) {
+    const auto line = t->source().begin.line;
+    return line == 0 ? ~0u : line;
+  };
+  std::stable_sort(entries.begin(), entries.end(),
+                   [&](const auto& a, const auto& b) { return order(a.second) < order(b.second); });
+  for (const auto& [name, t] : entries) {
+    Material material;
+    if (Status s = scene_detail::read_material(ctx, *t, name, material); !s) return s;
+    scene.materials.push_back(std::move(material));
+  }
+  return ok_status();
+}
+
+Status read_surfaces(const ParseContext& ctx, const toml::table& root, Scene& scene) {
+  const toml::node* node = root.get("surfaces");
+  if (!node || (node->is_array() && node->as_array()->empty())) {
+    return make_error(ctx.source_name + ":1: the scene defines no surfaces; add at least one "
+                      "[[surfaces]] table");
+  }
+  const toml::array* array = node->as_array();
+  if (!array || !array->is_array_of_tables()) {
+    return make_error(line_of(ctx, *node) + ": 'surfaces' must be an array of tables "
+                      "([[surfaces]])");
+  }
+  std::vector<std::string> names;
+  for (const Material& m : scene.materials) names.push_back(m.name);
+  for (std::size_t i = 0; i < array->size(); ++i) {
+    Surface surface;
+    Status s = scene_detail::read_surface(ctx, *(*array)[i].as_table(), static_cast<int>(i),
+                                          names, surface);
+    if (!s) return s;
+    scene.surfaces.push_back(std::move(surface));
+  }
+  return ok_status();
+}
+
+Status read_sections(const ParseContext& ctx, const toml::table& root, Scene& scene) {
+  scene_detail::TableReader top(ctx, &root, scene_detail::Section::kRoot, "", "the scene");
+  top.check_unknown_keys();
+  if (!top.ok()) return top.status();
+  Result<const toml::table*> camera = section(ctx, root, "camera");
+  Result<const toml::table*> light = section(ctx, root, "light");
+  Result<const toml::table*> probe = section(ctx, root, "probe");
+  Result<const toml::table*> render = section(ctx, root, "render");
+  for (const auto* r : {&camera, &light, &probe, &render}) {
+    if (!*r) return r->error();
+  }
+  if (Status s = scene_detail::read_camera(ctx, *camera, scene.camera); !s) return s;
+  if (Status s = scene_detail::read_light(ctx, *light, scene.light); !s) return s;
+  if (Status s = scene_detail::read_probe(ctx, *probe, scene.probe); !s) return s;
+  if (Status s = scene_detail::read_render(ctx, *render, scene.render); !s) return s;
+  if (Status s = read_materials(ctx, root, scene); !s) return s;
+  return read_surfaces(ctx, root, scene);
+}
+
+}  // namespace
+
+Result<Scene> parse_scene(std::string_view text, const std::string& source_name,
+                          const std::string& base_dir,
+                          const std::vector<std::string>& overrides) {
+  ParseContext ctx{source_name, base_dir, {}};
+  toml::table root;
+  try {
+    root = toml::parse(text, source_name);
+  } catch (const toml::parse_error& e) {
+    const auto line = std::max<long>(1, static_cast<long>(e.source().begin.line));
+    return make_error(source_name + ":" + std::to_string(line) + ": syntax error: " +
+                      std::string(e.description()));
+  }
+  for (const std::string& o : overrides) {
+    if (Status s = scene_detail::apply_override(root, o, ctx); !s) return s.error();
+  }
+  Scene scene;
+  scene.path = source_name;
+  if (Status s = read_sections(ctx, root, scene); !s) return s.error();
+  return scene;
+}
+
+Result<Scene> load_scene(const std::string& path, const std::vector<std::string>& overrides) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) {
+    std::error_code ec;
+    const bool exists = std::filesystem::exists(path, ec);
+    return make_error(path + ": cannot open scene file: " +
+                      (exists ? "permission denied or not a file" : "no such file"));
+  }
+  std::ostringstream text;
+  text << in.rdbuf();
+  const std::string base_dir =
+      std::filesystem::absolute(std::filesystem::path(path)).parent_path().string();
+  return parse_scene(text.str(), path, base_dir, overrides);
+}
+
+std::string default_scene_base_dir() { return PS_DEFAULT_SCENE_BASE_DIR; }
+
+}  // namespace ps

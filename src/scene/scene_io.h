@@ -1,0 +1,35 @@
+// Scene files: TOML (toml++), human-edited with comments; format in docs/scene-format.md.
+#pragma once
+
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "core/result.h"
+#include "scene/scene.h"
+
+namespace ps {
+
+// Parses scene text. `source_name` is used in messages ("<source_name>:<line>: what").
+// Relative file references (meshes, textures) resolve against `base_dir`.
+// `overrides` are "KEY=VALUE" strings (the CLI's --set), applied before validation; VALUE is a
+// TOML value (number, string in quotes or bare word, array like [1,2,3]).
+// Errors: syntax -> "file:line: ..."; unknown key -> "file:line: unknown key 'x' in [t]; did you
+// mean 'y'?"; unknown --set key -> "--set a.b.c: unknown key; close matches: ...";
+// bad values (NaN, negative radius, ...) -> "file:line: ...".
+Result<Scene> parse_scene(std::string_view text, const std::string& source_name,
+                          const std::string& base_dir,
+                          const std::vector<std::string>& overrides = {});
+
+// Reads `path` and parses it (missing file -> "path: cannot open scene file: <reason>").
+Result<Scene> load_scene(const std::string& path, const std::vector<std::string>& overrides = {});
+
+// The embedded copy of scenes/default.toml (compiled in so `render` works with no --scene).
+std::string_view default_scene_text();
+
+// Base dir for the relative paths of default_scene_text(): the source tree's scenes/ dir,
+// fixed at build time (compile definition PS_DEFAULT_SCENE_BASE_DIR). Parse the embedded scene
+// with parse_scene(default_scene_text(), "<embedded default>", default_scene_base_dir(), sets).
+std::string default_scene_base_dir();
+
+}  // namespace ps

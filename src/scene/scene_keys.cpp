@@ -1,0 +1,101 @@
+#include "scene/scene_keys.h"
+
+#include <algorithm>
+#include <array>
+#include <cassert>
+#include <numeric>
+#include <utility>
+
+namespace ps::scene_detail {
+namespace {
+
+using std::string_view_literals::operator""sv;
+
+constexpr std::array kRootKeys = {"camera"sv, "light"sv, "probe"sv, "render"sv, "materials"sv,
+                                  "surfaces"sv};
+constexpr std::array kCameraKeys = {"projection"sv, "position"sv,        "target"sv, "up"sv,
+                                    "fov_y_deg"sv,  "ortho_height_mm"sv, "near_mm"sv, "far_mm"sv};
+constexpr std::array kLightKeys = {"direction"sv, "color"sv, "ambient"sv};
+constexpr std::array kProbeKeys = {"shape"sv,     "radius_mm"sv,  "length_mm"sv,
+                                   "axis"sv,      "mesh_file"sv,  "mesh_scale"sv,
+                                   "position"sv,  "velocity"sv};
+constexpr std::array kRenderKeys = {"size"sv,         "frames"sv,          "depth_map_size"sv,
+                                    "background"sv,   "displacement"sv,    "weight_exponent"sv,
+                                    "seed"sv};
+constexpr std::array kMaterialKeys = {
+    "albedo"sv,          "albedo_texture"sv,        "albedo_texture_scale_mm"sv,
+    "textured"sv,        "a_min"sv,                 "a_max"sv,
+    "lambda_min"sv,      "lambda_max"sv,            "theta_min"sv,
+    "theta_max"sv,       "n_min"sv,                 "n_max"sv,
+    "kernel_periods"sv,  "truncation"sv,            "max_impulses_per_cell"sv,
+    "onset_distance_mm"sv, "influence_distance_mm"sv, "intensity_floor"sv,
+    "intensity_scale"sv, "intensity_offset_mm"sv,   "resistance"sv,
+    "peak_hz"sv,         "bandwidth_hz"sv};
+constexpr std::array kSurfaceKeys = {"type"sv,      "material"sv,        "center"sv,
+                                     "rotation_deg"sv, "size_mm"sv,      "radius_mm"sv,
+                                     "minor_radius_mm"sv, "heightmap"sv, "height_mm"sv,
+                                     "mesh_file"sv, "scale"sv,           "resolution"sv};
+
+}  // namespace
+
+std::span<const std::string_view> known_keys(Section section) {
+  switch (section) {
+    case Section::kRoot: return kRootKeys;
+    case Section::kCamera: return kCameraKeys;
+    case Section::kLight: return kLightKeys;
+    case Section::kProbe: return kProbeKeys;
+    case Section::kRender: return kRenderKeys;
+    case Section::kMaterial: return kMaterialKeys;
+    case Section::kSurface: return kSurfaceKeys;
+  }
+  assert(false && "known_keys: unhandled Section");
+  return {};
+}
+
+std::size_t edit_distance(std::string_view a, std::string_view b) {
+  std::vector<std::size_t> row(b.size() + 1);
+  std::iota(row.begin(), row.end(), std::size_t{0});
+  for (std::size_t i = 1; i <= a.size(); ++i) {
+    std::size_t diagonal = row[0];
+    row[0] = i;
+    for (std::size_t j = 1; j <= b.size(); ++j) {
+      const std::size_t up = row[j];
+      const std::size_t substitute = diagonal + (a[i - 1] == b[j - 1] ? 0 : 1);
+      row[j] = std::min({row[j] + 1, row[j - 1] + 1, substitute});
+      diagonal = up;
+    }
+  }
+  return row[b.size()];
+}
+
+std::vector<std::string_view> close_matches(std::string_view key,
+                                            std::span<const std::string_view> candidates) {
+  // A third of the key's length (at least 2) catches typos without suggesting unrelated keys;
+  // a key missing only its unit suffix ("radius" for "radius_mm") counts as one edit.
+  const std::size_t limit = std::max<std::size_t>(2, key.size() / 3);
+  std::vector<std::pair<std::size_t, std::string_view>> scored;
+  for (std::string_view c : candidates) {
+    const bool prefix = key.size() >= 3 && (c.starts_with(key) || key.starts_with(c));
+    const std::size_t d = prefix ? 1 : edit_distance(key, c);
+    if (d <= limit) scored.emplace_back(d, c);
+  }
+  std::stable_sort(scored.begin(), scored.end(),
+                   [](const auto& x, const auto& y) { return x.first < y.first; });
+  // Only the best-scoring candidates: "lamda_min" suggests lambda_min, not also lambda_max.
+  std::vector<std::string_view> out;
+  for (std::size_t i = 0; i < scored.size() && i < 3 && scored[i].first == scored[0].first; ++i) {
+    out.push_back(scored[i].second);
+  }
+  return out;
+}
+
+std::string join(std::span<const std::string_view> items, std::string_view separator) {
+  std::string out;
+  for (std::size_t i = 0; i < items.size(); ++i) {
+    if (i > 0) out += separator;
+    out += items[i];
+  }
+  return out;
+}
+
+}  // namespace ps::scene_detail

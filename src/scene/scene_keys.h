@@ -1,0 +1,28 @@
+// Known keys of every scene table, plus the "did you mean" helpers built on them.
+// This is the ONE list of key names: the converter's TableReader asserts that every key it
+// reads is listed here and that every listed key was read, and the unknown-key check and the
+// --set path check use the same list, so the three cannot drift apart.
+#pragma once
+
+#include <span>
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace ps::scene_detail {
+
+enum class Section { kRoot, kCamera, kLight, kProbe, kRender, kMaterial, kSurface };
+
+std::span<const std::string_view> known_keys(Section section);
+
+// Levenshtein distance (insert, delete, substitute all cost 1).
+std::size_t edit_distance(std::string_view a, std::string_view b);
+
+// The candidates closest to `key` (ties, at most 3) if within a small edit distance.
+std::vector<std::string_view> close_matches(std::string_view key,
+                                            std::span<const std::string_view> candidates);
+
+// "a, b, c"
+std::string join(std::span<const std::string_view> items, std::string_view separator = ", ");
+
+}  // namespace ps::scene_detail

@@ -1,0 +1,105 @@
+# One golden-image case, run by CTest as a script:
+#
+#   cmake -DEXE=<pseudoshadow> -DSCENE=<scene file> -DBACKEND=egl|osmesa -DSIZE=128x128 -DFRAMES=3
+#         -DGOLDEN=<golden_images/x.png> -DOUT_DIR=<dir> [-DFAIL=<T>] [-DFAILPERCENT=<P>]
+#         [-DEXTRA_ARGS=<args>] -P run_golden.cmake
+#
+# 1. renders the scene to OUT_DIR/<name>.actual.png (<name> = GOLDEN's file name minus extension);
+# 2. UPDATE_GOLDEN=1 in the environment: copies the actual image over GOLDEN (only if its pixels
+#    differ: OIIO stamps a DateTime into every file, so rewriting identical goldens would only churn
+#    git) and passes. Goldens change in their own commit, saying why;
+# 3. otherwise compares GOLDEN (A) with the actual image (B) through `${EXE} compare`. Pass: the
+#    actual and diff images are deleted. Fail: both are kept and named in the message.
+# FAIL (max channel difference of a passing pixel, [0,1] scale) and FAILPERCENT (allowed % of
+# failing pixels) default to compare's own defaults (1/255 and 0) when not given. EXTRA_ARGS is a
+# CMake list ("--seed;3") or, without semicolons, a shell-style string ("--seed 3").
+cmake_minimum_required(VERSION 3.25)
+
+foreach(_var EXE SCENE BACKEND SIZE FRAMES GOLDEN OUT_DIR)
+  if(NOT DEFINED ${_var} OR "${${_var}}" STREQUAL "")
+    message(FATAL_ERROR "run_golden.cmake: -D${_var}=... is required")
+  endif()
+endforeach()
+
+get_filename_component(_name "${GOLDEN}" NAME_WLE)
+
+# Prints the details verbatim (FATAL_ERROR text is re-wrapped by CMake, which mangles logs and
+# paths), then fails the test with a short line. Takes ONE quoted argument: ARGN would split the
+# text at its semicolons.
+function(golden_fail text)
+  message(NOTICE "${text}")
+  message(FATAL_ERROR "golden ${_name}: FAILED")
+endfunction()
+set(_actual "${OUT_DIR}/${_name}.actual.png")
+set(_diff "${OUT_DIR}/${_name}.diff.png")
+file(MAKE_DIRECTORY "${OUT_DIR}")
+file(REMOVE "${_actual}" "${_diff}")  # a stale image from an earlier run must never be compared
+
+set(_extra "${EXTRA_ARGS}")
+if(NOT "${EXTRA_ARGS}" MATCHES ";")
+  separate_arguments(_extra UNIX_COMMAND "${EXTRA_ARGS}")
+endif()
+set(_limits "")
+if(DEFINED FAIL AND NOT "${FAIL}" STREQUAL "")
+  list(APPEND _limits --fail "${FAIL}")
+endif()
+if(DEFINED FAILPERCENT AND NOT "${FAILPERCENT}" STREQUAL "")
+  list(APPEND _limits --failpercent "${FAILPERCENT}")
+endif()
+
+# ---- 1. render ----
+set(_render_cmd "${EXE}" render --scene "${SCENE}" --backend "${BACKEND}" --size "${SIZE}"
+    --frames "${FRAMES}" --out "${_actual}" ${_extra})
+execute_process(COMMAND ${_render_cmd} RESULT_VARIABLE _rc OUTPUT_VARIABLE _out ERROR_VARIABLE _out)
+if(NOT _rc STREQUAL "0")
+  list(JOIN _render_cmd " " _cmd_text)
+  golden_fail("golden ${_name}: render failed (exit ${_rc})\n  command: ${_cmd_text}\n${_out}")
+endif()
+if(NOT EXISTS "${_actual}")
+  golden_fail("golden ${_name}: render exited 0 but wrote no image at ${_actual}\n${_out}")
+endif()
+
+# Runs `${EXE} compare GOLDEN actual <args>`; sets _cmp_rc and _cmp_out in the caller.
+macro(run_compare)
+  execute_process(COMMAND "${EXE}" compare "${GOLDEN}" "${_actual}" ${ARGN}
+                  RESULT_VARIABLE _cmp_rc OUTPUT_VARIABLE _cmp_out ERROR_VARIABLE _cmp_out)
+  string(STRIP "${_cmp_out}" _cmp_out)
+endmacro()
+
+# ---- 2. regenerate on request only ----
+if("$ENV{UPDATE_GOLDEN}" STREQUAL "1")
+  if(EXISTS "${GOLDEN}")
+    run_compare(--fail 0 --failpercent 0)
+    if(_cmp_rc STREQUAL "0")
+      file(REMOVE "${_actual}")
+      message("golden unchanged: ${GOLDEN} (pixels identical; file left as is)")
+      return()
+    endif()
+  endif()
+  get_filename_component(_golden_dir "${GOLDEN}" DIRECTORY)
+  file(MAKE_DIRECTORY "${_golden_dir}")
+  file(COPY_FILE "${_actual}" "${GOLDEN}")
+  file(REMOVE "${_actual}")
+  message("golden updated: ${GOLDEN} (commit it with a message saying why)")
+  return()
+endif()
+
+if(NOT EXISTS "${GOLDEN}")
+  golden_fail("missing golden ${GOLDEN}; run with UPDATE_GOLDEN=1 to create it\n\
+  (the image just rendered is ${_actual})")
+endif()
+
+# ---- 3. compare ----
+run_compare(${_limits} --diff "${_diff}")
+if(_cmp_rc STREQUAL "0")
+  file(REMOVE "${_actual}" "${_diff}")
+  message("golden ${_name}: ${_cmp_out}")
+elseif(_cmp_rc STREQUAL "1")
+  golden_fail("golden ${_name} differs: ${_cmp_out}
+  golden: ${GOLDEN}
+  actual: ${_actual}
+  diff:   ${_diff} (|golden-actual| x10)
+  If the change is intended, rerun with UPDATE_GOLDEN=1 and commit the new golden with a message saying why.")
+else()
+  golden_fail("golden ${_name}: compare error (exit ${_cmp_rc}): ${_cmp_out}")
+endif()

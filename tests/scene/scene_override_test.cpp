@@ -1,0 +1,94 @@
+// --set KEY=VALUE overrides: present and absent keys, typos, validation under "--set KEY".
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "scene_test_util.h"
+
+namespace ps {
+namespace {
+
+using test::error_of;
+using test::parse;
+
+const std::string kScene = std::string(test::kMinimalScene) + R"(
+[probe]
+radius_mm = 8
+[[surfaces]]
+type = "sphere"
+material = "wood"
+radius_mm = 20
+)";
+
+TEST(SceneOverrideTest, OverridesPresentKeys) {
+  Result<Scene> scene = parse(kScene, {"materials.wood.lambda_min=0.4", "probe.radius_mm=12",
+                                       "surfaces.1.radius_mm=30"});
+  ASSERT_TRUE(scene) << scene.error().message;
+  EXPECT_EQ(scene->materials[0].gabor.lambda_min_mm, 0.4);
+  EXPECT_EQ(scene->probe.radius_mm, 12.0);
+  EXPECT_EQ(scene->surfaces[1].radius_mm, 30.0);
+}
+
+TEST(SceneOverrideTest, OverridesKeysTheFileOmitted) {
+  Result<Scene> scene =
+      parse(kScene, {"probe.position=[0,0,5]", "render.displacement=exact_max",
+                     "camera.projection=\"orthographic\"", "materials.wood.theta_max=90",
+                     "materials.wood.textured=false", "surfaces.0.size_mm=[50, 60]",
+                     "render.size = [320, 240]"});
+  ASSERT_TRUE(scene) << scene.error().message;
+  EXPECT_EQ(scene->probe.position, glm::dvec3(0, 0, 5));
+  EXPECT_EQ(scene->render.displacement, DisplacementMethod::kExactMax);
+  EXPECT_EQ(scene->camera.projection, Projection::kOrthographic);
+  EXPECT_NEAR(scene->materials[0].gabor.theta_max_rad, M_PI / 2.0, 1e-12);
+  EXPECT_FALSE(scene->materials[0].textured);
+  EXPECT_EQ(scene->surfaces[0].size_mm, glm::dvec2(50, 60));
+  EXPECT_EQ(scene->render.width, 320);
+}
+
+TEST(SceneOverrideTest, CanAddAMaterial) {
+  Result<Scene> scene = parse(kScene, {"materials.felt.lambda_min=0.2",
+                                       "surfaces.1.material=felt"});
+  ASSERT_TRUE(scene) << scene.error().message;
+  ASSERT_EQ(scene->materials.size(), 2u);
+  EXPECT_EQ(scene->materials[1].name, "felt");
+  EXPECT_EQ(scene->surfaces[1].material_index, 1);
+}
+
+TEST(SceneOverrideTest, UnknownKeyListsCloseMatches) {
+  EXPECT_EQ(error_of(kScene, {"materials.wood.lamda_min=0.4"}),
+            "--set materials.wood.lamda_min: unknown key; close matches: lambda_min");
+  EXPECT_EQ(error_of(kScene, {"probe.radius=3"}),
+            "--set probe.radius: unknown key; close matches: radius_mm");
+  EXPECT_EQ(error_of(kScene, {"camra.fov_y_deg=3"}),
+            "--set camra.fov_y_deg: unknown key; close matches: camera");
+  EXPECT_EQ(error_of(kScene, {"light.xyz=1"}),
+            "--set light.xyz: unknown key; known keys: direction, color, ambient");
+}
+
+TEST(SceneOverrideTest, BadValuesNameTheOverrideNotTheFile) {
+  EXPECT_EQ(error_of(kScene, {"probe.radius_mm=-1"}),
+            "--set probe.radius_mm: 'radius_mm' must be in (0, 100000] (got -1)");
+  EXPECT_EQ(error_of(kScene, {"materials.wood.lambda_min=nan"}),
+            "--set materials.wood.lambda_min: 'lambda_min' must be finite (got nan)");
+  EXPECT_EQ(error_of(kScene, {"render.displacement=fastest"}),
+            "--set render.displacement: 'displacement' must be one of weighted_average, "
+            "exact_max (got 'fastest')");
+  EXPECT_EQ(error_of(kScene, {"probe.position=[0,0]"}),
+            "--set probe.position: 'position' must be an array of 3 numbers (got 2 elements)");
+  EXPECT_EQ(error_of(kScene, {"surfaces.1.material=cork"}),
+            "--set surfaces.1.material: 'material' names unknown material 'cork'; defined "
+            "materials: wood");
+}
+
+TEST(SceneOverrideTest, MalformedOverrides) {
+  EXPECT_EQ(error_of(kScene, {"probe.radius_mm"}),
+            "--set probe.radius_mm: expected KEY=VALUE (e.g. probe.radius_mm=10)");
+  EXPECT_EQ(error_of(kScene, {"surfaces.7.radius_mm=3"}),
+            "--set surfaces.7.radius_mm: no surface '7' (the scene has 2 surfaces, numbered "
+            "from 0)");
+  EXPECT_EQ(error_of(kScene, {"materials.lambda_min=3"}),
+            "--set materials.lambda_min: expected materials.NAME.KEY=VALUE");
+}
+
+}  // namespace
+}  // namespace ps
