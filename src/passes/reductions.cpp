@@ -15,20 +15,21 @@ glm::dvec4 read_top_level(const gl::Texture& texture, int levels) {
 Status ReductionsPass::init(const std::string& glsl_root, const SurfacePass& surface) {
   auto max = gl::build_program({{"max_penetration.comp"}, {}}, glsl_root);
   if (!max) return max.error();
-  auto weights = gl::build_program({{"displacement_weights.comp"}, {}}, glsl_root);
+  auto weights = gl::build_program({{"displacement_weights.vert", "displacement_weights.frag"}, {}}, glsl_root);
   if (!weights) return weights.error();
   max_ = std::move(max.value());
   weights_ = std::move(weights.value());
   const glm::ivec2 p = surface.padded_size();
   displacement_ = gl::make_texture_2d(p.x, p.y, GL_RGBA32F, surface.mip_levels());
+  displacement_fbo_ = gl::make_framebuffer();
+  glNamedFramebufferTexture(displacement_fbo_.id(), GL_COLOR_ATTACHMENT0, displacement_.id(), 0);
+  if (glCheckNamedFramebufferStatus(displacement_fbo_.id(), GL_FRAMEBUFFER) != GL_FRAMEBUFFER_COMPLETE)
+    return make_error("reductions: displacement framebuffer incomplete (RGBA32F)");
+  empty_vao_ = gl::make_vertex_array();
   ubo_ = gl::make_buffer(sizeof(ReduceBlock), nullptr, GL_DYNAMIC_STORAGE_BIT);
   ssbo_ = gl::make_buffer(sizeof(MaxBlock), nullptr, GL_DYNAMIC_STORAGE_BIT);
   return ok_status();
 }
-
-namespace {
-GLuint groups(int n) { return static_cast<GLuint>((n + 15) / 16); }
-}  // namespace
 
 ReductionResult ReductionsPass::run(const SurfacePass& surface, const Params& params, bool shadow) {
   ReductionResult r;
@@ -51,13 +52,17 @@ ReductionResult ReductionsPass::run(const SurfacePass& surface, const Params& pa
   glBindTextureUnit(1, surface.normal().id());
 
   glUseProgram(max_.id());
-  glDispatchCompute(groups(surface.width()), groups(surface.height()), 1);
-  glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
+  glDispatchCompute(static_cast<GLuint>((surface.height() + 63) / 64), 1, 1);  // one invocation per row
+  glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_BUFFER_UPDATE_BARRIER_BIT);
+
+  glBindFramebuffer(GL_FRAMEBUFFER, displacement_fbo_.id());
+  glViewport(0, 0, p.x, p.y);
+  glDisable(GL_DEPTH_TEST);
+  glDisable(GL_SCISSOR_TEST);
+  glDisable(GL_BLEND);
   glUseProgram(weights_.id());
-  glBindImageTexture(0, displacement_.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA32F);
-  glDispatchCompute(groups(p.x), groups(p.y), 1);
-  glMemoryBarrier(GL_TEXTURE_UPDATE_BARRIER_BIT | GL_TEXTURE_FETCH_BARRIER_BIT |
-                  GL_BUFFER_UPDATE_BARRIER_BIT);
+  glBindVertexArray(empty_vao_.id());
+  glDrawArrays(GL_TRIANGLES, 0, 3);
   glGenerateTextureMipmap(displacement_.id());
 
   const glm::dvec4 d = read_top_level(displacement_, levels);

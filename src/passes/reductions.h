@@ -2,7 +2,7 @@
 //   - reference normal: mean of the visible normals = top mip of the normal target (xyz / w);
 //   - exact maximum penetration (compute, glsl/max_penetration.comp): max of -d, and of
 //     resistance * -d, over every pseudo-shadow fragment;
-//   - weighted-average displacement (thesis §4.5.4): glsl/displacement_weights.comp writes
+//   - weighted-average displacement (thesis §4.5.4): glsl/displacement_weights.{vert,frag} write
 //     (w * disp, w) into displacement() (RGBA32F, padded power of two, full mip chain) and the
 //     top mip gives average(w * disp) / average(w).
 // Power-of-two RGBA32F only: llvmpipe's mipmap is then the exact mean (ENVIRONMENT.md).
@@ -57,6 +57,8 @@ struct ReductionsPass {
  private:
   gl::Program max_, weights_;
   gl::Texture displacement_;
+  gl::Framebuffer displacement_fbo_;
+  gl::VertexArray empty_vao_;  // core profile draws need a bound VAO
   gl::Buffer ubo_, ssbo_;
 };
 

@@ -77,6 +77,9 @@ Result<std::unique_ptr<Renderer>> Renderer::create(const Scene& scene, const Ren
   r->frame_ = make_plane_frame(toward_viewer(scene.camera));
   if (Status s = r->load_scene_resources(); !s) return s.error();
   if (Status s = r->init_passes(); !s) return s.error();
+  if (options.prime_reference_plane) {
+    if (Status s = r->prime_reference_plane(); !s) return s.error();
+  }
   r->stats_.reference_normal = r->frame_.n;
   r->stats_.probe_position = scene.probe.position;
   return r;
@@ -114,6 +117,19 @@ Status Renderer::init_passes() {
   if (Status s = probe_depth_.init(options_.glsl_root, {rs.depth_map_size}); !s) return s;
   if (Status s = surface_.init(options_.glsl_root, {rs.width, rs.height}); !s) return s;
   return reductions_.init(options_.glsl_root, surface_);
+}
+
+Status Renderer::prime_reference_plane() {
+  FramePlan plan = make_plan(scene_, surface_bounds_, current_probe_bounds(), frame_,
+                             scene_.render.depth_map_size);
+  plan.surface_shadow.assign(plan.surface_shadow.size(), false);
+  plan.surface_textured.assign(plan.surface_textured.size(), false);
+  if (Status s = surface_.run(surface_draws(plan), nullptr, scene_.render.background); !s) return s;
+  const ReductionResult r = reductions_.run(surface_, {scene_.render.weight_exponent}, false);
+  const double len = glm::length(r.normal_sum);
+  if (len > 1e-6 * std::max(r.normal_coverage, 1e-30) && std::isfinite(len))
+    frame_ = make_plane_frame(r.normal_sum / len);
+  return ok_status();
 }
 
 void Renderer::set_probe_state(const glm::dvec3& position, const glm::dvec3& velocity) {

@@ -24,6 +24,11 @@ struct RendererOptions {
   std::string glsl_root;          // empty: gl::default_glsl_root()
   bool time_passes = true;        // glFinish around passes for per-pass wall times
   double contrast_sigmas = 2.5;   // texture display contrast (see SurfaceFrame)
+  // The thesis starts the reference plane facing the viewer and lets it converge over the
+  // following frames; a headless render of one frame would then measure distances along the
+  // view direction. Priming runs one shadow-free surface pass + normal reduction at creation
+  // so the first frame already uses the mean visible normal. false = thesis behaviour.
+  bool prime_reference_plane = true;
 };
 
 struct FrameStats {
@@ -57,6 +62,7 @@ class Renderer {
   Renderer() = default;
   Status load_scene_resources();
   Status init_passes();
+  Status prime_reference_plane();
   BoundingSphere current_probe_bounds() const;
   std::vector<SurfaceDraw> surface_draws(const FramePlan& plan);
   void apply_reductions(const ReductionResult& r, const FramePlan& plan);
