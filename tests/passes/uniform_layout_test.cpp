@@ -1,0 +1,106 @@
+// Each pass's std140 uniform block in GLSL must match the C++ struct that fills it, member by
+// member. glslang's reflection gives the GLSL offsets without a GL context (STYLE.md item 4).
+#include <cstddef>
+#include <map>
+#include <memory>
+#include <string>
+
+#include <glslang/Public/ResourceLimits.h>
+#include <glslang/Public/ShaderLang.h>
+#include <gtest/gtest.h>
+
+#include "gl/shader.h"
+#include "passes/probe_depth.h"
+#include "passes/reductions.h"
+#include "passes/surface.h"
+
+namespace ps {
+namespace {
+
+class GlslangProcess : public ::testing::Environment {
+ public:
+  void SetUp() override { glslang::InitializeProcess(); }
+  void TearDown() override { glslang::FinalizeProcess(); }
+};
+const auto* const kEnv = ::testing::AddGlobalTestEnvironment(new GlslangProcess);
+
+// Offsets of every uniform-block member of `file` (a fragment or compute shader), by name.
+std::map<std::string, int> block_offsets(const std::string& file, EShLanguage stage) {
+  auto src = gl::preprocess_shader(std::string(PS_SOURCE_DIR) + "/glsl/" + file, {},
+                                   std::string(PS_SOURCE_DIR) + "/glsl");
+  EXPECT_TRUE(src.ok()) << (src.ok() ? "" : src.error().message);
+  if (!src.ok()) return {};
+  glslang::TShader shader(stage);
+  const char* text = src->text.c_str();
+  shader.setStrings(&text, 1);
+  shader.setEnvInput(glslang::EShSourceGlsl, stage, glslang::EShClientOpenGL, 450);
+  shader.setEnvClient(glslang::EShClientOpenGL, glslang::EShTargetOpenGL_450);
+  shader.setAutoMapLocations(true);
+  shader.setAutoMapBindings(true);
+  EXPECT_TRUE(shader.parse(GetDefaultResources(), 450, false, EShMsgDefault)) << shader.getInfoLog();
+  glslang::TProgram program;
+  program.addShader(&shader);
+  EXPECT_TRUE(program.link(EShMsgDefault)) << program.getInfoLog();
+  // All members, also those the shader does not read (the layout covers them all).
+  EXPECT_TRUE(program.buildReflection(EShReflectionAllBlockVariables));
+  std::map<std::string, int> out;
+  for (int i = 0; i < program.getNumUniformVariables(); ++i) {
+    const glslang::TObjectReflection& u = program.getUniform(i);
+    if (u.offset >= 0) out[u.name] = u.offset;
+  }
+  for (int i = 0; i < program.getNumBufferVariables(); ++i) {  // std430 storage blocks
+    const glslang::TObjectReflection& b = program.getBufferVariable(i);
+    if (b.offset >= 0) out[b.name] = b.offset;
+  }
+  return out;
+}
+
+#define EXPECT_MEMBER(offsets, glsl_name, Struct, member) \
+  EXPECT_EQ(offsets.at(glsl_name), static_cast<int>(offsetof(Struct, member))) << glsl_name
+
+TEST(UniformLayoutTest, SurfaceBlockMatches) {
+  const auto o = block_offsets("surface.frag", EShLangFragment);
+  ASSERT_FALSE(o.empty());
+  EXPECT_MEMBER(o, "u_view_proj", SurfaceBlock, view_proj);
+  EXPECT_MEMBER(o, "u_light_dir", SurfaceBlock, light_dir);
+  EXPECT_MEMBER(o, "u_light_color", SurfaceBlock, light_color);
+  EXPECT_MEMBER(o, "u_ref_n", SurfaceBlock, ref_n);
+  EXPECT_MEMBER(o, "u_ref_t", SurfaceBlock, ref_t);
+  EXPECT_MEMBER(o, "u_ref_b", SurfaceBlock, ref_b);
+  EXPECT_MEMBER(o, "u_window", SurfaceBlock, window);
+  EXPECT_MEMBER(o, "u_albedo", SurfaceBlock, albedo);
+  EXPECT_MEMBER(o, "u_intensity", SurfaceBlock, intensity);
+  EXPECT_MEMBER(o, "u_gabor_a", SurfaceBlock, gabor_a);
+  EXPECT_MEMBER(o, "u_gabor_b", SurfaceBlock, gabor_b);
+  EXPECT_MEMBER(o, "u_gabor_c", SurfaceBlock, gabor_c);
+  EXPECT_MEMBER(o, "u_modulation", SurfaceBlock, modulation);
+  EXPECT_MEMBER(o, "u_misc", SurfaceBlock, misc);
+  EXPECT_MEMBER(o, "u_seed", SurfaceBlock, seed);
+}
+
+TEST(UniformLayoutTest, ProbeDepthBlockMatches) {
+  const auto o = block_offsets("probe_depth_analytic.frag", EShLangFragment);
+  ASSERT_FALSE(o.empty());
+  EXPECT_MEMBER(o, "u_model", ProbeDepthBlock, model);
+  EXPECT_MEMBER(o, "u_ref_n", ProbeDepthBlock, ref_n);
+  EXPECT_MEMBER(o, "u_ref_t", ProbeDepthBlock, ref_t);
+  EXPECT_MEMBER(o, "u_ref_b", ProbeDepthBlock, ref_b);
+  EXPECT_MEMBER(o, "u_window", ProbeDepthBlock, window);
+  EXPECT_MEMBER(o, "u_cap_a", ProbeDepthBlock, cap_a);
+  EXPECT_MEMBER(o, "u_cap_b", ProbeDepthBlock, cap_b);
+  EXPECT_MEMBER(o, "u_height_range", ProbeDepthBlock, height_range);
+}
+
+TEST(UniformLayoutTest, ReduceBlockMatches) {
+  const auto o = block_offsets("displacement_weights.frag", EShLangFragment);
+  ASSERT_FALSE(o.empty());
+  EXPECT_MEMBER(o, "u_size", ReduceBlock, size);
+  EXPECT_MEMBER(o, "u_params", ReduceBlock, params);
+  EXPECT_MEMBER(o, "max_penetration_bits", MaxBlock, max_penetration_bits);
+  EXPECT_MEMBER(o, "max_resisted_penetration_bits", MaxBlock, max_resisted_penetration_bits);
+  EXPECT_MEMBER(o, "penetrating_fragments", MaxBlock, penetrating_fragments);
+  EXPECT_MEMBER(o, "covered_fragments", MaxBlock, covered_fragments);
+}
+
+}  // namespace
+}  // namespace ps
