@@ -5,6 +5,7 @@
 // time, so a shader that passed the build compiles the same text at run time.
 #pragma once
 
+#include <cstddef>
 #include <map>
 #include <string>
 #include <utility>
@@ -18,6 +19,8 @@ namespace ps::gl {
 using Defines = std::vector<std::pair<std::string, std::string>>;
 
 inline constexpr int kMaxIncludeDepth = 16;
+// Larger shader files are refused (ours are a few KiB; a runaway file must not exhaust memory).
+inline constexpr std::size_t kMaxShaderFileBytes = 1u << 20;
 // Included file i is numbered `#line i*kIncludeLineStride+n i` (source string i AND an offset
 // line): Mesa 22.3 reports source string 0 for most errors inside includes, so the offset is
 // what map_shader_log trusts. Files must stay below this many lines.

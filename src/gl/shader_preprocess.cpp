@@ -31,6 +31,9 @@ Result<std::string> read_file(const fs::path& path) {
   }
   std::ostringstream text;
   text << in.rdbuf();
+  if (text.str().size() > kMaxShaderFileBytes)
+    return make_error(path.string() + ": shader file larger than the limit of " +
+                      std::to_string(kMaxShaderFileBytes) + " bytes");
   return text.str();
 }
 

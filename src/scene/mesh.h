@@ -21,6 +21,8 @@ struct Mesh {
 
 // Hard limit so a hostile file cannot exhaust memory (documented in docs/scene-format.md).
 inline constexpr std::size_t kMaxMeshTriangles = 4'000'000;
+// Mesh files larger than this are refused before assimp reads them.
+inline constexpr std::uintmax_t kMaxMeshFileBytes = 256u << 20;
 
 // World-space mesh of a scene surface (procedural shapes tessellated at surface.resolution;
 // height fields from the grey image; meshes through assimp, transformed by centre/rotation/scale).

@@ -1,6 +1,8 @@
 // load_mesh_file: any format assimp reads (OBJ, PLY, STL, glTF, .blend, ...), all meshes merged.
 #include <cmath>
 
+#include <filesystem>
+
 #include <assimp/Importer.hpp>
 #include <assimp/postprocess.h>
 #include <assimp/scene.h>
@@ -46,6 +48,11 @@ Status append_mesh(const std::string& path, const aiMesh& in, Mesh& out) {
 }  // namespace
 
 Result<Mesh> load_mesh_file(const std::string& path) {
+  std::error_code ec;
+  const std::uintmax_t bytes = std::filesystem::file_size(path, ec);
+  if (!ec && bytes > kMaxMeshFileBytes)
+    return make_error(path + ": cannot load mesh: file is " + std::to_string(bytes) +
+                      " bytes, more than the limit of " + std::to_string(kMaxMeshFileBytes));
   Assimp::Importer importer;
   const aiScene* scene = importer.ReadFile(
       path, aiProcess_Triangulate | aiProcess_GenSmoothNormals |

@@ -125,6 +125,11 @@ Result<Scene> parse_scene(std::string_view text, const std::string& source_name,
 }
 
 Result<Scene> load_scene(const std::string& path, const std::vector<std::string>& overrides) {
+  std::error_code size_ec;
+  const std::uintmax_t bytes = std::filesystem::file_size(path, size_ec);
+  if (!size_ec && bytes > kMaxSceneFileBytes)
+    return make_error(path + ": scene file is " + std::to_string(bytes) + " bytes, more than the limit of " +
+                      std::to_string(kMaxSceneFileBytes));
   std::ifstream in(path, std::ios::binary);
   if (!in) {
     std::error_code ec;

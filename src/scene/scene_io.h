@@ -1,6 +1,7 @@
 // Scene files: TOML (toml++), human-edited with comments; format in docs/scene-format.md.
 #pragma once
 
+#include <cstdint>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -9,6 +10,9 @@
 #include "scene/scene.h"
 
 namespace ps {
+
+// Larger scene files are refused before reading (hand-edited scenes are a few KiB).
+inline constexpr std::uintmax_t kMaxSceneFileBytes = 1u << 20;
 
 // Parses scene text. `source_name` is used in messages ("<source_name>:<line>: what").
 // Relative file references (meshes, textures) resolve against `base_dir`.
