@@ -54,51 +54,69 @@ void print_report(const HapticLoop& loop, double seconds, const std::vector<doub
   std::printf("latency ms (device sample -> frame finished): p50 %.1f  p99 %.1f  max %.1f\n", l.p50, l.p99, l.max);
 }
 
-}  // namespace
-
-int run_bench_haptics(int argc, char** argv) {
-  std::string scene_path, backend_name = "auto", tmp;
-  std::vector<std::string> overrides;
-  double seconds = 5.0;
-  cli::ArgCursor c(argc, argv, 1);
-  while (!c.done()) {
-    std::optional<Result<std::string>> v;
-    if ((v = c.option("--scene"))) { if (*v) scene_path = v->value(); }
-    else if ((v = c.option("--backend"))) { if (*v) backend_name = v->value(); }
-    else if ((v = c.option("--set"))) { if (*v) overrides.push_back(v->value()); }
-    else if ((v = c.option("--seconds"))) { if (*v) seconds = std::strtod(v->value().c_str(), nullptr); }
-    else if (c.flag("-h") || c.flag("--help")) { std::fputs(kBenchHelp, stdout); return 0; }
-    else { std::fprintf(stderr, "pseudoshadow bench-haptics: unknown option '%s'\n", std::string(c.peek()).c_str()); return 2; }
-    if (v && !*v) { std::fprintf(stderr, "pseudoshadow bench-haptics: %s\n", v->error().message.c_str()); return 2; }
-  }
-  if (!(seconds > 0.0 && seconds <= 3600.0)) { std::fputs("pseudoshadow bench-haptics: --seconds in (0, 3600]\n", stderr); return 2; }
-  auto fail = [](const Error& e) { std::fprintf(stderr, "pseudoshadow bench-haptics: %s\n", e.message.c_str()); return 1; };
-  auto scene = scene_path.empty()
-                   ? parse_scene(default_scene_text(), "<built-in default scene>", default_scene_base_dir(), overrides)
-                   : load_scene(scene_path, overrides);
-  if (!scene) return fail(scene.error());
-  auto backend = gl::parse_backend(backend_name);
-  if (!backend) return fail(backend.error());
-  auto ctx = gl::create_context({backend.value()});
-  if (!ctx) return fail(ctx.error());
-  auto renderer = Renderer::create(scene.value(), {});
-  if (!renderer) return fail(renderer.error());
-  LogDevice device(circle_samples(scene->probe.position, seconds + 1.0), true, "synthetic circle");
-  SteadyClock clock;
-  HapticLoop loop(device, clock, HapticLoopParams{});
-  std::vector<double> latency_ms, frame_ms;
+// Renders flat out for `seconds` while the loop runs; per-frame time and latency in ms.
+Status measure(Renderer& renderer, HapticLoop& loop, double seconds, std::vector<double>& latency_ms,
+               std::vector<double>& frame_ms) {
   const auto t0 = std::chrono::steady_clock::now();
   loop.start();
   for (std::uint64_t frame = 0;; ++frame) {
     const auto f0 = std::chrono::steady_clock::now();
     if (std::chrono::duration<double>(f0 - t0).count() >= seconds) break;
     HapticState st;
-    if (Status s = drive_frame(*renderer.value(), loop, frame, st); !s) { loop.stop(); return fail(s.error()); }
+    if (Status s = drive_frame(renderer, loop, frame, st); !s) { loop.stop(); return s; }
     const auto f1 = std::chrono::steady_clock::now();  // render_frame ends with a synchronous readback
     frame_ms.push_back(std::chrono::duration<double, std::milli>(f1 - f0).count());
     if (st.have_sample) latency_ms.push_back(static_cast<double>(f1.time_since_epoch().count() - st.sample_clock_ns) * 1e-6);
   }
   loop.stop();
+  return ok_status();
+}
+
+struct BenchArgs {
+  std::string scene_path, backend = "auto";
+  std::vector<std::string> overrides;
+  double seconds = 5.0;
+};
+
+// 0 = run, 1 = --help printed, 2 = usage error (printed).
+int parse_args(int argc, char** argv, BenchArgs& a) {
+  cli::ArgCursor c(argc, argv, 1);
+  while (!c.done()) {
+    std::optional<Result<std::string>> v;
+    if ((v = c.option("--scene"))) { if (*v) a.scene_path = v->value(); }
+    else if ((v = c.option("--backend"))) { if (*v) a.backend = v->value(); }
+    else if ((v = c.option("--set"))) { if (*v) a.overrides.push_back(v->value()); }
+    else if ((v = c.option("--seconds"))) { if (*v) a.seconds = std::strtod(v->value().c_str(), nullptr); }
+    else if (c.flag("-h") || c.flag("--help")) { std::fputs(kBenchHelp, stdout); return 1; }
+    else { std::fprintf(stderr, "pseudoshadow bench-haptics: unknown option '%s'\n", std::string(c.peek()).c_str()); return 2; }
+    if (v && !*v) { std::fprintf(stderr, "pseudoshadow bench-haptics: %s\n", v->error().message.c_str()); return 2; }
+  }
+  if (!(a.seconds > 0.0 && a.seconds <= 3600.0)) { std::fputs("pseudoshadow bench-haptics: --seconds in (0, 3600]\n", stderr); return 2; }
+  return 0;
+}
+
+}  // namespace
+
+int run_bench_haptics(int argc, char** argv) {
+  BenchArgs a;
+  if (const int r = parse_args(argc, argv, a); r != 0) return r == 1 ? 0 : 2;
+  auto fail = [](const Error& e) { std::fprintf(stderr, "pseudoshadow bench-haptics: %s\n", e.message.c_str()); return 1; };
+  auto scene = a.scene_path.empty()
+                   ? parse_scene(default_scene_text(), "<built-in default scene>", default_scene_base_dir(), a.overrides)
+                   : load_scene(a.scene_path, a.overrides);
+  if (!scene) return fail(scene.error());
+  auto backend = gl::parse_backend(a.backend);
+  if (!backend) return fail(backend.error());
+  auto ctx = gl::create_context({backend.value()});
+  if (!ctx) return fail(ctx.error());
+  auto renderer = Renderer::create(scene.value(), {});
+  if (!renderer) return fail(renderer.error());
+  LogDevice device(circle_samples(scene->probe.position, a.seconds + 1.0), true, "synthetic circle");
+  SteadyClock clock;
+  HapticLoop loop(device, clock, HapticLoopParams{});
+  std::vector<double> latency_ms, frame_ms;
+  const auto t0 = std::chrono::steady_clock::now();
+  if (Status s = measure(*renderer.value(), loop, a.seconds, latency_ms, frame_ms); !s) return fail(s.error());
   const double elapsed = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   std::printf("bench-haptics: %s, %dx%d, %s\n", scene->path.c_str(), scene->render.width, scene->render.height,
               ctx.value()->renderer().c_str());

@@ -95,21 +95,33 @@ Image thumbnail(const Image& im, int width) {
   return t;
 }
 
+struct ReplayGl {  // context first: the renderer's GL objects die before it
+  std::unique_ptr<gl::Context> ctx;
+  std::unique_ptr<Renderer> renderer;
+};
+
+Result<ReplayGl> open_renderer(const ReplayArgs& a) {
+  auto scene = a.scene_path.empty()
+                   ? parse_scene(default_scene_text(), "<built-in default scene>", default_scene_base_dir(), a.overrides)
+                   : load_scene(a.scene_path, a.overrides);
+  if (!scene) return scene.error();
+  auto backend = gl::parse_backend(a.backend);
+  if (!backend) return backend.error();
+  auto ctx = gl::create_context({backend.value()});
+  if (!ctx) return ctx.error();
+  auto renderer = Renderer::create(scene.value(), {});
+  if (!renderer) return renderer.error();
+  return ReplayGl{std::move(ctx.value()), std::move(renderer.value())};
+}
+
 int replay(const ReplayArgs& a) {
   auto fail = [](const Error& e) { std::fprintf(stderr, "pseudoshadow replay: %s\n", e.message.c_str()); return 1; };
   const std::string spec = a.log.find(':') == std::string::npos ? "playback:" + a.log : a.log;
   auto device = open_log_device(spec);
   if (!device) return fail(device.error());
-  auto scene = a.scene_path.empty()
-                   ? parse_scene(default_scene_text(), "<built-in default scene>", default_scene_base_dir(), a.overrides)
-                   : load_scene(a.scene_path, a.overrides);
-  if (!scene) return fail(scene.error());
-  auto backend = gl::parse_backend(a.backend);
-  if (!backend) return fail(backend.error());
-  auto ctx = gl::create_context({backend.value()});
-  if (!ctx) return fail(ctx.error());
-  auto renderer = Renderer::create(scene.value(), {});
-  if (!renderer) return fail(renderer.error());
+  auto gl_state = open_renderer(a);
+  if (!gl_state) return fail(gl_state.error());
+  Renderer* renderer = gl_state->renderer.get();
   ReplayOptions opt;
   opt.fps = a.fps;
   opt.record_path = a.record;
@@ -132,7 +144,7 @@ int replay(const ReplayArgs& a) {
     }
     return ok_status();
   };
-  auto result = replay_session(*renderer.value(), *device.value(), opt, sink);
+  auto result = replay_session(*renderer, *device.value(), opt, sink);
   if (!result) return fail(result.error());
   if (!a.sheet.empty())
     if (Status s = write_image(a.sheet, contact_sheet(thumbs, labels)); !s) return fail(s.error());
