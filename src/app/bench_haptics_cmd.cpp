@@ -26,6 +26,7 @@ options:
   --seconds S        duration (default 5)
   --backend B        auto | egl | osmesa
   --set KEY=VALUE    scene override
+  --realtime PRIO    run the haptic thread SCHED_FIFO at PRIO (1..99; needs CAP_SYS_NICE)
   -h, --help         this text
 )";
 
@@ -76,6 +77,7 @@ struct BenchArgs {
   std::string scene_path, backend = "auto";
   std::vector<std::string> overrides;
   double seconds = 5.0;
+  int realtime = 0;
 };
 
 // 0 = run, 1 = --help printed, 2 = usage error (printed).
@@ -87,6 +89,13 @@ int parse_args(int argc, char** argv, BenchArgs& a) {
     else if ((v = c.option("--backend"))) { if (*v) a.backend = v->value(); }
     else if ((v = c.option("--set"))) { if (*v) a.overrides.push_back(v->value()); }
     else if ((v = c.option("--seconds"))) { if (*v) a.seconds = std::strtod(v->value().c_str(), nullptr); }
+    else if ((v = c.option("--realtime"))) {
+      if (*v) {
+        auto n = cli::parse_int("--realtime", v->value(), 1, 99);
+        if (!n) { std::fprintf(stderr, "pseudoshadow bench-haptics: %s\n", n.error().message.c_str()); return 2; }
+        a.realtime = static_cast<int>(n.value());
+      }
+    }
     else if (c.flag("-h") || c.flag("--help")) { std::fputs(kBenchHelp, stdout); return 1; }
     else { std::fprintf(stderr, "pseudoshadow bench-haptics: unknown option '%s'\n", std::string(c.peek()).c_str()); return 2; }
     if (v && !*v) { std::fprintf(stderr, "pseudoshadow bench-haptics: %s\n", v->error().message.c_str()); return 2; }
@@ -113,13 +122,15 @@ int run_bench_haptics(int argc, char** argv) {
   if (!renderer) return fail(renderer.error());
   LogDevice device(circle_samples(scene->probe.position, a.seconds + 1.0), true, "synthetic circle");
   SteadyClock clock;
-  HapticLoop loop(device, clock, HapticLoopParams{});
+  HapticLoopParams params;
+  params.realtime_priority = a.realtime;
+  HapticLoop loop(device, clock, params);
   std::vector<double> latency_ms, frame_ms;
   const auto t0 = std::chrono::steady_clock::now();
   if (Status s = measure(*renderer.value(), loop, a.seconds, latency_ms, frame_ms); !s) return fail(s.error());
   const double elapsed = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-  std::printf("bench-haptics: %s, %dx%d, %s\n", scene->path.c_str(), scene->render.width, scene->render.height,
-              ctx.value()->renderer().c_str());
+  std::printf("bench-haptics: %s, %dx%d, %s, haptic thread %s\n", scene->path.c_str(), scene->render.width,
+              scene->render.height, ctx.value()->renderer().c_str(), loop.priority().c_str());
   print_report(loop, elapsed, latency_ms, frame_ms);
   return 0;
 }

@@ -1,6 +1,11 @@
 #include "haptics/haptic_loop.h"
 
+#include <pthread.h>
+#include <sched.h>
+
+#include <algorithm>
 #include <cmath>
+#include <cstring>
 
 namespace ps {
 
@@ -19,6 +24,13 @@ void HapticLoop::start() {
   thread_ = std::thread([this] {
     while (!stop_.load(std::memory_order_relaxed)) scheduled_tick();
   });
+  if (params_.realtime_priority > 0) {
+    sched_param sp{};
+    sp.sched_priority = std::min(params_.realtime_priority, 99);
+    const int err = pthread_setschedparam(thread_.native_handle(), SCHED_FIFO, &sp);
+    priority_ = err == 0 ? "SCHED_FIFO " + std::to_string(sp.sched_priority)
+                         : std::string("normal (SCHED_FIFO refused: ") + std::strerror(err) + ")";
+  }
 }
 
 void HapticLoop::stop() {
@@ -58,9 +70,14 @@ void HapticLoop::update_rate(Clock::Ns now) {
 }
 
 void HapticLoop::tick(Clock::Ns now) {
+  // T of the filter = the measured tick period: after a preemption sleep_until() runs the
+  // missed ticks back to back, and their samples are microseconds apart, not 1 ms. Clamped so
+  // a stall (debugger, suspend) cannot blow up the prediction.
+  const double nominal = static_cast<double>(period_.count()) * 1e-9;
+  const double dt = local_.tick == 0 ? nominal
+                                     : std::clamp(static_cast<double>((now - last_tick_).count()) * 1e-9, 1e-5, 0.05);
   update_rate(now);
   const double t = static_cast<double>((now - start_).count()) * 1e-9;
-  const double dt = static_cast<double>(period_.count()) * 1e-9;  // nominal T of the model
   const DeviceSample raw = device_.read(t);
   if (recorder_ != nullptr) recorder_->append(raw);
   if (auto s = sanitizer_.filter(raw)) {

@@ -10,6 +10,7 @@
 
 #include <atomic>
 #include <cstdint>
+#include <string>
 #include <thread>
 #include <vector>
 
@@ -30,6 +31,10 @@ struct HapticLoopParams {
   HapticsParams forces;
   SanitizerParams sanitizer;
   std::size_t keep_periods = 600'000;  // raw periods kept for the final statistics (10 min)
+  // > 0: ask for SCHED_FIFO at this priority (1..99) for the haptic thread. Needs CAP_SYS_NICE
+  // (or an RLIMIT_RTPRIO); without it the loop runs at normal priority and says so. Opt-in:
+  // the thread sleeps every tick, but a real-time thread is still a system-wide decision.
+  int realtime_priority = 0;
 };
 
 struct HapticState {
@@ -58,6 +63,8 @@ class HapticLoop {
 
   void set_recorder(SampleRecorder* recorder) { recorder_ = recorder; }  // before start()
   void start();        // spawns the thread
+  // After start(): "SCHED_FIFO 80", "normal" or "normal (SCHED_FIFO refused: <why>)".
+  const std::string& priority() const { return priority_; }
   void stop();         // joins it; idempotent
   void run_ticks(std::uint64_t n);  // on the caller's thread (fake clock)
 
@@ -84,6 +91,7 @@ class HapticLoop {
   std::vector<double> periods_us_, window_jitter_us_;
   Snapshot<HapticState> state_;
   Snapshot<SurfaceModel> surface_;
+  std::string priority_ = "normal";
   std::atomic<bool> stop_{false};
   std::thread thread_;
 };
