@@ -218,6 +218,12 @@ int run_window(int argc, char** argv) {
     }
   }
   if (a.help) { std::fputs(kRunHelp, stdout); return 0; }
+  const bool log_device = a.device.rfind("trajectory:", 0) == 0 || a.device.rfind("playback:", 0) == 0;
+  if (a.device != "mouse" && a.device != "gamepad" && !log_device) {
+    std::fprintf(stderr, "pseudoshadow run: --device: unknown device '%s' (mouse, gamepad, trajectory:FILE, "
+                 "playback:FILE)\n", a.device.c_str());
+    return 2;
+  }
   if (a.backend != "glfw") { std::fputs("pseudoshadow run: --backend: only glfw opens a window\n", stderr); return 2; }
   auto fail = [](const Error& e) { std::fprintf(stderr, "pseudoshadow run: %s\n", e.message.c_str()); return 1; };
   Session s;
@@ -232,8 +238,9 @@ int run_window(int argc, char** argv) {
   if (!a.quiet) {
     const Percentiles p = s.loop->period_stats(), lat = percentiles(s.latency_ms), fr = percentiles(s.frame_ms);
     std::printf("frames %zu (median %.1f ms); haptic ticks %zu, period p50 %.0f us p99 %.0f us p99.9 %.0f us "
-                "max %.0f us; latency sample->frame p50 %.1f ms p99 %.1f ms\n",
-                fr.count, fr.p50, p.count + 1, p.p50, p.p99, p.p999, p.max, lat.p50, lat.p99);
+                "max %.0f us; ", fr.count, fr.p50, p.count + 1, p.p50, p.p99, p.p999, p.max);
+    if (lat.count == 0) std::printf("no device samples (latency not measured)\n");
+    else std::printf("latency sample->frame p50 %.1f ms p99 %.1f ms\n", lat.p50, lat.p99);
   }
   return 0;
 }
