@@ -15,6 +15,9 @@ whose opacity shows proximity, whose Gabor texture shows the surface's tactile t
 commands:
   render    render a scene headless and write the image, AOVs and stats
   compare   compare two images pixel by pixel (exit 0 pass, 1 fail, 2 error)
+  run       interactive window: move the probe with a device, 1 kHz haptic loop
+  replay    render a recorded or scripted device session headless, deterministically
+  bench-haptics  measure the haptic loop's rate, jitter and latency while rendering
 
 Run `pseudoshadow <command> --help` for the options of a command.
 Units: lengths in mm, speeds in mm/s, frequencies in Hz (docs/scene-format.md).
@@ -35,6 +38,9 @@ int main(int argc, char** argv) {
   const char* cmd = argv[1];
   if (!std::strcmp(cmd, "render")) return ps::run_render(argc - 1, argv + 1);
   if (!std::strcmp(cmd, "compare")) return ps::run_compare(argc - 1, argv + 1);
-  std::fprintf(stderr, "pseudoshadow: unknown command '%s' (commands: render, compare; see --help)\n", cmd);
+  if (!std::strcmp(cmd, "run")) return ps::run_window(argc - 1, argv + 1);
+  if (!std::strcmp(cmd, "replay")) return ps::run_replay(argc - 1, argv + 1);
+  if (!std::strcmp(cmd, "bench-haptics")) return ps::run_bench_haptics(argc - 1, argv + 1);
+  std::fprintf(stderr, "pseudoshadow: unknown command '%s' (commands: render, compare, run, replay, bench-haptics; see --help)\n", cmd);
   return 2;
 }

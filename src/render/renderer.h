@@ -57,6 +57,10 @@ class Renderer {
   const Scene& scene() const { return scene_; }
   const PlaneFrame& reference() const { return frame_; }
   void set_probe_state(const glm::dvec3& position, const glm::dvec3& velocity);
+  void set_camera(const Camera& camera) { scene_.camera = camera; }  // orbit/zoom in the window
+  // The frame's colour target (RGBA8, padded to a power of two; the image is the
+  // width x height region at the origin, bottom row first): blitted to the window.
+  const gl::Texture& color_texture() const { return surface_.color(); }
 
  private:
   Renderer() = default;

@@ -1,0 +1,138 @@
+// `pseudoshadow bench-haptics`: the haptic loop on its real thread and clock while the
+// renderer draws flat out on the main thread (headless), then rate, period jitter and the
+// latency device sample -> finished frame. Numbers only; nothing here passes or fails.
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+
+#include "app/cli_args.h"
+#include "app/commands.h"
+#include "app/session.h"
+#include "gl/context.h"
+#include "scene/scene_io.h"
+
+namespace ps {
+
+namespace {
+
+constexpr const char* kBenchHelp = R"(usage: pseudoshadow bench-haptics [options]
+
+Runs the 1 kHz haptic loop (synthetic device: a 30 mm circle over the surface, 1 turn/s) while
+the renderer draws the scene flat out, and prints the loop rate, the period percentiles
+(p50/p99/p99.9/max), the jitter |period - 1 ms| and the latency device sample -> frame done.
+
+options:
+  --scene FILE       scene (default: the built-in default scene, 512x512)
+  --seconds S        duration (default 5)
+  --backend B        auto | egl | osmesa
+  --set KEY=VALUE    scene override
+  --realtime PRIO    run the haptic thread SCHED_FIFO at PRIO (1..99; needs CAP_SYS_NICE)
+  -h, --help         this text
+)";
+
+std::vector<DeviceSample> circle_samples(const glm::dvec3& center, double seconds) {
+  std::vector<DeviceSample> out;
+  for (int i = 0; i <= static_cast<int>(seconds * 100.0); ++i) {  // 10 ms keyframes, interpolated
+    const double t = i * 0.01, a = 2.0 * 3.14159265358979323846 * t;
+    out.push_back({t, center + glm::dvec3(30.0 * std::cos(a), 30.0 * std::sin(a), 0.0), 0, true});
+  }
+  return out;
+}
+
+void print_report(const HapticLoop& loop, double seconds, const std::vector<double>& latency_ms,
+                  const std::vector<double>& frame_ms) {
+  const auto& periods = loop.periods_us();
+  std::vector<double> jitter;
+  jitter.reserve(periods.size());
+  for (double p : periods) jitter.push_back(std::abs(p - 1000.0));
+  const Percentiles p = percentiles(periods), j = percentiles(jitter);
+  const Percentiles l = percentiles(latency_ms), f = percentiles(frame_ms);
+  std::printf("haptic loop: %zu ticks in %.2f s = %.1f Hz\n", periods.size() + 1, seconds,
+              static_cast<double>(periods.size()) / seconds);
+  std::printf("period us:   p50 %.1f  p99 %.1f  p99.9 %.1f  max %.1f  mean %.2f\n", p.p50, p.p99, p.p999, p.max, p.mean);
+  std::printf("jitter us:   p50 %.1f  p99 %.1f  p99.9 %.1f  max %.1f\n", j.p50, j.p99, j.p999, j.max);
+  std::printf("frames:      %zu, ms p50 %.1f  p99 %.1f  max %.1f\n", f.count, f.p50, f.p99, f.max);
+  std::printf("latency ms (device sample -> frame finished): p50 %.1f  p99 %.1f  max %.1f\n", l.p50, l.p99, l.max);
+}
+
+// Renders flat out for `seconds` while the loop runs; per-frame time and latency in ms.
+Status measure(Renderer& renderer, HapticLoop& loop, double seconds, std::vector<double>& latency_ms,
+               std::vector<double>& frame_ms) {
+  const auto t0 = std::chrono::steady_clock::now();
+  loop.start();
+  for (std::uint64_t frame = 0;; ++frame) {
+    const auto f0 = std::chrono::steady_clock::now();
+    if (std::chrono::duration<double>(f0 - t0).count() >= seconds) break;
+    HapticState st;
+    if (Status s = drive_frame(renderer, loop, frame, st); !s) { loop.stop(); return s; }
+    const auto f1 = std::chrono::steady_clock::now();  // render_frame ends with a synchronous readback
+    frame_ms.push_back(std::chrono::duration<double, std::milli>(f1 - f0).count());
+    if (st.have_sample) latency_ms.push_back(static_cast<double>(f1.time_since_epoch().count() - st.sample_clock_ns) * 1e-6);
+  }
+  loop.stop();
+  return ok_status();
+}
+
+struct BenchArgs {
+  std::string scene_path, backend = "auto";
+  std::vector<std::string> overrides;
+  double seconds = 5.0;
+  int realtime = 0;
+};
+
+// 0 = run, 1 = --help printed, 2 = usage error (printed).
+int parse_args(int argc, char** argv, BenchArgs& a) {
+  cli::ArgCursor c(argc, argv, 1);
+  while (!c.done()) {
+    std::optional<Result<std::string>> v;
+    if ((v = c.option("--scene"))) { if (*v) a.scene_path = v->value(); }
+    else if ((v = c.option("--backend"))) { if (*v) a.backend = v->value(); }
+    else if ((v = c.option("--set"))) { if (*v) a.overrides.push_back(v->value()); }
+    else if ((v = c.option("--seconds"))) { if (*v) a.seconds = std::strtod(v->value().c_str(), nullptr); }
+    else if ((v = c.option("--realtime"))) {
+      if (*v) {
+        auto n = cli::parse_int("--realtime", v->value(), 1, 99);
+        if (!n) { std::fprintf(stderr, "pseudoshadow bench-haptics: %s\n", n.error().message.c_str()); return 2; }
+        a.realtime = static_cast<int>(n.value());
+      }
+    }
+    else if (c.flag("-h") || c.flag("--help")) { std::fputs(kBenchHelp, stdout); return 1; }
+    else { std::fprintf(stderr, "pseudoshadow bench-haptics: unknown option '%s'\n", std::string(c.peek()).c_str()); return 2; }
+    if (v && !*v) { std::fprintf(stderr, "pseudoshadow bench-haptics: %s\n", v->error().message.c_str()); return 2; }
+  }
+  if (!(a.seconds > 0.0 && a.seconds <= 3600.0)) { std::fputs("pseudoshadow bench-haptics: --seconds in (0, 3600]\n", stderr); return 2; }
+  return 0;
+}
+
+}  // namespace
+
+int run_bench_haptics(int argc, char** argv) {
+  BenchArgs a;
+  if (const int r = parse_args(argc, argv, a); r != 0) return r == 1 ? 0 : 2;
+  auto fail = [](const Error& e) { std::fprintf(stderr, "pseudoshadow bench-haptics: %s\n", e.message.c_str()); return 1; };
+  auto scene = a.scene_path.empty()
+                   ? parse_scene(default_scene_text(), "<built-in default scene>", default_scene_base_dir(), a.overrides)
+                   : load_scene(a.scene_path, a.overrides);
+  if (!scene) return fail(scene.error());
+  auto backend = gl::parse_backend(a.backend);
+  if (!backend) return fail(backend.error());
+  auto ctx = gl::create_context({backend.value()});
+  if (!ctx) return fail(ctx.error());
+  auto renderer = Renderer::create(scene.value(), {});
+  if (!renderer) return fail(renderer.error());
+  LogDevice device(circle_samples(scene->probe.position, a.seconds + 1.0), true, "synthetic circle");
+  SteadyClock clock;
+  HapticLoopParams params;
+  params.realtime_priority = a.realtime;
+  HapticLoop loop(device, clock, params);
+  std::vector<double> latency_ms, frame_ms;
+  const auto t0 = std::chrono::steady_clock::now();
+  if (Status s = measure(*renderer.value(), loop, a.seconds, latency_ms, frame_ms); !s) return fail(s.error());
+  const double elapsed = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  std::printf("bench-haptics: %s, %dx%d, %s, haptic thread %s\n", scene->path.c_str(), scene->render.width,
+              scene->render.height, ctx.value()->renderer().c_str(), loop.priority().c_str());
+  print_report(loop, elapsed, latency_ms, frame_ms);
+  return 0;
+}
+
+}  // namespace ps

@@ -1,0 +1,248 @@
+// `pseudoshadow run`: the interactive window. Main thread: GLFW events, device polling (mouse/
+// gamepad), rendering through the same Renderer as headless, blit to the window, HUD in the
+// title. Haptic thread: HapticLoop at 1 kHz. They meet only in the loop's two Snapshots.
+#define GLFW_INCLUDE_NONE
+#include <GLFW/glfw3.h>
+
+#include <chrono>
+#include <cstdio>
+#include <memory>
+
+#include "app/cli_args.h"
+#include "app/commands.h"
+#include "app/session.h"
+#include "app/window_input.h"
+#include "devices/glfw_input.h"
+#include "gl/context.h"
+#include "render/present.h"
+#include "scene/scene_io.h"
+
+namespace ps {
+
+namespace {
+
+constexpr const char* kRunHelp = R"(usage: pseudoshadow run [options]
+
+Opens a window and lets you move the probe over the scene with a device; the haptic loop runs
+at 1 kHz on its own thread. Works under Xvfb (xvfb-run -a pseudoshadow run ...).
+
+options:
+  --scene FILE        scene file (default: the built-in default scene)
+  --device D          mouse (default) | gamepad | trajectory:FILE | playback:FILE
+  --record FILE       record the device stream (replay it with `pseudoshadow replay`)
+  --backend glfw      the only window backend
+  --set KEY=VALUE     scene override (as for render)
+  --realtime PRIO     haptic thread SCHED_FIFO at PRIO (1..99; needs CAP_SYS_NICE), much
+                      lower jitter on a loaded machine
+  --frames N          quit after N frames
+  --quit-after S      quit after S seconds
+  -q, --quiet         no summary
+  -h, --help          this text
+
+keys: mouse moves the probe on the reference plane, Shift+scroll or PageUp/PageDown change its
+height; right drag orbits, scroll zooms; M captures the mouse (raw motion where supported);
+S saves screenshot_NNNN.png; Esc or Q quits. The probe itself is not drawn: only its
+pseudo-shadow. The title shows frame time, haptic rate and jitter, distance, speed, penetration.
+exit status: 0 success, 1 runtime error, 2 usage error
+)";
+
+struct RunArgs {
+  std::string scene_path, device = "mouse", record, backend = "glfw";
+  std::vector<std::string> overrides;
+  long long frames = 0, realtime = 0;
+  double quit_after_s = 0.0;
+  bool quiet = false, help = false;
+};
+
+Status parse_one(cli::ArgCursor& c, RunArgs& a) {
+  auto str = [&](std::string_view name, std::string& dst) -> std::optional<Status> {
+    auto v = c.option(name);
+    if (!v) return std::nullopt;
+    if (!*v) return Status(v->error());
+    dst = v->value();
+    return ok_status();
+  };
+  using S = std::optional<Status>;
+  std::string tmp;
+  if (S s = str("--scene", a.scene_path)) return *s;
+  if (S s = str("--device", a.device)) return *s;
+  if (S s = str("--record", a.record)) return *s;
+  if (S s = str("--backend", a.backend)) return *s;
+  if (S s = str("--set", tmp)) { if (*s) a.overrides.push_back(tmp); return *s; }
+  if (S s = str("--frames", tmp); s) {
+    if (!*s) return *s;
+    auto n = cli::parse_int("--frames", tmp, 1, 100'000'000);
+    if (!n) return n.error();
+    a.frames = n.value();
+    return ok_status();
+  }
+  if (S s = str("--realtime", tmp); s) {
+    if (!*s) return *s;
+    auto n = cli::parse_int("--realtime", tmp, 1, 99);
+    if (!n) return n.error();
+    a.realtime = n.value();
+    return ok_status();
+  }
+  if (S s = str("--quit-after", tmp); s) {
+    if (!*s) return *s;
+    char* end = nullptr;
+    a.quit_after_s = std::strtod(tmp.c_str(), &end);
+    if (end != tmp.c_str() + tmp.size() || !(a.quit_after_s > 0.0))
+      return make_error("--quit-after: expected seconds > 0, e.g. --quit-after 5");
+    return ok_status();
+  }
+  if (c.flag("-q") || c.flag("--quiet")) { a.quiet = true; return ok_status(); }
+  if (c.flag("-h") || c.flag("--help")) { a.help = true; return ok_status(); }
+  return make_error("unknown option '" + std::string(c.peek()) + "' (see pseudoshadow run --help)");
+}
+
+struct Session {  // everything the window loop touches, grouped by owner thread
+  std::unique_ptr<gl::Context> ctx;
+  std::unique_ptr<Renderer> renderer;
+  std::unique_ptr<Device> device;
+  GlfwInputDevice* glfw_device = nullptr;  // == device.get() for mouse/gamepad
+  SteadyClock clock;
+  std::unique_ptr<HapticLoop> loop;
+  std::unique_ptr<SampleRecorder> recorder;
+  WindowInput input;
+  PlaneAxes axes;
+  std::vector<double> latency_ms, frame_ms;
+};
+
+Status open_device(const RunArgs& a, Session& s) {
+  if (a.device == "mouse" || a.device == "gamepad") {
+    auto kind = a.device == "mouse" ? GlfwInputDevice::Kind::kMouse : GlfwInputDevice::Kind::kGamepad;
+    auto d = std::make_unique<GlfwInputDevice>(kind, s.ctx->window(), GlfwInputParams{});
+    s.glfw_device = d.get();
+    s.device = std::move(d);
+    return ok_status();
+  }
+  auto d = open_log_device(a.device);
+  if (!d) return make_error("--device: " + d.error().message);
+  s.device = std::move(d.value());
+  return ok_status();
+}
+
+Status open_session(const RunArgs& a, Session& s) {
+  auto scene = a.scene_path.empty()
+                   ? parse_scene(default_scene_text(), "<built-in default scene>", default_scene_base_dir(), a.overrides)
+                   : load_scene(a.scene_path, a.overrides);
+  if (!scene) return scene.error();
+  gl::ContextDesc desc{gl::Backend::kGlfw, scene->render.width, scene->render.height, "pseudoshadow", true};
+  auto ctx = gl::create_context(desc);
+  if (!ctx) return ctx.error();
+  s.ctx = std::move(ctx.value());
+  auto r = Renderer::create(scene.value(), {});
+  if (!r) return r.error();
+  s.renderer = std::move(r.value());
+  const PlaneFrame& f = s.renderer->reference();
+  s.axes = {scene->camera.target, f.t, f.b, f.n};  // fixed at start so the mapping stays put
+  if (Status st = open_device(a, s); !st) return st;
+  HapticLoopParams params;
+  params.realtime_priority = static_cast<int>(a.realtime);
+  s.loop = std::make_unique<HapticLoop>(*s.device, s.clock, params);
+  if (!a.record.empty()) {
+    s.recorder = std::make_unique<SampleRecorder>(a.record);
+    s.loop->set_recorder(s.recorder.get());
+  }
+  install_window_input(s.ctx->window(), s.input);
+  return ok_status();
+}
+
+void update_title(Session& s, const HapticState& st, double frame_ms) {
+  const SurfaceModel m = s.loop->surface().read();
+  char title[256];
+  const double dist = m.valid ? glm::dot(m.normal, st.proxy_mm - m.point_mm) - m.probe_radius_mm : -1.0;
+  std::snprintf(title, sizeof title,
+                "pseudoshadow | frame %.1f ms | haptic %.0f Hz, jitter p99 %.0f us | dist %s%.1f mm | "
+                "speed %.0f mm/s | pen %.2f mm | F %.2f N",
+                frame_ms, st.rate_hz, st.jitter_p99_us, m.valid ? "" : "? ", std::max(dist, 0.0),
+                glm::length(st.velocity_mm_s), s.renderer->stats().max_penetration_mm, glm::length(st.force_n));
+  glfwSetWindowTitle(s.ctx->window(), title);
+}
+
+Status handle_keys(Session& s, int w, int h) {
+  WindowInput& in = s.input;
+  if (in.toggle_capture && s.glfw_device) s.glfw_device->toggle_capture();
+  in.toggle_capture = false;
+  if (s.glfw_device) s.glfw_device->add_scroll(in.scroll_height);
+  in.scroll_height = 0.0;
+  Camera cam = s.renderer->scene().camera;
+  apply_orbit_zoom(in, cam);
+  s.renderer->set_camera(cam);
+  for (; in.screenshots > 0; --in.screenshots) {
+    static int n = 0;
+    char name[64];
+    std::snprintf(name, sizeof name, "screenshot_%04d.png", n++);
+    if (Status st = write_image(name, read_back_buffer(w, h)); !st) return st;
+    std::printf("saved %s\n", name);
+  }
+  return ok_status();
+}
+
+Status window_loop(const RunArgs& a, Session& s) {
+  GLFWwindow* win = s.ctx->window();
+  const auto t0 = std::chrono::steady_clock::now();
+  double last_title = -1.0;
+  for (std::uint64_t frame = 0;; ++frame) {
+    const auto f0 = std::chrono::steady_clock::now();
+    const double now_s = std::chrono::duration<double>(f0 - t0).count();
+    glfwPollEvents();
+    if (glfwWindowShouldClose(win) || s.input.quit) break;
+    if ((a.frames > 0 && static_cast<long long>(frame) >= a.frames) || (a.quit_after_s > 0 && now_s >= a.quit_after_s)) break;
+    if (s.glfw_device) s.glfw_device->poll(s.loop->state().read().time_s, s.axes);
+    HapticState st;
+    if (Status r = drive_frame(*s.renderer, *s.loop, frame, st); !r) return r;
+    int w = 0, h = 0;
+    glfwGetFramebufferSize(win, &w, &h);
+    present_to_default_framebuffer(*s.renderer, w, h);
+    if (Status r = handle_keys(s, w, h); !r) return r;  // screenshots read GL_BACK before the swap
+    glfwSwapBuffers(win);
+    const auto f1 = std::chrono::steady_clock::now();
+    s.frame_ms.push_back(std::chrono::duration<double, std::milli>(f1 - f0).count());
+    if (st.have_sample) s.latency_ms.push_back(static_cast<double>(f1.time_since_epoch().count() - st.sample_clock_ns) * 1e-6);
+    if (now_s - last_title > 0.25) { update_title(s, st, s.frame_ms.back()); last_title = now_s; }
+  }
+  return ok_status();
+}
+
+}  // namespace
+
+int run_window(int argc, char** argv) {
+  RunArgs a;
+  cli::ArgCursor c(argc, argv, 1);
+  while (!c.done()) {
+    if (Status s = parse_one(c, a); !s) {
+      std::fprintf(stderr, "pseudoshadow run: %s\n", s.error().message.c_str());
+      return 2;
+    }
+  }
+  if (a.help) { std::fputs(kRunHelp, stdout); return 0; }
+  const bool log_device = a.device.rfind("trajectory:", 0) == 0 || a.device.rfind("playback:", 0) == 0;
+  if (a.device != "mouse" && a.device != "gamepad" && !log_device) {
+    std::fprintf(stderr, "pseudoshadow run: --device: unknown device '%s' (mouse, gamepad, trajectory:FILE, "
+                 "playback:FILE)\n", a.device.c_str());
+    return 2;
+  }
+  if (a.backend != "glfw") { std::fputs("pseudoshadow run: --backend: only glfw opens a window\n", stderr); return 2; }
+  auto fail = [](const Error& e) { std::fprintf(stderr, "pseudoshadow run: %s\n", e.message.c_str()); return 1; };
+  Session s;
+  if (Status st = open_session(a, s); !st) return fail(st.error());
+  s.loop->start();
+  if (a.realtime > 0 && !a.quiet) std::printf("haptic thread: %s\n", s.loop->priority().c_str());
+  const Status looped = window_loop(a, s);
+  s.loop->stop();  // join the haptic thread before touching what it wrote
+  if (s.recorder)
+    if (Status st = s.recorder->close(); !st) return fail(st.error());
+  if (!looped) return fail(looped.error());
+  if (!a.quiet) {
+    const Percentiles p = s.loop->period_stats(), lat = percentiles(s.latency_ms), fr = percentiles(s.frame_ms);
+    std::printf("frames %zu (median %.1f ms); haptic ticks %zu, period p50 %.0f us p99 %.0f us p99.9 %.0f us "
+                "max %.0f us; ", fr.count, fr.p50, p.count + 1, p.p50, p.p99, p.p999, p.max);
+    if (lat.count == 0) std::printf("no device samples (latency not measured)\n");
+    else std::printf("latency sample->frame p50 %.1f ms p99 %.1f ms\n", lat.p50, lat.p99);
+  }
+  return 0;
+}
+
+}  // namespace ps

@@ -1,0 +1,52 @@
+#include "app/session.h"
+
+#include <cmath>
+#include <cstdio>
+
+namespace ps {
+
+Status drive_frame(Renderer& renderer, HapticLoop& loop, std::uint64_t frame, HapticState& state) {
+  state = loop.state().read();
+  const Probe& probe = renderer.scene().probe;
+  const glm::dvec3 shown = state.have_sample ? state.proxy_mm : probe.position;
+  if (state.have_sample) renderer.set_probe_state(state.proxy_mm, state.velocity_mm_s);
+  if (Status s = renderer.render_frame(); !s) return s;
+  const FrameStats& st = renderer.stats();
+  // The render thread is the only writer of surface(), so reading back its own last value is safe.
+  const SurfaceModel model = update_surface_model(loop.surface().read(), st.reference_normal, shown,
+                                                  probe.radius_mm, st.max_penetration_mm,
+                                                  st.shadow_pixels > 0, frame);
+  loop.surface().publish(model);
+  return ok_status();
+}
+
+Result<ReplayResult> replay_session(Renderer& renderer, Device& device, const ReplayOptions& options,
+                                    const FrameSink& sink) {
+  if (!(options.fps > 0.0)) return make_error("replay: fps must be > 0");
+  const double duration = std::max(0.0, device.duration_s());
+  const int frames = static_cast<int>(std::floor(duration * options.fps + 1e-9)) + 1;
+  FakeClock clock;
+  HapticLoop loop(device, clock, options.haptics);
+  SampleRecorder recorder(options.record_path);
+  if (!options.record_path.empty()) loop.set_recorder(&recorder);
+  std::uint64_t ticks_done = 0;
+  ReplayResult result;
+  for (int i = 0; i < frames; ++i) {
+    // Tick k runs at k / rate; frame i shows the state after the tick at (or before) i / fps.
+    const auto last_tick = static_cast<std::uint64_t>(std::floor(i / options.fps * options.haptics.rate_hz + 1e-9));
+    loop.run_ticks(last_tick + 1 - ticks_done);
+    ticks_done = last_tick + 1;
+    HapticState state;
+    if (Status s = drive_frame(renderer, loop, static_cast<std::uint64_t>(i), state); !s) return s.error();
+    if (Status s = sink(i, state.time_s, state, renderer); !s) return s.error();
+    if (options.progress) std::fprintf(stderr, "\rframe %d/%d  t=%.3f s", i + 1, frames, state.time_s);
+    result.rejected = state.rejected;
+    result.frames = i + 1;
+  }
+  if (options.progress) std::fputc('\n', stderr);
+  if (!options.record_path.empty())
+    if (Status s = recorder.close(); !s) return s.error();
+  return result;
+}
+
+}  // namespace ps

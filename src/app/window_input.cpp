@@ -1,0 +1,72 @@
+#include "app/window_input.h"
+
+#define GLFW_INCLUDE_NONE
+#include <GLFW/glfw3.h>
+
+#include <algorithm>
+#include <cmath>
+
+namespace ps {
+
+namespace {
+
+WindowInput& input_of(GLFWwindow* w) { return *static_cast<WindowInput*>(glfwGetWindowUserPointer(w)); }
+
+void on_key(GLFWwindow* w, int key, int, int action, int) {
+  if (action != GLFW_PRESS) return;
+  WindowInput& in = input_of(w);
+  if (key == GLFW_KEY_S) ++in.screenshots;
+  if (key == GLFW_KEY_M) in.toggle_capture = true;
+  if (key == GLFW_KEY_ESCAPE || key == GLFW_KEY_Q) in.quit = true;
+}
+
+void on_scroll(GLFWwindow* w, double, double dy) {
+  WindowInput& in = input_of(w);
+  const bool shift = glfwGetKey(w, GLFW_KEY_LEFT_SHIFT) == GLFW_PRESS ||
+                     glfwGetKey(w, GLFW_KEY_RIGHT_SHIFT) == GLFW_PRESS;
+  (shift ? in.scroll_height : in.scroll_zoom) += dy;
+}
+
+void on_button(GLFWwindow* w, int button, int action, int) {
+  if (button != GLFW_MOUSE_BUTTON_RIGHT) return;
+  WindowInput& in = input_of(w);
+  in.dragging = action == GLFW_PRESS;
+  glfwGetCursorPos(w, &in.last_x, &in.last_y);
+}
+
+void on_cursor(GLFWwindow* w, double x, double y) {
+  WindowInput& in = input_of(w);
+  if (in.dragging) {
+    in.orbit_dx += x - in.last_x;
+    in.orbit_dy += y - in.last_y;
+  }
+  in.last_x = x;
+  in.last_y = y;
+}
+
+}  // namespace
+
+void install_window_input(GLFWwindow* window, WindowInput& input) {
+  glfwSetWindowUserPointer(window, &input);
+  glfwSetKeyCallback(window, on_key);
+  glfwSetScrollCallback(window, on_scroll);
+  glfwSetMouseButtonCallback(window, on_button);
+  glfwSetCursorPosCallback(window, on_cursor);
+}
+
+void apply_orbit_zoom(WindowInput& in, Camera& camera) {
+  if (in.orbit_dx == 0.0 && in.orbit_dy == 0.0 && in.scroll_zoom == 0.0) return;
+  const glm::dvec3 d = camera.position - camera.target;
+  double r = glm::length(d);
+  double azimuth = std::atan2(d.y, d.x);
+  double elevation = std::asin(std::clamp(d.z / std::max(r, 1e-9), -1.0, 1.0));
+  azimuth -= 0.005 * in.orbit_dx;
+  elevation = std::clamp(elevation + 0.005 * in.orbit_dy, -1.5, 1.5);  // stay off the pole
+  r = std::clamp(r * std::pow(0.9, in.scroll_zoom), camera.near_mm * 2.0, camera.far_mm * 0.5);
+  camera.position = camera.target + r * glm::dvec3(std::cos(elevation) * std::cos(azimuth),
+                                                   std::cos(elevation) * std::sin(azimuth),
+                                                   std::sin(elevation));
+  in.orbit_dx = in.orbit_dy = in.scroll_zoom = 0.0;
+}
+
+}  // namespace ps

@@ -1,0 +1,131 @@
+#include "devices/sample_log.h"
+
+#include <cerrno>
+#include <cmath>
+#include <cstdlib>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <unistd.h>
+
+namespace ps {
+
+namespace {
+
+Result<double> parse_number(const std::string& word, const std::string& where, const char* what) {
+  char* end = nullptr;
+  const double v = std::strtod(word.c_str(), &end);
+  if (word.empty() || end != word.c_str() + word.size())
+    return make_error(where + ": " + what + ": not a number: '" + word + "'");
+  return v;
+}
+
+Result<DeviceSample> parse_line(const std::string& line, const std::string& where) {
+  std::istringstream in(line);
+  std::vector<std::string> words;
+  for (std::string w; in >> w;) words.push_back(w);
+  if (words.size() != 5)
+    return make_error(where + ": expected 5 fields 'time_s x y z buttons', got " + std::to_string(words.size()));
+  static const char* kNames[] = {"time_s", "x", "y", "z"};
+  double v[4];
+  for (int i = 0; i < 4; ++i) {
+    auto r = parse_number(words[static_cast<size_t>(i)], where, kNames[i]);
+    if (!r) return r.error();
+    v[i] = r.value();
+  }
+  char* end = nullptr;
+  const unsigned long b = std::strtoul(words[4].c_str(), &end, 10);
+  if (end != words[4].c_str() + words[4].size() || words[4][0] == '-' || b > 0xffffffffUL)
+    return make_error(where + ": buttons: expected a bitmask 0..4294967295, got '" + words[4] + "'");
+  return DeviceSample{v[0], {v[1], v[2], v[3]}, static_cast<std::uint32_t>(b), true};
+}
+
+}  // namespace
+
+Result<std::vector<DeviceSample>> parse_sample_log(std::string_view text, const std::string& source) {
+  std::vector<DeviceSample> out;
+  std::istringstream in{std::string(text)};
+  int line_no = 0;
+  for (std::string line; std::getline(in, line);) {
+    ++line_no;
+    if (const size_t hash = line.find('#'); hash != std::string::npos) line.resize(hash);
+    if (line.find_first_not_of(" \t\r") == std::string::npos) continue;
+    auto s = parse_line(line, source + ":" + std::to_string(line_no));
+    if (!s) return s.error();
+    out.push_back(s.value());
+  }
+  if (out.empty()) return make_error(source + ": no samples (expected lines 'time_s x y z buttons')");
+  return out;
+}
+
+Result<std::vector<DeviceSample>> load_sample_log(const std::string& path) {
+  std::ifstream f(path, std::ios::binary);
+  if (!f) return make_error(path + ": cannot open device log: " + std::strerror(errno));
+  std::ostringstream ss;
+  ss << f.rdbuf();
+  return parse_sample_log(ss.str(), path);
+}
+
+std::string format_sample(const DeviceSample& s) {
+  char buf[160];
+  std::snprintf(buf, sizeof buf, "%.17g %.17g %.17g %.17g %u\n", s.time_s, s.position_mm.x,
+                s.position_mm.y, s.position_mm.z, s.buttons);
+  return buf;
+}
+
+SampleRecorder::SampleRecorder(std::string path) : path_(std::move(path)) {
+  text_ = "# pseudoshadow device log: time_s x_mm y_mm z_mm buttons\n";
+}
+
+void SampleRecorder::append(const DeviceSample& s) {
+  if (!s.valid) return;
+  text_ += format_sample(s);
+  ++count_;
+}
+
+Status SampleRecorder::close() {
+  const std::filesystem::path p(path_);
+  const std::filesystem::path tmp = path_ + "." + std::to_string(getpid()) + ".tmp";
+  std::error_code ec;
+  if (p.has_parent_path()) std::filesystem::create_directories(p.parent_path(), ec);
+  {
+    std::ofstream f(tmp, std::ios::binary);
+    if (!(f << text_) || !f.flush()) return make_error(path_ + ": cannot write device log: " + std::strerror(errno));
+  }
+  std::filesystem::rename(tmp, p, ec);
+  if (ec) return make_error(path_ + ": cannot write device log: " + ec.message());
+  return ok_status();
+}
+
+LogDevice::LogDevice(std::vector<DeviceSample> samples, bool interpolate, std::string name)
+    : samples_(std::move(samples)), interpolate_(interpolate), name_(std::move(name)) {}
+
+double LogDevice::duration_s() const { return samples_.empty() ? 0.0 : samples_.back().time_s; }
+
+DeviceSample LogDevice::read(double now_s) {
+  if (samples_.empty()) return {};
+  // Out-of-order timestamps are passed on as they are: the sanitizer counts and drops them.
+  while (index_ + 1 < samples_.size() && !(samples_[index_ + 1].time_s > now_s)) ++index_;
+  const DeviceSample& a = samples_[index_];
+  if (!interpolate_ || index_ + 1 >= samples_.size() || now_s <= a.time_s) return a;
+  const DeviceSample& b = samples_[index_ + 1];
+  if (!(b.time_s > a.time_s)) return a;
+  const double u = (now_s - a.time_s) / (b.time_s - a.time_s);
+  DeviceSample s = a;
+  s.time_s = now_s;
+  s.position_mm = a.position_mm + (b.position_mm - a.position_mm) * u;
+  return s;
+}
+
+Result<std::unique_ptr<LogDevice>> open_log_device(const std::string& spec) {
+  const size_t colon = spec.find(':');
+  const std::string kind = spec.substr(0, colon);
+  if (colon == std::string::npos || colon + 1 == spec.size() || (kind != "trajectory" && kind != "playback"))
+    return make_error("device '" + spec + "': expected trajectory:FILE or playback:FILE");
+  auto samples = load_sample_log(spec.substr(colon + 1));
+  if (!samples) return samples.error();
+  return std::make_unique<LogDevice>(std::move(samples.value()), kind == "trajectory", spec);
+}
+
+}  // namespace ps

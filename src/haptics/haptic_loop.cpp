@@ -1,0 +1,110 @@
+#include "haptics/haptic_loop.h"
+
+#include <pthread.h>
+#include <sched.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstring>
+
+namespace ps {
+
+HapticLoop::HapticLoop(Device& device, Clock& clock, const HapticLoopParams& params)
+    : device_(device), clock_(clock), params_(params),
+      period_(static_cast<std::int64_t>(std::llround(1e9 / params.rate_hz))),
+      sanitizer_(params.sanitizer), kalman_(params.kalman) {
+  periods_us_.reserve(std::min<std::size_t>(params.keep_periods, 100'000));
+  window_jitter_us_.reserve(2048);
+}
+
+HapticLoop::~HapticLoop() { stop(); }
+
+void HapticLoop::start() {
+  stop_.store(false);
+  thread_ = std::thread([this] {
+    while (!stop_.load(std::memory_order_relaxed)) scheduled_tick();
+  });
+  if (params_.realtime_priority > 0) {
+    sched_param sp{};
+    sp.sched_priority = std::min(params_.realtime_priority, 99);
+    const int err = pthread_setschedparam(thread_.native_handle(), SCHED_FIFO, &sp);
+    priority_ = err == 0 ? "SCHED_FIFO " + std::to_string(sp.sched_priority)
+                         : std::string("normal (SCHED_FIFO refused: ") + std::strerror(err) + ")";
+  }
+}
+
+void HapticLoop::stop() {
+  stop_.store(true);
+  if (thread_.joinable()) thread_.join();
+}
+
+void HapticLoop::run_ticks(std::uint64_t n) {
+  for (std::uint64_t i = 0; i < n; ++i) scheduled_tick();
+}
+
+void HapticLoop::scheduled_tick() {
+  if (!started_) {
+    start_ = next_ = last_tick_ = window_start_ = clock_.now();
+    started_ = true;
+  } else {
+    next_ += period_;
+    clock_.sleep_until(next_);
+  }
+  tick(clock_.now());
+}
+
+void HapticLoop::update_rate(Clock::Ns now) {
+  if (local_.tick > 0) {
+    const double period_us = static_cast<double>((now - last_tick_).count()) * 1e-3;
+    if (periods_us_.size() < params_.keep_periods) periods_us_.push_back(period_us);
+    window_jitter_us_.push_back(std::abs(period_us - static_cast<double>(period_.count()) * 1e-3));
+  }
+  last_tick_ = now;
+  const double window_s = static_cast<double>((now - window_start_).count()) * 1e-9;
+  if (window_s >= 1.0) {  // HUD numbers, refreshed once per second
+    local_.rate_hz = static_cast<double>(window_jitter_us_.size()) / window_s;
+    local_.jitter_p99_us = percentiles(window_jitter_us_).p99;
+    window_jitter_us_.clear();
+    window_start_ = now;
+  }
+}
+
+void HapticLoop::tick(Clock::Ns now) {
+  // T of the filter = the measured tick period: after a preemption sleep_until() runs the
+  // missed ticks back to back, and their samples are microseconds apart, not 1 ms. Clamped so
+  // a stall (debugger, suspend) cannot blow up the prediction.
+  const double nominal = static_cast<double>(period_.count()) * 1e-9;
+  const double dt = local_.tick == 0 ? nominal
+                                     : std::clamp(static_cast<double>((now - last_tick_).count()) * 1e-9, 1e-5, 0.05);
+  update_rate(now);
+  const double t = static_cast<double>((now - start_).count()) * 1e-9;
+  const DeviceSample raw = device_.read(t);
+  if (recorder_ != nullptr) recorder_->append(raw);
+  if (auto s = sanitizer_.filter(raw)) {
+    kalman_.step(dt, s->position_mm);
+    local_.device_mm = s->position_mm;
+    local_.buttons = s->buttons;
+    local_.sample_clock_ns = now.count();
+    local_.have_sample = true;
+  } else if (kalman_.initialized()) {
+    kalman_.step(dt, kalman_.position() + dt * kalman_.velocity());  // hold: coast on the prediction
+  }
+  if (local_.have_sample) {
+    local_.position_mm = kalman_.position();
+    local_.velocity_mm_s = kalman_.velocity();
+    const SurfaceModel model = surface_.read();
+    const ForceResult f = compute_force(params_.forces, model, local_.position_mm, local_.velocity_mm_s,
+                                        local_.proxy_mm, t);
+    local_.proxy_mm = f.proxy_mm;
+    local_.force_n = f.force_n;
+    local_.penetration_mm = f.penetration_mm;
+    local_.in_contact = f.in_contact;
+    device_.write_force(f.force_n);
+  }
+  local_.time_s = t;
+  local_.rejected = sanitizer_.counts();
+  ++local_.tick;
+  state_.publish(local_);
+}
+
+}  // namespace ps

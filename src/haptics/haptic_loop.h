@@ -1,0 +1,99 @@
+// The haptic loop: read device -> sanitize -> Kalman filter -> proxy + force against the local
+// surface model -> write force -> publish. Runs on its own thread at 1 kHz, scheduled with
+// clock.sleep_until(next += period) so the rate does not drift; never calls GL.
+// Exchange with the render thread, one single-writer Snapshot per direction:
+//   state()   written only by the haptic thread (HapticState), read by the render thread;
+//   surface() written only by the render thread (SurfaceModel), read by the haptic thread.
+// With a FakeClock, run_ticks() executes the same scheduling code on the caller's thread
+// (tests, `replay`), deterministically.
+#pragma once
+
+#include <atomic>
+#include <cstdint>
+#include <string>
+#include <thread>
+#include <vector>
+
+#include "core/snapshot.h"
+#include "devices/device.h"
+#include "devices/sample_log.h"
+#include "devices/sanitizer.h"
+#include "haptics/clock.h"
+#include "haptics/force_model.h"
+#include "haptics/kalman.h"
+#include "haptics/loop_stats.h"
+
+namespace ps {
+
+struct HapticLoopParams {
+  double rate_hz = 1000.0;
+  KalmanParams kalman;
+  HapticsParams forces;
+  SanitizerParams sanitizer;
+  std::size_t keep_periods = 600'000;  // raw periods kept for the final statistics (10 min)
+  // > 0: ask for SCHED_FIFO at this priority (1..99) for the haptic thread. Needs CAP_SYS_NICE
+  // (or an RLIMIT_RTPRIO); without it the loop runs at normal priority and says so. Opt-in:
+  // the thread sleeps every tick, but a real-time thread is still a system-wide decision.
+  int realtime_priority = 0;
+};
+
+struct HapticState {
+  std::uint64_t tick = 0;
+  double time_s = 0.0;               // session time of this tick
+  std::int64_t sample_clock_ns = 0;  // clock time at which the device sample was read
+  glm::dvec3 device_mm{0.0};         // sanitized raw device position
+  glm::dvec3 position_mm{0.0};       // Kalman-filtered
+  glm::dvec3 velocity_mm_s{0.0};     // Kalman-filtered; drives the texture amplitude
+  glm::dvec3 proxy_mm{0.0};          // what the renderer shows
+  glm::dvec3 force_n{0.0};
+  double penetration_mm = 0.0;
+  std::uint32_t buttons = 0;
+  bool have_sample = false, in_contact = false;
+  double rate_hz = 0.0;              // over the last second
+  double jitter_p99_us = 0.0;        // |period - nominal|, p99 over the last second
+  SanitizerCounts rejected;
+};
+
+class HapticLoop {
+ public:
+  HapticLoop(Device& device, Clock& clock, const HapticLoopParams& params);
+  ~HapticLoop();
+  HapticLoop(const HapticLoop&) = delete;
+  HapticLoop& operator=(const HapticLoop&) = delete;
+
+  void set_recorder(SampleRecorder* recorder) { recorder_ = recorder; }  // before start()
+  void start();        // spawns the thread
+  // After start(): "SCHED_FIFO 80", "normal" or "normal (SCHED_FIFO refused: <why>)".
+  const std::string& priority() const { return priority_; }
+  void stop();         // joins it; idempotent
+  void run_ticks(std::uint64_t n);  // on the caller's thread (fake clock)
+
+  const Snapshot<HapticState>& state() const { return state_; }
+  Snapshot<SurfaceModel>& surface() { return surface_; }
+  // After stop() (or between run_ticks): measured periods in microseconds.
+  const std::vector<double>& periods_us() const { return periods_us_; }
+  Percentiles period_stats() const { return percentiles(periods_us_); }
+
+ private:
+  void scheduled_tick();  // sleep_until(next += period), then tick()
+  void tick(Clock::Ns now);
+  void update_rate(Clock::Ns now);
+
+  Device& device_;
+  Clock& clock_;
+  HapticLoopParams params_;
+  Clock::Ns period_, start_{0}, next_{0}, last_tick_{0}, window_start_{0};
+  bool started_ = false;
+  DeviceSanitizer sanitizer_;
+  Kalman3 kalman_;
+  HapticState local_;        // haptic thread's working copy
+  SampleRecorder* recorder_ = nullptr;
+  std::vector<double> periods_us_, window_jitter_us_;
+  Snapshot<HapticState> state_;
+  Snapshot<SurfaceModel> surface_;
+  std::string priority_ = "normal";
+  std::atomic<bool> stop_{false};
+  std::thread thread_;
+};
+
+}  // namespace ps

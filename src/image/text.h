@@ -1,0 +1,36 @@
+// Labels drawn into images with a tiny built-in 5x7 bitmap font (ASCII: digits, letters -
+// lower case is drawn as upper case - and common punctuation; unknown characters draw as a
+// box), and labelled contact sheets made of several images.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include <glm/glm.hpp>
+
+#include "image/image.h"
+
+namespace ps {
+
+constexpr int kGlyphWidth = 5, kGlyphHeight = 7, kGlyphAdvance = 6;  // pixels at scale 1
+
+// Draws `text` with its top-left corner at (x, y) (row 0 = top); each font pixel becomes a
+// scale x scale block; pixels outside the image are skipped. Channels beyond RGB are untouched.
+void draw_text(Image& image, int x, int y, const std::string& text, const glm::vec3& color, int scale = 1);
+int text_width(const std::string& text, int scale = 1);
+
+struct ContactSheetDesc {
+  int columns = 4;
+  int thumb_width = 256;   // images are scaled (nearest) to this width, aspect kept
+  int padding = 4;         // pixels between cells and around the sheet
+  int label_scale = 2;
+  glm::vec3 background{0.1f, 0.1f, 0.1f};
+  glm::vec3 label_color{1.0f, 1.0f, 1.0f};
+};
+
+// One RGB image: thumbnails in rows, each with its label underneath. Images must be RGB or
+// RGBA; labels.size() must equal images.size().
+Image contact_sheet(const std::vector<Image>& images, const std::vector<std::string>& labels,
+                    const ContactSheetDesc& desc = {});
+
+}  // namespace ps

@@ -1,0 +1,138 @@
+// The haptic loop under a fake clock, device logs and the sanitizer. No GL.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <limits>
+
+#include "devices/sample_log.h"
+#include "devices/sanitizer.h"
+#include "haptics/haptic_loop.h"
+
+namespace ps {
+namespace {
+
+constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
+
+std::vector<DeviceSample> line_samples() {  // 0 -> 100 mm along x in 1 s
+  return {{0.0, {0, 0, 20}, 0, true}, {1.0, {100, 0, 20}, 1, true}};
+}
+
+TEST(HapticLoopTest, FakeClockGivesDeterministicTicks) {
+  std::vector<HapticState> runs[2];
+  for (auto& run : runs) {
+    LogDevice device(line_samples(), true, "line");
+    FakeClock clock;
+    HapticLoop loop(device, clock, HapticLoopParams{});
+    for (int i = 0; i < 20; ++i) {
+      loop.run_ticks(50);
+      run.push_back(loop.state().read());
+    }
+    const Percentiles p = loop.period_stats();
+    EXPECT_EQ(p.p50, 1000.0);  // exactly 1 ms: the fake clock wakes on time
+    EXPECT_EQ(p.max, 1000.0);
+    loop.run_ticks(1);  // tick 1000 closes the first 1 s rate window
+    EXPECT_DOUBLE_EQ(loop.state().read().rate_hz, 1000.0);
+  }
+  for (size_t i = 0; i < runs[0].size(); ++i)
+    for (auto f : {&HapticState::device_mm, &HapticState::position_mm, &HapticState::velocity_mm_s,
+                   &HapticState::proxy_mm, &HapticState::force_n})
+      EXPECT_EQ(runs[0][i].*f, runs[1][i].*f) << "state " << i;
+  const HapticState& last = runs[0].back();
+  EXPECT_EQ(last.tick, 1000u);
+  EXPECT_DOUBLE_EQ(last.time_s, 0.999);
+  EXPECT_NEAR(last.device_mm.x, 99.9, 1e-9);
+  EXPECT_NEAR(last.velocity_mm_s.x, 100.0, 2.0);  // Kalman velocity of a 100 mm/s ramp
+}
+
+TEST(HapticLoopTest, ProxyStaysOnSurfacePublishedByRenderThread) {
+  std::vector<DeviceSample> s = {{0.0, {0, 0, 20}, 0, true}, {1.0, {0, 0, -10}, 0, true}};
+  LogDevice device(s, true, "press");
+  FakeClock clock;
+  HapticLoop loop(device, clock, HapticLoopParams{});
+  SurfaceModel floor;
+  floor.valid = true;
+  floor.probe_radius_mm = 8.0;
+  loop.surface().publish(floor);
+  loop.run_ticks(1001);
+  const HapticState st = loop.state().read();
+  EXPECT_TRUE(st.in_contact);
+  EXPECT_NEAR(st.proxy_mm.z, 8.0, 1e-9);           // sphere resting on z = 0
+  EXPECT_GT(st.force_n.z, 0.0);                    // pushes the hand out
+  EXPECT_LE(glm::length(st.force_n), 8.0 + 1e-12); // clamped
+}
+
+TEST(DeviceSanitizerTest, NanJumpsAndBackwardTimeNeverReachTheProxy) {
+  const std::string log =
+      "# bad data on purpose\n"
+      "0.000 0 0 20 0\n"
+      "0.010 1 0 20 0\n"
+      "0.020 nan 0 20 0\n"
+      "0.030 2 inf 20 0\n"
+      "0.040 500 0 20 0   # a 499 mm jump\n"
+      "0.060 4 0 20 0\n";
+  auto samples = parse_sample_log(log, "bad.log");
+  ASSERT_TRUE(samples.ok()) << samples.error().message;
+  LogDevice device(samples.value(), false, "bad");
+  FakeClock clock;
+  HapticLoop loop(device, clock, HapticLoopParams{});
+  double max_x = 0.0;
+  for (int i = 0; i < 60; ++i) {
+    loop.run_ticks(1);
+    const HapticState st = loop.state().read();
+    for (const glm::dvec3& v : {st.device_mm, st.position_mm, st.velocity_mm_s, st.proxy_mm, st.force_n})
+      ASSERT_TRUE(std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z)) << "tick " << i;
+    max_x = std::max(max_x, st.device_mm.x);
+  }
+  const SanitizerCounts c = loop.state().read().rejected;
+  EXPECT_EQ(c.non_finite, 20u);     // two bad lines, each held for 10 ticks
+  EXPECT_EQ(c.jumps_clamped, 20u);  // ticks 40..59 each move 5 mm toward x = 500
+  EXPECT_DOUBLE_EQ(max_x, 1.0 + 5.0 * 20);
+}
+
+TEST(DeviceSanitizerTest, CountsEachKind) {
+  DeviceSanitizer s({5.0});
+  EXPECT_TRUE(s.filter({0.0, {0, 0, 0}, 0, true}));
+  EXPECT_FALSE(s.filter({0.001, {kNaN, 0, 0}, 0, true}));
+  EXPECT_FALSE(s.filter({-1.0, {0, 0, 0}, 0, true}));
+  EXPECT_FALSE(s.filter({0.002, {0, 0, 0}, 0, false}));
+  auto clamped = s.filter({0.003, {100, 0, 0}, 0, true});
+  ASSERT_TRUE(clamped);
+  EXPECT_DOUBLE_EQ(clamped->position_mm.x, 5.0);
+  EXPECT_EQ(s.counts().non_finite, 1u);
+  EXPECT_EQ(s.counts().time_backwards, 1u);
+  EXPECT_EQ(s.counts().invalid, 1u);
+  EXPECT_EQ(s.counts().jumps_clamped, 1u);
+}
+
+TEST(SampleLogTest, ErrorsNameFileAndLine) {
+  auto r = parse_sample_log("0 0 0 0 0\n# ok\n0.1 1 2\n", "t.log");
+  ASSERT_FALSE(r.ok());
+  EXPECT_EQ(r.error().message, "t.log:3: expected 5 fields 'time_s x y z buttons', got 3");
+  r = parse_sample_log("0 0 zero 0 0\n", "t.log");
+  ASSERT_FALSE(r.ok());
+  EXPECT_EQ(r.error().message, "t.log:1: y: not a number: 'zero'");
+  r = parse_sample_log("0 0 0 0 -1\n", "t.log");
+  ASSERT_FALSE(r.ok());
+  EXPECT_NE(r.error().message.find("t.log:1: buttons"), std::string::npos);
+  EXPECT_FALSE(parse_sample_log("# nothing\n", "e.log").ok());
+}
+
+TEST(SampleLogTest, FormatRoundTripsExactly) {
+  const DeviceSample s{0.1 + 0.2, {1.0 / 3.0, -2e-300, 12345.678901234567}, 5, true};
+  auto r = parse_sample_log(format_sample(s), "x");
+  ASSERT_TRUE(r.ok());
+  EXPECT_EQ(r.value()[0].time_s, s.time_s);
+  EXPECT_EQ(r.value()[0].position_mm, s.position_mm);
+  EXPECT_EQ(r.value()[0].buttons, 5u);
+}
+
+TEST(SampleLogTest, TrajectoryInterpolatesPlaybackHolds) {
+  LogDevice traj(line_samples(), true, "t"), play(line_samples(), false, "p");
+  EXPECT_DOUBLE_EQ(traj.read(0.25).position_mm.x, 25.0);
+  EXPECT_DOUBLE_EQ(play.read(0.25).position_mm.x, 0.0);
+  EXPECT_DOUBLE_EQ(play.read(1.5).position_mm.x, 100.0);
+  EXPECT_DOUBLE_EQ(traj.duration_s(), 1.0);
+}
+
+}  // namespace
+}  // namespace ps
