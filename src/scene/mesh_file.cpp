@@ -55,7 +55,7 @@ Result<Mesh> load_mesh_file(const std::string& path) {
                       " bytes, more than the limit of " + std::to_string(kMaxMeshFileBytes));
   Assimp::Importer importer;
   const aiScene* scene = importer.ReadFile(
-      path, aiProcess_Triangulate | aiProcess_GenSmoothNormals |
+      path, aiProcess_ValidateDataStructure | aiProcess_Triangulate | aiProcess_GenSmoothNormals |
                 aiProcess_JoinIdenticalVertices | aiProcess_PreTransformVertices);
   if (!scene || (scene->mFlags & AI_SCENE_FLAGS_INCOMPLETE)) {
     return make_error(path + ": cannot load mesh: " + importer.GetErrorString());
