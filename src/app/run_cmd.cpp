@@ -183,7 +183,7 @@ Status handle_keys(Session& s, int w, int h) {
 Status window_loop(const RunArgs& a, Session& s) {
   GLFWwindow* win = s.ctx->window();
   const auto t0 = std::chrono::steady_clock::now();
-  double last_title = -1.0;
+  double last_title = -1.0, last_flush = 0.0;
   for (std::uint64_t frame = 0;; ++frame) {
     const auto f0 = std::chrono::steady_clock::now();
     const double now_s = std::chrono::duration<double>(f0 - t0).count();
@@ -202,6 +202,10 @@ Status window_loop(const RunArgs& a, Session& s) {
     s.frame_ms.push_back(std::chrono::duration<double, std::milli>(f1 - f0).count());
     if (st.have_sample) s.latency_ms.push_back(static_cast<double>(f1.time_since_epoch().count() - st.sample_clock_ns) * 1e-6);
     if (now_s - last_title > 0.25) { update_title(s, st, s.frame_ms.back()); last_title = now_s; }
+    if (s.recorder && now_s - last_flush >= 1.0) {  // a crash loses at most the last second
+      if (Status r = s.recorder->flush(); !r) return r;
+      last_flush = now_s;
+    }
   }
   return ok_status();
 }

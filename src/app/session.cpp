@@ -39,6 +39,8 @@ Result<ReplayResult> replay_session(Renderer& renderer, Device& device, const Re
     HapticState state;
     if (Status s = drive_frame(renderer, loop, static_cast<std::uint64_t>(i), state); !s) return s.error();
     if (Status s = sink(i, state.time_s, state, renderer); !s) return s.error();
+    if (!options.record_path.empty() && (i + 1) % std::max(1, static_cast<int>(options.fps)) == 0)
+      if (Status s = recorder.flush(); !s) return s.error();  // once per second of session time
     if (options.progress) std::fprintf(stderr, "\rframe %d/%d  t=%.3f s", i + 1, frames, state.time_s);
     result.rejected = state.rejected;
     result.frames = i + 1;

@@ -75,25 +75,57 @@ std::string format_sample(const DeviceSample& s) {
 }
 
 SampleRecorder::SampleRecorder(std::string path) : path_(std::move(path)) {
-  text_ = "# pseudoshadow device log: time_s x_mm y_mm z_mm buttons\n";
+  pending_ = "# pseudoshadow device log: time_s x_mm y_mm z_mm buttons\n";
+}
+
+SampleRecorder::~SampleRecorder() {
+  if (partial_ != nullptr) std::fclose(partial_);
 }
 
 void SampleRecorder::append(const DeviceSample& s) {
   if (!s.valid) return;
-  text_ += format_sample(s);
+  const std::string line = format_sample(s);  // format outside the lock
+  std::lock_guard<std::mutex> lock(mutex_);
+  pending_ += line;
   ++count_;
 }
 
-Status SampleRecorder::close() {
-  const std::filesystem::path p(path_);
-  const std::filesystem::path tmp = path_ + "." + std::to_string(getpid()) + ".tmp";
-  std::error_code ec;
-  if (p.has_parent_path()) std::filesystem::create_directories(p.parent_path(), ec);
+std::size_t SampleRecorder::count() const {
+  std::lock_guard<std::mutex> lock(mutex_);
+  return count_;
+}
+
+Status SampleRecorder::flush() {
+  if (failed_) return make_error(path_ + ": cannot write device log (an earlier write failed)");
+  std::string text;
   {
-    std::ofstream f(tmp, std::ios::binary);
-    if (!(f << text_) || !f.flush()) return make_error(path_ + ": cannot write device log: " + std::strerror(errno));
+    std::lock_guard<std::mutex> lock(mutex_);
+    text.swap(pending_);
   }
-  std::filesystem::rename(tmp, p, ec);
+  if (partial_ == nullptr) {
+    const std::filesystem::path p(path_);
+    std::error_code ec;
+    if (p.has_parent_path()) std::filesystem::create_directories(p.parent_path(), ec);
+    partial_ = std::fopen(partial_path().c_str(), "wb");
+    if (partial_ == nullptr) {
+      failed_ = true;
+      return make_error(partial_path() + ": cannot write device log: " + std::strerror(errno));
+    }
+  }
+  if (std::fwrite(text.data(), 1, text.size(), partial_) != text.size() || std::fflush(partial_) != 0 ||
+      fsync(fileno(partial_)) != 0) {
+    failed_ = true;
+    return make_error(partial_path() + ": cannot write device log: " + std::strerror(errno));
+  }
+  return ok_status();
+}
+
+Status SampleRecorder::close() {
+  if (Status s = flush(); !s) return s;
+  std::fclose(partial_);
+  partial_ = nullptr;
+  std::error_code ec;
+  std::filesystem::rename(partial_path(), path_, ec);
   if (ec) return make_error(path_ + ": cannot write device log: " + ec.message());
   return ok_status();
 }

@@ -8,6 +8,7 @@
 
 #include <cstdio>
 #include <memory>
+#include <mutex>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -21,18 +22,34 @@ Result<std::vector<DeviceSample>> parse_sample_log(std::string_view text, const 
 Result<std::vector<DeviceSample>> load_sample_log(const std::string& path);
 std::string format_sample(const DeviceSample& s);  // one line with '\n'
 
-// Appends samples in memory (no file I/O on the haptic thread) and writes the file atomically
-// on close(); the caller closes after the haptic thread has been joined.
+// Records a device stream without losing more than the last flush interval on a crash:
+//   append()  (haptic thread) formats the sample into a pending buffer under a mutex that is
+//             held for a string append only - no file I/O on the haptic thread;
+//   flush()   (any other thread, about once a second) appends the pending text to
+//             "<path>.partial" and fsyncs it;
+//   close()   flushes and renames "<path>.partial" to <path>, so <path> only ever holds a
+//             complete log (a previous recording there stays intact until then). After a crash
+//             "<path>.partial" holds everything up to the last flush and can be replayed.
 class SampleRecorder {
  public:
   explicit SampleRecorder(std::string path);
+  ~SampleRecorder();
+  SampleRecorder(const SampleRecorder&) = delete;
+  SampleRecorder& operator=(const SampleRecorder&) = delete;
+
   void append(const DeviceSample& s);
+  Status flush();
   Status close();
-  std::size_t count() const { return count_; }
+  std::size_t count() const;
+  std::string partial_path() const { return path_ + ".partial"; }
 
  private:
-  std::string path_, text_;
+  std::string path_;
+  mutable std::mutex mutex_;  // guards pending_ and count_
+  std::string pending_;
   std::size_t count_ = 0;
+  std::FILE* partial_ = nullptr;  // flush()/close() only (one thread at a time)
+  bool failed_ = false;
 };
 
 // Replays a log. interpolate = false (playback): sample-and-hold of the last sample whose time
