@@ -41,6 +41,12 @@ float lcg_uniform(std::uint32_t& state);
 double gabor_noise(const GaborParams& g, const GaborSetup& s, std::uint32_t seed, double u,
                    double v);
 
+// Smallest |r - W sqrt(-ln truncation)| (mm) over the kernels evaluated at (u, v): how close
+// the point lies to a truncation circle, where the noise jumps by up to truncation * |A|. Tests
+// use it to tell float32 position rounding across a cut from real errors.
+double gabor_truncation_margin(const GaborParams& g, const GaborSetup& s, std::uint32_t seed,
+                               double u, double v);
+
 // Number of impulses generated for one cell (for tests of the count rule and the cap).
 int gabor_cell_impulse_count(const GaborParams& g, const GaborSetup& s, std::uint32_t seed,
                              int cx, int cy);
