@@ -4,4 +4,5 @@
 namespace ps {
 int run_render(int argc, char** argv);
 int run_compare(int argc, char** argv);  // src/app/compare_cmd.cpp
+int run_bench(int argc, char** argv);    // src/app/bench_cmd.cpp
 }  // namespace ps

@@ -15,6 +15,7 @@ whose opacity shows proximity, whose Gabor texture shows the surface's tactile t
 commands:
   render    render a scene headless and write the image, AOVs and stats
   compare   compare two images pixel by pixel (exit 0 pass, 1 fail, 2 error)
+  bench     sweep accuracy knobs: time vs error CSV + plot, skip ratios, peak RSS
 
 Run `pseudoshadow <command> --help` for the options of a command.
 Units: lengths in mm, speeds in mm/s, frequencies in Hz (docs/scene-format.md).
@@ -35,6 +36,7 @@ int main(int argc, char** argv) {
   const char* cmd = argv[1];
   if (!std::strcmp(cmd, "render")) return ps::run_render(argc - 1, argv + 1);
   if (!std::strcmp(cmd, "compare")) return ps::run_compare(argc - 1, argv + 1);
-  std::fprintf(stderr, "pseudoshadow: unknown command '%s' (commands: render, compare; see --help)\n", cmd);
+  if (!std::strcmp(cmd, "bench")) return ps::run_bench(argc - 1, argv + 1);
+  std::fprintf(stderr, "pseudoshadow: unknown command '%s' (commands: render, compare, bench; see --help)\n", cmd);
   return 2;
 }

@@ -59,7 +59,8 @@ int cell_count(const GaborParams& g, const GaborSetup& s, std::uint32_t& r) {
 }
 
 double cell_sum(const GaborParams& g, const GaborSetup& s, std::uint32_t seed, int cx, int cy,
-                double px, double py, double* margin = nullptr) {
+                double px, double py, double* margin = nullptr, double trunc_factor = 0.0) {
+  if (trunc_factor <= 0.0) trunc_factor = s.trunc_factor;
   std::uint32_t r = gabor_cell_seed(cx, cy, seed);
   const int count = cell_count(g, s, r);
   double sum = 0.0;
@@ -74,7 +75,7 @@ double cell_sum(const GaborParams& g, const GaborSetup& s, std::uint32_t seed, i
     const double r2 = dx * dx + dy * dy;
     if (margin && w > 0.0)
       *margin = std::min(*margin, std::abs(std::sqrt(r2) - w * std::sqrt(s.trunc_factor)));
-    if (w <= 0.0 || r2 >= w * w * s.trunc_factor) continue;
+    if (w <= 0.0 || r2 >= w * w * trunc_factor) continue;
     const double phase = 2.0 * std::numbers::pi * (dx * std::cos(theta) + dy * std::sin(theta)) / lambda;
     sum += amp * std::exp(-r2 / (w * w)) * std::cos(phase + psi);
   }
@@ -92,6 +93,19 @@ double gabor_noise(const GaborParams& g, const GaborSetup& s, std::uint32_t seed
   for (int j = -1; j <= 1; ++j)
     for (int i = -1; i <= 1; ++i)
       sum += cell_sum(g, s, seed, cx + i, cy + j, ox - i * s.cell_mm, oy - j * s.cell_mm);
+  return sum;
+}
+
+double gabor_noise_untruncated(const GaborParams& g, const GaborSetup& s, std::uint32_t seed,
+                               double u, double v) {
+  const double fx = u / s.cell_mm, fy = v / s.cell_mm;
+  const int cx = static_cast<int>(std::floor(fx)), cy = static_cast<int>(std::floor(fy));
+  const double ox = (fx - cx) * s.cell_mm, oy = (fy - cy) * s.cell_mm;
+  double sum = 0.0;
+  for (int j = -2; j <= 2; ++j)
+    for (int i = -2; i <= 2; ++i)  // 2 cells = 2 W sqrt(-ln t): radius at which exp = t^4
+      sum += cell_sum(g, s, seed, cx + i, cy + j, ox - i * s.cell_mm, oy - j * s.cell_mm, nullptr,
+                      4.0 * s.trunc_factor);
   return sum;
 }
 

@@ -41,6 +41,12 @@ float lcg_uniform(std::uint32_t& state);
 double gabor_noise(const GaborParams& g, const GaborSetup& s, std::uint32_t seed, double u,
                    double v);
 
+// The same impulses with untruncated kernels (5x5 cells: kernels are still cut where
+// exp(-r^2/W^2) < truncation^4, i.e. below 6e-6 A at truncation 0.05): the ideal noise that
+// the truncation approximates, for measuring the truncation error.
+double gabor_noise_untruncated(const GaborParams& g, const GaborSetup& s, std::uint32_t seed,
+                               double u, double v);
+
 // Smallest |r - W sqrt(-ln truncation)| (mm) over the kernels evaluated at (u, v): how close
 // the point lies to a truncation circle, where the noise jumps by up to truncation * |A|. Tests
 // use it to tell float32 position rounding across a cut from real errors.
