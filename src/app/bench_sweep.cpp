@@ -273,17 +273,23 @@ double slope(const std::vector<double>& x, const std::vector<double>& y) {
 
 }  // namespace
 
-Result<SkipRatios> run_skip_ratios(const BenchOptions& o) {
-  SkipRatios out;
+namespace {
+
+// Probe beyond influence: the whole frame over the plain shading pass it contains.
+Result<double> beyond_influence_ratio(const BenchOptions& o) {
   Scene far = bench_scene(o.size);
   far.probe.position = {0.0, 0.0, 1e6};
-  auto mf = measure(far, o);
-  if (!mf) return mf.error();
-  out.beyond_influence = mf->frame_ms / mf->surface_ms;
+  auto m = measure(far, o);
+  if (!m) return m.error();
+  return m->frame_ms / m->surface_ms;
+}
+
+// PS_TEXTURED=0 versus the textured variant with no fragment inside the onset distance.
+Result<double> untextured_ratio(const BenchOptions& o) {
   Scene untex = bench_scene(o.size), idle = bench_scene(o.size);
   untex.probe.position.z = idle.probe.position.z = kProbeRadiusMm + 1.0;  // no contact: d > 0
   untex.materials[0].textured = false;
-  idle.materials[0].onset_distance_mm = 0.0;  // PS_TEXTURED=1 but no fragment pays for Gabor
+  idle.materials[0].onset_distance_mm = 0.0;
   Measurement pu, pi;  // alternated so both see the same machine load
   for (int round = 0; round < std::max(1, o.rounds); ++round) {
     auto mu = measure(untex, o);
@@ -293,7 +299,12 @@ Result<SkipRatios> run_skip_ratios(const BenchOptions& o) {
     pool(pu, mu.value());
     pool(pi, mi.value());
   }
-  out.untextured = pu.frame_ms / pi.frame_ms;
+  return pu.frame_ms / pi.frame_ms;
+}
+
+// Surface-pass slopes: vs textured footprint pixels (radius sweep) and vs screen pixels at a
+// fixed footprint (same mm per pixel at every size).
+Status slopes(const BenchOptions& o, SkipRatios& out) {
   std::vector<double> fx, fy, sx, sy;
   for (double r : {5.0, 10.0, 15.0, 20.0, 25.0}) {
     Scene s = bench_scene(o.size);
@@ -304,7 +315,7 @@ Result<SkipRatios> run_skip_ratios(const BenchOptions& o) {
     fx.push_back(m->footprint_pixels / 1000.0);
     fy.push_back(m->surface_ms);
   }
-  for (int size : {256, 512, 1024}) {  // same mm per pixel, so the same footprint in pixels
+  for (int size : {256, 512, 1024}) {
     Scene s = bench_scene(size);
     s.camera.ortho_height_mm = kViewMm * size / o.size;
     s.probe.radius_mm = 10.0;
@@ -316,6 +327,20 @@ Result<SkipRatios> run_skip_ratios(const BenchOptions& o) {
   }
   out.ms_per_kpx_footprint = slope(fx, fy);
   out.ms_per_kpx_screen = slope(sx, sy);
+  return ok_status();
+}
+
+}  // namespace
+
+Result<SkipRatios> run_skip_ratios(const BenchOptions& o) {
+  SkipRatios out;
+  auto b = beyond_influence_ratio(o);
+  if (!b) return b.error();
+  out.beyond_influence = b.value();
+  auto u = untextured_ratio(o);
+  if (!u) return u.error();
+  out.untextured = u.value();
+  if (Status st = slopes(o, out); !st) return st.error();
   return out;
 }
 

@@ -102,70 +102,96 @@ double texel_distance(const CapsuleShape& cap, const PlaneFrame& f, const DepthW
   return hp == kNoProbe ? 1e30 : hp - h;
 }
 
-Errors measure(const Scene& s) {
-  Errors e;
+// What one frame produced, read back, plus the plane and window it measured against.
+struct Frame {
+  PlaneFrame plane;
+  DepthWindow window;
+  Image tex, dist, inten, nrm;
+  FrameStats stats;
+};
+
+bool render_one(const Scene& s, Frame& out) {
   auto rr = Renderer::create(s, {});
   EXPECT_TRUE(rr.ok()) << (rr.ok() ? "" : rr.error().message);
-  if (!rr.ok()) return e;
+  if (!rr.ok()) return false;
   Renderer& r = *rr.value();
-  const PlaneFrame f = r.reference();  // the plane this frame measures against
+  out.plane = r.reference();  // the plane this frame measures against
   EXPECT_TRUE(r.render_frame().ok());
-  const Image tex = r.read_aov("texture").value(), dist = r.read_aov("distance").value();
-  const Image inten = r.read_aov("intensity").value(), nrm = r.read_aov("normal").value();
+  out.tex = r.read_aov("texture").value();
+  out.dist = r.read_aov("distance").value();
+  out.inten = r.read_aov("intensity").value();
+  out.nrm = r.read_aov("normal").value();
+  out.stats = r.stats();
+  const int n = s.render.depth_map_size;
+  const glm::dvec3 c = to_plane(out.plane, probe_bounds(s.probe).center);
+  out.window.center_uv = {c.x, c.y};
+  out.window.half_size_mm = s.probe.radius_mm * (1.0 + 2.0 / n) + 1e-6;  // as make_plan()
+  return true;
+}
+
+// Distance and texture errors of pixel (px, py) whose surface point is q (plane coords).
+void pixel_errors(const Scene& s, const Frame& fr, int px, int py, const glm::dvec3& q, Errors& e) {
   const Material& m = s.materials[0];
+  const double d_gpu = fr.dist.at(px, py, 0);
+  if (d_gpu < 1e29) {
+    const CapsuleShape cap = capsule_of(s.probe);
+    double err = 1e30;  // the texel choice may differ by one at a texel edge (float st)
+    for (double nx : {-1e-3, 0.0, 1e-3})
+      for (double ny : {-1e-3, 0.0, 1e-3})
+        err = std::min(err, std::abs(d_gpu - texel_distance(cap, fr.plane, fr.window, s.render.depth_map_size,
+                                                            q.x, q.y, q.z, nx, ny)));
+    e.distance_texel_max = std::max(e.distance_texel_max, err);
+    ++e.distance_pixels;
+  }
+  if (!(fr.inten.at(px, py, 0) > 0.0f && d_gpu < m.onset_distance_mm)) return;
   const GaborSetup g = make_gabor_setup(m.gabor);
-  const CapsuleShape cap = capsule_of(s.probe);
-  const int n_tex = s.render.depth_map_size;
-  DepthWindow win;
-  const glm::dvec3 c = to_plane(f, probe_bounds(s.probe).center);
-  win.center_uv = {c.x, c.y};
-  win.half_size_mm = s.probe.radius_mm * (1.0 + 2.0 / n_tex) + 1e-6;  // as make_plan()
-  e.texel_mm = 2.0 * win.half_size_mm / n_tex;
-  const auto meshes = test::scene_meshes(s);
-  glm::dvec3 normal_sum(0.0), disp_sum(0.0);
+  const double err = std::abs(fr.tex.at(px, py, 0) * g.sigma_unit - gabor_noise(m.gabor, g, s.render.seed, q.x, q.y));
+  if (gabor_truncation_margin(m.gabor, g, s.render.seed, q.x, q.y) < kCutMarginMm) {
+    e.texture_cut_max_abs = std::max(e.texture_cut_max_abs, err);
+    ++e.texture_cut_pixels;
+  } else {
+    e.texture_max_abs = std::max(e.texture_max_abs, err);
+    ++e.texture_pixels;
+  }
+}
+
+// CPU twin of the reductions over the GPU's own AOVs: exact max and weighted displacement.
+void displacement_errors(const Scene& s, const Frame& fr, Errors& e) {
   double max_pen = 0.0, w_sum = 0.0;
+  glm::dvec3 disp_sum(0.0);
+  for (int pass = 0; pass < 2; ++pass)  // pass 0: max penetration; pass 1: weighted sums
+    for (int py = 0; py < s.render.height; ++py)
+      for (int px = 0; px < s.render.width; ++px) {
+        const double d = fr.dist.at(px, py, 0);
+        if (!(fr.inten.at(px, py, 0) > 0.0f && d < 0.0)) continue;
+        if (pass == 0) { max_pen = std::max(max_pen, -d); continue; }
+        const double w = displacement_weight(d, s.render.weight_exponent, max_pen);
+        const glm::dvec3 nv(fr.nrm.at(px, py, 0), fr.nrm.at(px, py, 1), fr.nrm.at(px, py, 2));
+        disp_sum += w * s.materials[0].resistance * -d * nv;
+        w_sum += w;
+      }
+  if (w_sum > 0.0 && max_pen > 0.0)
+    e.displacement_rel = glm::length(fr.stats.displacement - disp_sum / w_sum) / max_pen;
+  e.max_pen_abs = std::abs(fr.stats.max_penetration_mm - max_pen);
+}
+
+Errors measure(const Scene& s) {
+  Errors e;
+  Frame fr;
+  if (!render_one(s, fr)) return e;
+  e.texel_mm = 2.0 * fr.window.half_size_mm / s.render.depth_map_size;
+  const auto meshes = test::scene_meshes(s);
+  glm::dvec3 normal_sum(0.0);
   for (int py = 0; py < s.render.height; ++py)
     for (int px = 0; px < s.render.width; ++px) {
       const auto hit = test::raycast(meshes, test::pixel_ray(s, px, py));
       if (!hit) continue;
       normal_sum += hit->normal;
-      const glm::dvec3 q = to_plane(f, hit->position);
-      const double d_gpu = dist.at(px, py, 0);
-      if (d_gpu < 1e29) {
-        double err = 1e30;  // the texel choice may differ by one at a texel edge (float st)
-        for (double nx : {-1e-3, 0.0, 1e-3})
-          for (double ny : {-1e-3, 0.0, 1e-3})
-            err = std::min(err, std::abs(d_gpu - texel_distance(cap, f, win, n_tex, q.x, q.y, q.z, nx, ny)));
-        e.distance_texel_max = std::max(e.distance_texel_max, err);
-        ++e.distance_pixels;
-      }
-      if (inten.at(px, py, 0) > 0.0f && d_gpu < m.onset_distance_mm) {
-        const double ref = gabor_noise(m.gabor, g, s.render.seed, q.x, q.y);
-        const double err = std::abs(tex.at(px, py, 0) * g.sigma_unit - ref);
-        if (gabor_truncation_margin(m.gabor, g, s.render.seed, q.x, q.y) < kCutMarginMm) {
-          e.texture_cut_max_abs = std::max(e.texture_cut_max_abs, err);
-          ++e.texture_cut_pixels;
-        } else {
-          e.texture_max_abs = std::max(e.texture_max_abs, err);
-          ++e.texture_pixels;
-        }
-      }
-      if (inten.at(px, py, 0) > 0.0f && d_gpu < 0.0) max_pen = std::max(max_pen, -double(d_gpu));
+      pixel_errors(s, fr, px, py, to_plane(fr.plane, hit->position), e);
     }
-  for (int py = 0; py < s.render.height; ++py)  // CPU twin of the weighted average (AOV inputs)
-    for (int px = 0; px < s.render.width; ++px) {
-      const double d = dist.at(px, py, 0);
-      if (!(inten.at(px, py, 0) > 0.0f && d < 0.0)) continue;
-      const double w = displacement_weight(d, s.render.weight_exponent, max_pen);
-      const glm::dvec3 nv(nrm.at(px, py, 0), nrm.at(px, py, 1), nrm.at(px, py, 2));
-      disp_sum += w * m.resistance * -d * nv;
-      w_sum += w;
-    }
-  const glm::dvec3 n_cpu = glm::normalize(normal_sum), n_gpu = r.stats().reference_normal;
-  e.normal_deg = std::acos(std::min(1.0, glm::dot(n_cpu, n_gpu))) * kDegPerRad;
-  if (w_sum > 0.0 && max_pen > 0.0)
-    e.displacement_rel = glm::length(r.stats().displacement - disp_sum / w_sum) / max_pen;
-  e.max_pen_abs = std::abs(r.stats().max_penetration_mm - max_pen);
+  const glm::dvec3 n_cpu = glm::normalize(normal_sum);
+  e.normal_deg = std::acos(std::min(1.0, glm::dot(n_cpu, fr.stats.reference_normal))) * kDegPerRad;
+  displacement_errors(s, fr, e);
   return e;
 }
 
