@@ -15,11 +15,12 @@ namespace {
 //   sigma^2 = (n_mean / (pi C^2)) * (1/2) * (pi / 2) E[W^2] = n_mean E[W^2] / (4 C^2).
 // Truncation at exp(-r^2/W^2) = t removes a fraction t^2 of that integral (ignored: 0.25 %
 // at t = 0.05).
-double unit_sigma(const GaborParams& g, double cell_mm) {
+double unit_sigma(const GaborParams& g, double cell_mm, int stratified_count) {
   const double a = g.lambda_min_mm, b = g.lambda_max_mm;
   const double e_lambda2 = (a * a + a * b + b * b) / 3.0;  // lambda ~ U[a, b]
   const double e_w2 = g.kernel_periods * g.kernel_periods * e_lambda2;
-  const double n_mean = 0.5 * (g.n_min + g.n_max);
+  // Stratified: K impulses per cell is the density of n = K pi impulses per kernel footprint.
+  const double n_mean = stratified_count > 0 ? stratified_count * std::numbers::pi : 0.5 * (g.n_min + g.n_max);
   const double var = n_mean * e_w2 / (4.0 * cell_mm * cell_mm);
   return var > 0.0 ? std::sqrt(var) : 1.0;
 }
@@ -31,8 +32,10 @@ GaborSetup make_gabor_setup(const GaborParams& g) {
   s.trunc_factor = -std::log(std::clamp(g.truncation, 1e-12, 0.999999));
   const double lambda_max = std::max(g.lambda_min_mm, g.lambda_max_mm);
   s.cell_mm = std::max(1e-6, g.kernel_periods * lambda_max * std::sqrt(s.trunc_factor));
-  s.sigma_unit = unit_sigma(g, s.cell_mm);
   s.max_impulses = std::max(0, g.max_impulses_per_cell);
+  if (g.strategy == GaborParams::Strategy::kStratified)
+    s.stratified_count = std::clamp(g.stratified_impulses, 1, std::max(1, s.max_impulses));
+  s.sigma_unit = unit_sigma(g, s.cell_mm, s.stratified_count);
   return s;
 }
 
@@ -50,6 +53,7 @@ float lcg_uniform(std::uint32_t& state) {
 namespace {
 
 int cell_count(const GaborParams& g, const GaborSetup& s, std::uint32_t& r) {
+  if (s.stratified_count > 0) return std::min(s.stratified_count, s.max_impulses);
   // Same float operations as the shader (mix = a + (b - a) * t) so counts match bit for bit.
   const float n_min = static_cast<float>(g.n_min), n_max = static_cast<float>(g.n_max);
   const float n = n_min + (n_max - n_min) * lcg_uniform(r);
@@ -63,10 +67,15 @@ double cell_sum(const GaborParams& g, const GaborSetup& s, std::uint32_t seed, i
   if (trunc_factor <= 0.0) trunc_factor = s.trunc_factor;
   std::uint32_t r = gabor_cell_seed(cx, cy, seed);
   const int count = cell_count(g, s, r);
+  // Naive: one stratum (the whole cell); stratified: a g x g grid. Same float ops as the shader.
+  const int grid = s.stratified_count > 0 ? static_cast<int>(std::ceil(std::sqrt(static_cast<float>(s.stratified_count)))) : 1;
+  const float inv_grid = 1.0f / static_cast<float>(grid);
   double sum = 0.0;
   for (int k = 0; k < count; ++k) {
-    const double dx = px - lcg_uniform(r) * s.cell_mm;
-    const double dy = py - lcg_uniform(r) * s.cell_mm;
+    const float jx = (static_cast<float>(k % grid) + lcg_uniform(r)) * inv_grid;
+    const float jy = (static_cast<float>((k / grid) % grid) + lcg_uniform(r)) * inv_grid;
+    const double dx = px - jx * s.cell_mm;
+    const double dy = py - jy * s.cell_mm;
     const double amp = std::lerp(g.a_min, g.a_max, static_cast<double>(lcg_uniform(r)));
     const double lambda = std::lerp(g.lambda_min_mm, g.lambda_max_mm, static_cast<double>(lcg_uniform(r)));
     const double theta = std::lerp(g.theta_min_rad, g.theta_max_rad, static_cast<double>(lcg_uniform(r)));

@@ -11,6 +11,9 @@
 //   on the expected count because the random phases make cross terms vanish).
 //   Per impulse, in this order: x, y ~ U[0,C); A ~ U[a_min,a_max]; lambda ~ U[lmin,lmax];
 //   theta ~ U[tmin,tmax]; psi ~ U[0, 2pi).
+//   Stratified strategy (GaborParams::Strategy::kStratified): count = min(cap, K) fixed, no
+//   density draws; impulse k sits in stratum (k mod g, k div g) of a g x g grid over the
+//   cell, g = ceil(sqrt(K)), jittered by the same x, y draws; same A, lambda, theta, psi draws.
 //   Kernel: A exp(-r^2/W^2) cos(2pi (dx cos(theta) + dy sin(theta)) / lambda + psi),
 //   W = kernel_periods * lambda, cut to 0 where exp(-r^2/W^2) < truncation.
 #pragma once
@@ -29,6 +32,9 @@ struct GaborSetup {
   double trunc_factor = 3.0;  // -ln(truncation): kernel cut at r^2 < W^2 * trunc_factor
   double sigma_unit = 1.0;    // analytic std-dev of the noise with A == 1 (see gabor.cpp)
   int max_impulses = 64;
+  // Stratified strategy: this many impulses in every cell (0 = naive random count), one per
+  // stratum of a g x g grid, g = ceil(sqrt(count)).
+  int stratified_count = 0;
 };
 
 GaborSetup make_gabor_setup(const GaborParams& g);

@@ -227,6 +227,12 @@ TEST_P(AccuracyGLTest, FlatPlane) { check("flat", measure(flat_case())); }
 TEST_P(AccuracyGLTest, TiltedPlane) { check("tilted", measure(tilted_case())); }
 TEST_P(AccuracyGLTest, SphereCap) { check("sphere", measure(sphere_case())); }
 TEST_P(AccuracyGLTest, Mesh) { check("mesh", measure(mesh_case())); }
+TEST_P(AccuracyGLTest, TiltedPlaneStratifiedGabor) {
+  Scene s = tilted_case();
+  s.materials[0].gabor.strategy = GaborParams::Strategy::kStratified;
+  s.materials[0].gabor.stratified_impulses = 4;
+  check("strat", measure(s));
+}
 
 PS_INSTANTIATE_HEADLESS_BACKENDS(AccuracyGLTest);
 

@@ -143,7 +143,10 @@ TEST(GaborSpectrumTest, MeanAndVarianceMatchAnalytic) {
   ranged.lambda_max_mm = 1.2;
   ranged.n_min = 10;
   ranged.n_max = 40;
-  for (const GaborParams& g : {mats[0], mats[1], ranged}) {
+  GaborParams stratified = material(0.6, 0.0, 1.0);
+  stratified.strategy = GaborParams::Strategy::kStratified;
+  stratified.stratified_impulses = 4;
+  for (const GaborParams& g : {mats[0], mats[1], ranged, stratified}) {
     const GaborSetup s = make_gabor_setup(g);
     double sum = 0.0, sum2 = 0.0;
     const int n = 200;
@@ -158,6 +161,19 @@ TEST(GaborSpectrumTest, MeanAndVarianceMatchAnalytic) {
     EXPECT_NEAR(var / (s.sigma_unit * s.sigma_unit), 1.0, 0.05) << "lambda " << g.lambda_min_mm;
     EXPECT_NEAR(mean / s.sigma_unit, 0.0, 0.05);
   }
+}
+
+TEST(GaborSpectrumTest, StratifiedHasFixedCountAndTheSamePeak) {
+  GaborParams g = material(0.5, 0.6, 0.6);
+  g.strategy = GaborParams::Strategy::kStratified;
+  g.stratified_impulses = 3;
+  const GaborSetup s = make_gabor_setup(g);
+  for (int c = 0; c < 50; ++c) EXPECT_EQ(gabor_cell_impulse_count(g, s, 7, c, -c), 3);
+  std::vector<double> power(kSize * kSize, 0.0);
+  for (std::uint32_t seed : {1u, 2u}) add_periodogram(g, seed, 0.5 / kPixelsPerPeriod, power);
+  const Centroid c = half_plane_centroid(power, 0.6);
+  EXPECT_NEAR(c.freq * kPixelsPerPeriod, 1.0, 0.02);  // same tolerances as the naive peak
+  EXPECT_NEAR(std::remainder(c.angle - 0.6, 2 * kPi) * 180 / kPi, 0.0, 1.0);
 }
 
 }  // namespace
