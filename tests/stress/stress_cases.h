@@ -2,6 +2,7 @@
 #pragma once
 
 #include <functional>
+#include <ostream>
 #include <string>
 #include <vector>
 
@@ -17,6 +18,9 @@ struct StressCase {
   // resistance x max penetration), not a non-finite result silently zeroed.
   bool expect_push = false;
 };
+
+// gtest prints a parameter with this (found by ADL) instead of its bytes.
+inline void PrintTo(const StressCase& c, std::ostream* os) { *os << c.name; }
 
 // 32^2 orthographic view of a textured plane, sphere probe r = 8 mm sunk 1 mm into it.
 Scene stress_base_scene();
