@@ -47,7 +47,11 @@ float probe_distance(vec2 uv, float h_surface) {
 
 GaborMaterial gabor_material() {
   return GaborMaterial(u_gabor_a.xy, u_gabor_a.zw, u_gabor_b.xy, u_gabor_b.zw, u_gabor_c.x,
-                       u_gabor_c.y, u_gabor_c.z, u_seed.x, int(u_seed.y));
+                       u_gabor_c.y, u_gabor_c.z, u_seed.x, int(u_seed.y)
+#if PS_GABOR_STRATIFIED
+                       , int(u_seed.z)
+#endif
+                       );
 }
 
 void main() {

@@ -2,6 +2,10 @@
 // twin: src/reference/gabor.{h,cpp}. The random decisions here must stay bit-identical to it.
 #pragma once
 
+#ifndef PS_GABOR_STRATIFIED
+#define PS_GABOR_STRATIFIED 0  // 1: fixed count per cell on a jittered grid (see the CPU twin)
+#endif
+
 const float kPi = 3.14159265358979;
 const uint kLcgMultiplier = 3039177861u;  // r_{n+1} = 3039177861 r_n mod 2^32
 
@@ -15,6 +19,9 @@ struct GaborMaterial {
   float trunc_factor;    // kernels are cut where r^2 >= W^2 * trunc_factor
   uint seed;
   int max_impulses;      // cap per cell
+#if PS_GABOR_STRATIFIED
+  int stratified_count;  // impulses in every cell
+#endif
 };
 
 uint gabor_cell_seed(ivec2 cell, uint seed) {
@@ -30,12 +37,23 @@ float lcg_uniform(inout uint state) {
 // Sum of the kernels of one cell at p, given relative to the cell's lower corner (mm).
 float gabor_cell(GaborMaterial g, ivec2 cell, vec2 p) {
   uint r = gabor_cell_seed(cell, g.seed);
+#if PS_GABOR_STRATIFIED
+  int count = min(g.stratified_count, g.max_impulses);
+  int grid = int(ceil(sqrt(float(g.stratified_count))));
+  float inv_grid = 1.0 / float(grid);
+#else
   float n = g.density.x + (g.density.y - g.density.x) * lcg_uniform(r);
   float expected = n * (1.0 / kPi);
   int count = clamp(int(floor(expected + lcg_uniform(r))), 0, g.max_impulses);
+#endif
   float sum = 0.0;
   for (int k = 0; k < count; ++k) {
+#if PS_GABOR_STRATIFIED
+    vec2 jitter = vec2(lcg_uniform(r), lcg_uniform(r));
+    vec2 d = p - (vec2(float(k % grid), float((k / grid) % grid)) + jitter) * inv_grid * g.cell_mm;
+#else
     vec2 d = p - vec2(lcg_uniform(r), lcg_uniform(r)) * g.cell_mm;
+#endif
     float amp = mix(g.amplitude.x, g.amplitude.y, lcg_uniform(r));
     float lambda = mix(g.lambda_mm.x, g.lambda_mm.y, lcg_uniform(r));
     float theta = mix(g.theta_rad.x, g.theta_rad.y, lcg_uniform(r));

@@ -17,5 +17,5 @@ layout(std140, binding = 0) uniform SurfaceBlock {
   vec4 u_gabor_c;        // x kernel_periods, y cell mm, z trunc factor, w sigma_unit
   vec4 u_modulation;     // x speed gain [0,1], y onset distance mm, z resistance, w contrast (sigmas)
   vec4 u_misc;           // x albedo texture repeat mm; y..w unused
-  uvec4 u_seed;          // x seed, y max impulses per cell
+  uvec4 u_seed;          // x seed, y max impulses per cell, z stratified impulses per cell
 };

@@ -32,7 +32,8 @@ SurfaceBlock make_surface_block(const SurfaceFrame& fr, const Material& m, const
   b.gabor_c = v4(g.kernel_periods, gs.cell_mm, gs.trunc_factor, gs.sigma_unit);
   b.modulation = v4(speed_gain, m.onset_distance_mm, m.resistance, fr.contrast_sigmas);
   b.misc = v4(m.albedo_texture_scale_mm, 0.0, 0.0, 0.0);
-  b.seed = glm::uvec4(fr.seed, static_cast<unsigned>(gs.max_impulses), 0u, 0u);
+  b.seed = glm::uvec4(fr.seed, static_cast<unsigned>(gs.max_impulses),
+                      static_cast<unsigned>(gs.stratified_count), 0u);
   return b;
 }
 
@@ -65,12 +66,15 @@ Status SurfacePass::init(const std::string& glsl_root, const Params& params) {
   return ok_status();
 }
 
-Result<const gl::Program*> SurfacePass::program(bool shadow, bool textured) {
-  const auto key = std::make_pair(shadow, textured && shadow);
+Result<const gl::Program*> SurfacePass::program(bool shadow, bool textured, bool stratified) {
+  const bool tex = textured && shadow;
+  const auto key = std::make_tuple(shadow, tex, stratified && tex);
   auto it = programs_.find(key);
   if (it != programs_.end()) return &it->second;
   gl::ProgramDesc desc{{"surface.vert", "surface.frag"},
-                       {{"PS_SHADOW", key.first ? "1" : "0"}, {"PS_TEXTURED", key.second ? "1" : "0"}}};
+                       {{"PS_SHADOW", shadow ? "1" : "0"}, {"PS_TEXTURED", tex ? "1" : "0"}}};
+  // Only the stratified variant gets the extra define: the naive source stays byte-identical.
+  if (std::get<2>(key)) desc.defines.push_back({"PS_GABOR_STRATIFIED", "1"});
   auto built = gl::build_program(desc, glsl_root_);
   if (!built) return built.error();
   return &programs_.emplace(key, std::move(built.value())).first->second;
@@ -95,7 +99,7 @@ Status SurfacePass::run(const std::vector<SurfaceDraw>& draws, const gl::Texture
   glBindBufferBase(GL_UNIFORM_BUFFER, 0, ubo_.id());
   glBindTextureUnit(0, probe_depth ? probe_depth->id() : dummy_.id());
   for (const SurfaceDraw& d : draws) {
-    auto prog = program(d.shadow, d.textured);
+    auto prog = program(d.shadow, d.textured, d.stratified);
     if (!prog) return prog.error();
     glUseProgram(prog.value()->id());
     glBindTextureUnit(1, d.albedo ? d.albedo->id() : dummy_.id());

@@ -1,4 +1,5 @@
 // Surface pass (thesis Table 4.2 step 3): draws every surface once into an MRT framebuffer.
+// Variants: PS_SHADOW, PS_TEXTURED, PS_GABOR_STRATIFIED (textured only).
 //   inputs : surfaces (GpuMesh + material uniforms), probe depth map (R32F), albedo textures
 //   outputs: color()  RGBA8    lit surface with the pseudo-shadow (gamma-encoded)
 //            normal() RGBA32F  (front-facing normal, 1) per covered pixel, full mip chain
@@ -11,6 +12,7 @@
 #pragma once
 
 #include <map>
+#include <tuple>
 #include <string>
 #include <utility>
 #include <vector>
@@ -56,6 +58,7 @@ struct SurfaceDraw {
   SurfaceBlock block;
   bool shadow = true;    // PS_SHADOW variant
   bool textured = true;  // PS_TEXTURED variant
+  bool stratified = false;  // PS_GABOR_STRATIFIED variant (GaborParams::Strategy::kStratified)
   const gl::Texture* albedo = nullptr;
 };
 
@@ -77,13 +80,13 @@ struct SurfacePass {
   int mip_levels() const { return levels_; }
 
  private:
-  Result<const gl::Program*> program(bool shadow, bool textured);
+  Result<const gl::Program*> program(bool shadow, bool textured, bool stratified = false);
 
   std::string glsl_root_;
   Params params_;
   glm::ivec2 padded_{1, 1};
   int levels_ = 1;
-  std::map<std::pair<bool, bool>, gl::Program> programs_;
+  std::map<std::tuple<bool, bool, bool>, gl::Program> programs_;
   gl::Texture color_, normal_, aov_, dummy_;
   gl::Renderbuffer depth_;
   gl::Framebuffer fbo_;

@@ -21,6 +21,26 @@ bool has_texture(const Material& m) {
   return m.textured && (m.gabor.a_min != 0.0 || m.gabor.a_max != 0.0) &&
          m.gabor.max_impulses_per_cell > 0 && std::max(m.gabor.n_min, m.gabor.n_max) > 0.0;
 }
+// Distance is measured along the reference normal (d = h_probe - h_surface), so a probe that
+// sank far below a surface is penetrating it (d << 0), even when its bounding sphere is
+// farther than the influence distance from the surface's box. True when the probe's lowest
+// height lies below the box's highest one and its footprint disc, on the plane, comes
+// within `reach` of the box's projection.
+bool sunk_below(const BoundingSphere& probe, const Aabb& box, const PlaneFrame& f, double reach) {
+  glm::dvec3 lo(1e300), hi(-1e300);
+  for (int i = 0; i < 8; ++i) {
+    const glm::dvec3 corner((i & 1) ? box.max.x : box.min.x, (i & 2) ? box.max.y : box.min.y,
+                            (i & 4) ? box.max.z : box.min.z);
+    const glm::dvec3 q = to_plane(f, corner);
+    lo = glm::min(lo, q);
+    hi = glm::max(hi, q);
+  }
+  const glm::dvec3 c = to_plane(f, probe.center);
+  if (!(c.z - probe.radius < hi.z)) return false;
+  const double du = std::max({lo.x - c.x, 0.0, c.x - hi.x}), dv = std::max({lo.y - c.y, 0.0, c.y - hi.y});
+  return std::hypot(du, dv) < probe.radius + reach;
+}
+
 }  // namespace
 
 FramePlan make_plan(const Scene& scene, const std::vector<Aabb>& bounds,
@@ -34,7 +54,8 @@ FramePlan make_plan(const Scene& scene, const std::vector<Aabb>& bounds,
     const Material& m = scene.materials[static_cast<size_t>(scene.surfaces[i].material_index)];
     const double dist = distance_sphere_aabb(probe, bounds[i]);
     plan.surface_distance_mm[i] = dist;
-    plan.surface_shadow[i] = dist < m.influence_distance_mm;
+    plan.surface_shadow[i] = dist < m.influence_distance_mm ||
+                             sunk_below(probe, bounds[i], frame, m.influence_distance_mm);
     plan.surface_textured[i] = plan.surface_shadow[i] && has_texture(m);
     if (!plan.surface_shadow[i]) {
       plan.skipped.push_back(surface_label(scene, i) + ": pseudo-shadow and Gabor (probe beyond influence distance)");

@@ -169,6 +169,7 @@ std::vector<SurfaceDraw> Renderer::surface_draws(const FramePlan& plan) {
     d.block = make_surface_block(fr, m, gabor_setups_[mi], gain, albedo != nullptr);
     d.shadow = plan.surface_shadow[i];
     d.textured = plan.surface_textured[i];
+    d.stratified = gabor_setups_[mi].stratified_count > 0;
     d.albedo = albedo;
     draws.push_back(std::move(d));
   }

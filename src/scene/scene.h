@@ -40,6 +40,12 @@ struct GaborParams {
   double kernel_periods = 1.0;   // Gaussian envelope width W = kernel_periods * lambda
   double truncation = 0.05;      // kernel cut where exp(-r^2/W^2) < truncation
   int max_impulses_per_cell = 64;  // hard cap so huge n cannot hang the shader
+  // Evaluation strategy (docs/benchmarks.md). kNaive: the thesis's random count per cell
+  // (n / pi on average). kStratified: exactly `stratified_impulses` per cell, one per stratum
+  // of a jittered grid; n is then ignored (another texture, same spectrum, fewer kernels).
+  enum class Strategy { kNaive, kStratified };
+  Strategy strategy = Strategy::kNaive;
+  int stratified_impulses = 4;
 };
 
 struct Material {

@@ -21,6 +21,18 @@ TEST(PlanTest, NearProbeShadowsAndTextures) {
   EXPECT_LT(p.window.half_size_mm, 8.1);
 }
 
+TEST(PlanTest, ProbeSunkFarBelowTheSurfaceStillShadows) {
+  // 1000 mm under the plane: the bounding sphere is far from the plane's box, but along the
+  // reference normal the probe is penetrating (d = -1000) and must be pushed out.
+  const Scene s = test::flat_plane_scene(-1000.0);
+  const FramePlan p = make_plan(s, plane_bounds(), {{0, 0, -1000}, 8}, make_plane_frame({0, 0, 1}), 256);
+  EXPECT_TRUE(p.shadow_active);
+  EXPECT_TRUE(p.surface_shadow[0]);
+  // Laterally beyond the plane's edge it stays skipped.
+  const FramePlan q = make_plan(s, plane_bounds(), {{500, 0, -1000}, 8}, make_plane_frame({0, 0, 1}), 256);
+  EXPECT_FALSE(q.shadow_active);
+}
+
 TEST(PlanTest, FarProbeSkipsEverything) {
   const Scene s = test::flat_plane_scene(100.0);
   const FramePlan p = make_plan(s, plane_bounds(), {{0, 0, 100}, 8}, make_plane_frame({0, 0, 1}), 256);

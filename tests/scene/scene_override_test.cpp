@@ -45,6 +45,16 @@ TEST(SceneOverrideTest, OverridesKeysTheFileOmitted) {
   EXPECT_EQ(scene->render.width, 320);
 }
 
+TEST(SceneOverrideTest, GaborStrategyKeys) {
+  Result<Scene> scene = parse(kScene, {"materials.wood.gabor_strategy=stratified",
+                                       "materials.wood.stratified_impulses=2"});
+  ASSERT_TRUE(scene) << scene.error().message;
+  EXPECT_EQ(scene->materials[0].gabor.strategy, GaborParams::Strategy::kStratified);
+  EXPECT_EQ(scene->materials[0].gabor.stratified_impulses, 2);
+  EXPECT_FALSE(parse(kScene, {"materials.wood.gabor_strategy=fast"}));
+  EXPECT_FALSE(parse(kScene, {"materials.wood.stratified_impulses=0"}));
+}
+
 TEST(SceneOverrideTest, CanAddAMaterial) {
   Result<Scene> scene = parse(kScene, {"materials.felt.lambda_min=0.2",
                                        "surfaces.1.material=felt"});

@@ -1,0 +1,70 @@
+// `pseudoshadow bench`: measurement side. Every configuration renders one analytic scene (a
+// flat plane under an orthographic camera, a sphere probe sunk into it) so each error has a
+// closed-form or CPU-reference answer on the same frame:
+//   texture_rms_sigma  RMS of the GPU texture AOV minus the CPU Gabor reference of the same
+//                      configuration (src/reference/gabor.h), in sigmas: the implementation
+//                      error of the evaluation strategy;
+//   texture_vs_ideal   RMS against the same impulses with untruncated kernels: the
+//                      truncation error;
+//   texture_vs_target  RMS against the baseline material's texture (n in [20, 30]): how far
+//                      another impulse density moves the texture from the target one;
+//   displacement_rel   |push along n - true penetration| / true penetration after one frame;
+//   distance_max_mm    max |distance AOV - analytic sphere-plane distance| over the footprint;
+//   normal_deg         reference normal vs the plane's normal.
+// Timings: median over warm frames of the summed per-pass wall times (glFinish per pass).
+#pragma once
+
+#include <functional>
+#include <string>
+#include <vector>
+
+#include "core/result.h"
+#include "scene/scene.h"
+
+namespace ps::bench {
+
+struct BenchOptions {
+  int size = 512;          // image side, pixels
+  int warm_frames = 2;     // discarded (shader JIT, caches)
+  int timed_frames = 3;    // per round; the median is over all rounds' frames
+  // The configurations are measured round-robin this many times, so load from other
+  // processes on a shared machine spreads over all of them instead of skewing a few.
+  int rounds = 3;
+  std::function<void(const std::string&)> progress;  // one line per step; may be empty
+};
+
+struct Measurement {
+  double frame_ms = 0.0, surface_ms = 0.0;
+  double texture_rms_sigma = 0.0, texture_vs_ideal = 0.0, texture_vs_target = 0.0;
+  double displacement_rel = 0.0, distance_max_mm = 0.0, normal_deg = 0.0;
+  int footprint_pixels = 0;
+  std::vector<double> frame_samples, surface_samples;  // per timed frame, ms
+};
+
+struct BenchRow {
+  std::string group, value;  // knob and its setting
+  std::string metric;        // which error column is this group's error
+  Measurement m;
+  double error = 0.0;        // = the metric's value
+  bool pareto = false;       // on the group's time-vs-error Pareto front
+};
+
+// Baseline bench scene at `size`^2 (flat plane, 60 mm ortho view, r = 25 mm probe 0.5 mm deep).
+Scene bench_scene(int size);
+
+// Renders `scene` (fresh renderer; needs a current GL context) and measures it.
+Result<Measurement> measure(const Scene& scene, const BenchOptions& o);
+
+// The accuracy knob sweep (reduction base resolution, depth map, Gabor n, truncation,
+// strategy, displacement method); Pareto flags set per group.
+Result<std::vector<BenchRow>> run_sweep(const BenchOptions& o);
+
+struct SkipRatios {
+  double beyond_influence = 0.0;  // frame with probe far / its plain shading (surface) pass
+  double untextured = 0.0;        // PS_TEXTURED=0 frame / textured frame with no textured pixel
+  double ms_per_kpx_footprint = 0.0;  // surface-pass slope vs textured footprint pixels
+  double ms_per_kpx_screen = 0.0;     // surface-pass slope vs screen pixels, fixed footprint
+};
+Result<SkipRatios> run_skip_ratios(const BenchOptions& o);
+
+}  // namespace ps::bench
