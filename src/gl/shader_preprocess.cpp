@@ -2,6 +2,7 @@
 // #pragma once, variant #defines after #version; plus mapping of compiler logs back to files.
 // Shared by the run-time program builder and the build-time validator (ps_glslcheck).
 #include <algorithm>
+#include <charconv>
 #include <cassert>
 #include <filesystem>
 #include <fstream>
@@ -181,12 +182,18 @@ std::string map_shader_log(const std::string& log, const std::vector<std::string
   static const std::regex kGlslang(R"(^(ERROR|WARNING): (\d+):(\d+): (.*)$)");
   static const std::regex kNvidia(R"(^(\d+)\((\d+)\) : (.*)$)");
   // "<file>:<line>" from a source-string number and a (possibly strided) line number.
+  // Numbers are parsed with from_chars: a log line with an absurd number (fuzzing found one
+  // that made std::stoul throw out_of_range) is left as it is instead of aborting.
   auto where = [&](const std::string& source, const std::string& line_text) -> std::string {
-    const long line = std::stol(line_text);
-    size_t index = std::stoul(source);
-    long local = line;
-    if (line >= kIncludeLineStride) {  // the stride is authoritative: Mesa may report source 0
-      index = static_cast<size_t>(line / kIncludeLineStride);
+    unsigned long long index = 0, line = 0;
+    const auto src_end = source.data() + source.size(), line_end = line_text.data() + line_text.size();
+    const auto a = std::from_chars(source.data(), src_end, index);
+    const auto b = std::from_chars(line_text.data(), line_end, line);
+    if (a.ec != std::errc() || a.ptr != src_end || b.ec != std::errc() || b.ptr != line_end)
+      return source + ":" + line_text;
+    unsigned long long local = line;
+    if (line >= static_cast<unsigned long long>(kIncludeLineStride)) {  // the stride is authoritative: Mesa may report source 0
+      index = line / kIncludeLineStride;
       local = line % kIncludeLineStride;
     }
     if (index >= files.size()) return source + ":" + line_text;  // not ours: leave it

@@ -199,4 +199,11 @@ TEST(StageFromPathTest, Extensions) {
   EXPECT_EQ(ps::gl::stage_from_path("c.comp"), ps::gl::Stage::kCompute);
 }
 
+TEST(MapShaderLogTest, AbsurdNumbersAreLeftUnmapped) {
+  // Found by fuzz_glsl_include: std::stoul threw out_of_range on a 20-digit source number.
+  const std::string log = "ERROR: 0444444444444444444444:5: x\n0:99999999999999999999999(3): y";
+  EXPECT_EQ(ps::gl::map_shader_log(log, {"a.frag"}),
+            "0444444444444444444444:5: error: x\n0:99999999999999999999999: y\n");
+}
+
 }  // namespace

@@ -1,4 +1,5 @@
 // Procedural and file meshes: analytic checks (area, radius, outward normals, winding).
+#include <fstream>
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -160,6 +161,17 @@ TEST(MeshTest, MissingMeshFileNamesTheFile) {
   ASSERT_FALSE(mesh);
   EXPECT_EQ(mesh.error().message.rfind("/nonexistent/dir/probe.obj: cannot load mesh: ", 0), 0u)
       << mesh.error().message;
+}
+
+TEST(MeshTest, HugeDeclaredCountIsRefusedBeforeAssimpAllocates) {
+  // Found by fuzz_mesh: assimp allocated 8 GiB for the face count an OFF header declared.
+  const auto path = std::filesystem::temp_directory_path() / "ps_mesh_test_huge.off";
+  std::ofstream(path) << "OFF\n3 1999999999999 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n";
+  Result<Mesh> mesh = load_mesh_file(path.string());
+  ASSERT_FALSE(mesh);
+  EXPECT_NE(mesh.error().message.find("header declares more than"), std::string::npos)
+      << mesh.error().message;
+  std::filesystem::remove(path);
 }
 
 }  // namespace
