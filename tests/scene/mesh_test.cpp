@@ -174,5 +174,15 @@ TEST(MeshTest, HugeDeclaredCountIsRefusedBeforeAssimpAllocates) {
   std::filesystem::remove(path);
 }
 
+TEST(MeshTest, PlyWithoutEndHeaderIsRefusedNotHung) {
+  // Found by fuzz_mesh: assimp 5.2's PLY reader loops forever on such a header.
+  const auto path = std::filesystem::temp_directory_path() / "ps_mesh_test_noend.ply";
+  std::ofstream(path) << "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\n0 0 0\n";
+  Result<Mesh> mesh = load_mesh_file(path.string());
+  ASSERT_FALSE(mesh);
+  EXPECT_NE(mesh.error().message.find("no end_header"), std::string::npos) << mesh.error().message;
+  std::filesystem::remove(path);
+}
+
 }  // namespace
 }  // namespace ps
