@@ -1,4 +1,5 @@
 // load_mesh_file: any format assimp reads (OBJ, PLY, STL, glTF, .blend, ...), all meshes merged.
+#include <cctype>
 #include <cmath>
 
 #include <filesystem>
@@ -66,8 +67,12 @@ Status check_declared_counts(const std::string& path) {
     return count.size() > 10 || std::stoull(count) > 3 * kMaxMeshTriangles;
   };
   bool bad = false;
-  if (!w.empty() && w[0].find("OFF") != std::string::npos)  // OFF, COFF, NOFF...: "nv nf ne"
-    for (size_t i = 1; i < std::min<size_t>(w.size(), 4); ++i) bad = bad || too_many(w[i]);
+  // OFF, COFF, NOFF...: "nv nf ne". assimp also reads .off files whose keyword is missing, so
+  // check the first numbers of any .off file too (fuzz_mesh found an 8 GiB-per-count one).
+  std::string ext = std::filesystem::path(path).extension().string();
+  std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return std::tolower(c); });
+  if (!w.empty() && (ext == ".off" || w[0].find("OFF") != std::string::npos))
+    for (size_t i = 0; i < std::min<size_t>(w.size(), 4); ++i) bad = bad || too_many(w[i]);
   if (!w.empty() && w[0] == "ply")
     for (size_t i = 0; i + 2 < w.size(); ++i)
       if (w[i] == "element") bad = bad || too_many(w[i + 2]);
