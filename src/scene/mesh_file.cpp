@@ -73,11 +73,13 @@ Status check_declared_counts(const std::string& path) {
   std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return std::tolower(c); });
   if (!w.empty() && (ext == ".off" || w[0].find("OFF") != std::string::npos))
     for (size_t i = 0; i < std::min<size_t>(w.size(), 4); ++i) bad = bad || too_many(w[i]);
-  if (!w.empty() && w[0] == "ply")
+  // assimp takes any file whose first word starts with "ply", or named .ply, as PLY.
+  const bool ply = !w.empty() && (ext == ".ply" || w[0].rfind("ply", 0) == 0);
+  if (ply)
     for (size_t i = 0; i + 2 < w.size(); ++i)
       if (w[i] == "element") bad = bad || too_many(w[i + 2]);
   // assimp 5.2's PLY reader loops forever on a header without end_header (found by fuzz_mesh).
-  if (!w.empty() && w[0] == "ply" && std::find(w.begin(), w.end(), "end_header") == w.end())
+  if (ply && std::find(w.begin(), w.end(), "end_header") == w.end())
     return make_error(path + ": cannot load mesh: PLY header has no end_header in its first 4 KiB");
   if (bad)
     return make_error(path + ": cannot load mesh: its header declares more than " +
