@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # Second CI step (docs/hardening.md), run by .ci/run after the README's test command:
 #   1. ASan + UBSan build with clang (build-asan/): the unit and GL tests, and every libFuzzer
-#      target for PS_FUZZ_SECONDS (default 20) each;
+#      target on a fixed seed and input count (~20 s each), or for PS_FUZZ_SECONDS each if set;
 #   2. TSan build (build-tsan/) of the haptic/render snapshot-exchange tests only.
 # Expects tools/bootstrap.sh to have installed the packages (clang among them). Usage:
 #   tools/sanitize.sh            # everything
@@ -22,7 +22,7 @@ configure() {  # configure DIR [cmake args...] unless DIR is already configured
 asan="${repo_root}/build-asan"
 log "ASan+UBSan build (${asan})"
 configure "${asan}" -DPS_SANITIZE=address -DPS_FUZZ=ON
-cmake -S "${repo_root}" -B "${asan}" -DPS_FUZZ_SECONDS="${PS_FUZZ_SECONDS:-20}" > /dev/null
+cmake -S "${repo_root}" -B "${asan}" -DPS_FUZZ_SECONDS="${PS_FUZZ_SECONDS:-}" > /dev/null
 cmake --build "${asan}" -j"${jobs}"
 export UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1
 # Unit tests: full leak checking. GL tests: leak checking off - Mesa's llvmpipe/OSMesa keep
@@ -32,7 +32,7 @@ log "unit tests under ASan+UBSan (leaks checked)"
 ASAN_OPTIONS=detect_leaks=1 ctest --test-dir "${asan}" -L unit --output-on-failure -j"${jobs}"
 log "GL tests under ASan+UBSan (leaks not checked, see above)"
 ASAN_OPTIONS=detect_leaks=0 ctest --test-dir "${asan}" -L gl --output-on-failure -j"${jobs}"
-log "fuzz targets, ${PS_FUZZ_SECONDS:-20} s each"
+log "fuzz targets (${PS_FUZZ_SECONDS:-fixed seed and input count}${PS_FUZZ_SECONDS:+ s each})"
 ctest --test-dir "${asan}" -L fuzz --output-on-failure -j"${jobs}"
 
 tsan="${repo_root}/build-tsan"
