@@ -19,6 +19,7 @@ commands:
   replay    render a recorded or scripted device session headless, deterministically
   bench-haptics  measure the haptic loop's rate, jitter and latency while rendering
   bench     sweep accuracy knobs: time vs error CSV + plot, skip ratios, peak RSS
+  tune      parameter sweeps into a labelled contact sheet, or a scripted console session
 
 Run `pseudoshadow <command> --help` for the options of a command.
 Units: lengths in mm, speeds in mm/s, frequencies in Hz (docs/scene-format.md).
@@ -43,6 +44,7 @@ int main(int argc, char** argv) {
   if (!std::strcmp(cmd, "replay")) return ps::run_replay(argc - 1, argv + 1);
   if (!std::strcmp(cmd, "bench-haptics")) return ps::run_bench_haptics(argc - 1, argv + 1);
   if (!std::strcmp(cmd, "bench")) return ps::run_bench(argc - 1, argv + 1);
-  std::fprintf(stderr, "pseudoshadow: unknown command '%s' (commands: render, compare, run, replay, bench, bench-haptics; see --help)\n", cmd);
+  if (!std::strcmp(cmd, "tune")) return ps::run_tune(argc - 1, argv + 1);
+  std::fprintf(stderr, "pseudoshadow: unknown command '%s' (commands: render, compare, run, replay, bench, bench-haptics, tune; see --help)\n", cmd);
   return 2;
 }

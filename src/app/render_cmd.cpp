@@ -14,6 +14,7 @@
 #include "gl/context.h"
 #include "render/renderer.h"
 #include "scene/scene_io.h"
+#include "tune/overrides_file.h"
 
 namespace ps {
 
@@ -39,6 +40,8 @@ options:
   --set KEY=VALUE       override any scene value by its path, e.g.
                         --set materials.wood.lambda_min=0.4 --set render.displacement=exact_max
                         (repeatable; VALUE is a TOML value: 0.4, [0,0,5], exact_max, "text")
+  --overrides FILE      apply an override file saved by `run`/`tune` (KEY = VALUE lines,
+                        docs/tuning.md) at this point of the --set list
   --out IMAGE.png       output image (default: render.png)
   --aov NAME=FILE.exr   also write an AOV: intensity, distance (mm; 1e30 outside the shadow),
                         texture (Gabor value in sigmas, before speed modulation), normal,
@@ -79,6 +82,12 @@ Status parse_one(cli::ArgCursor& c, RenderArgs& a) {
   if (S s = take("--stats", [&](const std::string& v) { a.stats_path = v; return ok_status(); })) return *s;
   if (S s = take("--backend", [&](const std::string& v) { a.backend = v; return ok_status(); })) return *s;
   if (S s = take("--set", [&](const std::string& v) { a.overrides.push_back(v); return ok_status(); })) return *s;
+  if (S s = take("--overrides", [&](const std::string& v) -> Status {
+        auto lines = read_overrides(v);
+        if (!lines) return lines.error();
+        a.overrides.insert(a.overrides.end(), lines->begin(), lines->end());
+        return ok_status();
+      })) return *s;
   if (S s = take("--probe", [&](const std::string& v) -> Status {
         auto p = cli::parse_vec3("--probe", v, "0,0,10");
         if (!p) return p.error();

@@ -11,11 +11,14 @@
 #include "app/cli_args.h"
 #include "app/commands.h"
 #include "app/session.h"
+#include "app/tune_panel.h"
 #include "app/window_input.h"
 #include "devices/glfw_input.h"
 #include "gl/context.h"
 #include "render/present.h"
 #include "scene/scene_io.h"
+#include "tune/overrides_file.h"
+#include "tune/tune_session.h"
 
 namespace ps {
 
@@ -32,6 +35,8 @@ options:
   --record FILE       record the device stream (replay it with `pseudoshadow replay`)
   --backend glfw      the only window backend
   --set KEY=VALUE     scene override (as for render)
+  --overrides FILE    apply an override file (as saved by the panel) before --set
+  --no-watch          do not reload the scene, its textures and glsl/ when they change
   --realtime PRIO     haptic thread SCHED_FIFO at PRIO (1..99; needs CAP_SYS_NICE), much
                       lower jitter on a loaded machine
   --frames N          quit after N frames
@@ -41,7 +46,9 @@ options:
 
 keys: mouse moves the probe on the reference plane, Shift+scroll or PageUp/PageDown change its
 height; right drag orbits, scroll zooms; M captures the mouse (raw motion where supported);
-S saves screenshot_NNNN.png; Esc or Q quits. The probe itself is not drawn: only its
+S saves screenshot_NNNN.png (without the panel); F1 shows the parameter panel; Esc or Q quits.
+Saved changes to the shaders, the scene or its textures are reloaded within 0.5 s; a broken
+file keeps the last good state running and shows its file:line in the title and the console. The probe itself is not drawn: only its
 pseudo-shadow. The title shows frame time, haptic rate and jitter, distance, speed, penetration.
 exit status: 0 success, 1 runtime error, 2 usage error
 )";
@@ -51,7 +58,7 @@ struct RunArgs {
   std::vector<std::string> overrides;
   long long frames = 0, realtime = 0;
   double quit_after_s = 0.0;
-  bool quiet = false, help = false;
+  bool quiet = false, help = false, watch = true;
 };
 
 Status parse_one(cli::ArgCursor& c, RunArgs& a) {
@@ -69,6 +76,14 @@ Status parse_one(cli::ArgCursor& c, RunArgs& a) {
   if (S s = str("--record", a.record)) return *s;
   if (S s = str("--backend", a.backend)) return *s;
   if (S s = str("--set", tmp)) { if (*s) a.overrides.push_back(tmp); return *s; }
+  if (S s = str("--overrides", tmp); s) {
+    if (!*s) return *s;
+    auto lines = read_overrides(tmp);
+    if (!lines) return lines.error();
+    a.overrides.insert(a.overrides.end(), lines->begin(), lines->end());
+    return ok_status();
+  }
+  if (c.flag("--no-watch")) { a.watch = false; return ok_status(); }
   if (S s = str("--frames", tmp); s) {
     if (!*s) return *s;
     auto n = cli::parse_int("--frames", tmp, 1, 100'000'000);
@@ -98,7 +113,9 @@ Status parse_one(cli::ArgCursor& c, RunArgs& a) {
 
 struct Session {  // everything the window loop touches, grouped by owner thread
   std::unique_ptr<gl::Context> ctx;
-  std::unique_ptr<Renderer> renderer;
+  std::unique_ptr<TuneSession> tune;  // owns the Renderer; swaps in a new one on reload
+  std::unique_ptr<TunePanel> panel;
+  std::string shown_error;            // last reload error printed to the console
   std::unique_ptr<Device> device;
   GlfwInputDevice* glfw_device = nullptr;  // == device.get() for mouse/gamepad
   SteadyClock clock;
@@ -132,10 +149,10 @@ Status open_session(const RunArgs& a, Session& s) {
   auto ctx = gl::create_context(desc);
   if (!ctx) return ctx.error();
   s.ctx = std::move(ctx.value());
-  auto r = Renderer::create(scene.value(), {});
-  if (!r) return r.error();
-  s.renderer = std::move(r.value());
-  const PlaneFrame& f = s.renderer->reference();
+  auto tune = TuneSession::open({a.scene_path, a.overrides, {}});
+  if (!tune) return tune.error();
+  s.tune = std::move(tune.value());
+  const PlaneFrame& f = s.tune->renderer().reference();
   s.axes = {scene->camera.target, f.t, f.b, f.n};  // fixed at start so the mapping stays put
   if (Status st = open_device(a, s); !st) return st;
   HapticLoopParams params;
@@ -146,6 +163,7 @@ Status open_session(const RunArgs& a, Session& s) {
     s.loop->set_recorder(s.recorder.get());
   }
   install_window_input(s.ctx->window(), s.input);
+  s.panel = std::make_unique<TunePanel>(s.ctx->window());  // after: chains to our callbacks
   return ok_status();
 }
 
@@ -157,7 +175,10 @@ void update_title(Session& s, const HapticState& st, double frame_ms) {
                 "pseudoshadow | frame %.1f ms | haptic %.0f Hz, jitter p99 %.0f us | dist %s%.1f mm | "
                 "speed %.0f mm/s | pen %.2f mm | F %.2f N",
                 frame_ms, st.rate_hz, st.jitter_p99_us, m.valid ? "" : "? ", std::max(dist, 0.0),
-                glm::length(st.velocity_mm_s), s.renderer->stats().max_penetration_mm, glm::length(st.force_n));
+                glm::length(st.velocity_mm_s), s.tune->renderer().stats().max_penetration_mm, glm::length(st.force_n));
+  if (!s.tune->last_error().empty())
+    std::snprintf(title, sizeof title, "pseudoshadow | RELOAD FAILED (last good state kept): %s",
+                  s.tune->last_error().c_str());
   glfwSetWindowTitle(s.ctx->window(), title);
 }
 
@@ -167,9 +188,11 @@ Status handle_keys(Session& s, int w, int h) {
   in.toggle_capture = false;
   if (s.glfw_device) s.glfw_device->add_scroll(in.scroll_height);
   in.scroll_height = 0.0;
-  Camera cam = s.renderer->scene().camera;
+  if (in.toggle_panel) s.panel->toggle();
+  in.toggle_panel = false;
+  Camera cam = s.tune->renderer().scene().camera;
   apply_orbit_zoom(in, cam);
-  s.renderer->set_camera(cam);
+  s.tune->renderer().set_camera(cam);
   for (; in.screenshots > 0; --in.screenshots) {
     static int n = 0;
     char name[64];
@@ -180,23 +203,42 @@ Status handle_keys(Session& s, int w, int h) {
   return ok_status();
 }
 
+// Files are polled 5 times a second, so a saved change is on screen within ~0.2 s plus one
+// rebuild (shader compile and JIT, ~0.1-0.2 s on llvmpipe).
+constexpr double kWatchPeriodS = 0.2;
+
+void poll_reload(Session& s) {
+  if (!s.tune->reload_if_changed()) return;
+  const std::string& err = s.tune->last_error();
+  if (err.empty()) std::printf("reloaded (%zu files watched)\n", s.tune->watch().files().size());
+  else if (err != s.shown_error) std::fprintf(stderr, "reload failed, keeping the last good state: %s\n", err.c_str());
+  s.shown_error = err;
+  std::fflush(stdout);
+}
+
 Status window_loop(const RunArgs& a, Session& s) {
   GLFWwindow* win = s.ctx->window();
   const auto t0 = std::chrono::steady_clock::now();
-  double last_title = -1.0, last_flush = 0.0;
+  double last_title = -1.0, last_flush = 0.0, last_watch = 0.0;
   for (std::uint64_t frame = 0;; ++frame) {
     const auto f0 = std::chrono::steady_clock::now();
     const double now_s = std::chrono::duration<double>(f0 - t0).count();
     glfwPollEvents();
     if (glfwWindowShouldClose(win) || s.input.quit) break;
     if ((a.frames > 0 && static_cast<long long>(frame) >= a.frames) || (a.quit_after_s > 0 && now_s >= a.quit_after_s)) break;
-    if (s.glfw_device) s.glfw_device->poll(s.loop->state().read().time_s, s.axes);
+    if (s.glfw_device && !s.panel->wants_input()) s.glfw_device->poll(s.loop->state().read().time_s, s.axes);
     HapticState st;
-    if (Status r = drive_frame(*s.renderer, *s.loop, frame, st); !r) return r;
+    if (a.watch && now_s - last_watch >= kWatchPeriodS) {
+      last_watch = now_s;
+      poll_reload(s);
+    }
+    if (Status r = drive_frame(s.tune->renderer(), *s.loop, frame, st); !r) return r;
     int w = 0, h = 0;
     glfwGetFramebufferSize(win, &w, &h);
-    present_to_default_framebuffer(*s.renderer, w, h);
+    present_to_default_framebuffer(s.tune->renderer(), w, h);
     if (Status r = handle_keys(s, w, h); !r) return r;  // screenshots read GL_BACK before the swap
+    s.panel->draw(*s.tune);  // after the screenshots: the panel is never in them
+    s.input.keys_captured = s.panel->wants_input();
     glfwSwapBuffers(win);
     const auto f1 = std::chrono::steady_clock::now();
     s.frame_ms.push_back(std::chrono::duration<double, std::milli>(f1 - f0).count());

@@ -15,6 +15,8 @@ WindowInput& input_of(GLFWwindow* w) { return *static_cast<WindowInput*>(glfwGet
 void on_key(GLFWwindow* w, int key, int, int action, int) {
   if (action != GLFW_PRESS) return;
   WindowInput& in = input_of(w);
+  if (key == GLFW_KEY_F1) in.toggle_panel = true;
+  if (in.keys_captured) return;  // the user is typing into the parameter panel
   if (key == GLFW_KEY_S) ++in.screenshots;
   if (key == GLFW_KEY_M) in.toggle_capture = true;
   if (key == GLFW_KEY_ESCAPE || key == GLFW_KEY_Q) in.quit = true;

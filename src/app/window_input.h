@@ -14,6 +14,8 @@ struct WindowInput {
   int screenshots = 0;          // S presses not handled yet
   bool toggle_capture = false;  // M
   bool quit = false;            // Esc / Q
+  bool toggle_panel = false;    // F1: parameter panel
+  bool keys_captured = false;   // set by the panel while it has the keyboard: S/M/Q ignored
   bool dragging = false;        // right button held
   double last_x = 0.0, last_y = 0.0;
   double orbit_dx = 0.0, orbit_dy = 0.0;  // accumulated drag, pixels

@@ -1,0 +1,189 @@
+#include "app/tune_panel.h"
+
+#define GLFW_INCLUDE_NONE
+#include <GLFW/glfw3.h>
+#include <imgui.h>
+#include <backends/imgui_impl_glfw.h>
+#include <backends/imgui_impl_opengl3.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+
+#include "gl/gl.h"
+#include "reference/modulation.h"
+#include "tune/overrides_file.h"
+
+namespace ps {
+
+namespace {
+
+constexpr double kRadToDeg = 180.0 / M_PI;
+
+// One editable number: scene key (last component), unit, slider range (the file's valid range
+// is wider; ctrl+click a slider to type any value, the scene loader still checks it).
+struct Param {
+  const char* key;
+  const char* unit;
+  float lo, hi;
+  bool log;
+  double (*get)(const Material&);
+};
+
+const Param kMaterialParams[] = {
+    {"a_min", "", 0.f, 1.f, false, [](const Material& m) { return m.gabor.a_min; }},
+    {"a_max", "", 0.f, 1.f, false, [](const Material& m) { return m.gabor.a_max; }},
+    {"lambda_min", "mm", 0.05f, 20.f, true, [](const Material& m) { return m.gabor.lambda_min_mm; }},
+    {"lambda_max", "mm", 0.05f, 20.f, true, [](const Material& m) { return m.gabor.lambda_max_mm; }},
+    {"theta_min", "deg", -180.f, 180.f, false, [](const Material& m) { return m.gabor.theta_min_rad * kRadToDeg; }},
+    {"theta_max", "deg", -180.f, 180.f, false, [](const Material& m) { return m.gabor.theta_max_rad * kRadToDeg; }},
+    {"n_min", "per kernel", 0.f, 100.f, false, [](const Material& m) { return m.gabor.n_min; }},
+    {"n_max", "per kernel", 0.f, 100.f, false, [](const Material& m) { return m.gabor.n_max; }},
+    {"onset_distance_mm", "mm", 0.f, 50.f, false, [](const Material& m) { return m.onset_distance_mm; }},
+    {"intensity_floor", "", 0.f, 1.f, false, [](const Material& m) { return m.intensity_floor; }},
+    {"intensity_scale", "", 0.f, 10.f, false, [](const Material& m) { return m.intensity_scale; }},
+    {"intensity_offset_mm", "mm", 0.01f, 20.f, true, [](const Material& m) { return m.intensity_offset_mm; }},
+    {"peak_hz", "Hz", 1.f, 1000.f, true, [](const Material& m) { return m.peak_hz; }},
+    {"bandwidth_hz", "Hz", 1.f, 1000.f, true, [](const Material& m) { return m.bandwidth_hz; }},
+    {"resistance", "", 0.f, 1.f, false, [](const Material& m) { return m.resistance; }},
+};
+
+std::string number(double v) {
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%.7g", v);
+  return buf;
+}
+
+std::string vec_text(const float* v) {
+  return "[" + number(v[0]) + "," + number(v[1]) + "," + number(v[2]) + "]";
+}
+
+// A slider whose value lives in the panel while it is dragged and is applied (one renderer
+// rebuild) when released or typed: rebuilding on every drag step would cost a JIT each frame.
+struct ActiveEdit {
+  std::string key;
+  float value[3] = {0, 0, 0};
+};
+ActiveEdit g_active;  // the single item ImGui can have active; render thread only
+
+bool slider(const char* label, const std::string& key, float* v, int n, float lo, float hi, bool log) {
+  if (g_active.key == key) std::copy(g_active.value, g_active.value + n, v);
+  const ImGuiSliderFlags flags = log ? ImGuiSliderFlags_Logarithmic : 0;
+  if (n == 1) ImGui::SliderFloat(label, v, lo, hi, "%.4g", flags);
+  else ImGui::DragFloat3(label, v, (hi - lo) / 400.f, lo, hi, "%.3g");
+  if (ImGui::IsItemActive()) {
+    g_active.key = key;
+    std::copy(v, v + n, g_active.value);
+  }
+  if (ImGui::IsItemDeactivated() && g_active.key == key) g_active.key.clear();
+  return ImGui::IsItemDeactivatedAfterEdit();
+}
+
+}  // namespace
+
+TunePanel::TunePanel(GLFWwindow* window) {
+  IMGUI_CHECKVERSION();
+  ImGui::CreateContext();
+  ImGui::GetIO().IniFilename = nullptr;  // no imgui.ini next to the user's files
+  ImGui::StyleColorsDark();
+  ImGui_ImplGlfw_InitForOpenGL(window, true);
+  ImGui_ImplOpenGL3_Init("#version 450 core");
+}
+
+TunePanel::~TunePanel() {
+  ImGui_ImplOpenGL3_Shutdown();
+  ImGui_ImplGlfw_Shutdown();
+  ImGui::DestroyContext();
+}
+
+bool TunePanel::wants_input() const {
+  return visible_ && (ImGui::GetIO().WantCaptureMouse || ImGui::GetIO().WantCaptureKeyboard);
+}
+
+void TunePanel::apply(TuneSession& session, const std::string& key, const std::string& value) {
+  const Status s = session.set(key, value);
+  status_ = s ? "set " + key + " = " + value : s.error().message;
+}
+
+void TunePanel::material_section(TuneSession& session) {
+  const Scene& scene = session.renderer().scene();
+  material_ = std::clamp(material_, 0, static_cast<int>(scene.materials.size()) - 1);
+  if (scene.materials.size() > 1) {
+    const char* current = scene.materials[material_].name.c_str();
+    if (ImGui::BeginCombo("material", current)) {
+      for (int i = 0; i < static_cast<int>(scene.materials.size()); ++i)
+        if (ImGui::Selectable(scene.materials[i].name.c_str(), i == material_)) material_ = i;
+      ImGui::EndCombo();
+    }
+  }
+  const Material& m = scene.materials[material_];
+  const std::string prefix = "materials." + m.name + ".";
+  for (const Param& p : kMaterialParams) {
+    float v = static_cast<float>(p.get(m));
+    const std::string label = std::string(p.key) + (p.unit[0] ? std::string(" (") + p.unit + ")" : "");
+    if (slider(label.c_str(), prefix + p.key, &v, 1, p.lo, p.hi, p.log)) apply(session, prefix + p.key, number(v));
+  }
+  float c = static_cast<float>(scene.render.weight_exponent);
+  if (slider("weight exponent c", "render.weight_exponent", &c, 1, 1.f, 100.f, false))
+    apply(session, "render.weight_exponent", number(c));
+}
+
+void TunePanel::probe_camera_section(TuneSession& session) {
+  const Scene& scene = session.renderer().scene();
+  float r = static_cast<float>(scene.probe.radius_mm);
+  if (slider("probe radius (mm)", "probe.radius_mm", &r, 1, 0.5f, 50.f, true)) apply(session, "probe.radius_mm", number(r));
+  float vel[3] = {float(scene.probe.velocity.x), float(scene.probe.velocity.y), float(scene.probe.velocity.z)};
+  if (slider("probe velocity (mm/s)", "probe.velocity", vel, 3, -2000.f, 2000.f, false))
+    apply(session, "probe.velocity", vec_text(vel));
+  ImGui::TextDisabled("probe position follows the device (mouse); velocity too while it moves");
+  float fov = static_cast<float>(scene.camera.fov_y_deg);
+  if (slider("camera fov_y (deg)", "camera.fov_y_deg", &fov, 1, 5.f, 120.f, false))
+    apply(session, "camera.fov_y_deg", number(fov));
+  float eye[3] = {float(scene.camera.position.x), float(scene.camera.position.y), float(scene.camera.position.z)};
+  if (slider("camera position (mm)", "camera.position", eye, 3, -1000.f, 1000.f, false))
+    apply(session, "camera.position", vec_text(eye));
+}
+
+void TunePanel::plots(const TuneSession& session) {
+  const Scene& scene = session.renderer().scene();
+  const Material& m = scene.materials[material_];
+  constexpr int kSamples = 120;
+  float intensity[kSamples], gain[kSamples];
+  const double d_max = std::max(10.0, m.onset_distance_mm * 1.5), v_max = 2000.0;
+  for (int i = 0; i < kSamples; ++i) {
+    intensity[i] = static_cast<float>(shadow_intensity(m, -1.0 + (d_max + 1.0) * i / (kSamples - 1)));
+    gain[i] = static_cast<float>(amplitude_gain(m, v_max * i / (kSamples - 1)));
+  }
+  char caption[96];
+  std::snprintf(caption, sizeof caption, "intensity vs distance, -1..%.0f mm", d_max);
+  ImGui::PlotLines("##intensity", intensity, kSamples, 0, caption, 0.f, 1.f, ImVec2(0, 70));
+  ImGui::PlotLines("##gain", gain, kSamples, 0, "amplitude gain vs speed, 0..2000 mm/s", 0.f, 1.f, ImVec2(0, 70));
+  ImGui::Text("speed gain this frame: %.3f", session.renderer().stats().speed_gain);
+}
+
+void TunePanel::draw(TuneSession& session) {
+  if (!visible_) return;
+  ImGui_ImplOpenGL3_NewFrame();
+  ImGui_ImplGlfw_NewFrame();
+  ImGui::NewFrame();
+  ImGui::SetNextWindowPos(ImVec2(8, 8), ImGuiCond_FirstUseEver);
+  ImGui::SetNextWindowSize(ImVec2(420, 0), ImGuiCond_FirstUseEver);
+  ImGui::Begin("parameters (F1)");
+  if (!session.last_error().empty()) ImGui::TextColored(ImVec4(1, 0.4f, 0.3f, 1), "%s", session.last_error().c_str());
+  if (ImGui::CollapsingHeader("material", ImGuiTreeNodeFlags_DefaultOpen)) material_section(session);
+  if (ImGui::CollapsingHeader("curves", ImGuiTreeNodeFlags_DefaultOpen)) plots(session);
+  if (ImGui::CollapsingHeader("probe and camera")) probe_camera_section(session);
+  ImGui::Text("%zu edited keys", session.edits().size());
+  if (ImGui::Button("Save overrides")) {
+    const Status s = session.save_overrides();
+    status_ = s ? "saved " + overrides_path_for(session.scene_path()) : s.error().message;
+    std::printf("%s\n", status_.c_str());
+  }
+  ImGui::TextWrapped("%s", status_.c_str());
+  ImGui::End();
+  ImGui::Render();
+  glBindFramebuffer(GL_FRAMEBUFFER, 0);
+  ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
+}
+
+}  // namespace ps

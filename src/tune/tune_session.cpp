@@ -1,0 +1,78 @@
+#include "tune/tune_session.h"
+
+#include "gl/shader.h"
+#include "scene/scene_io.h"
+#include "tune/overrides_file.h"
+
+namespace ps {
+
+Result<std::unique_ptr<TuneSession>> TuneSession::open(TuneSource source) {
+  if (source.renderer.glsl_root.empty()) source.renderer.glsl_root = gl::default_glsl_root();
+  std::unique_ptr<TuneSession> s(new TuneSession());
+  s->source_ = std::move(source);
+  if (Status st = s->rebuild({}, false, false); !st) return st.error();
+  return s;
+}
+
+Result<Scene> TuneSession::load(const std::map<std::string, std::string>& edits) const {
+  std::vector<std::string> sets = source_.overrides;
+  for (const auto& [key, value] : edits) sets.push_back(key + "=" + value);
+  if (source_.scene_path.empty())
+    return parse_scene(default_scene_text(), "<built-in default scene>", default_scene_base_dir(), sets);
+  return load_scene(source_.scene_path, sets);
+}
+
+Status TuneSession::rebuild(const std::map<std::string, std::string>& edits, bool keep_probe,
+                            bool keep_camera) {
+  auto scene = load(edits);
+  // Watch the scene's files even when it fails to load, so fixing it triggers a reload.
+  const Scene& watched = scene ? scene.value() : (renderer_ ? renderer_->scene() : Scene{});
+  watch_.set_files(reload_dependencies(watched, source_.scene_path, source_.renderer.glsl_root));
+  if (!scene) {
+    last_error_ = scene.error().message;
+    return scene.error();
+  }
+  auto fresh = Renderer::create(scene.value(), source_.renderer);
+  if (!fresh) {
+    last_error_ = fresh.error().message;
+    return fresh.error();
+  }
+  if (renderer_ && keep_probe)
+    fresh.value()->set_probe_state(renderer_->scene().probe.position, renderer_->scene().probe.velocity);
+  if (renderer_ && keep_camera) fresh.value()->set_camera(renderer_->scene().camera);
+  renderer_ = std::move(fresh.value());
+  edits_ = edits;
+  last_error_.clear();
+  ++generation_;
+  return ok_status();
+}
+
+Status TuneSession::set(const std::string& key, const std::string& value) {
+  auto edits = edits_;
+  edits[key] = value;
+  // The probe restarts from the scene's state (so `render --overrides` reproduces a console
+  // session); the window's haptic loop sets it again every frame anyway.
+  const bool camera_key = key.rfind("camera.", 0) == 0;
+  return rebuild(edits, false, !camera_key);
+}
+
+Status TuneSession::reload() { return rebuild(edits_, true, true); }
+
+bool TuneSession::reload_if_changed() {
+  if (!watch_.changed()) return false;
+  (void)reload();  // outcome in last_error_
+  return true;
+}
+
+Status TuneSession::save_overrides(const std::string& path) const {
+  const std::string scene_name = source_.scene_path.empty() ? "the built-in default scene" : source_.scene_path;
+  std::string target = path;
+  if (target.empty()) {
+    if (source_.scene_path.empty())
+      return make_error("save: the built-in default scene has no file; give the override file's name");
+    target = overrides_path_for(source_.scene_path);
+  }
+  return write_file_atomic(target, format_overrides(edits_, scene_name));
+}
+
+}  // namespace ps

@@ -1,0 +1,67 @@
+// A tuning session on the render thread: the scene (file + --set overrides + the session's
+// own edits), the Renderer built from it, live reload and the override file.
+//
+// Reload policy: a change (file edit or `set`) builds a NEW Renderer from the re-loaded
+// scene and swaps it in only if scene parsing and every shader build succeeded; otherwise the
+// old Renderer keeps running and last_error() holds the one-line reason (file:line for shader
+// and scene errors). A file reload carries the probe's position and velocity and the camera
+// (orbit) over to the new Renderer; `set` carries the camera unless it sets a camera.* key and
+// restarts the probe from the scene. Needs a current context.
+#pragma once
+
+#include <map>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "core/result.h"
+#include "render/renderer.h"
+#include "tune/file_watch.h"
+
+namespace ps {
+
+struct TuneSource {
+  std::string scene_path;               // empty: the built-in default scene
+  std::vector<std::string> overrides;   // "KEY=VALUE" (--overrides file lines, then --set)
+  RendererOptions renderer;
+};
+
+class TuneSession {
+ public:
+  static Result<std::unique_ptr<TuneSession>> open(TuneSource source);
+
+  Renderer& renderer() { return *renderer_; }
+  const Renderer& renderer() const { return *renderer_; }
+
+  // Edits one value (a --set KEY=VALUE) and rebuilds; on failure the edit is dropped and
+  // the previous renderer stays.
+  Status set(const std::string& key, const std::string& value);
+  // Re-reads the scene and shaders from disk and rebuilds (keeps the last good on failure).
+  Status reload();
+  // Re-reads the scene and shaders if a watched file changed. Returns false if nothing
+  // changed; otherwise the reload's outcome is in last_error() (empty = success).
+  bool reload_if_changed();
+
+  const std::string& last_error() const { return last_error_; }
+  const std::map<std::string, std::string>& edits() const { return edits_; }
+  const FileWatch& watch() const { return watch_; }
+  int generation() const { return generation_; }  // +1 per successful (re)build
+  const std::string& scene_path() const { return source_.scene_path; }
+
+  // Writes edits() as an override file (atomically); path empty = overrides_path_for(scene).
+  Status save_overrides(const std::string& path = {}) const;
+
+ private:
+  TuneSession() = default;
+  Result<Scene> load(const std::map<std::string, std::string>& edits) const;
+  Status rebuild(const std::map<std::string, std::string>& edits, bool keep_probe, bool keep_camera);
+
+  TuneSource source_;
+  std::unique_ptr<Renderer> renderer_;
+  std::map<std::string, std::string> edits_;
+  FileWatch watch_;
+  std::string last_error_;
+  int generation_ = 0;
+};
+
+}  // namespace ps

@@ -1,0 +1,75 @@
+// Sweep specs, cell enumeration, labels and override files (no GL).
+#include <gtest/gtest.h>
+
+#include "tune/overrides_file.h"
+#include "tune/sweep.h"
+
+namespace ps {
+namespace {
+
+TEST(SweepTest, ListAndRangeValues) {
+  auto list = parse_sweep("materials.wood.lambda_min=0.2,0.4, 0.8");
+  ASSERT_TRUE(list) << list.error().message;
+  EXPECT_EQ(list->key, "materials.wood.lambda_min");
+  EXPECT_EQ(list->values, (std::vector<std::string>{"0.2", "0.4", "0.8"}));
+  auto range = parse_sweep("probe.radius_mm=2:10:5");
+  ASSERT_TRUE(range) << range.error().message;
+  EXPECT_EQ(range->values, (std::vector<std::string>{"2", "4", "6", "8", "10"}));
+  auto arrays = parse_sweep("probe.velocity=[0,0,0],[150,0,0]");
+  ASSERT_TRUE(arrays);
+  EXPECT_EQ(arrays->values, (std::vector<std::string>{"[0,0,0]", "[150,0,0]"}));
+}
+
+TEST(SweepTest, BadSpecsNameTheProblem) {
+  auto expect = [](const char* spec, const char* needle) {
+    auto r = parse_sweep(spec);
+    ASSERT_FALSE(r) << spec;
+    EXPECT_NE(r.error().message.find(needle), std::string::npos) << r.error().message;
+  };
+  expect("probe.radius_mm", "expected KEY=V1,V2");
+  expect("probe.radius_mm=1:2:1", "STEPS must be a whole number in [2, 256]");
+  expect("probe.radius_mm=1:2:x", "STEPS must be a whole number");
+  expect("probe.radius_mm=a:2:3", "FROM 'a' is not a number");
+  expect("probe.radius_mm=1:nan:3", "TO must be finite");
+  expect("probe.radius_mm=1,,2", "empty value");
+  expect("probe.radius_mm=1,nan", "must be finite");
+}
+
+TEST(SweepTest, CellsRowMajorAndLimit) {
+  std::vector<SweepAxis> axes{{"a.x", {"1", "2"}}, {"materials.m.b", {"3", "4", "5"}}};
+  ASSERT_EQ(sweep_cell_count(axes).value(), 6u);
+  EXPECT_EQ(sweep_cell(axes, 4), (std::vector<std::size_t>{1, 1}));
+  EXPECT_EQ(sweep_label(axes, {1, 2}), "x=2 b=5");
+  std::vector<SweepAxis> big{{"a.x", std::vector<std::string>(17, "1")}, {"a.y", std::vector<std::string>(16, "1")}};
+  auto n = sweep_cell_count(big);
+  ASSERT_FALSE(n);
+  EXPECT_NE(n.error().message.find("more than 256 cells (17 x 16)"), std::string::npos) << n.error().message;
+  std::vector<SweepAxis> scenes{parse_scene_sweep("scenes/table4_1_a.toml,x/b.toml").value()};
+  EXPECT_EQ(sweep_label(scenes, {0}), "table4_1_a");
+}
+
+TEST(OverridesFileTest, RoundTripAndQuoting) {
+  std::map<std::string, std::string> edits{{"render.displacement", "exact_max"},
+                                           {"materials.wood.lambda_min", "0.4"},
+                                           {"probe.position", "[0,0,5]"}};
+  const std::string text = format_overrides(edits, "s.toml");
+  EXPECT_NE(text.find("render.displacement = \"exact_max\"\n"), std::string::npos) << text;
+  const std::string path = testing::TempDir() + "/roundtrip.overrides.toml";
+  ASSERT_TRUE(write_file_atomic(path, text));
+  auto lines = read_overrides(path);
+  ASSERT_TRUE(lines) << lines.error().message;
+  EXPECT_EQ(lines.value(), (std::vector<std::string>{"materials.wood.lambda_min=0.4", "probe.position=[0,0,5]",
+                                                     "render.displacement=\"exact_max\""}));
+  EXPECT_EQ(overrides_path_for("scenes/a.toml"), "scenes/a.overrides.toml");
+}
+
+TEST(OverridesFileTest, MalformedLineNamesFileAndLine) {
+  const std::string path = testing::TempDir() + "/bad.overrides.toml";
+  ASSERT_TRUE(write_file_atomic(path, "# ok\nprobe.radius_mm = 3\nnonsense\n"));
+  auto lines = read_overrides(path);
+  ASSERT_FALSE(lines);
+  EXPECT_NE(lines.error().message.find("bad.overrides.toml:3: expected KEY = VALUE"), std::string::npos);
+}
+
+}  // namespace
+}  // namespace ps

@@ -1,0 +1,155 @@
+// Live reload and sweeps on a real context: a temp copy of glsl/ and of a scene is edited,
+// the watcher notices, and the rebuilt renderer draws the change (or keeps the last good).
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <thread>
+
+#include "scene/scene_io.h"
+#include "support/gl_test.h"
+#include "tune/sweep.h"
+#include "tune/tune_session.h"
+
+namespace ps {
+namespace {
+
+namespace fs = std::filesystem;
+
+std::string read_text(const fs::path& p) {
+  std::ifstream f(p);
+  std::ostringstream s;
+  s << f.rdbuf();
+  return s.str();
+}
+
+// Rewrites a file with one substring replaced; the mtime is bumped explicitly so the change
+// is seen even on a file system with coarse timestamps.
+void replace_in_file(const fs::path& p, const std::string& from, const std::string& to) {
+  std::string text = read_text(p);
+  const auto at = text.find(from);
+  ASSERT_NE(at, std::string::npos) << from << " not in " << p;
+  text.replace(at, from.size(), to);
+  const auto before = fs::last_write_time(p);
+  std::ofstream(p, std::ios::trunc) << text;
+  fs::last_write_time(p, before + std::chrono::seconds(1));
+}
+
+class TuneGLTest : public test::GlTest {
+ protected:
+  void SetUp() override {
+    test::GlTest::SetUp();
+    dir_ = fs::path(testing::TempDir()) / ("tune_gl_" + std::string(testing::UnitTest::GetInstance()->current_test_info()->name()));
+    fs::remove_all(dir_);
+    fs::create_directories(dir_);
+    fs::copy(PS_SOURCE_DIR "/glsl", dir_ / "glsl", fs::copy_options::recursive);
+    scene_ = dir_ / "scene.toml";
+    fs::copy(PS_SOURCE_DIR "/scenes/table4_1_a.toml", scene_);
+  }
+  std::unique_ptr<TuneSession> open_session() {
+    TuneSource src{scene_.string(), {"render.size=[64,64]"}, {}};
+    src.renderer.glsl_root = (dir_ / "glsl").string();
+    auto s = TuneSession::open(src);
+    EXPECT_TRUE(s) << (s ? "" : s.error().message);
+    return s ? std::move(s.value()) : nullptr;
+  }
+  static Image frame(TuneSession& s) {
+    EXPECT_TRUE(s.renderer().render_frame());
+    return s.renderer().read_color();
+  }
+  fs::path dir_, scene_;
+};
+
+TEST_P(TuneGLTest, ReloadPicksUpAShaderChange) {
+  auto s = open_session();
+  ASSERT_TRUE(s);
+  const Image before = frame(*s);
+  EXPECT_FALSE(s->reload_if_changed());
+  replace_in_file(dir_ / "glsl/surface.frag", "o_color = vec4(pow(", "o_color = vec4(0.5 * pow(");
+  ASSERT_TRUE(s->reload_if_changed());
+  EXPECT_EQ(s->last_error(), "");
+  EXPECT_EQ(s->generation(), 2);
+  const Image after = frame(*s);
+  ASSERT_EQ(after.pixels.size(), before.pixels.size());
+  for (std::size_t i = 0; i < after.pixels.size(); i += 97)  // halved, up to 8-bit rounding
+    EXPECT_NEAR(after.pixels[i], 0.5f * before.pixels[i], 1.01f / 255.0f) << i;
+}
+
+TEST_P(TuneGLTest, ReloadPicksUpASceneChangeAndKeepsTheProbe) {
+  auto s = open_session();
+  ASSERT_TRUE(s);
+  const glm::dvec3 probe{1.0, 2.0, 16.0};
+  s->renderer().set_probe_state(probe, {500.0, 0.0, 0.0});
+  const Image before = frame(*s);
+  replace_in_file(scene_, "albedo = [0.85, 0.85, 0.85]", "albedo = [0.2, 0.85, 0.85]");
+  ASSERT_TRUE(s->reload_if_changed());
+  EXPECT_EQ(s->last_error(), "");
+  EXPECT_EQ(s->renderer().scene().probe.position, probe);
+  const Image after = frame(*s);
+  EXPECT_NE(after.pixels, before.pixels);
+}
+
+TEST_P(TuneGLTest, BrokenShaderKeepsTheLastGoodImageAndRecovers) {
+  auto s = open_session();
+  ASSERT_TRUE(s);
+  const Image good = frame(*s);
+  const fs::path lib = dir_ / "glsl/lib/pseudo_shadow.glsl";
+  const std::string original = read_text(lib);
+  replace_in_file(lib, "if (d <= 0.0) return 1.0;", "if (d <= 0.0) return 1.0 +;");
+  ASSERT_TRUE(s->reload_if_changed());
+  EXPECT_NE(s->last_error().find("pseudo_shadow.glsl:14"), std::string::npos) << s->last_error();
+  EXPECT_EQ(s->generation(), 1);
+  EXPECT_EQ(frame(*s).pixels, good.pixels);  // the old renderer keeps running
+  replace_in_file(lib, "if (d <= 0.0) return 1.0 +;", "if (d <= 0.0) return 1.0;");
+  ASSERT_TRUE(s->reload_if_changed());
+  EXPECT_EQ(s->last_error(), "");
+  EXPECT_EQ(frame(*s).pixels, good.pixels);
+}
+
+TEST_P(TuneGLTest, BadSetKeepsTheRendererAndNamesTheKey) {
+  auto s = open_session();
+  ASSERT_TRUE(s);
+  Status st = s->set("materials.table4_1_a.lamda_min", "1.0");
+  ASSERT_FALSE(st);
+  EXPECT_NE(st.error().message.find("close matches: lambda_min"), std::string::npos) << st.error().message;
+  EXPECT_TRUE(s->edits().empty());
+  ASSERT_TRUE(s->set("materials.table4_1_a.lambda_min", "1.0"));
+  EXPECT_EQ(s->edits().size(), 1u);
+}
+
+// A 3x3 sweep: the sheet has the right size and each cell is exactly the single render.
+TEST_P(TuneGLTest, SweepCellsMatchSingleRenders) {
+  SweepJob job;
+  job.scene_path = scene_.string();
+  job.overrides = {"render.size=[48,48]"};
+  job.axes = {parse_sweep("materials.table4_1_a.lambda_min=1:2:3").value(),
+              parse_sweep("probe.velocity=[0,0,0],[250,0,0],[500,0,0]").value()};
+  auto cells = render_sweep(job, {});
+  ASSERT_TRUE(cells) << cells.error().message;
+  ASSERT_EQ(cells->size(), 9u);
+  const Image sheet = sweep_sheet(job.axes, cells.value());
+  const int pad = ContactSheetDesc{}.padding, label_h = (kGlyphHeight + 2) * 1;
+  EXPECT_EQ(sheet.width, pad + 3 * (48 + pad));
+  EXPECT_EQ(sheet.height, pad + 3 * (48 + label_h + pad));
+  for (int i : {0, 4, 8}) {
+    const auto& cell = cells.value()[i];
+    auto scene = load_scene(job.scene_path, {"render.size=[48,48]",
+                                             job.axes[0].key + "=" + job.axes[0].values[cell.index[0]],
+                                             "probe.velocity=" + job.axes[1].values[cell.index[1]]});
+    ASSERT_TRUE(scene);
+    auto single = Renderer::create(scene.value(), {});
+    ASSERT_TRUE(single);
+    ASSERT_TRUE(single.value()->render_frame());
+    const Image ref = single.value()->read_color();
+    const int cx = pad + i % 3 * (48 + pad), cy = pad + i / 3 * (48 + label_h + pad);
+    for (int y = 0; y < 48; ++y)
+      for (int x = 0; x < 48; ++x)
+        for (int c = 0; c < 3; ++c) ASSERT_EQ(sheet.at(cx + x, cy + y, c), ref.at(x, y, c)) << i << " " << x << "," << y;
+  }
+}
+
+PS_INSTANTIATE_HEADLESS_BACKENDS(TuneGLTest);
+
+}  // namespace
+}  // namespace ps
