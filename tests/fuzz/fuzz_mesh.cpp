@@ -14,6 +14,7 @@
 #include "scene/mesh.h"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
+  // The supported formats plus three that load_mesh_file must refuse without reading them.
   static const char* const kExt[] = {"obj", "ply", "stl", "off", "gltf", "dae", "3ds", "x"};
   if (size < 1) return 0;
   const std::string ext = kExt[data[0] % (sizeof(kExt) / sizeof(kExt[0]))];

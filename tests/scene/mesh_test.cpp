@@ -184,5 +184,16 @@ TEST(MeshTest, PlyWithoutEndHeaderIsRefusedNotHung) {
   std::filesystem::remove(path);
 }
 
+TEST(MeshTest, UnsupportedFormatIsRefusedBeforeAssimpReadsIt) {
+  // Fuzzing found a heap overflow in assimp's glTF importer: only tested formats are loaded.
+  const auto path = std::filesystem::temp_directory_path() / "ps_mesh_test.gltf";
+  std::ofstream(path) << "{}";
+  Result<Mesh> mesh = load_mesh_file(path.string());
+  ASSERT_FALSE(mesh);
+  EXPECT_NE(mesh.error().message.find("format '.gltf' is not supported (supported: .obj, .ply, .stl, .off, .blend)"),
+            std::string::npos) << mesh.error().message;
+  std::filesystem::remove(path);
+}
+
 }  // namespace
 }  // namespace ps
