@@ -46,6 +46,8 @@ options:
   --aov NAME=FILE.exr   also write an AOV: intensity, distance (mm; 1e30 outside the shadow),
                         texture (Gabor value in sigmas, before speed modulation), normal,
                         displacement (weighted displacement xyz, weight w) (repeatable)
+  --show-probe          also draw the probe itself (where the haptic proxy is, after the
+                        push-out) over the pseudo-shadow; AOVs and stats are unchanged
   --stats FILE.json     per-frame numbers of the last frame: backend, gl_renderer,
                         reference_normal, displacement, max_penetration, probe_position,
                         timings_ms per pass, skipped work
@@ -59,7 +61,7 @@ struct RenderArgs {
   std::string scene_path, out = "render.png", stats_path, backend = "auto";
   std::vector<std::string> overrides;
   std::vector<std::pair<std::string, std::string>> aovs;
-  bool quiet = false, help = false;
+  bool quiet = false, help = false, show_probe = false;
 };
 
 std::string fmt_vec(const glm::dvec3& v) {
@@ -119,6 +121,7 @@ Status parse_one(cli::ArgCursor& c, RenderArgs& a) {
         a.aovs.emplace_back(v.substr(0, eq), v.substr(eq + 1));
         return ok_status();
       })) return *s;
+  if (c.flag("--show-probe")) { a.show_probe = true; return ok_status(); }
   if (c.flag("-q") || c.flag("--quiet")) { a.quiet = true; return ok_status(); }
   if (c.flag("-h") || c.flag("--help")) { a.help = true; return ok_status(); }
   return make_error("unknown option '" + std::string(c.peek()) + "' (see pseudoshadow render --help)");
@@ -208,6 +211,7 @@ int run_render(int argc, char** argv) {
   if (!ctx) return fail(ctx.error());
   auto renderer = Renderer::create(scene.value(), {});
   if (!renderer) return fail(renderer.error());
+  renderer.value()->set_show_probe(a.show_probe);
   const int frames = scene->render.frames;
   const bool progress = !a.quiet && frames > 1 && isatty(STDERR_FILENO);
   if (Status s = run_frames(*renderer.value(), frames, progress); !s) return fail(s.error());

@@ -32,6 +32,7 @@ options:
   --record FILE           record the device stream the loop read (a playback log)
   --set KEY=VALUE         scene override (as for render)
   --backend B             auto | egl | osmesa
+  --show-probe            also draw the probe itself (the haptic proxy) in the frames
   -q, --quiet             no progress
   -h, --help              this text
 
@@ -43,7 +44,7 @@ struct ReplayArgs {
   std::vector<std::string> overrides;
   long long every = 1;
   double fps = 30.0;
-  bool quiet = false, help = false;
+  bool quiet = false, help = false, show_probe = false;
 };
 
 Status parse_one(cli::ArgCursor& c, ReplayArgs& a) {
@@ -78,6 +79,7 @@ Status parse_one(cli::ArgCursor& c, ReplayArgs& a) {
       return make_error("--fps: expected a number in (0, 10000], e.g. --fps 30");
     return ok_status();
   }
+  if (c.flag("--show-probe")) { a.show_probe = true; return ok_status(); }
   if (c.flag("-q") || c.flag("--quiet")) { a.quiet = true; return ok_status(); }
   if (c.flag("-h") || c.flag("--help")) { a.help = true; return ok_status(); }
   return make_error("unknown option '" + std::string(c.peek()) + "' (see pseudoshadow replay --help)");
@@ -111,6 +113,7 @@ Result<ReplayGl> open_renderer(const ReplayArgs& a) {
   if (!ctx) return ctx.error();
   auto renderer = Renderer::create(scene.value(), {});
   if (!renderer) return renderer.error();
+  renderer.value()->set_show_probe(a.show_probe);
   return ReplayGl{std::move(ctx.value()), std::move(renderer.value())};
 }
 

@@ -36,6 +36,8 @@ options:
   --backend glfw      the only window backend
   --set KEY=VALUE     scene override (as for render)
   --overrides FILE    apply an override file (as saved by the panel) before --set
+  --show-probe        start with the probe drawn (P toggles it)
+  --panel             start with the parameter panel shown (F1 toggles it)
   --no-watch          do not reload the scene, its textures and glsl/ when they change
   --realtime PRIO     haptic thread SCHED_FIFO at PRIO (1..99; needs CAP_SYS_NICE), much
                       lower jitter on a loaded machine
@@ -46,10 +48,12 @@ options:
 
 keys: mouse moves the probe on the reference plane, Shift+scroll or PageUp/PageDown change its
 height; right drag orbits, scroll zooms; M captures the mouse (raw motion where supported);
-S saves screenshot_NNNN.png (without the panel); F1 shows the parameter panel; Esc or Q quits.
+P shows or hides the probe itself (hidden by default: the pseudo-shadow is the display; when
+shown it is drawn where the haptic proxy is, after the push-out); S saves screenshot_NNNN.png
+(without the panel); F1 shows the parameter panel; Esc or Q quits.
 Saved changes to the shaders, the scene or its textures are reloaded within 0.5 s; a broken
-file keeps the last good state running and shows its file:line in the title and the console. The probe itself is not drawn: only its
-pseudo-shadow. The title shows frame time, haptic rate and jitter, distance, speed, penetration.
+file keeps the last good state running and shows its file:line in the title and the console.
+The title shows frame time, haptic rate and jitter, distance, speed, penetration.
 exit status: 0 success, 1 runtime error, 2 usage error
 )";
 
@@ -58,7 +62,7 @@ struct RunArgs {
   std::vector<std::string> overrides;
   long long frames = 0, realtime = 0;
   double quit_after_s = 0.0;
-  bool quiet = false, help = false, watch = true;
+  bool quiet = false, help = false, watch = true, show_probe = false, panel = false;
 };
 
 Status parse_one(cli::ArgCursor& c, RunArgs& a) {
@@ -84,6 +88,8 @@ Status parse_one(cli::ArgCursor& c, RunArgs& a) {
     return ok_status();
   }
   if (c.flag("--no-watch")) { a.watch = false; return ok_status(); }
+  if (c.flag("--show-probe")) { a.show_probe = true; return ok_status(); }
+  if (c.flag("--panel")) { a.panel = true; return ok_status(); }
   if (S s = str("--frames", tmp); s) {
     if (!*s) return *s;
     auto n = cli::parse_int("--frames", tmp, 1, 100'000'000);
@@ -164,6 +170,8 @@ Status open_session(const RunArgs& a, Session& s) {
   }
   install_window_input(s.ctx->window(), s.input);
   s.panel = std::make_unique<TunePanel>(s.ctx->window());  // after: chains to our callbacks
+  if (a.panel) s.panel->toggle();
+  s.tune->renderer().set_show_probe(a.show_probe);
   return ok_status();
 }
 
@@ -190,6 +198,8 @@ Status handle_keys(Session& s, int w, int h) {
   in.scroll_height = 0.0;
   if (in.toggle_panel) s.panel->toggle();
   in.toggle_panel = false;
+  if (in.toggle_probe) s.tune->renderer().set_show_probe(!s.tune->renderer().show_probe());
+  in.toggle_probe = false;
   Camera cam = s.tune->renderer().scene().camera;
   apply_orbit_zoom(in, cam);
   s.tune->renderer().set_camera(cam);

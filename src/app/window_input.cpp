@@ -19,6 +19,7 @@ void on_key(GLFWwindow* w, int key, int, int action, int) {
   if (in.keys_captured) return;  // the user is typing into the parameter panel
   if (key == GLFW_KEY_S) ++in.screenshots;
   if (key == GLFW_KEY_M) in.toggle_capture = true;
+  if (key == GLFW_KEY_P) in.toggle_probe = true;
   if (key == GLFW_KEY_ESCAPE || key == GLFW_KEY_Q) in.quit = true;
 }
 

@@ -74,6 +74,7 @@ struct SurfacePass {
   const gl::Texture& color() const { return color_; }
   const gl::Texture& normal() const { return normal_; }
   const gl::Texture& aov() const { return aov_; }
+  const gl::Renderbuffer& depth_buffer() const { return depth_; }  // D32F, the surfaces' depth
   int width() const { return params_.width; }
   int height() const { return params_.height; }
   glm::ivec2 padded_size() const { return padded_; }

@@ -116,7 +116,8 @@ Status Renderer::init_passes() {
   const RenderSettings& rs = scene_.render;
   if (Status s = probe_depth_.init(options_.glsl_root, {rs.depth_map_size}); !s) return s;
   if (Status s = surface_.init(options_.glsl_root, {rs.width, rs.height}); !s) return s;
-  return reductions_.init(options_.glsl_root, surface_);
+  if (Status s = reductions_.init(options_.glsl_root, surface_); !s) return s;
+  return probe_view_.init(options_.glsl_root, surface_);
 }
 
 Status Renderer::prime_reference_plane() {
@@ -234,6 +235,21 @@ Status Renderer::render_frame() {
     apply_reductions(r, plan);
   } else {
     apply_reductions(ReductionResult{}, plan);  // zero sum: plane kept, no displacement
+  }
+  if (show_probe_) {
+    ProbeViewPass::Inputs in;
+    in.view_proj = view_projection(scene_.camera,
+                                   static_cast<double>(scene_.render.width) / scene_.render.height);
+    in.light = &scene_.light;
+    const CapsuleShape capsule = capsule_of(scene_.probe);  // after the displacement
+    if (scene_.probe.shape == ProbeShape::kMesh) {
+      in.mesh = &probe_mesh_;
+      in.model = glm::translate(glm::dmat4(1.0), scene_.probe.position);
+    } else {
+      in.capsule = &capsule;
+    }
+    probe_view_.run(in);
+    timer.lap("probe_view");
   }
   return ok_status();
 }

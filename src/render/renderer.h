@@ -13,6 +13,7 @@
 #include "core/result.h"
 #include "image/image.h"
 #include "passes/probe_depth.h"
+#include "passes/probe_view.h"
 #include "passes/reductions.h"
 #include "passes/surface.h"
 #include "render/plan.h"
@@ -58,6 +59,10 @@ class Renderer {
   const PlaneFrame& reference() const { return frame_; }
   void set_probe_state(const glm::dvec3& position, const glm::dvec3& velocity);
   void set_camera(const Camera& camera) { scene_.camera = camera; }  // orbit/zoom in the window
+  // Draw the probe (the displayed proxy) over the image after the pseudo-shadow; off by default.
+  // Changes the colour image only, never the AOVs, the reference plane or the displacement.
+  void set_show_probe(bool show) { show_probe_ = show; }
+  bool show_probe() const { return show_probe_; }
   // The frame's colour target (RGBA8, padded to a power of two; the image is the
   // width x height region at the origin, bottom row first): blitted to the window.
   const gl::Texture& color_texture() const { return surface_.color(); }
@@ -84,6 +89,8 @@ class Renderer {
   ProbeDepthPass probe_depth_;
   SurfacePass surface_;
   ReductionsPass reductions_;
+  ProbeViewPass probe_view_;
+  bool show_probe_ = false;
 };
 
 // Stats as JSON (the CLI's --stats FILE): backend, renderer, reference_normal, displacement,

@@ -7,6 +7,7 @@
 #include <vector>
 #include <sstream>
 #include <fstream>
+#include <set>
 
 #include <assimp/Importer.hpp>
 #include <assimp/postprocess.h>
@@ -50,6 +51,63 @@ Status append_mesh(const std::string& path, const aiMesh& in, Mesh& out) {
   return ok_status();
 }
 
+bool is_count(const std::string& word) {
+  return !word.empty() && word.find_first_not_of("0123456789") == std::string::npos;
+}
+
+// PLY headers are checked line by line against the format's grammar before assimp sees them:
+// assimp 5.2's PLY reader loops forever on several malformed headers (fuzz_mesh found one
+// without end_header and one with end_header at the end of a property line), so only headers
+// it reads correctly get through. `head` is the file's first 4 KiB.
+Status check_ply_header(const std::string& path, const std::string& head) {
+  static const std::set<std::string> kTypes = {
+      "char",  "uchar",  "short",  "ushort", "int",    "uint",    "float",   "double",
+      "int8",  "uint8",  "int16",  "uint16", "int32",  "uint32",  "float32", "float64"};
+  const auto fail = [&](size_t line, const std::string& what) {
+    return make_error(path + ":" + std::to_string(line) + ": cannot load mesh: PLY header " +
+                      what);
+  };
+  std::istringstream lines(head);
+  std::string line;
+  bool in_element = false;
+  for (size_t n = 1; std::getline(lines, line); ++n) {
+    if (!line.empty() && line.back() == '\r') line.pop_back();
+    if (line.find('\0') != std::string::npos) return fail(n, "line contains a NUL byte");
+    std::istringstream words(line);
+    std::vector<std::string> w;
+    for (std::string word; words >> word;) w.push_back(word);
+    const std::string key = w.empty() ? "" : w[0];
+    if (n == 1) {
+      if (w.size() != 1 || key != "ply") return fail(n, "must start with a line 'ply'");
+    } else if (n == 2) {
+      if (w.size() != 3 || key != "format" ||
+          (w[1] != "ascii" && w[1] != "binary_little_endian" && w[1] != "binary_big_endian") ||
+          w[2] != "1.0")
+        return fail(n, "second line must be 'format ascii|binary_little_endian|binary_big_endian 1.0'");
+    } else if (key == "comment" || key == "obj_info") {
+      continue;
+    } else if (key == "element") {
+      if (w.size() != 3 || !is_count(w[2])) return fail(n, "'element NAME COUNT' expected");
+      if (w[2].size() > 10 || std::stoull(w[2]) > 3 * kMaxMeshTriangles)
+        return make_error(path + ": cannot load mesh: its header declares more than " +
+                          std::to_string(3 * kMaxMeshTriangles) + " elements (limit: " +
+                          std::to_string(kMaxMeshTriangles) + " triangles)");
+      in_element = true;
+    } else if (key == "property") {
+      const bool scalar = w.size() == 3 && kTypes.count(w[1]);
+      const bool list = w.size() == 5 && w[1] == "list" && kTypes.count(w[2]) && kTypes.count(w[3]);
+      if (!scalar && !list)
+        return fail(n, "'property TYPE NAME' or 'property list TYPE TYPE NAME' expected");
+      if (!in_element) return fail(n, "property before any element");
+    } else if (key == "end_header" && w.size() == 1) {
+      return ok_status();
+    } else {
+      return fail(n, "line not understood (expected element, property, comment or end_header)");
+    }
+  }
+  return make_error(path + ": cannot load mesh: PLY header has no end_header in its first 4 KiB");
+}
+
 // Headers of text OFF and PLY files, checked before assimp reads them. Element counts: assimp allocates arrays of
 // the declared size before reading a single element, so a header claiming 10^19 faces made it
 // ask for 8 GiB (found by fuzz_mesh); refuse such files before assimp sees them.
@@ -61,10 +119,19 @@ Status check_declared_counts(const std::string& path) {
   std::istringstream words(head);
   std::vector<std::string> w;
   for (std::string word; words >> word;) w.push_back(word);
-  const auto too_many = [&](const std::string& count) {
-    // A count that does not parse is left to assimp; one with > 10 digits is surely too many.
-    if (count.empty() || count.find_first_not_of("0123456789") != std::string::npos) return false;
-    return count.size() > 10 || std::stoull(count) > 3 * kMaxMeshTriangles;
+  const auto too_many = [&](const std::string& word) {
+    // assimp reads a count as the digits at the start of a word (strtoul10) and ignores what
+    // follows, so "19999999999\xbc..." is a count of 2e10 (fuzz_mesh found that one too). A
+    // negative count would wrap to a huge unsigned one. A word not starting with digits is left
+    // to assimp; one with > 10 digits is surely too many.
+    const bool negative = !word.empty() && word[0] == '-';
+    const size_t start = (!word.empty() && (word[0] == '+' || negative)) ? 1 : 0;
+    size_t end = start;
+    while (end < word.size() && word[end] >= '0' && word[end] <= '9') ++end;
+    if (end == start) return false;
+    const std::string digits = word.substr(start, end - start);
+    if (negative) return digits.find_first_not_of('0') != std::string::npos;
+    return digits.size() > 10 || std::stoull(digits) > 3 * kMaxMeshTriangles;
   };
   bool bad = false;
   // OFF, COFF, NOFF...: "nv nf ne". assimp also reads .off files whose keyword is missing, so
@@ -75,16 +142,40 @@ Status check_declared_counts(const std::string& path) {
     for (size_t i = 0; i < std::min<size_t>(w.size(), 4); ++i) bad = bad || too_many(w[i]);
   // assimp takes any file whose first word starts with "ply", or named .ply, as PLY.
   const bool ply = !w.empty() && (ext == ".ply" || w[0].rfind("ply", 0) == 0);
-  if (ply)
-    for (size_t i = 0; i + 2 < w.size(); ++i)
-      if (w[i] == "element") bad = bad || too_many(w[i + 2]);
-  // assimp 5.2's PLY reader loops forever on a header without end_header (found by fuzz_mesh).
-  if (ply && std::find(w.begin(), w.end(), "end_header") == w.end())
-    return make_error(path + ": cannot load mesh: PLY header has no end_header in its first 4 KiB");
+  if (ply) return check_ply_header(path, head);
   if (bad)
     return make_error(path + ": cannot load mesh: its header declares more than " +
                       std::to_string(3 * kMaxMeshTriangles) + " elements (limit: " +
                       std::to_string(kMaxMeshTriangles) + " triangles)");
+  return ok_status();
+}
+
+// Every face has 1..kMaxFaceIndices indices, all in range, and each mesh's mPrimitiveTypes says
+// what its faces are (the post-processing steps trust both). Recomputing the flags is safe: the
+// scene belongs to the importer until it is destroyed, and we are its only user.
+Status check_imported_faces(const std::string& path, const aiScene& scene) {
+  constexpr unsigned kMaxFaceIndices = 1u << 16;
+  for (unsigned m = 0; m < scene.mNumMeshes; ++m) {
+    aiMesh& mesh = *scene.mMeshes[m];
+    unsigned types = 0;
+    for (unsigned f = 0; f < mesh.mNumFaces; ++f) {
+      const aiFace& face = mesh.mFaces[f];
+      if (face.mNumIndices == 0 || face.mNumIndices > kMaxFaceIndices || !face.mIndices)
+        return make_error(path + ": cannot load mesh: face " + std::to_string(f) + " of mesh '" +
+                          mesh.mName.C_Str() + "' has " + std::to_string(face.mNumIndices) +
+                          " vertex indices (1 to " + std::to_string(kMaxFaceIndices) + " allowed)");
+      for (unsigned k = 0; k < face.mNumIndices; ++k)
+        if (face.mIndices[k] >= mesh.mNumVertices)
+          return make_error(path + ": cannot load mesh: face " + std::to_string(f) + " of mesh '" +
+                            mesh.mName.C_Str() + "' uses vertex " + std::to_string(face.mIndices[k]) +
+                            " of " + std::to_string(mesh.mNumVertices));
+      types |= face.mNumIndices == 1   ? aiPrimitiveType_POINT
+               : face.mNumIndices == 2 ? aiPrimitiveType_LINE
+               : face.mNumIndices == 3 ? aiPrimitiveType_TRIANGLE
+                                       : aiPrimitiveType_POLYGON;
+    }
+    mesh.mPrimitiveTypes = types;
+  }
   return ok_status();
 }
 
@@ -114,13 +205,20 @@ Result<Mesh> load_mesh_file(const std::string& path) {
   if (!ec && bytes > kMaxMeshFileBytes)
     return make_error(path + ": cannot load mesh: file is " + std::to_string(bytes) +
                       " bytes, more than the limit of " + std::to_string(kMaxMeshFileBytes));
+  // Two steps: read and validate, check what the importer produced, then post-process. Debian's
+  // assimp keeps its ai_assert()s, which abort the process when an importer hands the
+  // post-processing steps a mesh that contradicts itself (fuzz_mesh: a PLY face list cut short
+  // left a mesh flagged as polygons with none, and Triangulate aborted).
   Assimp::Importer importer;
-  const aiScene* scene = importer.ReadFile(
-      path, aiProcess_ValidateDataStructure | aiProcess_Triangulate | aiProcess_GenSmoothNormals |
-                aiProcess_JoinIdenticalVertices | aiProcess_PreTransformVertices);
+  const aiScene* scene = importer.ReadFile(path, aiProcess_ValidateDataStructure);
   if (!scene || (scene->mFlags & AI_SCENE_FLAGS_INCOMPLETE)) {
     return make_error(path + ": cannot load mesh: " + importer.GetErrorString());
   }
+  if (Status s = check_imported_faces(path, *scene); !s) return s.error();
+  scene = importer.ApplyPostProcessing(aiProcess_Triangulate | aiProcess_GenSmoothNormals |
+                                       aiProcess_JoinIdenticalVertices |
+                                       aiProcess_PreTransformVertices);
+  if (!scene) return make_error(path + ": cannot load mesh: " + importer.GetErrorString());
   Mesh mesh;
   for (unsigned m = 0; m < scene->mNumMeshes; ++m) {
     if (Status s = append_mesh(path, *scene->mMeshes[m], mesh); !s) return s.error();

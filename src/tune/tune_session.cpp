@@ -40,6 +40,7 @@ Status TuneSession::rebuild(const std::map<std::string, std::string>& edits, boo
   if (renderer_ && keep_probe)
     fresh.value()->set_probe_state(renderer_->scene().probe.position, renderer_->scene().probe.velocity);
   if (renderer_ && keep_camera) fresh.value()->set_camera(renderer_->scene().camera);
+  if (renderer_) fresh.value()->set_show_probe(renderer_->show_probe());
   renderer_ = std::move(fresh.value());
   edits_ = edits;
   last_error_.clear();

@@ -174,13 +174,54 @@ TEST(MeshTest, HugeDeclaredCountIsRefusedBeforeAssimpAllocates) {
   std::filesystem::remove(path);
 }
 
+TEST(MeshTest, HugeCountFollowedByJunkIsRefused) {
+  // Found by fuzz_mesh: assimp reads the leading digits of "19999999999<junk>" as the face count
+  // and allocated 45 GB; the same for a PLY element count.
+  const auto off = std::filesystem::temp_directory_path() / "ps_mesh_test_junk.off";
+  std::ofstream(off) << "OFF\n3 19999999999\xbc\xbc" "99 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n";
+  const auto ply = std::filesystem::temp_directory_path() / "ps_mesh_test_junk.ply";
+  std::ofstream(ply) << "ply\nformat ascii 1.0\nelement vertex 99999999999\nproperty float x\n"
+                        "end_header\n";
+  for (const auto& path : {off, ply}) {
+    Result<Mesh> mesh = load_mesh_file(path.string());
+    ASSERT_FALSE(mesh) << path;
+    EXPECT_NE(mesh.error().message.find("header declares more than"), std::string::npos)
+        << mesh.error().message;
+    std::filesystem::remove(path);
+  }
+}
+
+TEST(MeshTest, PlyFaceListCutShortIsAnErrorNotAnAssimpAssert) {
+  // Found by fuzz_mesh: 2 faces declared, 1 given, a misspelt property: assimp's PLY reader made
+  // a mesh whose flags contradict its faces and its Triangulate step's ai_assert aborted.
+  const auto path = std::filesystem::temp_directory_path() / "ps_mesh_test_short.ply";
+  std::ofstream(path) << "ply\nformat ascii 1.0\nelement vertex 1\nproperty float x\n"
+                         "propepty float y\nproperty float z\nelement face 2\n"
+                         "property list uchar int vertex_indices\nend_header\n"
+                         "0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n";
+  Result<Mesh> mesh = load_mesh_file(path.string());
+  ASSERT_FALSE(mesh);
+  EXPECT_EQ(mesh.error().message,
+            path.string() + ":5: cannot load mesh: PLY header line not understood (expected "
+                            "element, property, comment or end_header)");
+  std::filesystem::remove(path);
+}
+
 TEST(MeshTest, PlyWithoutEndHeaderIsRefusedNotHung) {
-  // Found by fuzz_mesh: assimp 5.2's PLY reader loops forever on such a header.
+  // Found by fuzz_mesh: assimp 5.2's PLY reader loops forever on such headers (no end_header at
+  // all; end_header at the end of a property line). The header grammar is checked first.
   const auto path = std::filesystem::temp_directory_path() / "ps_mesh_test_noend.ply";
-  std::ofstream(path) << "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\n0 0 0\n";
+  std::ofstream(path) << "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\n";
   Result<Mesh> mesh = load_mesh_file(path.string());
   ASSERT_FALSE(mesh);
   EXPECT_NE(mesh.error().message.find("no end_header"), std::string::npos) << mesh.error().message;
+  std::ofstream(path) << "ply\nformat ascii 1.0\nelement vertex 1\n"
+                         "property list uchar int vertex_in 0 0 end_header\n0 0 0\n";
+  mesh = load_mesh_file(path.string());
+  ASSERT_FALSE(mesh);
+  EXPECT_EQ(mesh.error().message,
+            path.string() + ":4: cannot load mesh: PLY header 'property TYPE NAME' or "
+                            "'property list TYPE TYPE NAME' expected");
   std::filesystem::remove(path);
 }
 

@@ -1,0 +1,108 @@
+#include "passes/probe_view.h"
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+
+#include <glm/gtc/matrix_transform.hpp>
+
+#include "gl/shader.h"
+
+namespace ps {
+
+Mesh make_capsule_mesh(const CapsuleShape& c, int segments) {
+  segments = std::max(segments, 8);
+  const int rings = std::max(segments / 4, 2);  // per hemisphere, pole to equator
+  glm::dvec3 axis = c.b - c.a;
+  const double length = glm::length(axis);
+  axis = length > 0.0 ? axis / length : glm::dvec3(0.0, 0.0, 1.0);
+  // Any unit vector orthogonal to the axis, and the third one.
+  const glm::dvec3 helper = std::abs(axis.z) < 0.9 ? glm::dvec3(0, 0, 1) : glm::dvec3(1, 0, 0);
+  const glm::dvec3 e1 = glm::normalize(glm::cross(helper, axis));
+  const glm::dvec3 e2 = glm::cross(axis, e1);
+  Mesh m;
+  // Latitude rings from the pole beyond b (polar angle 0) to the pole beyond a (pi); the equator
+  // appears twice, once around b and once around a, so the cylinder between has radial normals.
+  const int columns = segments + 1;  // seam duplicated: simple indexing
+  int ring_count = 0;
+  for (int hemi = 0; hemi < 2; ++hemi) {
+    for (int k = 0; k <= rings; ++k) {
+      const double polar = std::numbers::pi * 0.5 * (hemi + static_cast<double>(k) / rings);
+      const glm::dvec3 centre = hemi == 0 ? c.b : c.a;
+      for (int s = 0; s < columns; ++s) {
+        const double az = 2.0 * std::numbers::pi * (s % segments) / segments;
+        const glm::dvec3 n = std::cos(polar) * axis +
+                             std::sin(polar) * (std::cos(az) * e1 + std::sin(az) * e2);
+        m.positions.emplace_back(centre + c.radius * n);
+        m.normals.emplace_back(n);
+      }
+      ++ring_count;
+    }
+  }
+  for (int r = 0; r + 1 < ring_count; ++r)
+    for (int s = 0; s < segments; ++s) {
+      const auto i0 = static_cast<std::uint32_t>(r * columns + s), i1 = i0 + 1;
+      const auto j0 = static_cast<std::uint32_t>((r + 1) * columns + s), j1 = j0 + 1;
+      m.indices.insert(m.indices.end(), {i0, j0, i1, i1, j0, j1});
+    }
+  m.bounds_min = c.a;
+  m.bounds_max = c.a;
+  for (const glm::vec3& p : m.positions) {
+    m.bounds_min = glm::min(m.bounds_min, glm::dvec3(p));
+    m.bounds_max = glm::max(m.bounds_max, glm::dvec3(p));
+  }
+  return m;
+}
+
+Status ProbeViewPass::init(const std::string& glsl_root, const SurfacePass& surface) {
+  surface_ = &surface;
+  auto built = gl::build_program({{"probe_view.vert", "probe_view.frag"}, {}}, glsl_root);
+  if (!built) return built.error();
+  program_ = std::move(built.value());
+  fbo_ = gl::make_framebuffer();
+  glNamedFramebufferTexture(fbo_.id(), GL_COLOR_ATTACHMENT0, surface.color().id(), 0);
+  glNamedFramebufferRenderbuffer(fbo_.id(), GL_DEPTH_ATTACHMENT, GL_RENDERBUFFER,
+                                 surface.depth_buffer().id());
+  glNamedFramebufferDrawBuffer(fbo_.id(), GL_COLOR_ATTACHMENT0);
+  if (glCheckNamedFramebufferStatus(fbo_.id(), GL_FRAMEBUFFER) != GL_FRAMEBUFFER_COMPLETE)
+    return make_error("probe view pass: framebuffer incomplete (surface colour + depth)");
+  return ok_status();
+}
+
+void ProbeViewPass::run(const Inputs& in) {
+  glm::dmat4 model = in.model;
+  const GpuMesh* mesh = in.mesh;
+  if (!mesh) {
+    // Tessellate in the capsule's own frame (tip cap at the origin) so moving the probe only
+    // changes the model matrix.
+    const CapsuleShape local{glm::dvec3(0.0), in.capsule->b - in.capsule->a, in.capsule->radius};
+    if (!have_capsule_ || local.b != cached_.b || local.radius != cached_.radius) {
+      capsule_mesh_ = GpuMesh::upload(make_capsule_mesh(local, kSegments));
+      cached_ = local;
+      have_capsule_ = true;
+    }
+    mesh = &capsule_mesh_;
+    model = glm::translate(glm::dmat4(1.0), in.capsule->a);
+  }
+  glBindFramebuffer(GL_FRAMEBUFFER, fbo_.id());
+  glViewport(0, 0, surface_->width(), surface_->height());
+  glDisable(GL_SCISSOR_TEST);
+  glDisable(GL_BLEND);
+  glDisable(GL_CULL_FACE);  // mesh probes may be open
+  glEnable(GL_DEPTH_TEST);
+  glDepthFunc(GL_LESS);
+  glDepthMask(GL_TRUE);
+  glUseProgram(program_.id());
+  const glm::mat4 vp(in.view_proj), mm(model);
+  glUniformMatrix4fv(0, 1, GL_FALSE, &vp[0][0]);
+  glUniformMatrix4fv(1, 1, GL_FALSE, &mm[0][0]);
+  const glm::vec4 light_dir(glm::dvec4(in.light->direction, in.light->ambient));
+  const glm::vec4 light_color(glm::dvec4(in.light->color, in.gamma));
+  const glm::vec3 color(kColor);
+  glUniform4fv(2, 1, &light_dir.x);
+  glUniform4fv(3, 1, &light_color.x);
+  glUniform3fv(4, 1, &color.x);
+  mesh->draw();
+}
+
+}  // namespace ps
