@@ -6,6 +6,8 @@
 
 #include <chrono>
 #include <cstdio>
+#include <cstring>
+#include <map>
 #include <memory>
 
 #include "app/cli_args.h"
@@ -50,7 +52,9 @@ keys: mouse moves the probe on the reference plane, Shift+scroll or PageUp/PageD
 height; right drag orbits, scroll zooms; M captures the mouse (raw motion where supported);
 P shows or hides the probe itself (hidden by default: the pseudo-shadow is the display; when
 shown it is drawn where the haptic proxy is, after the push-out); S saves screenshot_NNNN.png
-(without the panel); F1 shows the parameter panel; Esc or Q quits.
+(without the panel) and screenshot_NNNN.overrides.toml (panel edits, camera, probe: `render
+--scene FILE --overrides screenshot_NNNN.overrides.toml` draws the same image); F1 shows the
+parameter panel; Esc or Q quits.
 Saved changes to the shaders, the scene or its textures are reloaded within 0.5 s; a broken
 file keeps the last good state running and shows its file:line in the title and the console.
 The title shows frame time, haptic rate and jitter, distance, speed, penetration.
@@ -190,10 +194,32 @@ void update_title(Session& s, const HapticState& st, double frame_ms) {
   glfwSetWindowTitle(s.ctx->window(), title);
 }
 
+std::string vec_text(const glm::dvec3& v) {
+  char buf[128];
+  std::snprintf(buf, sizeof buf, "[%.17g, %.17g, %.17g]", v.x, v.y, v.z);
+  return buf;
+}
+
+std::string screenshot_state(const TuneSession& tune) {
+  const Renderer& r = tune.renderer();
+  std::map<std::string, std::string> state = tune.edits();
+  const Scene& sc = r.scene();
+  state["camera.position"] = vec_text(sc.camera.position);
+  state["camera.target"] = vec_text(sc.camera.target);
+  state["camera.up"] = vec_text(sc.camera.up);
+  // The frame was drawn before its displacement moved the probe.
+  state["probe.position"] = vec_text(sc.probe.position - r.stats().displacement);
+  state["probe.velocity"] = vec_text(sc.probe.velocity);
+  return format_overrides(state, tune.scene_path().empty() ? "<built-in default scene>" : tune.scene_path());
+}
+
 Status handle_keys(Session& s, int w, int h) {
   WindowInput& in = s.input;
   if (in.toggle_capture && s.glfw_device) s.glfw_device->toggle_capture();
   in.toggle_capture = false;
+  if (s.panel->wants_input()) {  // scrolling or dragging over the panel: not for camera or probe
+    in.scroll_zoom = in.scroll_height = in.orbit_dx = in.orbit_dy = 0.0;
+  }
   if (s.glfw_device) s.glfw_device->add_scroll(in.scroll_height);
   in.scroll_height = 0.0;
   if (in.toggle_panel) s.panel->toggle();
@@ -208,7 +234,11 @@ Status handle_keys(Session& s, int w, int h) {
     char name[64];
     std::snprintf(name, sizeof name, "screenshot_%04d.png", n++);
     if (Status st = write_image(name, read_back_buffer(w, h)); !st) return st;
-    std::printf("saved %s\n", name);
+    // Beside it, the state that made it as an override file: the panel's edits, the camera
+    // and the probe as this frame drew them, so `render --scene S --overrides THIS` repeats it.
+    const std::string state = std::string(name).substr(0, std::strlen(name) - 4) + ".overrides.toml";
+    if (Status st = write_file_atomic(state, screenshot_state(*s.tune)); !st) return st;
+    std::printf("saved %s and %s\n", name, state.c_str());
   }
   return ok_status();
 }

@@ -1,5 +1,7 @@
 #include "app/tune_panel.h"
 
+#include <cfloat>
+
 #define GLFW_INCLUDE_NONE
 #include <GLFW/glfw3.h>
 #include <imgui.h>
@@ -149,7 +151,10 @@ void TunePanel::plots(const TuneSession& session) {
   const Material& m = scene.materials[material_];
   constexpr int kSamples = 120;
   float intensity[kSamples], gain[kSamples];
-  const double d_max = std::max(10.0, m.onset_distance_mm * 1.5), v_max = 2000.0;
+  // Speed axis: up to 3x the speed whose frequency at lambda_max is the peak, so the band-pass
+  // is visible whatever the material's scale (wood: 375 mm/s).
+  const double d_max = std::max(10.0, m.onset_distance_mm * 1.5);
+  const double v_max = std::clamp(3.0 * (m.peak_hz + m.bandwidth_hz) * m.gabor.lambda_max_mm, 10.0, 5000.0);
   for (int i = 0; i < kSamples; ++i) {
     intensity[i] = static_cast<float>(shadow_intensity(m, -1.0 + (d_max + 1.0) * i / (kSamples - 1)));
     gain[i] = static_cast<float>(amplitude_gain(m, v_max * i / (kSamples - 1)));
@@ -157,7 +162,9 @@ void TunePanel::plots(const TuneSession& session) {
   char caption[96];
   std::snprintf(caption, sizeof caption, "intensity vs distance, -1..%.0f mm", d_max);
   ImGui::PlotLines("##intensity", intensity, kSamples, 0, caption, 0.f, 1.f, ImVec2(0, 70));
-  ImGui::PlotLines("##gain", gain, kSamples, 0, "amplitude gain vs speed, 0..2000 mm/s", 0.f, 1.f, ImVec2(0, 70));
+  char gain_caption[96];
+  std::snprintf(gain_caption, sizeof gain_caption, "amplitude gain vs speed, 0..%.0f mm/s", v_max);
+  ImGui::PlotLines("##gain", gain, kSamples, 0, gain_caption, 0.f, 1.f, ImVec2(0, 70));
   ImGui::Text("speed gain this frame: %.3f", session.renderer().stats().speed_gain);
 }
 
@@ -168,8 +175,16 @@ void TunePanel::draw(TuneSession& session) {
   ImGui::NewFrame();
   ImGui::SetNextWindowPos(ImVec2(8, 8), ImGuiCond_FirstUseEver);
   ImGui::SetNextWindowSize(ImVec2(420, 0), ImGuiCond_FirstUseEver);
+  // Never taller than the window (a 512-pixel window cannot show every section at once): the
+  // panel scrolls instead, so the curves and the save button stay reachable.
+  const float max_h = std::max(ImGui::GetIO().DisplaySize.y - 16.f, 100.f);
+  ImGui::SetNextWindowSizeConstraints(ImVec2(200, 0), ImVec2(FLT_MAX, max_h));
   ImGui::Begin("parameters (F1)");
-  if (!session.last_error().empty()) ImGui::TextColored(ImVec4(1, 0.4f, 0.3f, 1), "%s", session.last_error().c_str());
+  if (!session.last_error().empty()) {  // reload errors are long (file:line + driver log): wrap
+    ImGui::PushStyleColor(ImGuiCol_Text, ImVec4(1, 0.4f, 0.3f, 1));
+    ImGui::TextWrapped("reload failed, last good state kept: %s", session.last_error().c_str());
+    ImGui::PopStyleColor();
+  }
   if (ImGui::CollapsingHeader("material", ImGuiTreeNodeFlags_DefaultOpen)) material_section(session);
   if (ImGui::CollapsingHeader("curves", ImGuiTreeNodeFlags_DefaultOpen)) plots(session);
   if (ImGui::CollapsingHeader("probe and camera")) probe_camera_section(session);
