@@ -4,7 +4,8 @@
 //   1 normal  RGBA32F : (visible front-facing normal, 1) -> mean = reference plane (step 4)
 //   2 aov     RGBA32F : (intensity, signed distance d mm, texture value in sigmas, resistance)
 // Variants: PS_SHADOW (0: probe beyond this surface's influence, pseudo-shadow compiled out),
-//           PS_TEXTURED (0: untextured material, Gabor compiled out).
+//           PS_TEXTURED (0: untextured material, Gabor compiled out), PS_GABOR_STRATIFIED,
+//           PS_GABOR_BAKED (the texture read from the material's baked tile).
 #include "lib/surface_block.glsl"
 #include "lib/gabor.glsl"
 #include "lib/pseudo_shadow.glsl"
@@ -18,6 +19,9 @@
 
 layout(binding = 0) uniform sampler2D u_probe_depth;  // R32F: probe's lowest height h_p per texel
 layout(binding = 1) uniform sampler2D u_albedo_tex;
+#if PS_GABOR_BAKED
+layout(binding = 2) uniform sampler2D u_gabor_tile;  // RGBA32F baked tile (passes/gabor_bake.h)
+#endif
 
 layout(location = 0) in vec3 v_world;
 layout(location = 1) in vec3 v_normal;
@@ -67,7 +71,11 @@ void main() {
 #if PS_TEXTURED
   // Only fragments inside the footprint and the onset distance pay for the Gabor sum.
   if (intensity > 0.0 && d < u_modulation.y) {
+#if PS_GABOR_BAKED
+    tex_sigmas = gabor_noise_baked(u_gabor_tile, vec4(u_misc.yzw, 0.0), uv) / u_gabor_c.w;
+#else
     tex_sigmas = gabor_noise(gabor_material(), uv) / u_gabor_c.w;
+#endif
     float shown = u_modulation.x * tex_sigmas / u_modulation.w;
     tex = clamp(0.5 + 0.5 * shown, 0.0, 1.0);
   }

@@ -5,6 +5,12 @@
 #ifndef PS_GABOR_STRATIFIED
 #define PS_GABOR_STRATIFIED 0  // 1: fixed count per cell on a jittered grid (see the CPU twin)
 #endif
+#ifndef PS_GABOR_BAKE
+#define PS_GABOR_BAKE 0  // 1: gabor_noise_sample (value + derivatives, periodic) for the bake pass
+#endif
+#ifndef PS_GABOR_BAKED
+#define PS_GABOR_BAKED 0  // 1: gabor_noise_baked (Hermite lookup in the baked tile)
+#endif
 
 const float kPi = 3.14159265358979;
 const uint kLcgMultiplier = 3039177861u;  // r_{n+1} = 3039177861 r_n mod 2^32
@@ -78,3 +84,78 @@ float gabor_noise(GaborMaterial g, vec2 uv) {
       sum += gabor_cell(g, c + ivec2(i, j), o - vec2(i, j) * g.cell_mm);
   return sum;
 }
+
+#if PS_GABOR_BAKE
+// Baking (glsl/gabor_bake.frag): value and derivatives (f, df/du, df/dv, d2f/dudv) of the
+// periodic texture, cells hashed by their index wrapped into [-N/2, N/2). CPU twin:
+// gabor_noise_derivatives in src/reference/gabor.cpp.
+int gabor_wrap_cell(int c, int period_cells) {
+  // Not `%`: GLSL leaves it undefined for negative operands (llvmpipe's answer broke the wrap).
+  int half_n = period_cells / 2, k = c + half_n;
+  int m = k - period_cells * int(floor(float(k) / float(period_cells)));
+  if (m < 0) m += period_cells;  // float rounding of the quotient for |k| near 2^24
+  if (m >= period_cells) m -= period_cells;
+  return m - half_n;
+}
+
+vec4 gabor_cell_sample(GaborMaterial g, ivec2 cell, vec2 p) {
+  uint r = gabor_cell_seed(cell, g.seed);
+  float n = g.density.x + (g.density.y - g.density.x) * lcg_uniform(r);
+  float expected = n * (1.0 / kPi);
+  int count = clamp(int(floor(expected + lcg_uniform(r))), 0, g.max_impulses);
+  vec4 sum = vec4(0.0);
+  for (int k = 0; k < count; ++k) {
+    vec2 d = p - vec2(lcg_uniform(r), lcg_uniform(r)) * g.cell_mm;
+    float amp = mix(g.amplitude.x, g.amplitude.y, lcg_uniform(r));
+    float lambda = mix(g.lambda_mm.x, g.lambda_mm.y, lcg_uniform(r));
+    float theta = mix(g.theta_rad.x, g.theta_rad.y, lcg_uniform(r));
+    float psi = 2.0 * kPi * lcg_uniform(r);
+    float w = g.kernel_periods * lambda;
+    float r2 = dot(d, d);
+    if (w <= 0.0 || r2 >= w * w * g.trunc_factor) continue;
+    vec2 o = vec2(cos(theta), sin(theta));
+    float f = 2.0 * kPi / lambda, iw2 = 1.0 / (w * w);
+    float e = amp * exp(-r2 * iw2);
+    float ph = f * dot(d, o) + psi, c = cos(ph), s = sin(ph);
+    sum += e * vec4(c, -2.0 * d.x * iw2 * c - s * f * o.x, -2.0 * d.y * iw2 * c - s * f * o.y,
+                    4.0 * d.x * d.y * iw2 * iw2 * c + 2.0 * d.x * iw2 * s * f * o.y +
+                        2.0 * d.y * iw2 * s * f * o.x - c * f * f * o.x * o.y);
+  }
+  return sum;
+}
+
+vec4 gabor_noise_sample(GaborMaterial g, vec2 uv, int period_cells) {
+  vec2 f = uv / g.cell_mm;
+  ivec2 c = ivec2(floor(f));
+  vec2 o = (f - vec2(c)) * g.cell_mm;
+  vec4 sum = vec4(0.0);
+  for (int j = -1; j <= 1; ++j)
+    for (int i = -1; i <= 1; ++i) {
+      ivec2 cell = ivec2(gabor_wrap_cell(c.x + i, period_cells), gabor_wrap_cell(c.y + j, period_cells));
+      sum += gabor_cell_sample(g, cell, o - vec2(i, j) * g.cell_mm);
+    }
+  return sum;
+}
+#endif
+
+#if PS_GABOR_BAKED
+// Baked lookup: bicubic Hermite interpolation of the tile's samples (f, f_u h, f_v h,
+// f_uv h^2) at u_i = -period/2 + i h. tile: (period mm, texel h mm, texels, 0). CPU twin:
+// gabor_noise_baked in src/reference/gabor.cpp.
+float gabor_noise_baked(sampler2D tile_tex, vec4 tile, vec2 uv) {
+  vec2 s = (uv + 0.5 * tile.x) / tile.y;
+  vec2 i = floor(s), t = s - i;
+  ivec2 i0 = ivec2(mod(i, tile.z)), i1 = ivec2(mod(i + 1.0, tile.z));
+  vec4 h0 = vec4((1.0 + 2.0 * t) * (1.0 - t) * (1.0 - t), t * (1.0 - t) * (1.0 - t));  // xy: value at 0 (u, v); zw: slope at 0
+  vec4 h1 = vec4(t * t * (3.0 - 2.0 * t), -t * t * (1.0 - t));                         // xy: value at 1; zw: slope at 1
+  vec4 s00 = texelFetch(tile_tex, ivec2(i0.x, i0.y), 0), s10 = texelFetch(tile_tex, ivec2(i1.x, i0.y), 0);
+  vec4 s01 = texelFetch(tile_tex, ivec2(i0.x, i1.y), 0), s11 = texelFetch(tile_tex, ivec2(i1.x, i1.y), 0);
+  // Corner (a, b): value weights wu_a wv_b; u-slope su_a wv_b; v-slope wu_a sv_b; twist su_a sv_b.
+  float f = 0.0;
+  f += dot(s00, vec4(h0.x * h0.y, h0.z * h0.y, h0.x * h0.w, h0.z * h0.w));
+  f += dot(s10, vec4(h1.x * h0.y, h1.z * h0.y, h1.x * h0.w, h1.z * h0.w));
+  f += dot(s01, vec4(h0.x * h1.y, h0.z * h1.y, h0.x * h1.w, h0.z * h1.w));
+  f += dot(s11, vec4(h1.x * h1.y, h1.z * h1.y, h1.x * h1.w, h1.z * h1.w));
+  return f;
+}
+#endif

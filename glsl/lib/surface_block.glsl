@@ -16,6 +16,6 @@ layout(std140, binding = 0) uniform SurfaceBlock {
   vec4 u_gabor_b;        // x theta_min rad, y theta_max rad, z n_min, w n_max
   vec4 u_gabor_c;        // x kernel_periods, y cell mm, z trunc factor, w sigma_unit
   vec4 u_modulation;     // x speed gain [0,1], y onset distance mm, z resistance, w contrast (sigmas)
-  vec4 u_misc;           // x albedo texture repeat mm; y..w unused
+  vec4 u_misc;           // x albedo texture repeat mm; y baked tile period mm, z texel mm, w texels
   uvec4 u_seed;          // x seed, y max impulses per cell, z stratified impulses per cell
 };

@@ -54,6 +54,26 @@ std::string summary_markdown(const std::vector<BenchRow>& rows, const SkipRatios
   for (const BenchRow& r : rows)
     o << "| " << r.group << " | " << r.value << " | " << g(r.m.frame_ms) << " | " << g(r.m.surface_ms)
       << " | " << r.metric << " | " << g(r.error) << " | " << (r.pareto ? "yes" : "") << " |\n";
+  // Gabor strategies against the naive sum, all from this run: whole frame, surface pass, and
+  // the Gabor evaluation alone (time above the "none" row, i.e. the same frame untextured).
+  const BenchRow *naive = nullptr, *none = nullptr;
+  for (const BenchRow& r : rows)
+    if (r.group == "gabor_strategy") {
+      if (r.value == "naive") naive = &r;
+      if (r.value == "none") none = &r;
+    }
+  if (naive && none) {
+    o << "\n| Gabor strategy | frame ms | speed-up: frame | surface pass | Gabor evaluation | RMS vs naive (sigma) | <= 1 % |\n"
+      << "| --- | --- | --- | --- | --- | --- | --- |\n";
+    for (const BenchRow& r : rows) {
+      if (r.group != "gabor_strategy" || &r == none) continue;
+      const double gabor_naive = naive->m.surface_ms - none->m.surface_ms, gabor_r = r.m.surface_ms - none->m.surface_ms;
+      o << "| " << r.value << " | " << g(r.m.frame_ms) << " | " << g(naive->m.frame_ms / r.m.frame_ms) << "x | "
+        << g(naive->m.surface_ms / r.m.surface_ms) << "x | "
+        << (gabor_r > 0.0 ? g(gabor_naive / gabor_r) + "x" : std::string("(at noise level)")) << " | "
+        << g(r.error) << " | " << (r.error <= 0.01 ? "yes" : "no") << " |\n";
+    }
+  }
   o << "\n| skip check | measured | target |\n| --- | --- | --- |\n";
   o << "| probe beyond influence: frame / plain shading pass | " << g(skip.beyond_influence) << "x | <= 1.1x |\n";
   o << "| untextured (PS_TEXTURED=0) / textured with no Gabor pixel | " << g(skip.untextured) << "x | <= 1.05x |\n";

@@ -6,6 +6,7 @@
 #include <memory>
 
 #include "reference/gabor.h"
+#include "reference/probe_geometry.h"
 #include "render/renderer.h"
 
 namespace ps::bench {
@@ -54,11 +55,16 @@ void texture_errors(const Scene& s, const Image& tex, const std::vector<glm::ive
                     const TextureRefs& refs, Measurement& m) {
   const GaborParams& g = s.materials[0].gabor;
   const GaborSetup setup = make_gabor_setup(g);
+  // The tile the renderer made (none for naive/stratified, or when "auto" fell back).
+  const GaborBakePlan plan = choose_gabor_tile(g, setup, s.render.seed, 2.0 * probe_bounds(s.probe).radius).plan;
   double own = 0.0, ideal = 0.0, target = 0.0;
   for (const glm::ivec2& p : pix) {
     const glm::dvec2 w = pixel_world(s, p.x, p.y);
     const double t = tex.at(p.x, p.y, 0);
-    const double e = t - gabor_noise(g, setup, s.render.seed, w.x, w.y) / setup.sigma_unit;
+    // Each strategy against its own CPU twin (baked: the same Hermite lookup in double).
+    const double own_ref = plan.ok ? gabor_noise_baked(g, setup, plan, s.render.seed, w.x, w.y)
+                                   : gabor_noise(g, setup, s.render.seed, w.x, w.y);
+    const double e = t - own_ref / setup.sigma_unit;
     own += e * e;
     if (refs.ideal) {
       const double ei = t - gabor_noise_untruncated(g, setup, s.render.seed, w.x, w.y) / setup.sigma_unit;
@@ -144,6 +150,10 @@ Scene bench_scene(int size) {
   m.gabor.lambda_max_mm = 2.0;
   m.gabor.theta_max_rad = 1.0;
   m.onset_distance_mm = 100.0;  // the whole footprint is textured: the Gabor cost is visible
+  // The sweep's base is the naive sum (the thesis's method, the baseline every strategy is
+  // judged against, and what the impulse and truncation knobs change); the scene default
+  // "auto" is its own row of the gabor_strategy group.
+  m.gabor.strategy = GaborParams::Strategy::kNaive;
   s.materials.push_back(m);
   Surface p;
   p.material = "bench";
@@ -195,6 +205,16 @@ std::vector<Knob> knobs() {
     k.push_back({"gabor_strategy", "stratified_" + num(c), "texture_vs_target", [c](Scene& sc) {
                    sc.materials[0].gabor.strategy = GaborParams::Strategy::kStratified;
                    sc.materials[0].gabor.stratified_impulses = c;
+                 }});
+  // "none": the same frame without any Gabor evaluation (error = the whole texture, 1 sigma);
+  // subtracting its time gives the Gabor evaluation's own cost.
+  k.push_back({"gabor_strategy", "none", "texture_vs_target", [](Scene& sc) { sc.materials[0].textured = false; }});
+  k.push_back({"gabor_strategy", "auto", "texture_vs_target",
+               [](Scene& sc) { sc.materials[0].gabor.strategy = GaborParams::Strategy::kAuto; }});
+  for (int spl : {8, 16, 32})  // tile samples per lambda_min; the bake itself is not timed
+    k.push_back({"gabor_strategy", "baked_" + num(spl), "texture_vs_target", [spl](Scene& sc) {
+                   sc.materials[0].gabor.strategy = GaborParams::Strategy::kBaked;
+                   sc.materials[0].gabor.bake_samples_per_lambda = spl;
                  }});
   for (double c : {5.0, 10.0, 20.0, 40.0})
     k.push_back({"displacement", "weighted_c" + num(c), "displacement_rel", [c](Scene& sc) {
@@ -252,7 +272,8 @@ Result<std::vector<BenchRow>> run_sweep(const BenchOptions& o) {
       ks[i].edit(s);
       const bool same_size = s.render.width == base.render.width;
       // Errors are deterministic: computed in the first round only.
-      const TextureRefs refs{same_size ? &ref : nullptr, ks[i].metric == "texture_vs_ideal"};
+      const TextureRefs refs{same_size ? &ref : nullptr,
+                             ks[i].metric == "texture_vs_ideal" || ks[i].group == "gabor_strategy"};
       auto m = measure_with(s, o, round == 0 ? refs : TextureRefs{}, round == 0);
       if (!m) return m.error();
       if (round == 0)

@@ -8,7 +8,8 @@
 //   All targets are allocated at the next power of two of the image size (mipmap averages are
 //   exact only for power-of-two RGBA32F on llvmpipe, ENVIRONMENT.md); the viewport covers the
 //   image, the padding stays cleared and drops out of every ratio computed from the mips.
-// Shaders: glsl/surface.{vert,frag}; variants PS_SHADOW, PS_TEXTURED.
+// Shaders: glsl/surface.{vert,frag}; variants PS_SHADOW, PS_TEXTURED, PS_GABOR_STRATIFIED,
+// PS_GABOR_BAKED.
 #pragma once
 
 #include <map>
@@ -60,6 +61,7 @@ struct SurfaceDraw {
   bool textured = true;  // PS_TEXTURED variant
   bool stratified = false;  // PS_GABOR_STRATIFIED variant (GaborParams::Strategy::kStratified)
   const gl::Texture* albedo = nullptr;
+  const gl::Texture* gabor_tile = nullptr;  // set: PS_GABOR_BAKED variant reads this tile
 };
 
 struct SurfacePass {
@@ -81,13 +83,14 @@ struct SurfacePass {
   int mip_levels() const { return levels_; }
 
  private:
-  Result<const gl::Program*> program(bool shadow, bool textured, bool stratified = false);
+  Result<const gl::Program*> program(bool shadow, bool textured, bool stratified = false,
+                                     bool baked = false);
 
   std::string glsl_root_;
   Params params_;
   glm::ivec2 padded_{1, 1};
   int levels_ = 1;
-  std::map<std::tuple<bool, bool, bool>, gl::Program> programs_;
+  std::map<std::tuple<bool, bool, bool, bool>, gl::Program> programs_;
   gl::Texture color_, normal_, aov_, dummy_;
   gl::Renderbuffer depth_;
   gl::Framebuffer fbo_;

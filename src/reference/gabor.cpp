@@ -93,6 +93,152 @@ double cell_sum(const GaborParams& g, const GaborSetup& s, std::uint32_t seed, i
 
 }  // namespace
 
+namespace {
+
+// cell_sum with derivatives (same draws, same truncation).
+GaborSample cell_sample(const GaborParams& g, const GaborSetup& s, std::uint32_t seed, int cx,
+                        int cy, double px, double py) {
+  std::uint32_t r = gabor_cell_seed(cx, cy, seed);
+  const int count = cell_count(g, s, r);
+  const int grid = s.stratified_count > 0 ? static_cast<int>(std::ceil(std::sqrt(static_cast<float>(s.stratified_count)))) : 1;
+  const float inv_grid = 1.0f / static_cast<float>(grid);
+  GaborSample out;
+  for (int k = 0; k < count; ++k) {
+    const float jx = (static_cast<float>(k % grid) + lcg_uniform(r)) * inv_grid;
+    const float jy = (static_cast<float>((k / grid) % grid) + lcg_uniform(r)) * inv_grid;
+    const double dx = px - jx * s.cell_mm, dy = py - jy * s.cell_mm;
+    const double amp = std::lerp(g.a_min, g.a_max, static_cast<double>(lcg_uniform(r)));
+    const double lambda = std::lerp(g.lambda_min_mm, g.lambda_max_mm, static_cast<double>(lcg_uniform(r)));
+    const double theta = std::lerp(g.theta_min_rad, g.theta_max_rad, static_cast<double>(lcg_uniform(r)));
+    const double psi = 2.0 * std::numbers::pi * lcg_uniform(r);
+    const double w = g.kernel_periods * lambda;
+    const double r2 = dx * dx + dy * dy;
+    if (w <= 0.0 || r2 >= w * w * s.trunc_factor) continue;
+    // k = A E cos(P), E = exp(-r^2/W^2), P = f (d . o) + psi, f = 2 pi / lambda, o = (cos, sin).
+    const double ox = std::cos(theta), oy = std::sin(theta), f = 2.0 * std::numbers::pi / lambda;
+    const double e = amp * std::exp(-r2 / (w * w)), iw2 = 1.0 / (w * w);
+    const double ph = f * (dx * ox + dy * oy) + psi, c = std::cos(ph), sn = std::sin(ph);
+    out.f += e * c;
+    out.fu += e * (-2.0 * dx * iw2 * c - sn * f * ox);
+    out.fv += e * (-2.0 * dy * iw2 * c - sn * f * oy);
+    out.fuv += e * (4.0 * dx * dy * iw2 * iw2 * c + 2.0 * dx * iw2 * sn * f * oy +
+                    2.0 * dy * iw2 * sn * f * ox - c * f * f * ox * oy);
+  }
+  return out;
+}
+
+}  // namespace
+
+int wrap_cell(int c, int period_cells) {
+  if (period_cells <= 0) return c;
+  const int half = period_cells / 2;
+  return ((c + half) % period_cells + period_cells) % period_cells - half;
+}
+
+GaborBakePlan make_gabor_bake_plan(const GaborParams& g, const GaborSetup& s) {
+  GaborBakePlan p;
+  const double lambda_min = std::min(g.lambda_min_mm, g.lambda_max_mm);
+  if (!(lambda_min > 0.0) || !(s.cell_mm > 0.0)) return p;
+  const double max_texel = lambda_min / std::max(1, g.bake_samples_per_lambda);
+  // Largest even N with N cells sampled at <= max_texel in at most kMaxBakeTexels samples.
+  const double cells_fit = kMaxBakeTexels * max_texel / s.cell_mm;
+  if (!(cells_fit >= 4.0)) return p;
+  // The smallest even N whose period reaches kBakePeriodMm (bake time and memory grow with
+  // N^2), at least 4 cells, at most what fits.
+  const int fit = 2 * static_cast<int>(std::floor(cells_fit / 2.0));
+  const int wanted = std::max(4, 2 * static_cast<int>(std::ceil(kBakePeriodMm / s.cell_mm / 2.0)));
+  p.period_cells = std::min(fit, wanted);
+  p.period_mm = p.period_cells * s.cell_mm;
+  p.texels = std::min(kMaxBakeTexels, static_cast<int>(std::ceil(p.period_mm / max_texel)));
+  p.texel_mm = p.period_mm / p.texels;
+  p.ok = true;
+  return p;
+}
+
+GaborSample gabor_noise_derivatives(const GaborParams& g, const GaborSetup& s, std::uint32_t seed,
+                                    double u, double v, int period_cells) {
+  const double fx = u / s.cell_mm, fy = v / s.cell_mm;
+  const int cx = static_cast<int>(std::floor(fx)), cy = static_cast<int>(std::floor(fy));
+  const double ox = (fx - cx) * s.cell_mm, oy = (fy - cy) * s.cell_mm;
+  GaborSample sum;
+  for (int j = -1; j <= 1; ++j)
+    for (int i = -1; i <= 1; ++i) {
+      const GaborSample c = cell_sample(g, s, seed, wrap_cell(cx + i, period_cells),
+                                        wrap_cell(cy + j, period_cells), ox - i * s.cell_mm,
+                                        oy - j * s.cell_mm);
+      sum.f += c.f, sum.fu += c.fu, sum.fv += c.fv, sum.fuv += c.fuv;
+    }
+  return sum;
+}
+
+double gabor_noise_baked(const GaborParams& g, const GaborSetup& s, const GaborBakePlan& plan,
+                         std::uint32_t seed, double u, double v) {
+  const double h = plan.texel_mm;
+  const double su = (u + 0.5 * plan.period_mm) / h, sv = (v + 0.5 * plan.period_mm) / h;
+  const double iu = std::floor(su), iv = std::floor(sv), tu = su - iu, tv = sv - iv;
+  // Hermite basis: value weights h0 (t), h1 (1 - t); slope weights g0, g1 (per texel).
+  const auto basis = [](double t, double w[4]) {
+    w[0] = (1 + 2 * t) * (1 - t) * (1 - t);  // value at 0
+    w[1] = t * t * (3 - 2 * t);              // value at 1
+    w[2] = t * (1 - t) * (1 - t);            // slope at 0
+    w[3] = -t * t * (1 - t);                 // slope at 1
+  };
+  double bu[4], bv[4];
+  basis(tu, bu);
+  basis(tv, bv);
+  double f = 0.0;
+  for (int b = 0; b < 2; ++b)
+    for (int a = 0; a < 2; ++a) {
+      // The sample (iu + a, iv + b), wrapped into the tile like the texture fetch.
+      const double k = std::fmod(std::fmod(iu + a, plan.texels) + plan.texels, plan.texels);
+      const double l = std::fmod(std::fmod(iv + b, plan.texels) + plan.texels, plan.texels);
+      const GaborSample x = gabor_noise_derivatives(g, s, seed, -0.5 * plan.period_mm + k * h,
+                                                    -0.5 * plan.period_mm + l * h, plan.period_cells);
+      f += bu[a] * bv[b] * x.f + bu[2 + a] * bv[b] * x.fu * h + bu[a] * bv[2 + b] * x.fv * h +
+           bu[2 + a] * bv[2 + b] * x.fuv * h * h;
+    }
+  return f;
+}
+
+double gabor_baked_rms_vs_naive(const GaborParams& g, const GaborSetup& s, const GaborBakePlan& plan,
+                                std::uint32_t seed) {
+  const double side = std::min(30.0, plan.period_mm - 2.0 * s.cell_mm);
+  if (!plan.ok || !(side > 0.0)) return std::numeric_limits<double>::infinity();
+  double sum2 = 0.0;
+  constexpr int kN = 40;
+  for (int j = 0; j < kN; ++j)
+    for (int i = 0; i < kN; ++i) {
+      const double u = side * ((i + 0.37) / kN - 0.5), v = side * ((j + 0.61) / kN - 0.5);
+      const double e = (gabor_noise_baked(g, s, plan, seed, u, v) - gabor_noise(g, s, seed, u, v)) / s.sigma_unit;
+      sum2 += e * e;
+    }
+  return std::sqrt(sum2 / (kN * kN));
+}
+
+GaborStrategyChoice choose_gabor_tile(const GaborParams& g, const GaborSetup& s, std::uint32_t seed,
+                                      double min_period_mm) {
+  GaborStrategyChoice c;
+  if (g.strategy == GaborParams::Strategy::kBaked) {
+    c.plan = make_gabor_bake_plan(g, s);
+    return c;
+  }
+  if (g.strategy != GaborParams::Strategy::kAuto) return c;
+  for (int samples : {16, 32}) {
+    GaborParams tried = g;
+    tried.bake_samples_per_lambda = samples;
+    const GaborBakePlan plan = make_gabor_bake_plan(tried, s);
+    if (!plan.ok) break;
+    c.best_period_mm = std::max(c.best_period_mm, plan.period_mm);
+    if (plan.period_mm < min_period_mm) break;  // more samples only shorten the period
+    c.rms_vs_naive = gabor_baked_rms_vs_naive(tried, s, plan, seed);
+    if (c.rms_vs_naive <= kAutoBakeMaxRms) {
+      c.plan = plan;
+      return c;
+    }
+  }
+  return c;
+}
+
 double gabor_noise(const GaborParams& g, const GaborSetup& s, std::uint32_t seed, double u,
                    double v) {
   const double fx = u / s.cell_mm, fy = v / s.cell_mm;

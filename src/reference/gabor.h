@@ -39,6 +39,63 @@ struct GaborSetup {
 
 GaborSetup make_gabor_setup(const GaborParams& g);
 
+// Baked strategy: the tile holding one period of the periodic texture. Sample points
+// u_i = -period/2 + i * texel (i = 0 .. texels-1) on both axes; texel <= lambda_min /
+// bake_samples_per_lambda (default 16). Bicubic Hermite interpolation of a sinusoid errs by
+// (2 pi / 16)^4 / 384 = 6e-5 of its amplitude there; what remains is the truncation
+// circles, where the texture jumps by up to truncation x A and the interpolation smears it
+// over one texel (RMS ~ sqrt(texel)). period = period_cells * cell, period_cells even and >= 4, as large as
+// kMaxBakeTexels allows. ok == false: the material is too fine for a tile of that size
+// (lambda_max / lambda_min too large) and the naive evaluation is used instead.
+inline constexpr int kMaxBakeTexels = 2048;  // per side: 64 MiB of RGBA32F at most
+// Wanted period: wider than any probe footprint we ship (the bench's r = 25 mm sphere covers
+// 50 mm), so one footprint never shows a repeat.
+inline constexpr double kBakePeriodMm = 64.0;
+struct GaborBakePlan {
+  bool ok = false;
+  int period_cells = 0;
+  int texels = 0;
+  double period_mm = 0.0, texel_mm = 0.0;
+};
+GaborBakePlan make_gabor_bake_plan(const GaborParams& g, const GaborSetup& s);
+
+// RMS of (baked - naive) / sigma over 40 x 40 off-grid points of the central period (a square
+// of side min(30 mm, period - 2 cells) at the origin): the method's error, in double.
+double gabor_baked_rms_vs_naive(const GaborParams& g, const GaborSetup& s, const GaborBakePlan& plan,
+                                std::uint32_t seed);
+
+// The tile a material gets: strategy kBaked -> its bake_samples_per_lambda as asked (no error
+// check); kAuto -> 16, then 32 samples per lambda_min, the first whose measured RMS against the
+// naive texture is <= kAutoBakeMaxRms and whose period is >= min_period_mm; otherwise (and for
+// other strategies) ok == false. The renderer passes the pseudo-shadow window's width (the probe's
+// bounding diameter) as min_period_mm, so "auto" never shows a repeat inside one shadow.
+inline constexpr double kAutoBakeMaxRms = 0.01;  // sigma; the bar
+struct GaborStrategyChoice {
+  GaborBakePlan plan;          // ok: bake this; else evaluate naive (or stratified)
+  double rms_vs_naive = -1.0;  // measured when kAuto considered a tile (last one tried)
+  double best_period_mm = 0.0; // kAuto: the longest period a tile could have had
+};
+GaborStrategyChoice choose_gabor_tile(const GaborParams& g, const GaborSetup& s, std::uint32_t seed,
+                                      double min_period_mm = 0.0);
+
+// Cell index wrapped into [-N/2, N/2) for a period of N cells (N = 0: unchanged).
+int wrap_cell(int c, int period_cells);
+
+// Value and derivatives of the noise at (u, v): x = f, y = df/du, z = df/dv, w = d2f/dudv
+// (per mm). period_cells > 0: the periodic texture (cells hashed by wrap_cell), else the naive
+// one. The baked tile stores these at its sample points.
+struct GaborSample {
+  double f = 0.0, fu = 0.0, fv = 0.0, fuv = 0.0;
+};
+GaborSample gabor_noise_derivatives(const GaborParams& g, const GaborSetup& s, std::uint32_t seed,
+                                    double u, double v, int period_cells);
+
+// CPU twin of the baked lookup: bicubic Hermite interpolation of the tile's samples (computed
+// here in double with gabor_noise_derivatives) at (u, v). Its difference from
+// gabor_noise_derivatives(...).f is the interpolation error alone.
+double gabor_noise_baked(const GaborParams& g, const GaborSetup& s, const GaborBakePlan& plan,
+                         std::uint32_t seed, double u, double v);
+
 std::uint32_t gabor_cell_seed(int cx, int cy, std::uint32_t seed);
 // One LCG step, then the new state mapped to [0, 1] in float (as the shader does).
 float lcg_uniform(std::uint32_t& state);

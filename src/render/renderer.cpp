@@ -3,10 +3,12 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <cstdio>
 
 #include <glm/gtc/matrix_transform.hpp>
 
 #include "gl/shader.h"
+#include "passes/gabor_bake.h"
 #include "reference/modulation.h"
 #include "render/camera.h"
 #include "scene/mesh.h"
@@ -92,6 +94,17 @@ Status Renderer::load_scene_resources() {
     surface_bounds_.push_back(mesh_bounds(mesh.value()));
     surface_meshes_.push_back(GpuMesh::upload(mesh.value()));
   }
+  if (scene_.probe.shape == ProbeShape::kMesh) {
+    auto mesh = load_mesh_file(scene_.probe.mesh_file);
+    if (!mesh) return mesh.error();
+    transform_mesh(mesh.value(), scene_.probe.mesh_scale, glm::dvec3(0.0), glm::dvec3(0.0));
+    probe_mesh_bounds_ = mesh_bounds(mesh.value());
+    probe_mesh_ = GpuMesh::upload(mesh.value());
+  }
+  // The pseudo-shadow lives in a square window as wide as the probe's bounding diameter
+  // (plan.cpp): a baked tile chosen by "auto" must be at least that long so no shadow shows a
+  // repeat. (Editing the probe's size builds a new Renderer, so this is chosen again.)
+  const double shadow_window_mm = 2.0 * current_probe_bounds().radius;
   for (const Material& m : scene_.materials) {
     gabor_setups_.push_back(make_gabor_setup(m.gabor));
     gl::Texture tex;
@@ -101,13 +114,50 @@ Status Renderer::load_scene_resources() {
       tex = std::move(t.value());
     }
     albedo_textures_.push_back(std::move(tex));
-  }
-  if (scene_.probe.shape == ProbeShape::kMesh) {
-    auto mesh = load_mesh_file(scene_.probe.mesh_file);
-    if (!mesh) return mesh.error();
-    transform_mesh(mesh.value(), scene_.probe.mesh_scale, glm::dvec3(0.0), glm::dvec3(0.0));
-    probe_mesh_bounds_ = mesh_bounds(mesh.value());
-    probe_mesh_ = GpuMesh::upload(mesh.value());
+    // Strategy "baked": one tile per material, baked here, i.e. again only when the material
+    // changes (every edit builds a new Renderer). Too fine for a tile: the naive sum is used.
+    GaborBakePlan plan;
+    std::shared_ptr<gl::Texture> tile;
+    if (m.textured) {
+      const GaborStrategyChoice choice = choose_gabor_tile(m.gabor, gabor_setups_.back(), scene_.render.seed,
+                                                             shadow_window_mm);
+      plan = choice.plan;
+      if (m.gabor.strategy == GaborParams::Strategy::kAuto) {
+        char note[200];
+        if (plan.ok)
+          std::snprintf(note, sizeof note, "material '%s': Gabor sum replaced by a baked %d^2 tile "
+                        "(%.0f mm period, RMS %.4f sigma vs naive)", m.name.c_str(), plan.texels,
+                        plan.period_mm, choice.rms_vs_naive);
+        else if (choice.best_period_mm == 0.0)
+          std::snprintf(note, sizeof note, "material '%s': naive Gabor sum (too fine for a %d^2 tile)",
+                        m.name.c_str(), kMaxBakeTexels);
+        else if (choice.best_period_mm < shadow_window_mm)
+          std::snprintf(note, sizeof note, "material '%s': naive Gabor sum (a tile would repeat every "
+                        "%.1f mm, inside the %.1f mm shadow)", m.name.c_str(), choice.best_period_mm,
+                        shadow_window_mm);
+        else
+          std::snprintf(note, sizeof note, "material '%s': naive Gabor sum (no tile within %.0f %% "
+                        "sigma of it: best %.4f)", m.name.c_str(), kAutoBakeMaxRms * 100.0, choice.rms_vs_naive);
+        strategy_notes_.push_back(note);
+      }
+      const Renderer* old = options_.reuse_tiles_from;
+      if (plan.ok && old)
+        for (size_t k = 0; k < old->scene_.materials.size() && !tile; ++k)
+          if (old->gabor_tiles_[k] && old->scene_.materials[k].gabor == m.gabor &&
+              old->scene_.render.seed == scene_.render.seed)
+            tile = old->gabor_tiles_[k];
+      if (plan.ok && !tile) {
+        const auto t0 = std::chrono::steady_clock::now();
+        auto baked = bake_gabor_tile(options_.glsl_root, m.gabor, gabor_setups_.back(), plan,
+                                     scene_.render.seed);
+        if (!baked) return baked.error();
+        tile = std::make_shared<gl::Texture>(std::move(baked.value()));
+        glFinish();
+        stats_.bake_ms += std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
+      }
+    }
+    bake_plans_.push_back(plan);
+    gabor_tiles_.push_back(std::move(tile));
   }
   return ok_status();
 }
@@ -172,6 +222,12 @@ std::vector<SurfaceDraw> Renderer::surface_draws(const FramePlan& plan) {
     d.textured = plan.surface_textured[i];
     d.stratified = gabor_setups_[mi].stratified_count > 0;
     d.albedo = albedo;
+    if (gabor_tiles_[mi]) {
+      const GaborBakePlan& plan = bake_plans_[mi];
+      d.gabor_tile = gabor_tiles_[mi].get();
+      d.block.misc = glm::vec4(d.block.misc.x, static_cast<float>(plan.period_mm),
+                               static_cast<float>(plan.texel_mm), static_cast<float>(plan.texels));
+    }
     draws.push_back(std::move(d));
   }
   return draws;
@@ -207,6 +263,13 @@ Status Renderer::render_frame() {
   const BoundingSphere probe = current_probe_bounds();
   const FramePlan plan = make_plan(scene_, surface_bounds_, probe, frame_, scene_.render.depth_map_size);
   stats_.skipped = plan.skipped;
+  stats_.skipped.insert(stats_.skipped.end(), strategy_notes_.begin(), strategy_notes_.end());
+  for (size_t i = 0; i < scene_.materials.size(); ++i)
+    if (scene_.materials[i].textured && scene_.materials[i].gabor.strategy == GaborParams::Strategy::kBaked &&
+        !gabor_tiles_[i])
+      stats_.skipped.push_back("material '" + scene_.materials[i].name +
+                               "': too fine for a baked tile (lambda_max / lambda_min too large), "
+                               "naive Gabor used");
   timer.lap("plan");
   if (plan.shadow_active) {
     ProbeDepthPass::Inputs in;

@@ -30,6 +30,10 @@ struct RendererOptions {
   // view direction. Priming runs one shadow-free surface pass + normal reduction at creation
   // so the first frame already uses the mean visible normal. false = thesis behaviour.
   bool prime_reference_plane = true;
+  // Baked Gabor tiles of this renderer are shared where a material's Gabor parameters and the
+  // seed are unchanged (a tuning edit of another value does not re-bake). Must stay alive
+  // during create(); never set it across shader reloads (the bake shader may have changed).
+  const class Renderer* reuse_tiles_from = nullptr;
 };
 
 struct FrameStats {
@@ -41,6 +45,7 @@ struct FrameStats {
   std::uint32_t shadow_pixels = 0, penetrating_pixels = 0;
   std::vector<std::pair<std::string, double>> timings_ms;
   std::vector<std::string> skipped;
+  double bake_ms = 0.0;  // Gabor tiles baked when the renderer was created (strategy "baked")
 };
 
 // AOV names accepted by read_aov().
@@ -84,6 +89,9 @@ class Renderer {
   std::vector<Aabb> surface_bounds_;
   std::vector<GaborSetup> gabor_setups_;     // per material
   std::vector<gl::Texture> albedo_textures_; // per material (empty texture = none)
+  std::vector<GaborBakePlan> bake_plans_;    // per material (ok == false: not baked)
+  std::vector<std::shared_ptr<gl::Texture>> gabor_tiles_;  // per material (null = none)
+  std::vector<std::string> strategy_notes_;  // what "auto" chose per material (stats.skipped)
   GpuMesh probe_mesh_;
   Aabb probe_mesh_bounds_;                   // model space, scaled
   ProbeDepthPass probe_depth_;

@@ -30,6 +30,7 @@ std::string stats_json(const FrameStats& s, const std::string& backend,
   t["frame"] = total;
   j["timings_ms"] = t;
   j["skipped"] = s.skipped;
+  j["gabor_bake_ms"] = s.bake_ms;
   j["units"] = {{"length", "mm"}, {"speed", "mm/s"}, {"time", "ms"}};
   return j.dump(2) + "\n";
 }

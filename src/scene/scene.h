@@ -43,9 +43,17 @@ struct GaborParams {
   // Evaluation strategy (docs/benchmarks.md). kNaive: the thesis's random count per cell
   // (n / pi on average). kStratified: exactly `stratified_impulses` per cell, one per stratum
   // of a jittered grid; n is then ignored (another texture, same spectrum, fewer kernels).
-  enum class Strategy { kNaive, kStratified };
-  Strategy strategy = Strategy::kNaive;
+  // kBaked: the naive texture made periodic (period: a whole number of cells, cell indices
+  // wrapped into [-N/2, N/2), so inside the central period it IS the naive texture), baked
+  // once per material into a tile of values and derivatives and read back by bicubic Hermite
+  // interpolation (src/reference/gabor.h: make_gabor_bake_plan).
+  // kAuto: per material, the baked tile when its measured error against the naive texture is
+  // <= 1 % of sigma (16, then 32 samples per lambda_min are tried), else naive.
+  enum class Strategy { kNaive, kStratified, kBaked, kAuto };
+  Strategy strategy = Strategy::kAuto;  // the fastest that meets the 1 % bar (docs/benchmarks.md)
   int stratified_impulses = 4;
+  int bake_samples_per_lambda = 16;  // kBaked: tile samples per lambda_min (texel = lambda_min / this)
+  bool operator==(const GaborParams&) const = default;
 };
 
 struct Material {

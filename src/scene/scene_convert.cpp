@@ -21,7 +21,7 @@ constexpr int kMaxResolution = 1024;        // 1024^2 * 2 triangles stays under 
 constexpr std::array kProjections = {"perspective"sv, "orthographic"sv};
 constexpr std::array kProbeShapes = {"sphere"sv, "capsule"sv, "mesh"sv};
 constexpr std::array kDisplacements = {"weighted_average"sv, "exact_max"sv};
-constexpr std::array kGaborStrategies = {"naive"sv, "stratified"sv};
+constexpr std::array kGaborStrategies = {"naive"sv, "stratified"sv, "baked"sv, "auto"sv};
 constexpr std::array kSurfaceTypes = {"plane"sv, "sphere"sv, "torus"sv, "heightfield"sv,
                                       "mesh"sv};
 
@@ -134,6 +134,7 @@ void read_gabor(TableReader& r, GaborParams& g) {
   r.integer("max_impulses_per_cell", g.max_impulses_per_cell, 1, 1024);
   read_enum(r, "gabor_strategy", g.strategy, kGaborStrategies);
   r.integer("stratified_impulses", g.stratified_impulses, 1, 1024);
+  r.integer("bake_samples_per_lambda", g.bake_samples_per_lambda, 4, 64);
   // theta_min > theta_max is allowed on purpose (see docs): no check for theta.
   check_min_max(r, "a_min", g.a_min, g.a_max, "a_max");
   check_min_max(r, "lambda_min", g.lambda_min_mm, g.lambda_max_mm, "lambda_max");

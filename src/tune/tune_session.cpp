@@ -10,7 +10,7 @@ Result<std::unique_ptr<TuneSession>> TuneSession::open(TuneSource source) {
   if (source.renderer.glsl_root.empty()) source.renderer.glsl_root = gl::default_glsl_root();
   std::unique_ptr<TuneSession> s(new TuneSession());
   s->source_ = std::move(source);
-  if (Status st = s->rebuild({}, false, false); !st) return st.error();
+  if (Status st = s->rebuild({}, false, false, false); !st) return st.error();
   return s;
 }
 
@@ -22,7 +22,7 @@ Result<Scene> TuneSession::load(const std::map<std::string, std::string>& edits)
   return load_scene(source_.scene_path, sets);
 }
 
-Status TuneSession::rebuild(const std::map<std::string, std::string>& edits, bool keep_probe,
+Status TuneSession::rebuild(const std::map<std::string, std::string>& edits, bool keep_probe, bool keep_tiles,
                             bool keep_camera) {
   auto scene = load(edits);
   // Watch the scene's files even when it fails to load, so fixing it triggers a reload.
@@ -32,7 +32,9 @@ Status TuneSession::rebuild(const std::map<std::string, std::string>& edits, boo
     last_error_ = scene.error().message;
     return scene.error();
   }
-  auto fresh = Renderer::create(scene.value(), source_.renderer);
+  RendererOptions options = source_.renderer;
+  if (keep_tiles) options.reuse_tiles_from = renderer_.get();  // edits only: shaders unchanged
+  auto fresh = Renderer::create(scene.value(), options);
   if (!fresh) {
     last_error_ = fresh.error().message;
     return fresh.error();
@@ -54,10 +56,10 @@ Status TuneSession::set(const std::string& key, const std::string& value) {
   // The probe restarts from the scene's state (so `render --overrides` reproduces a console
   // session); the window's haptic loop sets it again every frame anyway.
   const bool camera_key = key.rfind("camera.", 0) == 0;
-  return rebuild(edits, false, !camera_key);
+  return rebuild(edits, false, true, !camera_key);
 }
 
-Status TuneSession::reload() { return rebuild(edits_, true, true); }
+Status TuneSession::reload() { return rebuild(edits_, true, false, true); }
 
 bool TuneSession::reload_if_changed() {
   if (!watch_.changed()) return false;

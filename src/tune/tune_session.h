@@ -54,7 +54,8 @@ class TuneSession {
  private:
   TuneSession() = default;
   Result<Scene> load(const std::map<std::string, std::string>& edits) const;
-  Status rebuild(const std::map<std::string, std::string>& edits, bool keep_probe, bool keep_camera);
+  Status rebuild(const std::map<std::string, std::string>& edits, bool keep_probe, bool keep_tiles,
+                 bool keep_camera);
 
   TuneSource source_;
   std::unique_ptr<Renderer> renderer_;

@@ -39,6 +39,9 @@ Scene textured_scene(Surface surface) {
   m.gabor.lambda_max_mm = 2.0;
   m.gabor.theta_max_rad = 1.0;
   m.onset_distance_mm = 100.0;  // texture everywhere under the probe
+  // The naive sum against its twin (the 1e-4 bar is for it); the baked tile is checked against
+  // its own twin and against this one in gabor_gl_test.cpp.
+  m.gabor.strategy = GaborParams::Strategy::kNaive;
   s.probe.radius_mm = kProbeRadiusMm;
   // Probe straight above the origin, sunk kPenetrationMm below the surface point under it.
   const auto meshes = test::scene_meshes(s);

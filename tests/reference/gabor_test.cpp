@@ -1,5 +1,6 @@
 // CPU Gabor noise: the generator, the count rule and the analytic variance (no GL).
 #include <cmath>
+#include <cstdio>
 #include <numbers>
 
 #include <gtest/gtest.h>
@@ -84,6 +85,73 @@ TEST(GaborTest, VarianceMatchesAnalyticSigma) {
   const double mean = sum / (n * n), var = sum2 / (n * n) - mean * mean;
   EXPECT_NEAR(std::sqrt(var) / s.sigma_unit, 1.0, 0.08);
   EXPECT_NEAR(mean / s.sigma_unit, 0.0, 0.1);
+}
+
+}  // namespace
+}  // namespace ps
+
+namespace ps {
+namespace {
+
+GaborParams bench_like_material() {  // the bench scene's material (src/app/bench_sweep.cpp)
+  GaborParams g;
+  g.lambda_min_mm = 0.8;
+  g.lambda_max_mm = 2.0;
+  g.theta_max_rad = 1.0;
+  return g;
+}
+
+TEST(GaborBakedTest, DerivativesMatchCentralDifferences) {
+  const GaborParams g = bench_like_material();
+  const GaborSetup s = make_gabor_setup(g);
+  const double h = 1e-4;  // central differences: error ~ h^2 f''' ~ 1e-8 * (2 pi / 0.8)^3 ~ 5e-6
+  for (const auto& [u, v] : {std::pair{0.3, -1.7}, {5.1, 2.2}, {-7.9, 11.4}}) {
+    const GaborSample x = gabor_noise_derivatives(g, s, 1, u, v, 0);
+    const auto f = [&](double a, double b) { return gabor_noise_derivatives(g, s, 1, a, b, 0).f; };
+    EXPECT_NEAR(x.f, gabor_noise(g, s, 1, u, v), 1e-12);
+    // Skipped where a truncation circle passes within 2h (the noise jumps there).
+    if (gabor_truncation_margin(g, s, 1, u, v) < 2 * h) continue;
+    EXPECT_NEAR(x.fu, (f(u + h, v) - f(u - h, v)) / (2 * h), 1e-5);
+    EXPECT_NEAR(x.fv, (f(u, v + h) - f(u, v - h)) / (2 * h), 1e-5);
+    EXPECT_NEAR(x.fuv, (f(u + h, v + h) - f(u + h, v - h) - f(u - h, v + h) + f(u - h, v - h)) / (4 * h * h), 1e-3);
+  }
+}
+
+TEST(GaborBakedTest, PeriodicTextureIsPeriodicAndNaiveInsideTheCentralPeriod) {
+  const GaborParams g = bench_like_material();
+  const GaborSetup s = make_gabor_setup(g);
+  const GaborBakePlan plan = make_gabor_bake_plan(g, s);
+  ASSERT_TRUE(plan.ok);
+  EXPECT_EQ(plan.period_cells % 2, 0);
+  EXPECT_LE(plan.texel_mm, g.lambda_min_mm / 8.0 + 1e-12);
+  EXPECT_LE(plan.texels, kMaxBakeTexels);
+  const double inner = 0.5 * plan.period_mm - s.cell_mm;  // 3x3 cells all inside the period
+  for (double u = -inner; u < inner; u += 1.37)
+    for (double v = -inner; v < inner; v += 2.11) {
+      EXPECT_NEAR(gabor_noise_derivatives(g, s, 1, u, v, plan.period_cells).f, gabor_noise(g, s, 1, u, v), 1e-12);
+      EXPECT_NEAR(gabor_noise_derivatives(g, s, 1, u + plan.period_mm, v - plan.period_mm, plan.period_cells).f,
+                  gabor_noise(g, s, 1, u, v), 1e-9);
+    }
+}
+
+TEST(GaborBakedTest, HermiteInterpolationErrorIsBelowOnePercentOfSigma) {
+  const GaborParams g = bench_like_material();
+  const GaborSetup s = make_gabor_setup(g);
+  const GaborBakePlan plan = make_gabor_bake_plan(g, s);
+  ASSERT_TRUE(plan.ok);
+  double sum2 = 0.0, worst = 0.0;
+  int n = 0;
+  for (double u = -20.0; u < 20.0; u += 0.731)
+    for (double v = -20.0; v < 20.0; v += 0.917) {
+      const double e = (gabor_noise_baked(g, s, plan, 1, u, v) - gabor_noise(g, s, 1, u, v)) / s.sigma_unit;
+      sum2 += e * e;
+      worst = std::max(worst, std::abs(e));
+      ++n;
+    }
+  // texel <= lambda_min / 8: a sinusoid's Hermite error is <= 1e-3 of its amplitude; the
+  // truncation jumps (<= 5 % of one kernel's amplitude) add a little near the cut circles.
+  EXPECT_LT(std::sqrt(sum2 / n), 0.01) << "worst " << worst;
+  std::printf("baked vs naive: RMS %.4f sigma, worst %.4f sigma\n", std::sqrt(sum2 / n), worst);
 }
 
 }  // namespace

@@ -149,6 +149,27 @@ TEST_P(TuneGLTest, SweepCellsMatchSingleRenders) {
   }
 }
 
+// Strategy "auto" bakes table4_1_a's texture into a tile when the renderer is created. A tuning
+// edit that leaves the material's Gabor values alone must share that tile (no second bake, the
+// same image as a fresh session with the edit); an edit of a Gabor value must bake again.
+TEST_P(TuneGLTest, SetSharesTheBakedTileUnlessTheTextureChanges) {
+  auto s = open_session();
+  ASSERT_TRUE(s);
+  ASSERT_GT(s->renderer().stats().bake_ms, 0.0) << "table4_1_a is expected to get a baked tile";
+  ASSERT_TRUE(s->set("light.ambient", "0.5"));
+  EXPECT_EQ(s->renderer().stats().bake_ms, 0.0);
+  const Image shared = frame(*s);
+  auto fresh_src = TuneSource{scene_.string(), {"render.size=[64,64]", "light.ambient=0.5"}, {}};
+  fresh_src.renderer.glsl_root = (dir_ / "glsl").string();
+  auto fresh = TuneSession::open(fresh_src);
+  ASSERT_TRUE(fresh) << fresh.error().message;
+  EXPECT_GT(fresh.value()->renderer().stats().bake_ms, 0.0);
+  EXPECT_EQ(frame(*fresh.value()).pixels, shared.pixels);
+  ASSERT_TRUE(s->set("materials.table4_1_a.a_min", "0.5"));  // a range [0.5, 1]: another texture
+  ASSERT_TRUE(s->set("materials.table4_1_a.a_max", "0.5"));  // all 0.5: half of it, still baked
+  EXPECT_GT(s->renderer().stats().bake_ms, 0.0);
+}
+
 PS_INSTANTIATE_HEADLESS_BACKENDS(TuneGLTest);
 
 }  // namespace
