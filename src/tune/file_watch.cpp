@@ -28,15 +28,17 @@ void FileWatch::set_files(std::vector<std::string> files) {
 }
 
 bool FileWatch::changed() {
-  bool any = false;
+  std::vector<std::string> now_changed;
   for (std::size_t i = 0; i < files_.size(); ++i) {
     const Stamp now = stamp(files_[i]);
     if (!(now == stamps_[i])) {
       stamps_[i] = now;
-      any = true;
+      now_changed.push_back(files_[i]);
     }
   }
-  return any;
+  if (now_changed.empty()) return false;
+  last_changed_ = std::move(now_changed);
+  return true;
 }
 
 namespace {

@@ -20,6 +20,8 @@ class FileWatch {
   // True if any watched file changed since set_files() or the previous changed() that
   // returned true; the new state is recorded either way.
   bool changed();
+  // The files the last changed() that returned true found changed.
+  const std::vector<std::string>& last_changed() const { return last_changed_; }
   const std::vector<std::string>& files() const { return files_; }
 
  private:
@@ -33,6 +35,7 @@ class FileWatch {
 
   std::vector<std::string> files_;
   std::vector<Stamp> stamps_;
+  std::vector<std::string> last_changed_;
 };
 
 // Everything a reload depends on: the scene file (if it came from a file), its sibling

@@ -70,6 +70,7 @@ TEST_P(TuneGLTest, ReloadPicksUpAShaderChange) {
   ASSERT_TRUE(s->reload_if_changed());
   EXPECT_EQ(s->last_error(), "");
   EXPECT_EQ(s->generation(), 2);
+  EXPECT_GT(s->renderer().stats().bake_ms, 0.0);  // a shader changed: the tile is baked again
   const Image after = frame(*s);
   ASSERT_EQ(after.pixels.size(), before.pixels.size());
   for (std::size_t i = 0; i < after.pixels.size(); i += 97)  // halved, up to 8-bit rounding
@@ -86,6 +87,7 @@ TEST_P(TuneGLTest, ReloadPicksUpASceneChangeAndKeepsTheProbe) {
   ASSERT_TRUE(s->reload_if_changed());
   EXPECT_EQ(s->last_error(), "");
   EXPECT_EQ(s->renderer().scene().probe.position, probe);
+  EXPECT_EQ(s->renderer().stats().bake_ms, 0.0);  // only the albedo changed: the tile is shared
   const Image after = frame(*s);
   EXPECT_NE(after.pixels, before.pixels);
 }
