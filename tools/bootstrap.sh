@@ -9,7 +9,7 @@ readonly kPackages=(
   build-essential cmake pkg-config
   libglfw3-dev libglm-dev libosmesa6-dev libegl-dev libegl1-mesa-dev libgl1-mesa-dri libgl-dev
   glslang-dev glslang-tools spirv-tools
-  libopenimageio-dev openimageio-tools
+  libopenimageio-dev openimageio-tools libpng-dev
   libgtest-dev libgmock-dev libbenchmark-dev
   libassimp-dev assimp-testmodels libimgui-dev libtomlplusplus-dev nlohmann-json3-dev
   gnuplot-nox xvfb xauth clang libclang-rt-14-dev

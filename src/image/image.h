@@ -1,4 +1,6 @@
-// Float images in memory and their files (OpenImageIO: PNG, EXR, ...).
+// Float images in memory and their files. PNG is read and written with libpng; every other format
+// (EXR, anything OpenImageIO reads) goes through OpenImageIO in the module libps_image_oiio.so,
+// loaded on first use, so PNG-only processes never map OpenImageIO's ~270 libraries.
 #pragma once
 
 #include <string>
@@ -17,11 +19,16 @@ struct Image {
   float at(int x, int y, int c) const { return pixels[(static_cast<size_t>(y) * width + x) * channels + c]; }
 };
 
+// PNG (recognised by its signature, whatever the extension): palette expands to RGB, tRNS to
+// alpha, low-bit gray to 8 bit; channels as in the file (gray 1, gray+alpha 2, RGB 3, RGBA 4);
+// 8- and 16-bit samples map to [0,1]. Other files: whatever OIIO reads, as float. Colour is read
+// as stored (never premultiplied). Errors name the path and are one line.
 Result<Image> read_image(const std::string& path);
-// Writes PNG (8 bit, clamped to [0,1], rounded) or EXR (32-bit float) by extension; other
-// extensions go to whatever OIIO writes for them. Written to "<path>.<pid>.tmp" and renamed into
-// place so a crash never leaves a half-written file. Creates missing parent directories.
-// Errors name the path; sizes outside 1..16384 are refused.
+// Writes PNG (8 bit, clamped to [0,1], rounded, NaN as 0; 1 to 4 channels) or EXR (32-bit float)
+// by extension; other extensions go to whatever OIIO writes for them. Written to
+// "<path>.<pid>.tmp" and renamed into place so a crash never leaves a half-written file. Creates
+// missing parent directories. Errors name the path; sizes outside 1..16384 are refused; a
+// non-PNG file whose module cannot be loaded is an error saying which paths were tried.
 Status write_image(const std::string& path, const Image& image);
 
 struct CompareOptions {

@@ -6,8 +6,9 @@
 #
 # 1. renders the scene to OUT_DIR/<name>.actual.png (<name> = GOLDEN's file name minus extension);
 # 2. UPDATE_GOLDEN=1 in the environment: copies the actual image over GOLDEN (only if its pixels
-#    differ: OIIO stamps a DateTime into every file, so rewriting identical goldens would only churn
-#    git) and passes. Goldens change in their own commit, saying why;
+#    differ: another PNG encoder or compression level gives other bytes for the same pixels, so
+#    rewriting identical goldens would only churn git) and passes. Goldens change in their own
+#    commit, saying why;
 # 3. otherwise compares GOLDEN (A) with the actual image (B) through `${EXE} compare`. Pass: the
 #    actual and diff images are deleted. Fail: both are kept and named in the message.
 # FAIL (max channel difference of a passing pixel, [0,1] scale) and FAILPERCENT (allowed % of
