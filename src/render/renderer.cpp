@@ -328,19 +328,25 @@ Image read_region(const gl::Texture& tex, int w, int h, int channels_out, GLenum
   img.height = h;
   img.channels = channels_out;
   img.pixels.resize(static_cast<size_t>(w) * h * channels_out);
-  std::vector<float> f(static_cast<size_t>(w) * h * in_channels);
+  const size_t n = static_cast<size_t>(w) * h * in_channels;
+  // Converted straight from the readback buffer: no float copy of a byte image (at 2048^2 that
+  // copy alone was 64 MiB of the render's peak memory).
+  auto flip_into = [&](const auto* src, float divisor) {
+    for (int y = 0; y < h; ++y)
+      for (int x = 0; x < w; ++x)
+        for (int c = 0; c < channels_out; ++c)
+          img.at(x, y, c) = static_cast<float>(src[(static_cast<size_t>(h - 1 - y) * w + x) * in_channels + c]) / divisor;
+  };
   if (type == GL_UNSIGNED_BYTE) {
-    std::vector<std::uint8_t> b(f.size());
+    std::vector<std::uint8_t> b(n);
     glGetTextureSubImage(tex.id(), 0, 0, 0, 0, w, h, 1, format, type, static_cast<GLsizei>(b.size()), b.data());
-    for (size_t i = 0; i < b.size(); ++i) f[i] = b[i] / 255.0f;
+    flip_into(b.data(), 255.0f);
   } else {
+    std::vector<float> f(n);
     glGetTextureSubImage(tex.id(), 0, 0, 0, 0, w, h, 1, format, type,
                          static_cast<GLsizei>(f.size() * sizeof(float)), f.data());
+    flip_into(f.data(), 1.0f);
   }
-  for (int y = 0; y < h; ++y)
-    for (int x = 0; x < w; ++x)
-      for (int c = 0; c < channels_out; ++c)
-        img.at(x, y, c) = f[(static_cast<size_t>(h - 1 - y) * w + x) * in_channels + c];
   return img;
 }
 
