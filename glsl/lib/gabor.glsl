@@ -9,7 +9,7 @@
 #define PS_GABOR_BAKE 0  // 1: gabor_noise_sample (value + derivatives, periodic) for the bake pass
 #endif
 #ifndef PS_GABOR_BAKED
-#define PS_GABOR_BAKED 0  // 1: gabor_noise_baked (Hermite lookup in the baked tile)
+#define PS_GABOR_BAKED 0  // 1: gabor_noise_baked (Hermite lookup in the baked tile); 2: bilinear
 #endif
 
 const float kPi = 3.14159265358979;
@@ -138,7 +138,16 @@ vec4 gabor_noise_sample(GaborMaterial g, vec2 uv, int period_cells) {
 }
 #endif
 
-#if PS_GABOR_BAKED
+#if PS_GABOR_BAKED == 2
+// Baked lookup, bilinear: the tile holds values only (R32F, GL_LINEAR, GL_REPEAT), sample i at
+// u_i = -period/2 + i h, i.e. texel centre (i + 0.5) / texels. tile: (period mm, texel h mm,
+// texels, 0). CPU twin: gabor_noise_baked (plan.linear) in src/reference/gabor.cpp.
+float gabor_noise_baked(sampler2D tile_tex, vec4 tile, vec2 uv) {
+  vec2 s = (uv + 0.5 * tile.x) / tile.y;
+  s = s - tile.z * floor(s / tile.z);  // into [0, texels): keeps the coordinate's float precision
+  return texture(tile_tex, (s + 0.5) / tile.z).r;
+}
+#elif PS_GABOR_BAKED
 // Baked lookup: bicubic Hermite interpolation of the tile's samples (f, f_u h, f_v h,
 // f_uv h^2) at u_i = -period/2 + i h. tile: (period mm, texel h mm, texels, 0). CPU twin:
 // gabor_noise_baked in src/reference/gabor.cpp.

@@ -216,6 +216,11 @@ std::vector<Knob> knobs() {
                    sc.materials[0].gabor.strategy = GaborParams::Strategy::kBaked;
                    sc.materials[0].gabor.bake_samples_per_lambda = spl;
                  }});
+  for (int spl : {16, 24, 32})  // bilinear lookup of a values-only tile
+    k.push_back({"gabor_strategy", "baked_linear_" + num(spl), "texture_vs_target", [spl](Scene& sc) {
+                   sc.materials[0].gabor.strategy = GaborParams::Strategy::kBakedLinear;
+                   sc.materials[0].gabor.bake_samples_per_lambda = spl;
+                 }});
   for (double c : {5.0, 10.0, 20.0, 40.0})
     k.push_back({"displacement", "weighted_c" + num(c), "displacement_rel", [c](Scene& sc) {
                    sc.render.displacement = DisplacementMethod::kWeightedAverage;

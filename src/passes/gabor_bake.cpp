@@ -12,14 +12,19 @@ Result<gl::Texture> bake_gabor_tile(const std::string& glsl_root, const GaborPar
   if (!plan.ok) return make_error("gabor bake: the material is too fine for a baked tile");
   auto prog = gl::build_program({{"displacement_weights.vert", "gabor_bake.frag"}, {}}, glsl_root);
   if (!prog) return prog.error();
-  gl::Texture tile = gl::make_texture_2d(plan.texels, plan.texels, GL_RGBA32F);
-  glTextureParameteri(tile.id(), GL_TEXTURE_MIN_FILTER, GL_NEAREST);
-  glTextureParameteri(tile.id(), GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+  // Hermite: (f, f_u h, f_v h, f_uv h^2) per texel, fetched exactly. Bilinear: f alone (the
+  // shader's vec4 keeps .x), filtered and wrapped by the sampler.
+  gl::Texture tile = gl::make_texture_2d(plan.texels, plan.texels, plan.linear ? GL_R32F : GL_RGBA32F);
+  const GLint filter = plan.linear ? GL_LINEAR : GL_NEAREST;
+  glTextureParameteri(tile.id(), GL_TEXTURE_MIN_FILTER, filter);
+  glTextureParameteri(tile.id(), GL_TEXTURE_MAG_FILTER, filter);
+  glTextureParameteri(tile.id(), GL_TEXTURE_WRAP_S, GL_REPEAT);
+  glTextureParameteri(tile.id(), GL_TEXTURE_WRAP_T, GL_REPEAT);
   gl::Framebuffer fbo = gl::make_framebuffer();
   glNamedFramebufferTexture(fbo.id(), GL_COLOR_ATTACHMENT0, tile.id(), 0);
   glNamedFramebufferDrawBuffer(fbo.id(), GL_COLOR_ATTACHMENT0);
   if (glCheckNamedFramebufferStatus(fbo.id(), GL_FRAMEBUFFER) != GL_FRAMEBUFFER_COMPLETE)
-    return make_error("gabor bake: RGBA32F tile framebuffer incomplete");
+    return make_error(std::string("gabor bake: ") + (plan.linear ? "R32F" : "RGBA32F") + " tile framebuffer incomplete");
   glBindFramebuffer(GL_FRAMEBUFFER, fbo.id());
   glViewport(0, 0, plan.texels, plan.texels);
   glDisable(GL_DEPTH_TEST);

@@ -67,16 +67,16 @@ Status SurfacePass::init(const std::string& glsl_root, const Params& params) {
 }
 
 Result<const gl::Program*> SurfacePass::program(bool shadow, bool textured, bool stratified,
-                                                bool baked) {
+                                                int baked) {
   const bool tex = textured && shadow;
-  const auto key = std::make_tuple(shadow, tex, stratified && tex && !baked, baked && tex);
+  const auto key = std::make_tuple(shadow, tex, stratified && tex && baked == 0, tex ? baked : 0);
   auto it = programs_.find(key);
   if (it != programs_.end()) return &it->second;
   gl::ProgramDesc desc{{"surface.vert", "surface.frag"},
                        {{"PS_SHADOW", shadow ? "1" : "0"}, {"PS_TEXTURED", tex ? "1" : "0"}}};
   // Only the stratified variant gets the extra define: the naive source stays byte-identical.
   if (std::get<2>(key)) desc.defines.push_back({"PS_GABOR_STRATIFIED", "1"});
-  if (std::get<3>(key)) desc.defines.push_back({"PS_GABOR_BAKED", "1"});
+  if (std::get<3>(key)) desc.defines.push_back({"PS_GABOR_BAKED", std::to_string(std::get<3>(key))});
   auto built = gl::build_program(desc, glsl_root_);
   if (!built) return built.error();
   return &programs_.emplace(key, std::move(built.value())).first->second;
@@ -101,7 +101,8 @@ Status SurfacePass::run(const std::vector<SurfaceDraw>& draws, const gl::Texture
   glBindBufferBase(GL_UNIFORM_BUFFER, 0, ubo_.id());
   glBindTextureUnit(0, probe_depth ? probe_depth->id() : dummy_.id());
   for (const SurfaceDraw& d : draws) {
-    auto prog = program(d.shadow, d.textured, d.stratified, d.gabor_tile != nullptr);
+    auto prog = program(d.shadow, d.textured, d.stratified,
+                        d.gabor_tile ? (d.gabor_tile_linear ? 2 : 1) : 0);
     if (!prog) return prog.error();
     glUseProgram(prog.value()->id());
     glBindTextureUnit(1, d.albedo ? d.albedo->id() : dummy_.id());

@@ -62,6 +62,7 @@ struct SurfaceDraw {
   bool stratified = false;  // PS_GABOR_STRATIFIED variant (GaborParams::Strategy::kStratified)
   const gl::Texture* albedo = nullptr;
   const gl::Texture* gabor_tile = nullptr;  // set: PS_GABOR_BAKED variant reads this tile
+  bool gabor_tile_linear = false;           // the tile is values only, read bilinearly (PS_GABOR_BAKED 2)
 };
 
 struct SurfacePass {
@@ -83,14 +84,15 @@ struct SurfacePass {
   int mip_levels() const { return levels_; }
 
  private:
+  // baked: 0 none, 1 Hermite lookup, 2 bilinear lookup (the PS_GABOR_BAKED value).
   Result<const gl::Program*> program(bool shadow, bool textured, bool stratified = false,
-                                     bool baked = false);
+                                     int baked = 0);
 
   std::string glsl_root_;
   Params params_;
   glm::ivec2 padded_{1, 1};
   int levels_ = 1;
-  std::map<std::tuple<bool, bool, bool, bool>, gl::Program> programs_;
+  std::map<std::tuple<bool, bool, bool, int>, gl::Program> programs_;
   gl::Texture color_, normal_, aov_, dummy_;
   gl::Renderbuffer depth_;
   gl::Framebuffer fbo_;

@@ -176,6 +176,15 @@ double gabor_noise_baked(const GaborParams& g, const GaborSetup& s, const GaborB
   const double h = plan.texel_mm;
   const double su = (u + 0.5 * plan.period_mm) / h, sv = (v + 0.5 * plan.period_mm) / h;
   const double iu = std::floor(su), iv = std::floor(sv), tu = su - iu, tv = sv - iv;
+  const auto sample = [&](int a, int b) {  // (iu + a, iv + b), wrapped like GL_REPEAT / mod
+    const double k = std::fmod(std::fmod(iu + a, plan.texels) + plan.texels, plan.texels);
+    const double l = std::fmod(std::fmod(iv + b, plan.texels) + plan.texels, plan.texels);
+    return gabor_noise_derivatives(g, s, seed, -0.5 * plan.period_mm + k * h, -0.5 * plan.period_mm + l * h,
+                                   plan.period_cells);
+  };
+  if (plan.linear)
+    return (1 - tu) * (1 - tv) * sample(0, 0).f + tu * (1 - tv) * sample(1, 0).f +
+           (1 - tu) * tv * sample(0, 1).f + tu * tv * sample(1, 1).f;
   // Hermite basis: value weights h0 (t), h1 (1 - t); slope weights g0, g1 (per texel).
   const auto basis = [](double t, double w[4]) {
     w[0] = (1 + 2 * t) * (1 - t) * (1 - t);  // value at 0
@@ -189,11 +198,7 @@ double gabor_noise_baked(const GaborParams& g, const GaborSetup& s, const GaborB
   double f = 0.0;
   for (int b = 0; b < 2; ++b)
     for (int a = 0; a < 2; ++a) {
-      // The sample (iu + a, iv + b), wrapped into the tile like the texture fetch.
-      const double k = std::fmod(std::fmod(iu + a, plan.texels) + plan.texels, plan.texels);
-      const double l = std::fmod(std::fmod(iv + b, plan.texels) + plan.texels, plan.texels);
-      const GaborSample x = gabor_noise_derivatives(g, s, seed, -0.5 * plan.period_mm + k * h,
-                                                    -0.5 * plan.period_mm + l * h, plan.period_cells);
+      const GaborSample x = sample(a, b);
       f += bu[a] * bv[b] * x.f + bu[2 + a] * bv[b] * x.fu * h + bu[a] * bv[2 + b] * x.fv * h +
            bu[2 + a] * bv[2 + b] * x.fuv * h * h;
     }
@@ -205,7 +210,7 @@ double gabor_baked_rms_vs_naive(const GaborParams& g, const GaborSetup& s, const
   const double side = std::min(30.0, plan.period_mm - 2.0 * s.cell_mm);
   if (!plan.ok || !(side > 0.0)) return std::numeric_limits<double>::infinity();
   double sum2 = 0.0;
-  constexpr int kN = 40;
+  constexpr int kN = 64;
   for (int j = 0; j < kN; ++j)
     for (int i = 0; i < kN; ++i) {
       const double u = side * ((i + 0.37) / kN - 0.5), v = side * ((j + 0.61) / kN - 0.5);
@@ -218,20 +223,23 @@ double gabor_baked_rms_vs_naive(const GaborParams& g, const GaborSetup& s, const
 GaborStrategyChoice choose_gabor_tile(const GaborParams& g, const GaborSetup& s, std::uint32_t seed,
                                       double min_period_mm) {
   GaborStrategyChoice c;
-  if (g.strategy == GaborParams::Strategy::kBaked) {
+  if (g.strategy == GaborParams::Strategy::kBaked || g.strategy == GaborParams::Strategy::kBakedLinear) {
     c.plan = make_gabor_bake_plan(g, s);
+    c.plan.linear = g.strategy == GaborParams::Strategy::kBakedLinear;
     return c;
   }
   if (g.strategy != GaborParams::Strategy::kAuto) return c;
-  for (int samples : {16, 32}) {
+  constexpr struct { bool linear; int samples; } kTries[] = {{true, 24}, {true, 32}, {false, 16}, {false, 32}};
+  for (const auto& t : kTries) {
     GaborParams tried = g;
-    tried.bake_samples_per_lambda = samples;
-    const GaborBakePlan plan = make_gabor_bake_plan(tried, s);
-    if (!plan.ok) break;
+    tried.bake_samples_per_lambda = t.samples;
+    GaborBakePlan plan = make_gabor_bake_plan(tried, s);
+    plan.linear = t.linear;
+    if (!plan.ok) continue;
     c.best_period_mm = std::max(c.best_period_mm, plan.period_mm);
-    if (plan.period_mm < min_period_mm) break;  // more samples only shorten the period
+    if (plan.period_mm < min_period_mm) continue;  // a repeat inside one shadow
     c.rms_vs_naive = gabor_baked_rms_vs_naive(tried, s, plan, seed);
-    if (c.rms_vs_naive <= kAutoBakeMaxRms) {
+    if (c.rms_vs_naive <= kAutoBakeSelectRms) {
       c.plan = plan;
       return c;
     }

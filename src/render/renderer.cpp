@@ -126,8 +126,8 @@ Status Renderer::load_scene_resources() {
         char note[200];
         if (plan.ok)
           std::snprintf(note, sizeof note, "material '%s': Gabor sum replaced by a baked %d^2 tile "
-                        "(%.0f mm period, RMS %.4f sigma vs naive)", m.name.c_str(), plan.texels,
-                        plan.period_mm, choice.rms_vs_naive);
+                        "(%s lookup, %.0f mm period, RMS %.4f sigma vs naive)", m.name.c_str(), plan.texels,
+                        plan.linear ? "bilinear" : "Hermite", plan.period_mm, choice.rms_vs_naive);
         else if (choice.best_period_mm == 0.0)
           std::snprintf(note, sizeof note, "material '%s': naive Gabor sum (too fine for a %d^2 tile)",
                         m.name.c_str(), kMaxBakeTexels);
@@ -137,14 +137,15 @@ Status Renderer::load_scene_resources() {
                         shadow_window_mm);
         else
           std::snprintf(note, sizeof note, "material '%s': naive Gabor sum (no tile within %.0f %% "
-                        "sigma of it: best %.4f)", m.name.c_str(), kAutoBakeMaxRms * 100.0, choice.rms_vs_naive);
+                        "sigma of it: best %.4f)", m.name.c_str(), kAutoBakeSelectRms * 100.0, choice.rms_vs_naive);
         strategy_notes_.push_back(note);
       }
       const Renderer* old = options_.reuse_tiles_from;
       if (plan.ok && old)
         for (size_t k = 0; k < old->scene_.materials.size() && !tile; ++k)
           if (old->gabor_tiles_[k] && old->scene_.materials[k].gabor == m.gabor &&
-              old->scene_.render.seed == scene_.render.seed)
+              old->scene_.render.seed == scene_.render.seed && old->bake_plans_[k].linear == plan.linear &&
+              old->bake_plans_[k].texels == plan.texels && old->bake_plans_[k].period_cells == plan.period_cells)
             tile = old->gabor_tiles_[k];
       if (plan.ok && !tile) {
         const auto t0 = std::chrono::steady_clock::now();
@@ -225,6 +226,7 @@ std::vector<SurfaceDraw> Renderer::surface_draws(const FramePlan& plan) {
     if (gabor_tiles_[mi]) {
       const GaborBakePlan& plan = bake_plans_[mi];
       d.gabor_tile = gabor_tiles_[mi].get();
+      d.gabor_tile_linear = plan.linear;
       d.block.misc = glm::vec4(d.block.misc.x, static_cast<float>(plan.period_mm),
                                static_cast<float>(plan.texel_mm), static_cast<float>(plan.texels));
     }
@@ -265,8 +267,9 @@ Status Renderer::render_frame() {
   stats_.skipped = plan.skipped;
   stats_.skipped.insert(stats_.skipped.end(), strategy_notes_.begin(), strategy_notes_.end());
   for (size_t i = 0; i < scene_.materials.size(); ++i)
-    if (scene_.materials[i].textured && scene_.materials[i].gabor.strategy == GaborParams::Strategy::kBaked &&
-        !gabor_tiles_[i])
+    if (scene_.materials[i].textured && !gabor_tiles_[i] &&
+        (scene_.materials[i].gabor.strategy == GaborParams::Strategy::kBaked ||
+         scene_.materials[i].gabor.strategy == GaborParams::Strategy::kBakedLinear))
       stats_.skipped.push_back("material '" + scene_.materials[i].name +
                                "': too fine for a baked tile (lambda_max / lambda_min too large), "
                                "naive Gabor used");

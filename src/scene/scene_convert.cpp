@@ -21,7 +21,7 @@ constexpr int kMaxResolution = 1024;        // 1024^2 * 2 triangles stays under 
 constexpr std::array kProjections = {"perspective"sv, "orthographic"sv};
 constexpr std::array kProbeShapes = {"sphere"sv, "capsule"sv, "mesh"sv};
 constexpr std::array kDisplacements = {"weighted_average"sv, "exact_max"sv};
-constexpr std::array kGaborStrategies = {"naive"sv, "stratified"sv, "baked"sv, "auto"sv};
+constexpr std::array kGaborStrategies = {"naive"sv, "stratified"sv, "baked"sv, "auto"sv, "baked_linear"sv};
 constexpr std::array kSurfaceTypes = {"plane"sv, "sphere"sv, "torus"sv, "heightfield"sv,
                                       "mesh"sv};
 

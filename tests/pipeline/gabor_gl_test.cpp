@@ -58,7 +58,7 @@ struct BakedResult {
   int n = 0;
 };
 
-BakedResult render_baked(int samples_per_lambda, double probe_radius) {
+BakedResult render_baked(int samples_per_lambda, double probe_radius, bool linear = false) {
   Scene s = test::flat_plane_scene(probe_radius - 0.5);
   s.probe.radius_mm = probe_radius;
   s.camera.ortho_height_mm = 2.2 * probe_radius;
@@ -66,7 +66,7 @@ BakedResult render_baked(int samples_per_lambda, double probe_radius) {
   m.gabor.lambda_min_mm = 0.8;
   m.gabor.lambda_max_mm = 2.0;
   m.gabor.theta_max_rad = 1.0;
-  m.gabor.strategy = GaborParams::Strategy::kBaked;
+  m.gabor.strategy = linear ? GaborParams::Strategy::kBakedLinear : GaborParams::Strategy::kBaked;
   m.gabor.bake_samples_per_lambda = samples_per_lambda;
   m.onset_distance_mm = 100.0;
   auto r = Renderer::create(s, {});
@@ -76,8 +76,9 @@ BakedResult render_baked(int samples_per_lambda, double probe_radius) {
   const Image tex = r.value()->read_aov("texture").value();
   const Image inten = r.value()->read_aov("intensity").value();
   const GaborSetup setup = make_gabor_setup(m.gabor);
-  const GaborBakePlan plan = make_gabor_bake_plan(m.gabor, setup);
+  const GaborBakePlan plan = choose_gabor_tile(m.gabor, setup, s.render.seed).plan;
   EXPECT_TRUE(plan.ok);
+  EXPECT_EQ(plan.linear, linear);
   BakedResult out;
   double sum2 = 0.0;
   for (int py = 0; py < 128; py += 2)
@@ -98,6 +99,8 @@ BakedResult render_baked(int samples_per_lambda, double probe_radius) {
 
 TEST_P(GaborGLTest, BakedTextureMatchesItsCpuTwinAndTheNaiveTexture) {
   const BakedResult b = render_baked(16, 25.0);
+  std::printf("Hermite tile: max |GPU - twin| %.2e sigma, RMS vs naive %.4f sigma (%d pixels)\n",
+              b.max_vs_twin, b.rms_vs_naive, b.n);
   EXPECT_GT(b.n, 2000);
   // Same float-position argument as above, plus the tile's float samples: 5e-3 sigma.
   EXPECT_LT(b.max_vs_twin, 5e-3);
@@ -112,6 +115,20 @@ TEST_P(GaborGLTest, BakedTextureRepeatsBeyondItsPeriodLikeItsTwin) {
   // footprint, so the outer ring shows the texture's next period: still equal to the twin.
   const BakedResult b = render_baked(32, 25.0);
   EXPECT_LT(b.max_vs_twin, 5e-3);
+}
+
+TEST_P(GaborGLTest, BilinearBakedTextureMatchesItsCpuTwinAndTheNaiveTexture) {
+  // 24 samples per lambda_min: the 1870-texel tile holds 62 mm, more than the 50 mm footprint.
+  const BakedResult b = render_baked(24, 25.0, true);
+  std::printf("bilinear tile: max |GPU - twin| %.2e sigma, RMS vs naive %.4f sigma (%d pixels)\n",
+              b.max_vs_twin, b.rms_vs_naive, b.n);
+  EXPECT_GT(b.n, 2000);
+  // The sampler's bilinear filter against the double twin: float texture coordinates (the
+  // position's rounding, as above) and the filter's own weight arithmetic.
+  EXPECT_LT(b.max_vs_twin, 5e-3);
+  // Linear interpolation errs by (2 pi / 24)^2 / 8 = 0.9 % of a sinusoid's amplitude at most,
+  // plus the smeared truncation jumps: 0.86 % RMS in double (choose_gabor_tile); 1 % is the bar.
+  EXPECT_LT(b.rms_vs_naive, 0.01);
 }
 
 PS_INSTANTIATE_HEADLESS_BACKENDS(GaborGLTest);

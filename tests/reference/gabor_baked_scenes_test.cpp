@@ -52,7 +52,7 @@ TEST(GaborBakedScenesTest, AutoBakesEveryShippedMaterialWithinOnePercentOrFallsB
         std::printf("%-34s %-22s naive (best tile RMS %.4f sigma, longest period %.1f mm, shadow %.1f mm)\n",
                     entry.path().filename().c_str(), m.name.c_str(), c.rms_vs_naive, c.best_period_mm, window);
         // Falling back is only right when no tile met the bar, none fits, or it is too short.
-        EXPECT_TRUE(c.rms_vs_naive < 0.0 || c.rms_vs_naive > kAutoBakeMaxRms || c.best_period_mm < window)
+        EXPECT_TRUE(c.rms_vs_naive < 0.0 || c.rms_vs_naive > kAutoBakeSelectRms || c.best_period_mm < window)
             << entry.path();
         ++naive;
         continue;
@@ -63,11 +63,11 @@ TEST(GaborBakedScenesTest, AutoBakesEveryShippedMaterialWithinOnePercentOrFallsB
                   c.plan.period_cells, rms, c.rms_vs_naive);
       EXPECT_LE(c.plan.texels, kMaxBakeTexels);
       EXPECT_GE(c.plan.period_mm, window);
-      // 1.2 %, not 1 %: the error is concentrated on the truncation circles, so an RMS estimated
-      // from 1600 (selection) or 2500 (here) points scatters by ~10 % between point sets; a
-      // tile chosen at 0.99 % may measure 1.05 % here. A systematic miss (a wrong plan, a
-      // wrapped cell inside the central period) shows as several percent.
-      EXPECT_LT(rms, 0.012) << entry.path() << " material " << m.name;
+      // The selection asked for <= 0.9 % on its 4096 points (kAutoBakeSelectRms); another set of
+      // 2500 points scatters by ~10-20 % around that for sparse textures, so 1.1 % here. A
+      // systematic miss (a wrong plan, a wrapped cell inside the central period, a lookup that
+      // disagrees with the bake) shows as several percent.
+      EXPECT_LT(rms, 0.011) << entry.path() << " material " << m.name;
       ++baked;
     }
   }
