@@ -40,6 +40,21 @@ float lcg_uniform(inout uint state) {
   return float(state) * (1.0 / 4294967296.0);
 }
 
+// An impulse's kernel draws after its position, in the CPU twin's order (draw_impulse in
+// src/reference/gabor.cpp); w = the envelope width.
+struct GaborKernel {
+  float amp, lambda, theta, psi, w;
+};
+GaborKernel gabor_draw_kernel(GaborMaterial g, inout uint r) {
+  GaborKernel k;
+  k.amp = mix(g.amplitude.x, g.amplitude.y, lcg_uniform(r));
+  k.lambda = mix(g.lambda_mm.x, g.lambda_mm.y, lcg_uniform(r));
+  k.theta = mix(g.theta_rad.x, g.theta_rad.y, lcg_uniform(r));
+  k.psi = 2.0 * kPi * lcg_uniform(r);
+  k.w = g.kernel_periods * k.lambda;
+  return k;
+}
+
 // Sum of the kernels of one cell at p, given relative to the cell's lower corner (mm).
 float gabor_cell(GaborMaterial g, ivec2 cell, vec2 p) {
   uint r = gabor_cell_seed(cell, g.seed);
@@ -60,15 +75,11 @@ float gabor_cell(GaborMaterial g, ivec2 cell, vec2 p) {
 #else
     vec2 d = p - vec2(lcg_uniform(r), lcg_uniform(r)) * g.cell_mm;
 #endif
-    float amp = mix(g.amplitude.x, g.amplitude.y, lcg_uniform(r));
-    float lambda = mix(g.lambda_mm.x, g.lambda_mm.y, lcg_uniform(r));
-    float theta = mix(g.theta_rad.x, g.theta_rad.y, lcg_uniform(r));
-    float psi = 2.0 * kPi * lcg_uniform(r);
-    float w = g.kernel_periods * lambda;
+    GaborKernel kern = gabor_draw_kernel(g, r);
     float r2 = dot(d, d);
-    if (w <= 0.0 || r2 >= w * w * g.trunc_factor) continue;
-    float phase = 2.0 * kPi * dot(d, vec2(cos(theta), sin(theta))) / lambda;
-    sum += amp * exp(-r2 / (w * w)) * cos(phase + psi);
+    if (kern.w <= 0.0 || r2 >= kern.w * kern.w * g.trunc_factor) continue;
+    float phase = 2.0 * kPi * dot(d, vec2(cos(kern.theta), sin(kern.theta))) / kern.lambda;
+    sum += kern.amp * exp(-r2 / (kern.w * kern.w)) * cos(phase + kern.psi);
   }
   return sum;
 }
@@ -106,17 +117,13 @@ vec4 gabor_cell_sample(GaborMaterial g, ivec2 cell, vec2 p) {
   vec4 sum = vec4(0.0);
   for (int k = 0; k < count; ++k) {
     vec2 d = p - vec2(lcg_uniform(r), lcg_uniform(r)) * g.cell_mm;
-    float amp = mix(g.amplitude.x, g.amplitude.y, lcg_uniform(r));
-    float lambda = mix(g.lambda_mm.x, g.lambda_mm.y, lcg_uniform(r));
-    float theta = mix(g.theta_rad.x, g.theta_rad.y, lcg_uniform(r));
-    float psi = 2.0 * kPi * lcg_uniform(r);
-    float w = g.kernel_periods * lambda;
+    GaborKernel kern = gabor_draw_kernel(g, r);
     float r2 = dot(d, d);
-    if (w <= 0.0 || r2 >= w * w * g.trunc_factor) continue;
-    vec2 o = vec2(cos(theta), sin(theta));
-    float f = 2.0 * kPi / lambda, iw2 = 1.0 / (w * w);
-    float e = amp * exp(-r2 * iw2);
-    float ph = f * dot(d, o) + psi, c = cos(ph), s = sin(ph);
+    if (kern.w <= 0.0 || r2 >= kern.w * kern.w * g.trunc_factor) continue;
+    vec2 o = vec2(cos(kern.theta), sin(kern.theta));
+    float f = 2.0 * kPi / kern.lambda, iw2 = 1.0 / (kern.w * kern.w);
+    float e = kern.amp * exp(-r2 * iw2);
+    float ph = f * dot(d, o) + kern.psi, c = cos(ph), s = sin(ph);
     sum += e * vec4(c, -2.0 * d.x * iw2 * c - s * f * o.x, -2.0 * d.y * iw2 * c - s * f * o.y,
                     4.0 * d.x * d.y * iw2 * iw2 * c + 2.0 * d.x * iw2 * s * f * o.y +
                         2.0 * d.y * iw2 * s * f * o.x - c * f * f * o.x * o.y);

@@ -62,26 +62,41 @@ int cell_count(const GaborParams& g, const GaborSetup& s, std::uint32_t& r) {
   return std::clamp(count, 0, s.max_impulses);
 }
 
+// The k-th impulse of a cell, relative to the point (px, py) in the cell's frame: the draws in
+// the shader's order and float operations. Naive: one stratum (the whole cell); stratified: a
+// grid x grid jittered grid (stratum_grid).
+struct Impulse {
+  double dx, dy, amp, lambda, theta, psi, w, r2;
+};
+int stratum_grid(const GaborSetup& s) {
+  return s.stratified_count > 0 ? static_cast<int>(std::ceil(std::sqrt(static_cast<float>(s.stratified_count)))) : 1;
+}
+Impulse draw_impulse(const GaborParams& g, const GaborSetup& s, std::uint32_t& r, int k, int grid,
+                     double px, double py) {
+  const float inv_grid = 1.0f / static_cast<float>(grid);
+  Impulse i;
+  const float jx = (static_cast<float>(k % grid) + lcg_uniform(r)) * inv_grid;
+  const float jy = (static_cast<float>((k / grid) % grid) + lcg_uniform(r)) * inv_grid;
+  i.dx = px - jx * s.cell_mm;
+  i.dy = py - jy * s.cell_mm;
+  i.amp = std::lerp(g.a_min, g.a_max, static_cast<double>(lcg_uniform(r)));
+  i.lambda = std::lerp(g.lambda_min_mm, g.lambda_max_mm, static_cast<double>(lcg_uniform(r)));
+  i.theta = std::lerp(g.theta_min_rad, g.theta_max_rad, static_cast<double>(lcg_uniform(r)));
+  i.psi = 2.0 * std::numbers::pi * lcg_uniform(r);
+  i.w = g.kernel_periods * i.lambda;
+  i.r2 = i.dx * i.dx + i.dy * i.dy;
+  return i;
+}
+
 double cell_sum(const GaborParams& g, const GaborSetup& s, std::uint32_t seed, int cx, int cy,
                 double px, double py, double* margin = nullptr, double trunc_factor = 0.0) {
   if (trunc_factor <= 0.0) trunc_factor = s.trunc_factor;
   std::uint32_t r = gabor_cell_seed(cx, cy, seed);
   const int count = cell_count(g, s, r);
-  // Naive: one stratum (the whole cell); stratified: a g x g grid. Same float ops as the shader.
-  const int grid = s.stratified_count > 0 ? static_cast<int>(std::ceil(std::sqrt(static_cast<float>(s.stratified_count)))) : 1;
-  const float inv_grid = 1.0f / static_cast<float>(grid);
+  const int grid = stratum_grid(s);
   double sum = 0.0;
   for (int k = 0; k < count; ++k) {
-    const float jx = (static_cast<float>(k % grid) + lcg_uniform(r)) * inv_grid;
-    const float jy = (static_cast<float>((k / grid) % grid) + lcg_uniform(r)) * inv_grid;
-    const double dx = px - jx * s.cell_mm;
-    const double dy = py - jy * s.cell_mm;
-    const double amp = std::lerp(g.a_min, g.a_max, static_cast<double>(lcg_uniform(r)));
-    const double lambda = std::lerp(g.lambda_min_mm, g.lambda_max_mm, static_cast<double>(lcg_uniform(r)));
-    const double theta = std::lerp(g.theta_min_rad, g.theta_max_rad, static_cast<double>(lcg_uniform(r)));
-    const double psi = 2.0 * std::numbers::pi * lcg_uniform(r);
-    const double w = g.kernel_periods * lambda;
-    const double r2 = dx * dx + dy * dy;
+    const auto [dx, dy, amp, lambda, theta, psi, w, r2] = draw_impulse(g, s, r, k, grid, px, py);
     if (margin && w > 0.0)
       *margin = std::min(*margin, std::abs(std::sqrt(r2) - w * std::sqrt(s.trunc_factor)));
     if (w <= 0.0 || r2 >= w * w * trunc_factor) continue;
@@ -100,19 +115,10 @@ GaborSample cell_sample(const GaborParams& g, const GaborSetup& s, std::uint32_t
                         int cy, double px, double py) {
   std::uint32_t r = gabor_cell_seed(cx, cy, seed);
   const int count = cell_count(g, s, r);
-  const int grid = s.stratified_count > 0 ? static_cast<int>(std::ceil(std::sqrt(static_cast<float>(s.stratified_count)))) : 1;
-  const float inv_grid = 1.0f / static_cast<float>(grid);
+  const int grid = stratum_grid(s);
   GaborSample out;
   for (int k = 0; k < count; ++k) {
-    const float jx = (static_cast<float>(k % grid) + lcg_uniform(r)) * inv_grid;
-    const float jy = (static_cast<float>((k / grid) % grid) + lcg_uniform(r)) * inv_grid;
-    const double dx = px - jx * s.cell_mm, dy = py - jy * s.cell_mm;
-    const double amp = std::lerp(g.a_min, g.a_max, static_cast<double>(lcg_uniform(r)));
-    const double lambda = std::lerp(g.lambda_min_mm, g.lambda_max_mm, static_cast<double>(lcg_uniform(r)));
-    const double theta = std::lerp(g.theta_min_rad, g.theta_max_rad, static_cast<double>(lcg_uniform(r)));
-    const double psi = 2.0 * std::numbers::pi * lcg_uniform(r);
-    const double w = g.kernel_periods * lambda;
-    const double r2 = dx * dx + dy * dy;
+    const auto [dx, dy, amp, lambda, theta, psi, w, r2] = draw_impulse(g, s, r, k, grid, px, py);
     if (w <= 0.0 || r2 >= w * w * s.trunc_factor) continue;
     // k = A E cos(P), E = exp(-r^2/W^2), P = f (d . o) + psi, f = 2 pi / lambda, o = (cos, sin).
     const double ox = std::cos(theta), oy = std::sin(theta), f = 2.0 * std::numbers::pi / lambda;
