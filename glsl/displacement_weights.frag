@@ -1,11 +1,8 @@
 #version 450 core
-// Pseudo-haptic displacement per fragment (thesis §4.5.4, step 3g):
-//   displacement = resistance * (-d) * normal,  weight = (1 - d)^c,
-// stored as (weight * displacement, weight) for the mipmap average. The weight is rescaled by
-// (1 + max penetration)^-c (computed in log space) so it lies in (0, 1] and cannot overflow;
-// the factor cancels in average(weighted displacement) / average(weight).
-// A fragment pass rather than compute: llvmpipe's image stores from compute measured 13 ms at
-// 512^2, a full-screen fragment pass a fraction of that.
+// The `displacement` AOV (rendered on request only): per fragment (w * disp, w) with
+//   displacement = resistance * (-d) * normal,  weight = (1 - d)^c
+// (thesis §4.5.4), the weight rescaled by (1 + max penetration)^-c exactly as
+// displacement_rows.comp does for the frame's average (the same expression, kept in step).
 #include "lib/reduce_block.glsl"
 
 layout(binding = 0) uniform sampler2D u_aov;     // (intensity, d, texture, resistance)

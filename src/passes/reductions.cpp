@@ -1,6 +1,8 @@
 #include "passes/reductions.h"
 
+#include <algorithm>
 #include <bit>
+#include <vector>
 
 #include "gl/shader.h"
 
@@ -15,19 +17,19 @@ glm::dvec4 read_top_level(const gl::Texture& texture, int levels) {
 Status ReductionsPass::init(const std::string& glsl_root, const SurfacePass& surface) {
   auto max = gl::build_program({{"max_penetration.comp"}, {}}, glsl_root);
   if (!max) return max.error();
+  auto rows = gl::build_program({{"displacement_rows.comp"}, {}}, glsl_root);
+  if (!rows) return rows.error();
   auto weights = gl::build_program({{"displacement_weights.vert", "displacement_weights.frag"}, {}}, glsl_root);
   if (!weights) return weights.error();
   max_ = std::move(max.value());
+  rows_ = std::move(rows.value());
   weights_ = std::move(weights.value());
-  const glm::ivec2 p = surface.padded_size();
-  displacement_ = gl::make_texture_2d(p.x, p.y, GL_RGBA32F, surface.mip_levels());
-  displacement_fbo_ = gl::make_framebuffer();
-  glNamedFramebufferTexture(displacement_fbo_.id(), GL_COLOR_ATTACHMENT0, displacement_.id(), 0);
-  if (glCheckNamedFramebufferStatus(displacement_fbo_.id(), GL_FRAMEBUFFER) != GL_FRAMEBUFFER_COMPLETE)
-    return make_error("reductions: displacement framebuffer incomplete (RGBA32F)");
   empty_vao_ = gl::make_vertex_array();
   ubo_ = gl::make_buffer(sizeof(ReduceBlock), nullptr, GL_DYNAMIC_STORAGE_BIT);
   ssbo_ = gl::make_buffer(sizeof(MaxBlock), nullptr, GL_DYNAMIC_STORAGE_BIT);
+  rows_capacity_ = std::max(surface.height(), 1);
+  rows_ssbo_ = gl::make_buffer(static_cast<GLsizeiptr>(rows_capacity_) * sizeof(glm::vec4), nullptr,
+                               GL_DYNAMIC_STORAGE_BIT);
   return ok_status();
 }
 
@@ -48,24 +50,22 @@ ReductionResult ReductionsPass::run(const SurfacePass& surface, const Params& pa
   glNamedBufferSubData(ssbo_.id(), 0, sizeof(zero), &zero);
   glBindBufferBase(GL_UNIFORM_BUFFER, 0, ubo_.id());
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, ssbo_.id());
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 1, rows_ssbo_.id());
   glBindTextureUnit(0, surface.aov().id());
   glBindTextureUnit(1, surface.normal().id());
+  const auto groups = static_cast<GLuint>((surface.height() + 63) / 64);  // one invocation per row
 
   glUseProgram(max_.id());
-  glDispatchCompute(static_cast<GLuint>((surface.height() + 63) / 64), 1, 1);  // one invocation per row
+  glDispatchCompute(groups, 1, 1);
+  glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_BUFFER_UPDATE_BARRIER_BIT);
+  glUseProgram(rows_.id());
+  glDispatchCompute(groups, 1, 1);
   glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_BUFFER_UPDATE_BARRIER_BIT);
 
-  glBindFramebuffer(GL_FRAMEBUFFER, displacement_fbo_.id());
-  glViewport(0, 0, p.x, p.y);
-  glDisable(GL_DEPTH_TEST);
-  glDisable(GL_SCISSOR_TEST);
-  glDisable(GL_BLEND);
-  glUseProgram(weights_.id());
-  glBindVertexArray(empty_vao_.id());
-  glDrawArrays(GL_TRIANGLES, 0, 3);
-  glGenerateTextureMipmap(displacement_.id());
-
-  const glm::dvec4 d = read_top_level(displacement_, levels);
+  std::vector<glm::vec4> rows(static_cast<size_t>(std::min(surface.height(), rows_capacity_)));
+  glGetNamedBufferSubData(rows_ssbo_.id(), 0, static_cast<GLsizeiptr>(rows.size() * sizeof(glm::vec4)), rows.data());
+  glm::dvec4 d(0.0);
+  for (const glm::vec4& row : rows) d += glm::dvec4(row);
   if (d.w > 0.0) r.weighted_displacement = glm::dvec3(d) / d.w;
   MaxBlock m;
   glGetNamedBufferSubData(ssbo_.id(), 0, sizeof(m), &m);
@@ -74,6 +74,33 @@ ReductionResult ReductionsPass::run(const SurfacePass& surface, const Params& pa
   r.penetrating_fragments = m.penetrating_fragments;
   r.covered_fragments = m.covered_fragments;
   return r;
+}
+
+Result<gl::Texture> ReductionsPass::displacement_aov(const SurfacePass& surface) const {
+  const glm::ivec2 p = surface.padded_size();
+  gl::Texture tex = gl::make_texture_2d(p.x, p.y, GL_RGBA32F);
+  gl::Framebuffer fbo = gl::make_framebuffer();
+  glNamedFramebufferTexture(fbo.id(), GL_COLOR_ATTACHMENT0, tex.id(), 0);
+  if (glCheckNamedFramebufferStatus(fbo.id(), GL_FRAMEBUFFER) != GL_FRAMEBUFFER_COMPLETE)
+    return make_error("reductions: displacement AOV framebuffer incomplete (RGBA32F)");
+  // ubo_ and ssbo_ still hold the last run()'s size, exponent and maximum.
+  glBindBufferBase(GL_UNIFORM_BUFFER, 0, ubo_.id());
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, ssbo_.id());
+  glBindTextureUnit(0, surface.aov().id());
+  glBindTextureUnit(1, surface.normal().id());
+  glBindFramebuffer(GL_FRAMEBUFFER, fbo.id());
+  glViewport(0, 0, p.x, p.y);
+  glDisable(GL_DEPTH_TEST);
+  glDisable(GL_SCISSOR_TEST);
+  glDisable(GL_BLEND);
+  const float clear[4] = {0, 0, 0, 0};
+  glClearNamedFramebufferfv(fbo.id(), GL_COLOR, 0, clear);
+  glUseProgram(weights_.id());
+  glBindVertexArray(empty_vao_.id());
+  glDrawArrays(GL_TRIANGLES, 0, 3);
+  glBindVertexArray(0);
+  glBindFramebuffer(GL_FRAMEBUFFER, 0);
+  return tex;
 }
 
 }  // namespace ps

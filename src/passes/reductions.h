@@ -2,10 +2,12 @@
 //   - reference normal: mean of the visible normals = top mip of the normal target (xyz / w);
 //   - exact maximum penetration (compute, glsl/max_penetration.comp): max of -d, and of
 //     resistance * -d, over every pseudo-shadow fragment;
-//   - weighted-average displacement (thesis §4.5.4): glsl/displacement_weights.{vert,frag} write
-//     (w * disp, w) into displacement() (RGBA32F, padded power of two, full mip chain) and the
-//     top mip gives average(w * disp) / average(w).
-// Power-of-two RGBA32F only: llvmpipe's mipmap is then the exact mean (ENVIRONMENT.md).
+//   - weighted-average displacement (thesis §4.5.4, compute, glsl/displacement_rows.comp): per
+//     image row (sum w * disp, sum w), added here in double: sum(w * disp) / sum(w);
+//   - the `displacement` AOV, on request (displacement_aov): the same per-pixel (w * disp, w)
+//     drawn by glsl/displacement_weights.{vert,frag} into a texture made for the occasion.
+// The normal target is power-of-two RGBA32F: llvmpipe's mipmap is then the exact mean
+// (ENVIRONMENT.md).
 #pragma once
 
 #include <cstdint>
@@ -52,14 +54,15 @@ struct ReductionsPass {
   Status init(const std::string& glsl_root, const SurfacePass& surface);
   // Normal mean only (shadow == false), or everything.
   ReductionResult run(const SurfacePass& surface, const Params& params, bool shadow);
-  const gl::Texture& displacement() const { return displacement_; }
+  // (w * disp, w) per pixel of the last run() with shadow (RGBA32F, the surface's padded size,
+  // zero outside the shadow), drawn now; the surface pass's targets must still hold that frame.
+  Result<gl::Texture> displacement_aov(const SurfacePass& surface) const;
 
  private:
-  gl::Program max_, weights_;
-  gl::Texture displacement_;
-  gl::Framebuffer displacement_fbo_;
+  gl::Program max_, rows_, weights_;
   gl::VertexArray empty_vao_;  // core profile draws need a bound VAO
-  gl::Buffer ubo_, ssbo_;
+  gl::Buffer ubo_, ssbo_, rows_ssbo_;
+  int rows_capacity_ = 0;
 };
 
 // Reads the 1x1 top level of an RGBA32F mip chain.

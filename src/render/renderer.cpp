@@ -374,7 +374,12 @@ Image Renderer::read_color() const {
 Result<Image> Renderer::read_aov(const std::string& name) const {
   const int w = scene_.render.width, h = scene_.render.height;
   if (name == "normal") return read_region(surface_.normal(), w, h, 3, GL_RGBA, GL_FLOAT);
-  if (name == "displacement") return read_region(reductions_.displacement(), w, h, 4, GL_RGBA, GL_FLOAT);
+  if (name == "displacement") {
+    // Drawn on request from the frame's targets (the frame's average uses row sums instead).
+    auto tex = reductions_.displacement_aov(surface_);
+    if (!tex) return tex.error();
+    return read_region(tex.value(), w, h, 4, GL_RGBA, GL_FLOAT);
+  }
   const auto& names = aov_names();
   const auto it = std::find(names.begin(), names.begin() + 3, name);
   if (it == names.begin() + 3) {

@@ -36,7 +36,8 @@ TEST_P(ReplayGLTest, RecordedSessionPlaysBackByteIdentical) {
   // A stroke that presses into the plank (z 14 -> 4 mm: the 8 mm probe penetrates) and slides.
   auto script = parse_sample_log("0 -20 0 14 0\n0.2 -10 0 4 0\n0.4 10 5 4 1\n0.5 20 5 9 0\n", "stroke");
   ASSERT_TRUE(script.ok());
-  const std::string log = testing::TempDir() + "ps_replay_record.log";
+  // One file per backend: ctest runs the egl and osmesa instances in parallel.
+  const std::string log = testing::TempDir() + "ps_replay_record_" + gl::backend_name(GetParam()) + ".log";
   LogDevice traj(script.value(), true, "trajectory");
   const std::vector<Image> first = replay_images(traj, log);
   ASSERT_EQ(first.size(), 11u);  // 0.5 s at 20 fps, both ends
