@@ -20,7 +20,7 @@
 layout(binding = 0) uniform sampler2D u_probe_depth;  // R32F: probe's lowest height h_p per texel
 layout(binding = 1) uniform sampler2D u_albedo_tex;
 #if PS_GABOR_BAKED
-layout(binding = 2) uniform sampler2D u_gabor_tile;  // baked tile: RGBA32F (1), R32F (2) (passes/gabor_bake.h)
+layout(binding = 2) uniform sampler2D u_gabor_tile;  // baked tile: RGBA32F (1), R16F (2) (passes/gabor_bake.h)
 #endif
 
 layout(location = 0) in vec3 v_world;

@@ -146,7 +146,7 @@ vec4 gabor_noise_sample(GaborMaterial g, vec2 uv, int period_cells) {
 #endif
 
 #if PS_GABOR_BAKED == 2
-// Baked lookup, bilinear: the tile holds values only (R32F, GL_LINEAR, GL_REPEAT), sample i at
+// Baked lookup, bilinear: the tile holds values only (R16F, GL_LINEAR, GL_REPEAT), sample i at
 // u_i = -period/2 + i h, i.e. texel centre (i + 0.5) / texels. tile: (period mm, texel h mm,
 // texels, 0). CPU twin: gabor_noise_baked (plan.linear) in src/reference/gabor.cpp.
 float gabor_noise_baked(sampler2D tile_tex, vec4 tile, vec2 uv) {
