@@ -6,7 +6,6 @@
 #include <memory>
 
 #include "reference/gabor.h"
-#include "reference/probe_geometry.h"
 #include "render/renderer.h"
 
 namespace ps::bench {
@@ -51,12 +50,11 @@ struct TextureRefs {
 };
 
 // RMS texture errors over the footprint pixels listed in `pix` (x, y).
+// `plan`: the tile the renderer drew with (ok == false: the per-pixel sum).
 void texture_errors(const Scene& s, const Image& tex, const std::vector<glm::ivec2>& pix,
-                    const TextureRefs& refs, Measurement& m) {
+                    const GaborBakePlan& plan, const TextureRefs& refs, Measurement& m) {
   const GaborParams& g = s.materials[0].gabor;
   const GaborSetup setup = make_gabor_setup(g);
-  // The tile the renderer made (none for naive/stratified, or when "auto" fell back).
-  const GaborBakePlan plan = choose_gabor_tile(g, setup, s.render.seed, 2.0 * probe_bounds(s.probe).radius).plan;
   double own = 0.0, ideal = 0.0, target = 0.0;
   for (const glm::ivec2& p : pix) {
     const glm::dvec2 w = pixel_world(s, p.x, p.y);
@@ -101,7 +99,7 @@ void frame_errors(const Scene& s, const Renderer& r, const TextureRefs& refs, Me
       if (d < onset) pix.emplace_back(x, y);
     }
   m.footprint_pixels = static_cast<int>(pix.size());
-  texture_errors(s, tex, pix, refs, m);
+  texture_errors(s, tex, pix, r.gabor_bake_plan(0), refs, m);
   const double pen = s.probe.radius_mm - s.probe.position.z;  // plane z = 0
   m.displacement_rel = pen > 0.0 ? std::abs(r.stats().displacement.z - pen) / pen : kNan;
   const double cz = std::clamp(r.stats().reference_normal.z, -1.0, 1.0);

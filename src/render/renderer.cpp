@@ -139,6 +139,10 @@ Status Renderer::load_scene_resources() {
           std::snprintf(note, sizeof note, "material '%s': naive Gabor sum (no tile within %.0f %% "
                         "sigma of it: best %.4f)", m.name.c_str(), kAutoBakeSelectRms * 100.0, choice.rms_vs_naive);
         strategy_notes_.push_back(note);
+      } else if (!plan.ok && (m.gabor.strategy == GaborParams::Strategy::kBaked ||
+                              m.gabor.strategy == GaborParams::Strategy::kBakedLinear)) {
+        strategy_notes_.push_back("material '" + m.name + "': too fine for a baked tile "
+                                  "(lambda_max / lambda_min too large), naive Gabor used");
       }
       const Renderer* old = options_.reuse_tiles_from;
       if (plan.ok && old)
@@ -266,13 +270,6 @@ Status Renderer::render_frame() {
   const FramePlan plan = make_plan(scene_, surface_bounds_, probe, frame_, scene_.render.depth_map_size);
   stats_.skipped = plan.skipped;
   stats_.skipped.insert(stats_.skipped.end(), strategy_notes_.begin(), strategy_notes_.end());
-  for (size_t i = 0; i < scene_.materials.size(); ++i)
-    if (scene_.materials[i].textured && !gabor_tiles_[i] &&
-        (scene_.materials[i].gabor.strategy == GaborParams::Strategy::kBaked ||
-         scene_.materials[i].gabor.strategy == GaborParams::Strategy::kBakedLinear))
-      stats_.skipped.push_back("material '" + scene_.materials[i].name +
-                               "': too fine for a baked tile (lambda_max / lambda_min too large), "
-                               "naive Gabor used");
   timer.lap("plan");
   if (plan.shadow_active) {
     ProbeDepthPass::Inputs in;

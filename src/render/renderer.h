@@ -60,6 +60,8 @@ class Renderer {
   Result<Image> read_aov(const std::string& name) const;
 
   const FrameStats& stats() const { return stats_; }
+  // The baked tile material i is drawn with (ok == false: the per-pixel sum), as chosen at creation.
+  const GaborBakePlan& gabor_bake_plan(size_t material) const { return bake_plans_[material]; }
   const Scene& scene() const { return scene_; }
   const PlaneFrame& reference() const { return frame_; }
   void set_probe_state(const glm::dvec3& position, const glm::dvec3& velocity);
@@ -91,7 +93,7 @@ class Renderer {
   std::vector<gl::Texture> albedo_textures_; // per material (empty texture = none)
   std::vector<GaborBakePlan> bake_plans_;    // per material (ok == false: not baked)
   std::vector<std::shared_ptr<gl::Texture>> gabor_tiles_;  // per material (null = none)
-  std::vector<std::string> strategy_notes_;  // what "auto" chose per material (stats.skipped)
+  std::vector<std::string> strategy_notes_;  // Gabor strategy per material: auto's choice, baked's fallback (stats.skipped)
   GpuMesh probe_mesh_;
   Aabb probe_mesh_bounds_;                   // model space, scaled
   ProbeDepthPass probe_depth_;
