@@ -7,7 +7,7 @@
 //   - the `displacement` AOV, on request (displacement_aov): the same per-pixel (w * disp, w)
 //     drawn by glsl/displacement_weights.{vert,frag} into a texture made for the occasion.
 // The normal target is power-of-two RGBA32F: llvmpipe's mipmap is then the exact mean
-// (ENVIRONMENT.md).
+// (docs/gl-stack.md).
 #pragma once
 
 #include <cstdint>

@@ -6,7 +6,7 @@
 //            aov()    RGBA32F  (intensity, distance d mm, texture in sigmas, resistance);
 //                              cleared to (0, 1e30, 0, 0)
 //   All targets are allocated at the next power of two of the image size (mipmap averages are
-//   exact only for power-of-two RGBA32F on llvmpipe, ENVIRONMENT.md); the viewport covers the
+//   exact only for power-of-two RGBA32F on llvmpipe, docs/gl-stack.md); the viewport covers the
 //   image, the padding stays cleared and drops out of every ratio computed from the mips.
 // Shaders: glsl/surface.{vert,frag}; variants PS_SHADOW, PS_TEXTURED, PS_GABOR_STRATIFIED,
 // PS_GABOR_BAKED.

@@ -1,4 +1,4 @@
-# EGL and OSMesa must render byte-identical images (ENVIRONMENT.md): render the same scene on
+# EGL and OSMesa must render byte-identical images (docs/gl-stack.md): render the same scene on
 # both and compare with zero tolerance.
 #   cmake -DEXE=... -DOUT=<dir> [-DSCENE=file] -P backends_identical.cmake
 set(_scene_args)

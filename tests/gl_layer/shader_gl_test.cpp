@@ -74,7 +74,7 @@ std::vector<unsigned char> render_triangle(Backend backend) {
   return pixels;
 }
 
-// ENVIRONMENT.md: llvmpipe renders byte-identical images behind EGL and OSMesa; the renderer
+// docs/gl-stack.md: llvmpipe renders byte-identical images behind EGL and OSMesa; the renderer
 // relies on it (goldens are backend-independent), so any difference is a bug in our setup.
 TEST(BackendParityGLTest, EglAndOsmesaRenderIdenticalBytes) {
   const std::vector<unsigned char> egl = render_triangle(Backend::kEgl);

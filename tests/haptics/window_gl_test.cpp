@@ -28,7 +28,7 @@ Image render_with(gl::Backend backend, bool window_readback) {
   EXPECT_TRUE(r.value()->render_frame().ok());
   if (!window_readback) return r.value()->read_color();
   present_to_default_framebuffer(*r.value(), 160, 120);
-  return read_back_buffer(160, 120);  // GL_BACK before the swap (ENVIRONMENT.md)
+  return read_back_buffer(160, 120);  // GL_BACK before the swap (docs/gl-stack.md)
 }
 
 TEST(WindowGLTest, WindowFrameMatchesHeadlessRender) {
