@@ -12,7 +12,7 @@ readonly kPackages=(
   libopenimageio-dev openimageio-tools libpng-dev
   libgtest-dev libgmock-dev libbenchmark-dev
   libassimp-dev assimp-testmodels libimgui-dev libtomlplusplus-dev nlohmann-json3-dev
-  gnuplot-nox xvfb xauth clang libclang-rt-14-dev
+  gnuplot-nox xvfb xauth clang libclang-rt-14-dev ccache
 )
 
 repo_root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
@@ -62,7 +62,10 @@ configure() {
     return 0
   fi
   log "configuring ${build_dir}"
-  cmake -S "${repo_root}" -B "${build_dir}" -DCMAKE_BUILD_TYPE=RelWithDebInfo ||
+  # ccache (installed above) makes rebuilds of an unchanged file, in this or another checkout,
+  # a cache hit; it never changes what is built.
+  cmake -S "${repo_root}" -B "${build_dir}" -DCMAKE_BUILD_TYPE=RelWithDebInfo \
+    -DCMAKE_C_COMPILER_LAUNCHER=ccache -DCMAKE_CXX_COMPILER_LAUNCHER=ccache ||
     die "cmake configure failed"
 }
 

@@ -15,7 +15,8 @@ configure() {  # configure DIR [cmake args...] unless DIR is already configured
   local dir="$1"; shift
   if [ -f "${dir}/CMakeCache.txt" ] && [ -f "${dir}/Makefile" ]; then return 0; fi
   cmake -S "${repo_root}" -B "${dir}" -DCMAKE_BUILD_TYPE=RelWithDebInfo \
-    -DCMAKE_C_COMPILER=clang -DCMAKE_CXX_COMPILER=clang++ "$@" > "${dir}.configure.log" ||
+    -DCMAKE_C_COMPILER=clang -DCMAKE_CXX_COMPILER=clang++ \
+    -DCMAKE_C_COMPILER_LAUNCHER=ccache -DCMAKE_CXX_COMPILER_LAUNCHER=ccache "$@" > "${dir}.configure.log" ||
     { cat "${dir}.configure.log"; exit 1; }
 }
 
