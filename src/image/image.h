@@ -6,6 +6,7 @@
 #include <string>
 #include <vector>
 
+#include "core/output_set.h"
 #include "core/result.h"
 
 namespace ps {
@@ -25,11 +26,15 @@ struct Image {
 // as stored (never premultiplied). Errors name the path and are one line.
 Result<Image> read_image(const std::string& path);
 // Writes PNG (8 bit, clamped to [0,1], rounded, NaN as 0; 1 to 4 channels) or EXR (32-bit float)
-// by extension; other extensions go to whatever OIIO writes for them. Written to
-// "<path>.<pid>.tmp" and renamed into place so a crash never leaves a half-written file. Creates
-// missing parent directories. Errors name the path; sizes outside 1..16384 are refused; a
-// non-PNG file whose module cannot be loaded is an error saying which paths were tried.
+// by extension; other extensions go to whatever OIIO writes for them. Written to a temp file
+// and renamed into place (core/file_io.h) so a crash never leaves a half-written file; follows
+// the output directory rule (only a missing last directory is created). Errors name the path;
+// sizes outside 1..16384 are refused; a non-PNG file whose module cannot be loaded is an error
+// saying which paths were tried.
 Status write_image(const std::string& path, const Image& image);
+// As write_image, but as one output of `outputs`: published by outputs.publish() together with
+// the command's other files, or not at all.
+Status stage_image(OutputSet& outputs, const std::string& path, const Image& image);
 
 struct CompareOptions {
   float fail_threshold = 1.0f / 255.0f;  // a pixel fails if any channel differs by more
