@@ -1,6 +1,5 @@
 #include "core/output_set.h"
 
-#include <algorithm>
 #include <filesystem>
 
 #include <unistd.h>
@@ -12,25 +11,21 @@ std::string normal(const std::string& path) {
   return std::filesystem::path(path).lexically_normal().string();
 }
 
-bool contains(const std::vector<std::string>& list, const std::string& item) {
-  return std::find(list.begin(), list.end(), item) != list.end();
-}
-
 }  // namespace
 
 Status OutputSet::add(const std::string& path) {
   const std::string key = normal(path);
-  if (contains(paths_, key))
+  if (paths_.count(key) != 0)
     return make_error(path + ": named as two outputs of one command (give each output its own file)");
   bool created = false;
   if (Status s = prepare_output_dir(path, &created); !s) return s;
   if (created) created_dirs_.push_back(std::filesystem::path(key).parent_path().string());
-  paths_.push_back(key);
+  paths_.insert(key);
   return ok_status();
 }
 
 Result<TempFile> OutputSet::open_temp(const std::string& path) {
-  if (!contains(paths_, normal(path)))
+  if (paths_.count(normal(path)) == 0)
     if (Status s = add(path); !s) return s.error();
   return TempFile::create(path);
 }

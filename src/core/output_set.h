@@ -14,6 +14,7 @@
 #pragma once
 
 #include <functional>
+#include <set>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -54,7 +55,7 @@ class OutputSet {
 
  private:
   Result<TempFile> open_temp(const std::string& path);  // add() if new, then a TempFile
-  std::vector<std::string> paths_;         // added, in order (lexically normal)
+  std::set<std::string> paths_;            // added (lexically normal); a replay adds thousands
   std::vector<std::string> created_dirs_;  // made by add(), removed by discard()
   std::vector<TempFile> staged_;
 };
