@@ -10,6 +10,7 @@
 #include "app/bench_sweep.h"
 #include "app/cli_args.h"
 #include "app/commands.h"
+#include "core/output_set.h"
 #include "gl/context.h"
 
 namespace ps {
@@ -29,7 +30,8 @@ options:
   --frames N        timed warm frames per configuration and round (default 3); every
                     configuration is measured in 3 round-robin rounds, the median over
                     all its timed frames is reported
-  --out-dir DIR     output directory (default bench_out): bench.csv, bench.png, bench.md
+  --out-dir DIR     output directory (default bench_out): bench.csv, bench.png, bench.md;
+                    created if its parent exists
   --backend B       auto (EGL, then OSMesa) | egl | osmesa
   -q, --quiet       no progress output
   -h, --help        this text
@@ -66,9 +68,13 @@ Status parse_one(cli::ArgCursor& c, BenchArgs& a) {
 }
 
 Status run(const BenchArgs& a, gl::Backend backend) {
-  std::error_code ec;
-  std::filesystem::create_directories(a.out_dir, ec);
-  if (ec) return make_error(a.out_dir + ": cannot create: " + ec.message());
+  // The results (CSV and summary) are checked now and published together at the end, or not at
+  // all. The plot is extra (it needs gnuplot) and is drawn after them; the RSS renders and the
+  // plot's data files are work files in the same directory.
+  OutputSet outputs;
+  const std::string csv = a.out_dir + "/bench.csv", md_path = a.out_dir + "/bench.md";
+  if (Status s = outputs.add(csv); !s) return s;
+  if (Status s = outputs.add(md_path); !s) return s;
   bench::BenchOptions o;
   o.size = a.size;
   o.timed_frames = a.frames;
@@ -96,9 +102,10 @@ Status run(const BenchArgs& a, gl::Backend backend) {
     if (!k) return k.error();
     (size == 512 ? rss.kib_512 : rss.kib_2048) = k.value();
   }
-  if (Status s = bench::write_csv(a.out_dir + "/bench.csv", rows); !s) return s;
   const std::string md = bench::summary_markdown(rows, skip, rss, a.size);
-  std::ofstream(a.out_dir + "/bench.md") << md;
+  if (Status s = outputs.stage_text(csv, bench::csv_text(rows)); !s) return s;
+  if (Status s = outputs.stage_text(md_path, md); !s) return s;
+  if (Status s = outputs.publish(); !s) return s;
   if (!a.quiet) std::fputs(md.c_str(), stdout);
   if (Status s = bench::write_plot(a.out_dir + "/bench.png", a.out_dir, rows); !s)
     std::fprintf(stderr, "pseudoshadow bench: %s\n", s.error().message.c_str());

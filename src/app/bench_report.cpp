@@ -1,5 +1,7 @@
 #include "app/bench_report.h"
 
+#include "core/file_io.h"
+
 #include <algorithm>
 #include <cerrno>
 #include <cmath>
@@ -25,15 +27,9 @@ std::string g(double v) {
   return b;
 }
 
-Status write_file(const std::string& path, const std::string& text) {
-  std::ofstream f(path, std::ios::binary);
-  if (!(f << text) || !f.flush()) return make_error(path + ": cannot write: " + std::strerror(errno));
-  return ok_status();
-}
-
 }  // namespace
 
-Status write_csv(const std::string& path, const std::vector<BenchRow>& rows) {
+std::string csv_text(const std::vector<BenchRow>& rows) {
   std::ostringstream o;
   o << "group,value,frame_ms,surface_ms,error_metric,error,pareto,texture_rms_sigma,"
        "texture_vs_ideal,texture_vs_target,displacement_rel,distance_max_mm,normal_deg,footprint_pixels\n";
@@ -42,7 +38,7 @@ Status write_csv(const std::string& path, const std::vector<BenchRow>& rows) {
       << r.metric << ',' << g(r.error) << ',' << (r.pareto ? 1 : 0) << ',' << g(r.m.texture_rms_sigma)
       << ',' << g(r.m.texture_vs_ideal) << ',' << g(r.m.texture_vs_target) << ',' << g(r.m.displacement_rel) << ',' << g(r.m.distance_max_mm) << ',' << g(r.m.normal_deg)
       << ',' << r.m.footprint_pixels << '\n';
-  return write_file(path, o.str());
+  return o.str();
 }
 
 std::string summary_markdown(const std::vector<BenchRow>& rows, const SkipRatios& skip,
@@ -116,7 +112,7 @@ Status write_plot(const std::string& png, const std::string& dir, const std::vec
   std::map<std::string, std::string> metric;
   for (const BenchRow& r : rows) metric[r.group] = r.metric;
   const std::string dat = dir + "/bench_plot.dat", gp = dir + "/bench_plot.gp";
-  if (Status s = write_file(dat, plot_data(rows, groups)); !s) return s;
+  if (Status s = write_file_atomic(dat, plot_data(rows, groups)); !s) return s;
   std::ostringstream o;
   o << "set terminal pngcairo size 1100,750 noenhanced\nset output '" << png << "'\n"
     << "set logscale xy\nset xlabel 'frame time, ms (median of warm frames)'\n"
@@ -130,7 +126,7 @@ Status write_plot(const std::string& png, const std::string& dir, const std::vec
       << " using 1:2 with lines lc " << i + 1 << " notitle";
   }
   o << "\n";
-  if (Status s = write_file(gp, o.str()); !s) return s;
+  if (Status s = write_file_atomic(gp, o.str()); !s) return s;
   if (std::system(("gnuplot '" + gp + "'").c_str()) != 0) return make_error("gnuplot failed on " + gp);
   return ok_status();
 }

@@ -14,7 +14,7 @@ struct RssReport {
   long long kib_512 = -1, kib_2048 = -1;  // peak RSS of `pseudoshadow render`, -1 = not measured
 };
 
-Status write_csv(const std::string& path, const std::vector<BenchRow>& rows);
+std::string csv_text(const std::vector<BenchRow>& rows);  // bench.csv, header line first
 std::string summary_markdown(const std::vector<BenchRow>& rows, const SkipRatios& skip,
                              const RssReport& rss, int size);
 // Runs gnuplot; an Error says why no plot was made (e.g. gnuplot not installed).

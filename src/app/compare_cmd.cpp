@@ -19,7 +19,7 @@ constexpr int kExitFail = 1;
 constexpr int kExitError = 2;
 
 constexpr const char* kUsage =
-    "usage: pseudoshadow compare A B [--fail T] [--failpercent P] [--diff OUT]\n"
+    "usage: pseudoshadow compare A B [--fail T] [--failpercent P] [--hardfail H] [--diff OUT]\n"
     "\n"
     "Compares the pixels of two images of equal size and channel count (PNG, EXR, any format\n"
     "OpenImageIO reads; 8-bit files are read as [0,1]). File bytes are never compared.\n"
@@ -29,10 +29,16 @@ constexpr const char* kUsage =
     "                    scale (default 0.0039 = 1/255, one 8-bit step); 0 <= T <= 1\n"
     "  --failpercent P   the comparison fails if more than P % of the pixels fail\n"
     "                    (default 0); 0 <= P <= 100\n"
+    "  --hardfail H      the comparison fails if ANY pixel differs by more than H, whatever\n"
+    "                    --failpercent allows (default: no cap); 0 <= H <= 1\n"
+
     "  --diff OUT        always write |A-B| x10, clamped to [0,1], to OUT (PNG or EXR)\n"
-    "  -h, --help        print this help and exit 0\n"
+    "  -h, --help        print this help and exit 0\n"    "\n"
+    "When both images are 8-bit files, pixels are compared in whole 8-bit levels and each\n"
+    "threshold is rounded to the nearest level (0.004 -> 1 level, 0.0078 -> 2 levels).\n"
     "\n"
-    "Prints one line: compare: PASS|FAIL  max_abs=... mean_abs=... failing=N (x.xx%)  [limits: ...]\n"
+    "Prints one line: compare: PASS|FAIL  max_abs=... mean_abs=... failing=N (x.xx%)\n"
+    "  then max_levels=L (both 8-bit), beyond_hardfail=N (if any) and [limits: ...]\n"
     "Exit codes: 0 pass, 1 fail, 2 error (unreadable file, size mismatch, bad arguments).\n";
 
 struct CompareArgs {
@@ -48,7 +54,7 @@ Result<double> parse_limit(std::string_view flag, std::string_view text, double 
   auto [ptr, ec] = std::from_chars(text.data(), end, value);
   if (text.empty() || ec != std::errc() || ptr != end || !std::isfinite(value) || value < 0.0 ||
       std::signbit(value) || value > max) {
-    std::string hint = flag == "--fail" ? " (the [0,1] scale: for 2/255 write 0.0078)" : "";
+    std::string hint = flag != "--failpercent" ? " (the [0,1] scale: for 2/255 write 0.0078)" : "";
     return make_error(std::string(flag) + " needs a number from 0 to " + (max == 1.0 ? "1" : "100") +
                       ", got '" + std::string(text) + "'" + hint);
   }
@@ -62,15 +68,16 @@ Status apply_option(std::string_view flag, std::string_view value, CompareArgs& 
     args.diff_path = std::string(value);
     return ok_status();
   }
-  Result<double> limit = parse_limit(flag, value, flag == "--fail" ? 1.0 : 100.0);
+  Result<double> limit = parse_limit(flag, value, flag == "--failpercent" ? 100.0 : 1.0);
   if (!limit) return limit.error();
   if (flag == "--fail") args.options.fail_threshold = static_cast<float>(*limit);
+  else if (flag == "--hardfail") args.options.hard_fail_threshold = static_cast<float>(*limit);
   else args.options.fail_percent = *limit;
   return ok_status();
 }
 
 bool is_option(std::string_view flag) {
-  return flag == "--fail" || flag == "--failpercent" || flag == "--diff";
+  return flag == "--fail" || flag == "--failpercent" || flag == "--hardfail" || flag == "--diff";
 }
 
 Result<CompareArgs> parse_args(int argc, char** argv) {
@@ -101,9 +108,13 @@ Result<CompareArgs> parse_args(int argc, char** argv) {
 }
 
 void print_summary(const CompareResult& r, const CompareOptions& o) {
-  std::printf("compare: %s  max_abs=%.6g mean_abs=%.6g failing=%ld (%.2f%%)  [limits: fail=%.6g failpercent=%.6g]\n",
-              r.passed ? "PASS" : "FAIL", r.max_abs, r.mean_abs, r.failing_pixels, r.failing_percent,
-              static_cast<double>(o.fail_threshold), o.fail_percent);
+  std::printf("compare: %s  max_abs=%.6g mean_abs=%.6g failing=%ld (%.2f%%)", r.passed ? "PASS" : "FAIL",
+              r.max_abs, r.mean_abs, r.failing_pixels, r.failing_percent);
+  if (r.in_levels) std::printf(" max_levels=%d", r.max_levels);
+  if (r.hard_failing_pixels > 0) std::printf(" beyond_hardfail=%ld", r.hard_failing_pixels);
+  std::printf("  [limits: fail=%.6g failpercent=%.6g", static_cast<double>(o.fail_threshold), o.fail_percent);
+  if (std::isfinite(o.hard_fail_threshold)) std::printf(" hardfail=%.6g", static_cast<double>(o.hard_fail_threshold));
+  std::printf("]\n");
   std::fflush(stdout);
 }
 

@@ -11,6 +11,7 @@
 
 #include "app/cli_args.h"
 #include "app/commands.h"
+#include "core/output_set.h"
 #include "gl/context.h"
 #include "render/renderer.h"
 #include "scene/scene_io.h"
@@ -42,7 +43,9 @@ options:
                         (repeatable; VALUE is a TOML value: 0.4, [0,0,5], exact_max, "text")
   --overrides FILE      apply an override file saved by `run`/`tune` (KEY = VALUE lines,
                         docs/tuning.md) at this point of the --set list
-  --out IMAGE.png       output image (default: render.png)
+  --out IMAGE.png       output image (default: render.png). For every output file: its
+                        directory must exist, or only its last directory may be missing
+                        (it is created); all outputs are written, or none
   --aov NAME=FILE.exr   also write an AOV: intensity, distance (mm; 1e30 outside the shadow),
                         texture (Gabor value in sigmas, before speed modulation), normal,
                         displacement (weighted displacement xyz, weight w) (repeatable)
@@ -146,19 +149,6 @@ Status check_aov_names(const RenderArgs& a) {
   return ok_status();
 }
 
-Status write_text_atomic(const std::string& path, const std::string& text) {
-  const std::filesystem::path p(path), tmp = p.string() + ".tmp";
-  std::error_code ec;
-  if (p.has_parent_path()) std::filesystem::create_directories(p.parent_path(), ec);
-  {
-    std::ofstream f(tmp, std::ios::binary);
-    if (!(f << text) || !f.flush()) return make_error(path + ": cannot write: " + std::strerror(errno));
-  }
-  std::filesystem::rename(tmp, p, ec);
-  if (ec) return make_error(path + ": cannot write: " + ec.message());
-  return ok_status();
-}
-
 Status run_frames(Renderer& r, int frames, bool progress) {
   const auto t0 = std::chrono::steady_clock::now();
   for (int i = 0; i < frames; ++i) {
@@ -172,19 +162,30 @@ Status run_frames(Renderer& r, int frames, bool progress) {
   return ok_status();
 }
 
-Status write_outputs(const RenderArgs& a, const Renderer& r, const gl::Context& ctx) {
-  if (Status s = write_image(a.out, r.read_color()); !s) return s;
+// Every output path is checked before the render (a typo in --stats must not cost a render) and
+// all are published together after it: a failed command leaves none of them (docs/errors.md).
+Status add_outputs(const RenderArgs& a, OutputSet& out) {
+  if (Status s = out.add(a.out); !s) return s;
+  for (const auto& [name, file] : a.aovs)
+    if (Status s = out.add(file); !s) return s;
+  if (!a.stats_path.empty())
+    if (Status s = out.add(a.stats_path); !s) return s;
+  return ok_status();
+}
+
+Status write_outputs(const RenderArgs& a, const Renderer& r, const gl::Context& ctx, OutputSet& out) {
+  if (Status s = stage_image(out, a.out, r.read_color()); !s) return s;
   for (const auto& [name, file] : a.aovs) {
     auto img = r.read_aov(name);
     if (!img) return img.error();
-    if (Status s = write_image(file, img.value()); !s) return s;
+    if (Status s = stage_image(out, file, img.value()); !s) return s;
   }
   if (!a.stats_path.empty()) {
     const std::string json = stats_json(r.stats(), gl::backend_name(ctx.backend()), ctx.renderer(),
                                         r.scene().render.frames);
-    if (Status s = write_text_atomic(a.stats_path, json); !s) return s;
+    if (Status s = out.stage_text(a.stats_path, json); !s) return s;
   }
-  return ok_status();
+  return out.publish();
 }
 
 }  // namespace
@@ -203,6 +204,8 @@ int run_render(int argc, char** argv) {
   auto backend = gl::parse_backend(a.backend);
   if (!backend) { std::fprintf(stderr, "pseudoshadow render: --backend: %s\n", backend.error().message.c_str()); return 2; }
   if (Status s = check_aov_names(a); !s) { std::fprintf(stderr, "pseudoshadow render: %s\n", s.error().message.c_str()); return 2; }
+  OutputSet outputs;
+  if (Status s = add_outputs(a, outputs); !s) return fail(s.error());
   auto scene = load(a);
   if (!scene) return fail(scene.error());
   gl::ContextDesc desc;
@@ -215,7 +218,7 @@ int run_render(int argc, char** argv) {
   const int frames = scene->render.frames;
   const bool progress = !a.quiet && frames > 1 && isatty(STDERR_FILENO);
   if (Status s = run_frames(*renderer.value(), frames, progress); !s) return fail(s.error());
-  if (Status s = write_outputs(a, *renderer.value(), *ctx.value()); !s) return fail(s.error());
+  if (Status s = write_outputs(a, *renderer.value(), *ctx.value(), outputs); !s) return fail(s.error());
   if (!a.quiet) {
     double frame_ms = 0.0;
     for (const auto& [n, ms] : renderer.value()->stats().timings_ms) frame_ms += ms;

@@ -6,6 +6,7 @@
 #include "app/cli_args.h"
 #include "app/commands.h"
 #include "app/session.h"
+#include "core/output_set.h"
 #include "devices/sample_log.h"
 #include "gl/context.h"
 #include "image/text.h"
@@ -25,7 +26,8 @@ options:
   --scene FILE            scene file (default: the built-in default scene)
   --log [KIND:]FILE       device log, lines 'time_s x y z buttons'; KIND playback (default:
                           sample-and-hold, exact) or trajectory (linear interpolation)
-  --out DIR               writes DIR/frame_00000.png ...
+  --out DIR               writes DIR/frame_00000.png ... (DIR is created if its parent
+                          exists; frames and sheet are all written, or none)
   --every N               write every N-th frame (default 1)
   --fps F                 frames per second of session time (default 30)
   --contact-sheet FILE    also one labelled sheet of the written frames (PNG)
@@ -117,8 +119,28 @@ Result<ReplayGl> open_renderer(const ReplayArgs& a) {
   return ReplayGl{std::move(ctx.value()), std::move(renderer.value())};
 }
 
+std::string frame_path(const ReplayArgs& a, int i) {
+  char name[32];
+  std::snprintf(name, sizeof name, "/frame_%05d.png", i);
+  return a.out_dir + name;
+}
+
+// Checked before the session: frames and sheet are published together at the end, or not at
+// all. The --record log streams to its own "<FILE>.partial" (SampleRecorder) and is published
+// by the session when it ends; only its directory is checked here.
+Status add_outputs(const ReplayArgs& a, OutputSet& out) {
+  if (Status s = out.add(frame_path(a, 0)); !s) return s;
+  if (!a.sheet.empty())
+    if (Status s = out.add(a.sheet); !s) return s;
+  if (!a.record.empty())
+    if (Status s = prepare_output_dir(a.record); !s) return s;
+  return ok_status();
+}
+
 int replay(const ReplayArgs& a) {
   auto fail = [](const Error& e) { std::fprintf(stderr, "pseudoshadow replay: %s\n", e.message.c_str()); return 1; };
+  OutputSet outputs;
+  if (Status s = add_outputs(a, outputs); !s) return fail(s.error());
   const std::string spec = a.log.find(':') == std::string::npos ? "playback:" + a.log : a.log;
   auto device = open_log_device(spec);
   if (!device) return fail(device.error());
@@ -134,10 +156,8 @@ int replay(const ReplayArgs& a) {
   int written = 0;
   auto sink = [&](int i, double t, const HapticState& st, const Renderer& r) -> Status {
     if (i % a.every != 0) return ok_status();
-    char name[32];
-    std::snprintf(name, sizeof name, "/frame_%05d.png", i);
     const Image img = r.read_color();
-    if (Status s = write_image(a.out_dir + name, img); !s) return s;
+    if (Status s = stage_image(outputs, frame_path(a, i), img); !s) return s;
     ++written;
     if (!a.sheet.empty()) {
       char label[64];
@@ -150,7 +170,8 @@ int replay(const ReplayArgs& a) {
   auto result = replay_session(*renderer, *device.value(), opt, sink);
   if (!result) return fail(result.error());
   if (!a.sheet.empty())
-    if (Status s = write_image(a.sheet, contact_sheet(thumbs, labels)); !s) return fail(s.error());
+    if (Status s = stage_image(outputs, a.sheet, contact_sheet(thumbs, labels)); !s) return fail(s.error());
+  if (Status s = outputs.publish(); !s) return fail(s.error());
   if (!a.quiet)
     std::printf("replayed %d frames at %g fps, wrote %d images to %s; rejected device samples: %llu\n",
                 result->frames, a.fps, written, a.out_dir.c_str(),

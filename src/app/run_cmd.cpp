@@ -15,6 +15,7 @@
 #include "app/session.h"
 #include "app/tune_panel.h"
 #include "app/window_input.h"
+#include "core/output_set.h"
 #include "devices/glfw_input.h"
 #include "gl/context.h"
 #include "render/present.h"
@@ -233,11 +234,14 @@ Status handle_keys(Session& s, int w, int h) {
     static int n = 0;
     char name[64];
     std::snprintf(name, sizeof name, "screenshot_%04d.png", n++);
-    if (Status st = write_image(name, read_back_buffer(w, h)); !st) return st;
     // Beside it, the state that made it as an override file: the panel's edits, the camera
     // and the probe as this frame drew them, so `render --scene S --overrides THIS` repeats it.
+    // Both appear together or neither does.
     const std::string state = std::string(name).substr(0, std::strlen(name) - 4) + ".overrides.toml";
-    if (Status st = write_file_atomic(state, screenshot_state(*s.tune)); !st) return st;
+    OutputSet shot;
+    if (Status st = stage_image(shot, name, read_back_buffer(w, h)); !st) return st;
+    if (Status st = shot.stage_text(state, screenshot_state(*s.tune)); !st) return st;
+    if (Status st = shot.publish(); !st) return st;
     std::printf("saved %s and %s\n", name, state.c_str());
   }
   return ok_status();

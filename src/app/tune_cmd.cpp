@@ -6,6 +6,7 @@
 
 #include "app/cli_args.h"
 #include "app/commands.h"
+#include "core/output_set.h"
 #include "gl/context.h"
 #include "tune/console.h"
 #include "tune/overrides_file.h"
@@ -37,6 +38,8 @@ options:
   --backend B             auto | egl | osmesa
   --out SHEET.png         the contact sheet (required for sweeps)
   --csv FILE              per-cell values and frame stats
+                          (output directories: each must exist, or only its last
+                          directory may be missing and is created; both files or neither)
   -q, --quiet             no progress output
 
 Console (--console): commands from stdin, one per line: set KEY VALUE, render [N],
@@ -134,6 +137,11 @@ void print_progress(std::size_t done, std::size_t total, const std::string& labe
 }
 
 int run_sweep(const TuneArgs& a) {
+  // Both outputs checked before the sweep and published together after it (or neither).
+  OutputSet outputs;
+  if (Status s = outputs.add(a.out); !s) return fail(s.error(), 1);
+  if (!a.csv.empty())
+    if (Status s = outputs.add(a.csv); !s) return fail(s.error(), 1);
   SweepJob job{a.scene_path, a.overrides, a.axes, {}};
   const bool tty = isatty(STDERR_FILENO);
   auto cells = render_sweep(job, [&](std::size_t done, std::size_t total, const std::string& label) {
@@ -141,9 +149,10 @@ int run_sweep(const TuneArgs& a) {
   });
   if (!cells) return fail(cells.error(), 1);
   const Image sheet = sweep_sheet(a.axes, cells.value());
-  if (Status s = write_image(a.out, sheet); !s) return fail(s.error(), 1);
+  if (Status s = stage_image(outputs, a.out, sheet); !s) return fail(s.error(), 1);
   if (!a.csv.empty())
-    if (Status s = write_file_atomic(a.csv, sweep_csv(a.axes, cells.value())); !s) return fail(s.error(), 1);
+    if (Status s = outputs.stage_text(a.csv, sweep_csv(a.axes, cells.value())); !s) return fail(s.error(), 1);
+  if (Status s = outputs.publish(); !s) return fail(s.error(), 1);
   if (!a.quiet) std::printf("wrote %s (%zu cells, %dx%d)\n", a.out.c_str(), cells->size(), sheet.width, sheet.height);
   return 0;
 }

@@ -9,6 +9,8 @@
 #include <sstream>
 #include <unistd.h>
 
+#include "core/file_io.h"
+
 namespace ps {
 
 namespace {
@@ -103,9 +105,10 @@ Status SampleRecorder::flush() {
     text.swap(pending_);
   }
   if (partial_ == nullptr) {
-    const std::filesystem::path p(path_);
-    std::error_code ec;
-    if (p.has_parent_path()) std::filesystem::create_directories(p.parent_path(), ec);
+    if (Status s = prepare_output_dir(path_); !s) {  // the rule of every output (core/file_io.h)
+      failed_ = true;
+      return s;
+    }
     partial_ = std::fopen(partial_path().c_str(), "wb");
     if (partial_ == nullptr) {
       failed_ = true;
@@ -124,10 +127,8 @@ Status SampleRecorder::close() {
   if (Status s = flush(); !s) return s;
   std::fclose(partial_);
   partial_ = nullptr;
-  std::error_code ec;
-  std::filesystem::rename(partial_path(), path_, ec);
-  if (ec) return make_error(path_ + ": cannot write device log: " + ec.message());
-  return ok_status();
+  // The same publish step as every other output: fsync, rename, fsync of the directory.
+  return rename_durable(partial_path(), path_);
 }
 
 LogDevice::LogDevice(std::vector<DeviceSample> samples, bool interpolate, std::string name)

@@ -28,6 +28,21 @@ double channel_diff(float a, float b) {
   return std::fabs(static_cast<double>(a) - static_cast<double>(b));
 }
 
+// A value read from an 8-bit file is k * (1/255.f); rounding v*255 in double gives k back exactly.
+int level(float v) { return static_cast<int>(std::lround(static_cast<double>(std::clamp(v, 0.0f, 1.0f)) * 255.0)); }
+
+// A [0,1] threshold in whole levels, rounded to nearest: 1/255 and 0.004 -> 1, 0.0078 -> 2.
+// Rounding (not flooring) keeps a threshold written to 4 decimals meaning the level it is
+// closest to. Infinity (no cap) stays infinite.
+double to_levels(float threshold) {
+  if (!std::isfinite(threshold)) return std::numeric_limits<double>::infinity();
+  return static_cast<double>(std::lround(static_cast<double>(threshold) * 255.0));
+}
+
+struct Limits {
+  double fail, hard_fail;  // a channel difference beyond these fails the pixel / the comparison
+};
+
 // Gray+alpha (2) and RGBA (4) images carry alpha last. The diff image keeps that channel but makes
 // it opaque, otherwise viewers show an all-transparent picture wherever alpha matches; an alpha
 // difference is folded into the colour channels instead so it stays visible.
@@ -62,23 +77,31 @@ Result<CompareResult> compare_images(const Image& a, const Image& b, const Compa
   result.diff.channels = a.channels;
   result.diff.pixels.resize(a.pixels.size());
   const int channels = a.channels;
+  const bool levels = a.file_bits == 8 && b.file_bits == 8;
+  result.in_levels = levels;
+  const Limits limits = levels ? Limits{to_levels(options.fail_threshold), to_levels(options.hard_fail_threshold)}
+                               : Limits{options.fail_threshold, options.hard_fail_threshold};
   double sum = 0.0;
   double d[kMaxChannels];
   for (size_t p = 0; p < pixel_count; ++p) {
-    bool failed = false;
+    double worst = 0.0;  // in levels or on [0,1], as `limits`
     for (int c = 0; c < channels; ++c) {
       const size_t i = p * channels + c;
-      d[c] = channel_diff(a.pixels[i], b.pixels[i]);
+      const double diff = levels ? std::abs(level(a.pixels[i]) - level(b.pixels[i]))
+                                 : channel_diff(a.pixels[i], b.pixels[i]);
+      worst = std::max(worst, diff);
+      d[c] = levels ? diff / 255.0 : diff;
       sum += d[c];
-      result.max_abs = std::max(result.max_abs, d[c]);
-      failed = failed || d[c] > options.fail_threshold;
     }
-    if (failed) ++result.failing_pixels;
+    result.max_abs = std::max(result.max_abs, levels ? worst / 255.0 : worst);
+    if (levels) result.max_levels = std::max(result.max_levels, static_cast<int>(worst));
+    if (worst > limits.fail) ++result.failing_pixels;
+    if (worst > limits.hard_fail) ++result.hard_failing_pixels;
     write_diff_pixel(d, channels, &result.diff.pixels[p * channels]);
   }
   result.mean_abs = sum / static_cast<double>(a.pixels.size());
   result.failing_percent = 100.0 * static_cast<double>(result.failing_pixels) / static_cast<double>(pixel_count);
-  result.passed = result.failing_percent <= options.fail_percent;
+  result.passed = result.failing_percent <= options.fail_percent && result.hard_failing_pixels == 0;
   return result;
 }
 

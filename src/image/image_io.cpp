@@ -1,7 +1,7 @@
 // Image files: PNG through libpng (png_io.cpp); every other format through OpenImageIO in the
 // module libps_image_oiio.so, loaded with dlopen on first use (oiio_module.cpp says why). Reads
-// choose by file signature, writes by extension. Writes are atomic: temp file in the same
-// directory + rename.
+// choose by file signature, writes by extension. Writes are atomic (core/output_set.h: a temp
+// file in the same directory, fsync, rename).
 #include <cctype>
 #include <filesystem>
 #include <mutex>
@@ -10,7 +10,6 @@
 #include <vector>
 
 #include <dlfcn.h>
-#include <unistd.h>  // getpid: a per-process temp name so parallel writers never share one
 
 #include "image/image.h"
 #include "image/image_io_internal.h"
@@ -104,7 +103,10 @@ Result<Image> read_image(const std::string& path) {
   return (*module)->read(path);
 }
 
-Status write_image(const std::string& path, const Image& image) {
+namespace {
+
+// Encodes `image` into `file` (a temp file) in the format `path`'s extension names.
+Status encode_image(const std::string& file, const std::string& path, const Image& image) {
   if (Status shape = image_io::check_shape(path, image.width, image.height, image.channels); !shape) {
     return shape;
   }
@@ -112,33 +114,22 @@ Status write_image(const std::string& path, const Image& image) {
     return make_error(path + ": cannot write image: pixel buffer holds " +
                       std::to_string(image.pixels.size()) + " floats, expected width*height*channels");
   }
-  const bool is_png = lower_extension(path) == ".png";
-  const OiioModule* module = nullptr;
-  if (!is_png) {
-    Result<const OiioModule*> loaded = image_io::load_oiio_module(path + ": cannot write image");
-    if (!loaded) return loaded.error();
-    module = *loaded;
-  }
-  const fs::path target(path);
-  std::error_code ec;
-  if (target.has_parent_path()) {
-    fs::create_directories(target.parent_path(), ec);
-    if (ec) return make_error(path + ": cannot create directory: " + ec.message());
-  }
-  // Same directory as the target, so the rename cannot cross file systems and stays atomic.
-  const std::string temp = path + "." + std::to_string(::getpid()) + ".tmp";
-  Status written = is_png ? image_io::write_png(temp, path, image) : module->write(temp, path, image);
-  if (!written) {
-    fs::remove(temp, ec);
-    return written;
-  }
-  fs::rename(temp, target, ec);
-  if (ec) {
-    std::error_code ignored;
-    fs::remove(temp, ignored);
-    return make_error(path + ": cannot move temp file into place: " + ec.message());
-  }
-  return ok_status();
+  if (lower_extension(path) == ".png") return image_io::write_png(file, path, image);
+  Result<const OiioModule*> module = image_io::load_oiio_module(path + ": cannot write image");
+  if (!module) return module.error();
+  return (*module)->write(file, path, image);
+}
+
+}  // namespace
+
+Status stage_image(OutputSet& outputs, const std::string& path, const Image& image) {
+  return outputs.stage(path, [&](const std::string& file) { return encode_image(file, path, image); });
+}
+
+Status write_image(const std::string& path, const Image& image) {
+  OutputSet outputs;
+  if (Status s = stage_image(outputs, path, image); !s) return s;
+  return outputs.publish();
 }
 
 }  // namespace ps

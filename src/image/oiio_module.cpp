@@ -37,6 +37,10 @@ Result<Image> read_file(const std::string& path) {
   image.width = spec.width;
   image.height = spec.height;
   image.channels = spec.nchannels;
+  // 8-bit only if every channel is stored as uint8 (channelformats lists per-channel types).
+  bool all_uint8 = spec.format == OIIO::TypeDesc::UINT8;
+  for (const OIIO::TypeDesc& t : spec.channelformats) all_uint8 = all_uint8 && t == OIIO::TypeDesc::UINT8;
+  image.file_bits = all_uint8 ? 8 : 0;
   image.pixels.resize(static_cast<size_t>(image.width) * image.height * image.channels);
   // Subimage 0, mip level 0, all channels; OIIO converts any stored type to float ([0,1] for 8 bit).
   if (!in->read_image(0, 0, 0, image.channels, OIIO::TypeDesc::FLOAT, image.pixels.data())) {

@@ -255,6 +255,7 @@ Result<Image> read_png(const std::string& path) {
   image.width = width;
   image.height = height;
   image.channels = args.channels;
+  image.file_bits = args.bit_depth == 8 ? 8 : 0;  // after expansion: 8 or 16
   image.pixels.resize(static_cast<size_t>(width) * height * args.channels);
   std::vector<png_byte> raw(args.row_bytes * (args.interlaced ? args.height : 1));
   std::vector<png_bytep> rows;

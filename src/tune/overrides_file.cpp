@@ -6,8 +6,6 @@
 #include <cstring>
 #include <filesystem>
 #include <fstream>
-#include <fcntl.h>
-#include <unistd.h>
 
 namespace ps {
 
@@ -73,36 +71,6 @@ Result<std::vector<std::string>> read_overrides(const std::string& path) {
     out.push_back(trim(t.substr(0, eq)) + "=" + trim(t.substr(eq + 1)));
   }
   return out;
-}
-
-Status write_file_atomic(const std::string& path, const std::string& text) {
-  const fs::path p(path);
-  std::error_code ec;
-  if (p.has_parent_path()) fs::create_directories(p.parent_path(), ec);
-  const std::string tmp = path + "." + std::to_string(::getpid()) + ".tmp";
-  const int fd = ::open(tmp.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0644);
-  if (fd < 0) return make_error(path + ": cannot write: " + std::strerror(errno));
-  std::size_t done = 0;
-  while (done < text.size()) {
-    const ssize_t n = ::write(fd, text.data() + done, text.size() - done);
-    if (n < 0 && errno == EINTR) continue;
-    if (n <= 0) {
-      const std::string why = std::strerror(errno);
-      ::close(fd);
-      ::unlink(tmp.c_str());
-      return make_error(path + ": cannot write: " + why);
-    }
-    done += static_cast<std::size_t>(n);
-  }
-  // fsync before the rename: otherwise a power cut can leave the renamed file empty.
-  const bool synced = ::fsync(fd) == 0;
-  ::close(fd);
-  if (!synced || std::rename(tmp.c_str(), path.c_str()) != 0) {
-    const std::string why = std::strerror(errno);
-    ::unlink(tmp.c_str());
-    return make_error(path + ": cannot write: " + why);
-  }
-  return ok_status();
 }
 
 }  // namespace ps

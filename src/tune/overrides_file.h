@@ -28,9 +28,4 @@ std::string format_overrides(const std::map<std::string, std::string>& edits,
 // Errors: "<path>: cannot open override file: <reason>", "<path>:<line>: expected KEY = VALUE".
 Result<std::vector<std::string>> read_overrides(const std::string& path);
 
-// Writes `text` to "<path>.<pid>.tmp", flushes it to disk (fsync) and renames it over `path`:
-// a reader (or a crash, or SIGKILL mid-write) sees the old file or the complete new one,
-// never a partial file. Creates missing parent directories.
-Status write_file_atomic(const std::string& path, const std::string& text);
-
 }  // namespace ps

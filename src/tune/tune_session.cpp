@@ -2,6 +2,7 @@
 
 #include <filesystem>
 
+#include "core/file_io.h"
 #include "gl/shader.h"
 #include "scene/scene_io.h"
 #include "tune/overrides_file.h"

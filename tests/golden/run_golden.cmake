@@ -2,7 +2,7 @@
 #
 #   cmake -DEXE=<pseudoshadow> -DSCENE=<scene file> -DBACKEND=egl|osmesa -DSIZE=128x128 -DFRAMES=3
 #         -DGOLDEN=<golden_images/x.png> -DOUT_DIR=<dir> [-DFAIL=<T>] [-DFAILPERCENT=<P>]
-#         [-DEXTRA_ARGS=<args>] -P run_golden.cmake
+#         [-DHARDFAIL=<H>] [-DEXTRA_ARGS=<args>] -P run_golden.cmake
 #
 # 1. renders the scene to OUT_DIR/<name>.actual.png (<name> = GOLDEN's file name minus extension);
 # 2. UPDATE_GOLDEN=1 in the environment: copies the actual image over GOLDEN (only if its pixels
@@ -11,8 +11,9 @@
 #    commit, saying why;
 # 3. otherwise compares GOLDEN (A) with the actual image (B) through `${EXE} compare`. Pass: the
 #    actual and diff images are deleted. Fail: both are kept and named in the message.
-# FAIL (max channel difference of a passing pixel, [0,1] scale) and FAILPERCENT (allowed % of
-# failing pixels) default to compare's own defaults (1/255 and 0) when not given. EXTRA_ARGS is a
+# FAIL (max channel difference of a passing pixel, [0,1] scale), FAILPERCENT (allowed % of
+# failing pixels) and HARDFAIL (no pixel may differ by more, whatever FAILPERCENT allows) default
+# to compare's own defaults (1/255, 0, no cap) when not given. EXTRA_ARGS is a
 # CMake list ("--seed;3") or, without semicolons, a shell-style string ("--seed 3").
 cmake_minimum_required(VERSION 3.25)
 
@@ -46,6 +47,9 @@ if(DEFINED FAIL AND NOT "${FAIL}" STREQUAL "")
 endif()
 if(DEFINED FAILPERCENT AND NOT "${FAILPERCENT}" STREQUAL "")
   list(APPEND _limits --failpercent "${FAILPERCENT}")
+endif()
+if(DEFINED HARDFAIL AND NOT "${HARDFAIL}" STREQUAL "")
+  list(APPEND _limits --hardfail "${HARDFAIL}")
 endif()
 
 # ---- 1. render ----

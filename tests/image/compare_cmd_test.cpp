@@ -57,7 +57,8 @@ class CompareCmdTest : public ::testing::Test {
 TEST_F(CompareCmdTest, IdenticalPassesWithExitZero) {
   CmdRun r = run_cmd({golden(), same()});
   EXPECT_EQ(r.code, 0) << r.err;
-  EXPECT_EQ(r.out.rfind("compare: PASS  max_abs=0 mean_abs=0 failing=0 (0.00%)  [limits: fail=", 0), 0u) << r.out;
+  EXPECT_EQ(r.out.rfind("compare: PASS  max_abs=0 mean_abs=0 failing=0 (0.00%) max_levels=0  [limits: fail=", 0), 0u)
+      << r.out;
   EXPECT_TRUE(r.err.empty()) << r.err;
 }
 
@@ -116,6 +117,23 @@ TEST_F(CompareCmdTest, HelpExitsZero) {
   EXPECT_NE(r.out.find("--failpercent"), std::string::npos);
   EXPECT_NE(r.out.find("Exit codes"), std::string::npos);
   EXPECT_EQ(run_cmd({"-h"}).code, 0);
+}
+
+TEST_F(CompareCmdTest, HardFailFailsWhateverTheBudget) {
+  // changed.png: one pixel of 100 off by 0.1 (26 levels), within a 1.5 % budget.
+  EXPECT_EQ(run_cmd({golden(), changed(), "--fail", "0.05", "--failpercent", "1.5"}).code, 0);
+  CmdRun r = run_cmd({golden(), changed(), "--fail", "0.05", "--failpercent", "1.5", "--hardfail", "0.05"});
+  EXPECT_EQ(r.code, 1) << r.err;
+  EXPECT_NE(r.out.find("beyond_hardfail=1"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("hardfail=0.05]"), std::string::npos) << r.out;
+  EXPECT_EQ(run_cmd({golden(), changed(), "--hardfail", "0.2", "--failpercent", "1.5"}).code, 0);
+  EXPECT_EQ(run_cmd({golden(), same(), "--hardfail", "2"}).code, 2);  // 0..255 scale by mistake
+}
+
+TEST_F(CompareCmdTest, EightBitInputsReportLevels) {
+  CmdRun r = run_cmd({golden(), changed(), "--fail", "0.05"});
+  // PNG stores v*255+0.5 truncated: 0.5 -> 128, 0.6 -> 153 (153.5 truncated): 25 levels.
+  EXPECT_NE(r.out.find("max_levels=25"), std::string::npos) << r.out;
 }
 
 }  // namespace

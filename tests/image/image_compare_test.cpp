@@ -1,5 +1,8 @@
 // ImageCompareTest: thresholds, failing-pixel budget, size mismatch, diff image. No GL needed.
 #include <cmath>
+#include <filesystem>
+#include <string>
+#include <vector>
 
 #include <gtest/gtest.h>
 
@@ -90,6 +93,112 @@ TEST(ImageCompareTest, NanOnOneSideFailsAndOnBothSidesMatches) {
   ASSERT_TRUE(r.ok());
   EXPECT_FALSE(r->passed);
   EXPECT_EQ(r->failing_pixels, 1);
+}
+
+// 8-bit files compare in whole levels. Written and read back through PNG so the values are what
+// read_image makes of real 8-bit files (k * (1/255.f)), where float rounding alone used to fail
+// 7 of the 255 one-level pairs.
+class EightBitCompareTest : public ::testing::Test {
+ protected:
+  // A 1-row gray PNG whose pixel x holds level first + x (x < count), read back.
+  Image levels_png(const char* name, int first, int count) {
+    Image im = test::constant_image(count, 1, 1, 0.0f);
+    for (int x = 0; x < count; ++x) im.at(x, 0, 0) = static_cast<float>(first + x) / 255.0f;
+    const std::string path = (dir_ / name).string();
+    EXPECT_TRUE(write_image(path, im).ok());
+    Result<Image> back = read_image(path);
+    EXPECT_TRUE(back.ok()) << back.error().message;
+    // Independent check that the file holds the intended levels (0.5: halfway to a neighbour).
+    for (int x = 0; x < count; ++x) EXPECT_NEAR(back->at(x, 0, 0) * 255.0f, first + x, 0.5f) << x;
+    EXPECT_EQ(back->file_bits, 8);
+    return back.value();
+  }
+  std::filesystem::path dir_ = test::scratch_dir();
+};
+
+TEST_F(EightBitCompareTest, EveryOneLevelPairPassesAtTheDefault) {
+  const Image a = levels_png("a.png", 0, 255);  // v = 0..254
+  const Image b = levels_png("b.png", 1, 255);  // v + 1
+  Result<CompareResult> r = compare_images(a, b, CompareOptions{});
+  ASSERT_TRUE(r.ok());
+  EXPECT_TRUE(r->in_levels);
+  EXPECT_EQ(r->failing_pixels, 0);
+  EXPECT_EQ(r->max_levels, 1);
+  EXPECT_TRUE(r->passed);
+  // The same values compared as floats fail exactly the pairs float rounding of k/255 puts
+  // beyond 1/255 (found by hand: v = 2, 5, 11, 23, 47, 95, 191) - the reason levels exist.
+  Image fa = a, fb = b;
+  fa.file_bits = fb.file_bits = 0;
+  Result<CompareResult> f = compare_images(fa, fb, CompareOptions{});
+  ASSERT_TRUE(f.ok());
+  std::vector<int> failing;
+  for (int v = 0; v < 255; ++v) {
+    Result<CompareResult> one = compare_images(test::constant_image(1, 1, 1, fa.at(v, 0, 0)),
+                                               test::constant_image(1, 1, 1, fb.at(v, 0, 0)), CompareOptions{});
+    if (!one->passed) failing.push_back(v);
+  }
+  EXPECT_EQ(failing, (std::vector<int>{2, 5, 11, 23, 47, 95, 191}));
+  EXPECT_EQ(f->failing_pixels, 7);
+}
+
+TEST_F(EightBitCompareTest, EveryTwoLevelPairFailsAtTheDefault) {
+  const Image a = levels_png("a.png", 0, 254);  // v = 0..253
+  const Image b = levels_png("b.png", 2, 254);  // v + 2
+  Result<CompareResult> r = compare_images(a, b, CompareOptions{});
+  ASSERT_TRUE(r.ok());
+  EXPECT_EQ(r->failing_pixels, 254);
+  EXPECT_EQ(r->max_levels, 2);
+  EXPECT_FALSE(r->passed);
+}
+
+TEST_F(EightBitCompareTest, ThresholdsRoundToTheNearestLevel) {
+  const Image a = levels_png("a.png", 0, 254);
+  const Image one = levels_png("one.png", 1, 254);
+  const Image two = levels_png("two.png", 2, 254);
+  auto passes = [](const Image& x, const Image& y, float t) {
+    return compare_images(x, y, CompareOptions{.fail_threshold = t})->passed;
+  };
+  EXPECT_FALSE(passes(a, one, 0.0f));     // 0 levels
+  EXPECT_FALSE(passes(a, one, 0.0019f));  // 0.48 -> 0 levels
+  EXPECT_TRUE(passes(a, one, 0.002f));    // 0.51 -> 1 level
+  EXPECT_TRUE(passes(a, one, 0.004f));    // 1.02 -> 1 level
+  EXPECT_FALSE(passes(a, two, 0.004f));
+  EXPECT_TRUE(passes(a, two, 0.0078f));   // 1.99 -> 2 levels
+}
+
+TEST_F(EightBitCompareTest, HardFailCapsEveryPixelWhateverTheBudget) {
+  // The golden case it exists for: 23 of 16384 pixels (0.14 %) changed by 24 levels pass a
+  // 0.5 % budget at 1 level, and must not.
+  Image a = test::constant_image(128, 128, 3, 100.0f / 255.0f);
+  Image b = a;
+  for (int i = 0; i < 23; ++i) b.at(i * 5, i * 3, 1) = 124.0f / 255.0f;
+  const std::string pa = (dir_ / "a.png").string(), pb = (dir_ / "b.png").string();
+  ASSERT_TRUE(write_image(pa, a).ok());
+  ASSERT_TRUE(write_image(pb, b).ok());
+  const Image fa = read_image(pa).value(), fb = read_image(pb).value();
+  CompareOptions budget{.fail_threshold = 0.004f, .fail_percent = 0.5};
+  Result<CompareResult> r = compare_images(fa, fb, budget);
+  EXPECT_TRUE(r->passed) << "without a cap the budget hides the change";
+  EXPECT_EQ(r->failing_pixels, 23);
+  budget.hard_fail_threshold = 4.0f / 255.0f;
+  r = compare_images(fa, fb, budget);
+  EXPECT_FALSE(r->passed);
+  EXPECT_EQ(r->hard_failing_pixels, 23);
+  budget.hard_fail_threshold = 24.0f / 255.0f;  // a difference AT the cap does not fail
+  EXPECT_TRUE(compare_images(fa, fb, budget)->passed);
+}
+
+TEST(ImageCompareTest, HardFailOnFloatImages) {
+  const Image a = test::constant_image(10, 10, 1, 0.5f);
+  Image b = a;
+  b.at(1, 1, 0) = 0.75f;  // exactly representable: a 0.25 difference
+  CompareOptions o{.fail_threshold = 0.0f, .fail_percent = 100.0, .hard_fail_threshold = 0.25f};
+  EXPECT_TRUE(compare_images(a, b, o)->passed);
+  o.hard_fail_threshold = 0.2f;
+  Result<CompareResult> r = compare_images(a, b, o);
+  EXPECT_FALSE(r->passed);
+  EXPECT_FALSE(r->in_levels);
+  EXPECT_EQ(r->hard_failing_pixels, 1);
 }
 
 }  // namespace

@@ -72,10 +72,16 @@ TEST(ImageIoTest, ReplacingAFileIsAtomicAndLeavesNoTempFile) {
   for (float v : back->pixels) EXPECT_EQ(v, 1.0f);
 }
 
-TEST(ImageIoTest, WriteCreatesMissingDirectories) {
-  const fs::path path = test::scratch_dir() / "a" / "b" / "c.exr";
-  ASSERT_TRUE(write_image(path.string(), test::constant_image(3, 2, 1, 0.25f)).ok());
-  EXPECT_TRUE(fs::exists(path));
+TEST(ImageIoTest, WriteCreatesOnlyAMissingLastDirectory) {
+  const fs::path dir = test::scratch_dir();
+  ASSERT_TRUE(write_image((dir / "a" / "c.exr").string(), test::constant_image(3, 2, 1, 0.25f)).ok());
+  EXPECT_TRUE(fs::exists(dir / "a" / "c.exr"));
+  // Two missing levels: a typo in a parent, never a mkdir -p.
+  Status deep = write_image((dir / "x" / "y" / "c.png").string(), test::constant_image(3, 2, 1, 0.25f));
+  ASSERT_FALSE(deep.ok());
+  EXPECT_NE(deep.error().message.find((dir / "x").string() + " does not exist"), std::string::npos)
+      << deep.error().message;
+  EXPECT_FALSE(fs::exists(dir / "x"));
 }
 
 TEST(ImageIoTest, ReadMissingFileNamesThePath) {

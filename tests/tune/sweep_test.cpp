@@ -1,6 +1,7 @@
 // Sweep specs, cell enumeration, labels and override files (no GL).
 #include <gtest/gtest.h>
 
+#include "core/file_io.h"
 #include "tune/overrides_file.h"
 #include "tune/sweep.h"
 
