@@ -3,6 +3,7 @@
 
 #include <array>
 #include <cstring>
+#include <string>
 
 #include "gl/context.h"
 #include "gl/gl.h"
@@ -15,18 +16,28 @@ using ps::gl::Backend;
 
 class ContextGLTest : public ps::test::GlTest {};
 
-TEST_P(ContextGLTest, Is45CoreOnLlvmpipe) {
+// Any driver: at least the 4.5 core profile the renderer asks for (a GPU driver may hand out a
+// 4.6 context for that request), and a renderer string to report in --stats.
+TEST_P(ContextGLTest, IsAtLeast45Core) {
   EXPECT_EQ(context().backend(), GetParam());
   EXPECT_TRUE(ps::gl::gl_loaded());
   GLint major = 0, minor = 0, profile = 0;
   glGetIntegerv(GL_MAJOR_VERSION, &major);
   glGetIntegerv(GL_MINOR_VERSION, &minor);
   glGetIntegerv(GL_CONTEXT_PROFILE_MASK, &profile);
-  EXPECT_EQ(major * 10 + minor, 45);
+  EXPECT_GE(major * 10 + minor, 45);
   EXPECT_NE(profile & GL_CONTEXT_CORE_PROFILE_BIT, 0);
-  EXPECT_NE(context().renderer().find("llvmpipe"), std::string::npos) << context().renderer();
-  EXPECT_EQ(context().version().rfind("4.5", 0), 0u) << context().version();
+  EXPECT_FALSE(context().renderer().empty());
+  EXPECT_EQ(context().version().rfind(std::to_string(major) + "." + std::to_string(minor), 0), 0u)
+      << context().version();
   EXPECT_EQ(glGetError(), static_cast<GLenum>(GL_NO_ERROR));
+}
+
+// The version llvmpipe reports is part of the stack docs/gl-stack.md describes: exactly 4.5.
+// Only llvmpipe's number is known, so other drivers skip.
+TEST_P(ContextGLTest, LlvmpipeIsExactly45) {
+  if (!ps::test::is_llvmpipe(context())) GTEST_SKIP() << "not llvmpipe: " << context().renderer();
+  EXPECT_EQ(context().version().rfind("4.5", 0), 0u) << context().version();
 }
 
 TEST_P(ContextGLTest, ClearRgba32fFboReadsBackExactly) {

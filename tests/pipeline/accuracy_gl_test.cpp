@@ -217,10 +217,14 @@ void check(const char* name, const Errors& e) {
   // 2.2e-4 mm; 1e-3 mm is 0.5 % of a texel.
   EXPECT_LT(e.distance_texel_max, 1e-3);
   EXPECT_LT(e.distance_texel_max, 0.5 * e.texel_mm);
-  // Reference normal: the GPU mean is a power-of-two RGBA32F mip chain (exact mean on llvmpipe).
+  // Reference normal: the GPU mean is a power-of-two RGBA32F mip chain, against the double
+  // mean of the ray-cast normals; measured <= 0.023 deg (the mesh), 0.1 deg is ~4x that.
   EXPECT_LT(e.normal_deg, 0.1);
-  // Displacement: RGBA32F mip average of (w disp, w) vs a double sum over the same AOVs.
-  EXPECT_LT(e.displacement_rel, 0.01);
+  // Displacement: per-pixel float32 weights (exp/log) summed per row in float by a compute
+  // pass (then over rows in double), vs a double sum over the same AOVs: float rounding only,
+  // measured <= 7.1e-8 of the max penetration (flat 6.5e-8, tilted 5.6e-8, sphere 8.3e-9,
+  // mesh 7.1e-8). 3e-7 is ~4x that; a weight exponent off by one errs by 2.8e-3 to 7.4e-3.
+  EXPECT_LT(e.displacement_rel, 3e-7);
   EXPECT_LT(e.max_pen_abs, 1e-6);  // atomicMax over float bits is exact
 }
 

@@ -53,6 +53,52 @@ TEST(PlanTest, UntexturedMaterialCompilesGaborOut) {
   EXPECT_FALSE(p.surface_textured[0]);
 }
 
+// The influence distance is a strict bound (d < influence shadows; the shader's curve is 0 at
+// d >= influence too): probes 0.01 mm either side of it, and exactly on it. 0.01 mm is far above
+// double rounding at 50 mm (~1e-14 mm) and far below any other scale of the scene.
+TEST(PlanTest, InfluenceDistanceBoundary) {
+  const Scene s = test::flat_plane_scene(10.0);
+  const double influence = s.materials[0].influence_distance_mm;
+  ASSERT_EQ(influence, 50.0);  // the default the numbers below are read against
+  const double r = s.probe.radius_mm;
+  const auto plan_at = [&](double gap_mm) {
+    return make_plan(s, plane_bounds(), {{0, 0, r + gap_mm}, r}, make_plane_frame({0, 0, 1}), 256);
+  };
+  const FramePlan inside = plan_at(influence - 0.01);
+  EXPECT_NEAR(inside.surface_distance_mm[0], influence - 0.01, 1e-12);
+  EXPECT_TRUE(inside.shadow_active);
+  EXPECT_TRUE(inside.surface_shadow[0]);
+  EXPECT_TRUE(inside.surface_textured[0]);
+  EXPECT_TRUE(inside.skipped.empty());
+  for (const double gap : {influence, influence + 0.01}) {
+    const FramePlan outside = plan_at(gap);
+    EXPECT_FALSE(outside.shadow_active) << "gap " << gap << " mm";
+    EXPECT_FALSE(outside.surface_shadow[0]) << "gap " << gap << " mm";
+    EXPECT_FALSE(outside.surface_textured[0]) << "gap " << gap << " mm";
+  }
+  // The same boundary for a material with its own, shorter influence distance.
+  Scene near = s;
+  near.materials[0].influence_distance_mm = 3.0;
+  const auto near_plan = [&](double gap_mm) {
+    return make_plan(near, plane_bounds(), {{0, 0, r + gap_mm}, r}, make_plane_frame({0, 0, 1}), 256);
+  };
+  EXPECT_TRUE(near_plan(2.99).surface_shadow[0]);
+  EXPECT_FALSE(near_plan(3.01).surface_shadow[0]);
+}
+
+// A probe beside the plane's edge, below its top: the footprint test of sunk_below() reaches
+// the influence distance sideways (probe radius + influence from the box's projection).
+TEST(PlanTest, SunkProbeBesideTheEdgeUsesTheInfluenceDistance) {
+  const Scene s = test::flat_plane_scene(-20.0);
+  const double influence = s.materials[0].influence_distance_mm, r = s.probe.radius_mm;
+  const auto plan_at = [&](double x) {
+    return make_plan(s, plane_bounds(), {{x, 0, -20}, r}, make_plane_frame({0, 0, 1}), 256);
+  };
+  // Footprint disc edge to the plane's edge (x = 100): x - 100 - r.
+  EXPECT_TRUE(plan_at(100.0 + r + influence - 0.01).surface_shadow[0]);
+  EXPECT_FALSE(plan_at(100.0 + r + influence + 0.01).surface_shadow[0]);
+}
+
 TEST(PlanTest, SphereAabbDistance) {
   EXPECT_DOUBLE_EQ(distance_sphere_aabb({{0, 0, 10}, 3}, {{-1, -1, -1}, {1, 1, 1}}), 6.0);
   EXPECT_DOUBLE_EQ(distance_sphere_aabb({{0, 0, 0}, 3}, {{-1, -1, -1}, {1, 1, 1}}), 0.0);

@@ -1,13 +1,15 @@
-// Strategy "auto" on every textured material the project ships: either a baked tile whose
-// Hermite lookup stays within the bar of 1 % sigma RMS of the naive texture, or no tile
-// (the renderer then evaluates the naive sum and says so in the stats). The check here is
-// independent of the one choose_gabor_tile() made: another 50 x 50 set of points, other offsets,
-// the same CPU twins in double (so this is the method's error, not float rounding). The numbers
-// are printed for docs/benchmarks.md.
+// Strategy "auto" on every textured material the project ships, against the outcome measured
+// for it (kExpected): a baked tile (which one), or the naive sum because no tile meets the bar
+// or none is long enough. Each outcome's reason is checked independently of the one
+// choose_gabor_tile() made: the error on another 50 x 50 set of points with other offsets (the
+// same CPU twins in double, so this is the method's error, not float rounding), the period
+// bound from the tile's definition. The numbers are printed for docs/benchmarks.md.
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
+#include <iterator>
+#include <string>
 
 #include <gtest/gtest.h>
 
@@ -33,46 +35,154 @@ double independent_rms(const GaborParams& g, const GaborSetup& s, const GaborBak
   return std::sqrt(sum2 / (kN * kN));
 }
 
-TEST(GaborBakedScenesTest, AutoBakesEveryShippedMaterialWithinOnePercentOrFallsBack) {
-  int baked = 0, naive = 0;
-  for (const auto& entry : std::filesystem::directory_iterator(std::string(PS_SOURCE_DIR) + "/scenes")) {
-    if (entry.path().extension() != ".toml") continue;
-    auto scene = load_scene(entry.path().string(), {});
-    ASSERT_TRUE(scene.ok()) << scene.error().message;
-    const std::uint32_t seed = scene->render.seed;
-    for (Material m : scene->materials) {
-      if (!m.textured) continue;
-      m.gabor.strategy = GaborParams::Strategy::kAuto;
-      const GaborSetup s = make_gabor_setup(m.gabor);
-      // The renderer's minimum period: the shadow window, 2 x the probe's bounding radius (a mesh
-      // probe's bounds need the mesh loaded; 0 then, which only loosens the check).
-      const double window = scene->probe.shape == ProbeShape::kMesh ? 0.0 : 2.0 * probe_bounds(scene->probe).radius;
-      const GaborStrategyChoice c = choose_gabor_tile(m.gabor, s, seed, window);
-      if (!c.plan.ok) {
-        std::printf("%-34s %-22s naive (best tile RMS %.4f sigma, longest period %.1f mm, shadow %.1f mm)\n",
-                    entry.path().filename().c_str(), m.name.c_str(), c.rms_vs_naive, c.best_period_mm, window);
-        // Falling back is only right when no tile met the bar, none fits, or it is too short.
-        EXPECT_TRUE(c.rms_vs_naive < 0.0 || c.rms_vs_naive > kAutoBakeSelectRms || c.best_period_mm < window)
-            << entry.path();
-        ++naive;
-        continue;
+// What "auto" must do with each shipped scene's material, measured (docs/benchmarks.md) and
+// written down here, so a change of the selection shows as a changed outcome rather than a
+// restatement of the selection's own conditions.
+enum class Outcome {
+  kBaked,        // a tile: `linear` and `samples` name which one (the first try that passes)
+  kNaiveError,   // every tile long enough misses the 0.9 % bar
+  kNaivePeriod,  // no tile's period reaches the shadow's width
+};
+struct Expected {
+  const char* scene;
+  Outcome outcome;
+  bool linear = false;
+  int samples = 0;  // per lambda_min
+};
+// The tries of "auto", in order (reference/gabor.h): bilinear 24, 32; Hermite 16, 32.
+struct Try {
+  bool linear;
+  int samples;
+};
+constexpr Try kTries[] = {{true, 24}, {true, 32}, {false, 16}, {false, 32}};
+
+const Expected kExpected[] = {
+    {"default.toml", Outcome::kBaked, true, 24},
+    {"heightfield.toml", Outcome::kBaked, true, 32},
+    {"table4_1_a.toml", Outcome::kNaiveError},
+    {"table4_1_b.toml", Outcome::kBaked, true, 24},
+    {"table4_1_c.toml", Outcome::kBaked, false, 16},
+    {"table4_1_d.toml", Outcome::kNaiveError},
+    {"table4_1_e.toml", Outcome::kNaiveError},
+    {"table4_1_f.toml", Outcome::kNaiveError},
+    {"table5_1_construction_paper.toml", Outcome::kBaked, true, 24},
+    {"table5_1_monkey_head.toml", Outcome::kNaiveError},
+    {"table5_1_sandpaper.toml", Outcome::kBaked, true, 32},
+    // lambda_min 0.1 mm: a 2048-texel tile at 16 samples holds 12.8 mm, the shadow is 16 mm.
+    {"table5_1_wood.toml", Outcome::kNaivePeriod},
+    // Capsule r 6 mm, 40 mm long: a 52 mm shadow; lambda_min 0.4 mm gives at most 51.2 mm.
+    {"torus_capsule.toml", Outcome::kNaivePeriod},
+};
+
+const Expected* expected_for(const std::string& scene_file) {
+  for (const Expected& e : kExpected)
+    if (scene_file == e.scene) return &e;
+  return nullptr;
+}
+
+GaborBakePlan plan_for(const GaborParams& g, const GaborSetup& s, Try t) {
+  GaborParams tried = g;
+  tried.bake_samples_per_lambda = t.samples;
+  GaborBakePlan plan = make_gabor_bake_plan(tried, s);
+  plan.linear = t.linear;
+  return plan;
+}
+
+// The longest period any tile of "auto" can have, from the definition (reference/gabor.h):
+// at most kMaxBakeTexels texels of at most lambda_min / samples each, and the fewest samples
+// tried is 16. Independent of make_gabor_bake_plan()'s rounding to whole, even cells.
+double longest_possible_period_mm(const GaborParams& g) {
+  return kMaxBakeTexels * std::min(g.lambda_min_mm, g.lambda_max_mm) / 16.0;
+}
+
+void check_material(const std::string& file, const Scene& scene, Material m, const Expected& want,
+                    int& baked) {
+  const std::uint32_t seed = scene.render.seed;
+  m.gabor.strategy = GaborParams::Strategy::kAuto;
+  const GaborSetup s = make_gabor_setup(m.gabor);
+  // The renderer's minimum period: the shadow window, 2 x the probe's bounding radius (every
+  // shipped scene's probe is analytic, so no mesh is needed for its bounds).
+  ASSERT_NE(scene.probe.shape, ProbeShape::kMesh) << file;
+  const double window = 2.0 * probe_bounds(scene.probe).radius;
+  const GaborStrategyChoice c = choose_gabor_tile(m.gabor, s, seed, window);
+  switch (want.outcome) {
+    case Outcome::kNaivePeriod: {
+      std::printf("%-34s naive: longest possible period %.1f mm < shadow %.1f mm\n", file.c_str(),
+                  longest_possible_period_mm(m.gabor), window);
+      EXPECT_FALSE(c.plan.ok) << file << ": no tile can be long enough, yet one was chosen";
+      EXPECT_LT(longest_possible_period_mm(m.gabor), window) << file << ": the stated reason no longer holds";
+      break;
+    }
+    case Outcome::kNaiveError: {
+      EXPECT_FALSE(c.plan.ok) << file << ": expected the naive sum, got a tile of period " << c.plan.period_mm;
+      // The reason, on this test's own 2500 points: the tiles long enough are near or over the
+      // bar, not far inside it. The selection refused them on estimates > 0.9 % from its 4096
+      // points; estimates scatter by 10-20 % between point sets, and here they measure 0.78 %
+      // (table4_1_d, Hermite 32) to 1.28 %. A tile refused while it measures below 0.6 % would
+      // be a selection that refuses good tiles.
+      double best = 1e30;
+      for (const Try t : kTries) {
+        const GaborBakePlan plan = plan_for(m.gabor, s, t);
+        if (!plan.ok || plan.period_mm < window) continue;
+        const double rms = independent_rms(m.gabor, s, plan, seed);
+        std::printf("%-34s naive: %s %d tile RMS %.4f sigma\n", file.c_str(), t.linear ? "bilinear" : "Hermite",
+                    t.samples, rms);
+        best = std::min(best, rms);
       }
+      EXPECT_LT(best, 1e30) << file << ": no tile is long enough, so the reason is the period";
+      EXPECT_GT(best, 0.006) << file << ": a tile far within the bar was refused";
+      break;
+    }
+    case Outcome::kBaked: {
+      ASSERT_TRUE(c.plan.ok) << file << ": expected a tile, got the naive sum (estimate " << c.rms_vs_naive << ")";
+      const Try* chosen = nullptr;
+      for (const Try& t : kTries) {
+        const GaborBakePlan p = plan_for(m.gabor, s, t);
+        if (p.ok && p.linear == c.plan.linear && p.texels == c.plan.texels && p.period_cells == c.plan.period_cells) {
+          chosen = &t;
+          break;
+        }
+      }
+      ASSERT_NE(chosen, nullptr) << file << ": the chosen tile is none of the tries";
+      EXPECT_EQ(chosen->linear, want.linear) << file;
+      EXPECT_EQ(chosen->samples, want.samples) << file;
       const double rms = independent_rms(m.gabor, s, c.plan, seed);
-      std::printf("%-34s %-22s tile %4d^2, period %5.1f mm (%d cells), RMS vs naive %.4f sigma (chosen on %.4f)\n",
-                  entry.path().filename().c_str(), m.name.c_str(), c.plan.texels, c.plan.period_mm,
-                  c.plan.period_cells, rms, c.rms_vs_naive);
+      std::printf("%-34s tile %s %d: %4d^2, period %5.1f mm (%d cells), shadow %.1f mm, RMS vs naive %.4f "
+                  "sigma (chosen on %.4f)\n",
+                  file.c_str(), chosen->linear ? "bilinear" : "Hermite", chosen->samples, c.plan.texels,
+                  c.plan.period_mm, c.plan.period_cells, window, rms, c.rms_vs_naive);
       EXPECT_LE(c.plan.texels, kMaxBakeTexels);
       EXPECT_GE(c.plan.period_mm, window);
       // The selection asked for <= 0.9 % on its 4096 points (kAutoBakeSelectRms); another set of
       // 2500 points scatters by ~10-20 % around that for sparse textures, so 1.1 % here. A
       // systematic miss (a wrong plan, a wrapped cell inside the central period, a lookup that
       // disagrees with the bake) shows as several percent.
-      EXPECT_LT(rms, 0.011) << entry.path() << " material " << m.name;
+      EXPECT_LT(rms, 0.011) << file;
       ++baked;
+      break;
     }
   }
-  std::printf("%d materials baked, %d naive\n", baked, naive);
-  EXPECT_GT(baked, 5);
+}
+
+TEST(GaborBakedScenesTest, AutoChoosesTheMeasuredTileForEveryShippedMaterial) {
+  int baked = 0, textured = 0;
+  for (const auto& entry : std::filesystem::directory_iterator(std::string(PS_SOURCE_DIR) + "/scenes")) {
+    if (entry.path().extension() != ".toml") continue;
+    const std::string file = entry.path().filename().string();
+    auto scene = load_scene(entry.path().string(), {});
+    ASSERT_TRUE(scene.ok()) << scene.error().message;
+    for (const Material& m : scene->materials) {
+      if (!m.textured) continue;
+      ++textured;
+      const Expected* want = expected_for(file);
+      ASSERT_NE(want, nullptr) << file << " is not in kExpected: measure it and add it";
+      ASSERT_EQ(scene->materials.size(), 1u) << file << ": kExpected holds one material per scene";
+      check_material(file, *scene, m, *want, baked);
+    }
+  }
+  std::printf("%d of %d textured materials baked\n", baked, textured);
+  EXPECT_EQ(textured, static_cast<int>(std::size(kExpected)));
+  EXPECT_EQ(baked, 6);  // docs/benchmarks.md
 }
 
 }  // namespace

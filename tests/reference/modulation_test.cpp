@@ -22,6 +22,12 @@ TEST(ShadowIntensityTest, MatchesThesisCurve) {
   // Just above contact the curve drops to 0.1 + 0.9/1.25 = 0.82: the jump that tells
   // "touching" from "close" (thesis §4.3.2).
   EXPECT_NEAR(shadow_intensity(m, 1e-9), 0.82, 1e-9);
+  // The jump sits exactly at d = 0: slightly below is still contact, slightly above is not
+  // (a threshold moved by a hundredth of a millimetre either way shows here).
+  EXPECT_EQ(shadow_intensity(m, -1e-9), 1.0);
+  EXPECT_EQ(shadow_intensity(m, -0.005), 1.0);
+  EXPECT_NEAR(shadow_intensity(m, 0.005), 0.1 + 0.9 / 1.255, 1e-15);
+  EXPECT_EQ(shadow_intensity(m, -0.0), 1.0);
   EXPECT_NEAR(shadow_intensity(m, 2.0), 0.1 + 0.9 / 3.25, 1e-15);
   EXPECT_EQ(shadow_intensity(m, 50.0), 0.0);  // at the influence distance: gone
   EXPECT_EQ(shadow_intensity(m, std::nan("")), 0.0);

@@ -13,6 +13,10 @@ void GlTest::SetUp() {
 
 void GlTest::TearDown() { context_.reset(); }
 
+bool is_llvmpipe(const ps::gl::Context& context) {
+  return context.renderer().find("llvmpipe") != std::string::npos;
+}
+
 std::string backend_param_name(const ::testing::TestParamInfo<ps::gl::Backend>& info) {
   return ps::gl::backend_name(info.param);
 }

@@ -32,6 +32,11 @@ class GlTest : public ::testing::TestWithParam<ps::gl::Backend> {
   std::unique_ptr<ps::gl::Context> context_;
 };
 
+// True when `context` renders with Mesa's llvmpipe, the software rasteriser that the project's
+// exact-bytes claims rest on (docs/gl-stack.md). Tests whose expected numbers hold only there
+// check it and GTEST_SKIP with the reason elsewhere, so the suite runs on a machine with a GPU.
+bool is_llvmpipe(const ps::gl::Context& context);
+
 // Parameter name for gtest: "egl" / "osmesa".
 std::string backend_param_name(const ::testing::TestParamInfo<ps::gl::Backend>& info);
 
