@@ -43,7 +43,7 @@ options:
   --overrides FILE      apply an override file saved by `run`/`tune` (KEY = VALUE lines,
                         docs/tuning.md) at this point of the --set list
   --out IMAGE.png       output image (default: render.png)
-  --aov NAME=FILE.exr   also write an AOV: intensity, distance (mm; 1e30 outside the shadow),
+  --aov NAME=FILE.exr   also write an AOV: intensity, distance (mm; NaN: no probe above),
                         texture (Gabor value in sigmas, before speed modulation), normal,
                         displacement (weighted displacement xyz, weight w) (repeatable)
   --show-probe          also draw the probe itself (where the haptic proxy is, after the
