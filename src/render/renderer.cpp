@@ -306,15 +306,7 @@ Status Renderer::render_frame() {
     if (!ms.strategy_note.empty()) stats_.skipped.push_back(ms.strategy_note);
   timer.lap("plan");
   if (plan.shadow_active) {
-    ProbeDepthPass::Inputs in;
-    in.frame = &frame_;
-    in.window = plan.window;
-    in.probe = probe_input();
-    // Mesh probes: the depth buffer spans the probe's plane-height range, with 1 mm of margin.
-    const double hc = glm::dot(probe.center, frame_.n);
-    in.height_lo = hc - probe.radius - 1.0;
-    in.height_hi = hc + probe.radius + 1.0;
-    probe_depth_.run(in);
+    run_probe_depth(plan, probe);
     timer.lap("probe_depth");
   }
   if (Status s = surface_.run(surface_draws(plan), plan.shadow_active ? &probe_depth_.depth() : nullptr,
@@ -329,15 +321,30 @@ Status Renderer::render_frame() {
     apply_reductions(ReductionResult{}, plan);  // zero sum: plane kept, no displacement
   }
   if (show_probe_) {
-    ProbeViewPass::Inputs in;
-    in.view_proj = view_projection(scene_.camera,
-                                   static_cast<double>(scene_.render.width) / scene_.render.height);
-    in.light = &scene_.light;
-    in.probe = probe_input();  // after the displacement
-    probe_view_.run(in);
+    run_probe_view();
     timer.lap("probe_view");
   }
   return ok_status();
+}
+
+void Renderer::run_probe_depth(const FramePlan& plan, const BoundingSphere& probe) {
+  ProbeDepthPass::Inputs in;
+  in.frame = &frame_;
+  in.window = plan.window;
+  in.probe = probe_input();
+  // Mesh probes: the depth buffer spans the probe's plane-height range, with 1 mm of margin.
+  const double hc = glm::dot(probe.center, frame_.n);
+  in.height_lo = hc - probe.radius - 1.0;
+  in.height_hi = hc + probe.radius + 1.0;
+  probe_depth_.run(in);
+}
+
+void Renderer::run_probe_view() {
+  ProbeViewPass::Inputs in;
+  in.view_proj = view_projection(scene_.camera, static_cast<double>(scene_.render.width) / scene_.render.height);
+  in.light = &scene_.light;
+  in.probe = probe_input();  // after this frame's displacement
+  probe_view_.run(in);
 }
 
 namespace {

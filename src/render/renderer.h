@@ -107,9 +107,11 @@ class Renderer {
   // Per frame.
   BoundingSphere current_probe_bounds() const;
   ProbeInput probe_input() const;
+  void run_probe_depth(const FramePlan& plan, const BoundingSphere& probe);
   std::vector<SurfaceDraw> surface_draws(const FramePlan& plan);
   void update_reference_plane(const ReductionResult& r);
   void apply_reductions(const ReductionResult& r, const FramePlan& plan);
+  void run_probe_view();
 
   Scene scene_;
   RendererOptions options_;
