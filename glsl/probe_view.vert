@@ -1,11 +1,10 @@
 #version 450 core
 // Probe view pass, vertex stage: the probe (displayed proxy) in the camera view. Only drawn when
 // the user asks to see the probe; the pseudo-shadow alone is the default display.
+#include "lib/probe_view_block.glsl"
+
 layout(location = 0) in vec3 a_position;  // model space, mm
 layout(location = 1) in vec3 a_normal;
-
-layout(location = 0) uniform mat4 u_view_proj;
-layout(location = 1) uniform mat4 u_model;  // translation (and, for the capsule, none else)
 
 layout(location = 0) out vec3 v_normal;
 

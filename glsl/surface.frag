@@ -2,12 +2,13 @@
 // Surface pass (thesis Table 4.2 step 3), MRT:
 //   0 color   RGBA8   : lit surface blended with the pseudo-shadow (gamma-encoded)
 //   1 normal  RGBA32F : (visible front-facing normal, 1) -> mean = reference plane (step 4)
-//   2 aov     RGBA32F : (intensity, signed distance d mm, texture value in sigmas, resistance)
+//   2 aov     RGBA32F : (intensity, signed distance d mm, texture value in sigmas, resistance);
+//                       d is NaN where no probe is above the fragment (the distance AOV's
+//                       documented "no probe" value, src/render/renderer.h)
 // Variants: PS_SHADOW (0: probe beyond this surface's influence, pseudo-shadow compiled out),
 //           PS_TEXTURED (0: untextured material, Gabor compiled out), PS_GABOR_STRATIFIED,
 //           PS_GABOR_BAKED (the texture read from the material's baked tile).
 #include "lib/surface_block.glsl"
-#include "lib/gabor.glsl"
 #include "lib/pseudo_shadow.glsl"
 
 #ifndef PS_SHADOW
@@ -30,11 +31,16 @@ layout(location = 0) out vec4 o_color;
 layout(location = 1) out vec4 o_normal;
 layout(location = 2) out vec4 o_aov;
 
-const float kFar = 1.0e30;  // "no probe here" distance, also the cleared AOV value
+// "No probe here" distance inside this shader (compares like a very large distance: no
+// intensity, no texture). Written to the AOV as NaN, never to the colour target.
+const float kFar = 1.0e30;
+// The distance AOV's value there: NaN (image statistics count NaNs apart instead of averaging
+// in 1e30). A function, not a constant: GLSL 4.50 has no NaN literal.
+float no_probe_distance() { return uintBitsToFloat(0x7fc00000u); }
 
 vec3 shade_surface(vec3 n) {
   vec3 albedo = u_albedo.rgb;
-  if (u_albedo.a > 0.5) albedo *= texture(u_albedo_tex, v_world.xy / u_misc.x).rgb;
+  if (u_albedo.a > 0.5) albedo *= texture(u_albedo_tex, v_world.xy / u_albedo_scale.x).rgb;
   float lambert = max(dot(n, -u_light_dir.xyz), 0.0);
   return albedo * u_light_color.rgb * (u_light_dir.w + (1.0 - u_light_dir.w) * lambert);
 }
@@ -47,15 +53,6 @@ float probe_distance(vec2 uv, float h_surface) {
   ivec2 texel = ivec2(st * u_window.w);
   float h_probe = texelFetch(u_probe_depth, texel, 0).r;
   return h_probe >= kFar ? kFar : h_probe - h_surface;
-}
-
-GaborMaterial gabor_material() {
-  return GaborMaterial(u_gabor_a.xy, u_gabor_a.zw, u_gabor_b.xy, u_gabor_b.zw, u_gabor_c.x,
-                       u_gabor_c.y, u_gabor_c.z, u_seed.x, int(u_seed.y)
-#if PS_GABOR_STRATIFIED
-                       , int(u_seed.z)
-#endif
-                       );
 }
 
 void main() {
@@ -72,9 +69,9 @@ void main() {
   // Only fragments inside the footprint and the onset distance pay for the Gabor sum.
   if (intensity > 0.0 && d < u_modulation.y) {
 #if PS_GABOR_BAKED
-    tex_sigmas = gabor_noise_baked(u_gabor_tile, vec4(u_misc.yzw, 0.0), uv) / u_gabor_c.w;
+    tex_sigmas = gabor_noise_baked(u_gabor_tile, u_gabor.tile, uv) / u_gabor.kernel.w;
 #else
-    tex_sigmas = gabor_noise(gabor_material(), uv) / u_gabor_c.w;
+    tex_sigmas = gabor_noise(gabor_material(u_gabor), uv) / u_gabor.kernel.w;
 #endif
     float shown = u_modulation.x * tex_sigmas / u_modulation.w;
     tex = clamp(0.5 + 0.5 * shown, 0.0, 1.0);
@@ -84,5 +81,5 @@ void main() {
 #endif
   o_color = vec4(pow(clamp(rgb, 0.0, 1.0), vec3(u_light_color.a)), 1.0);
   o_normal = vec4(n, 1.0);
-  o_aov = vec4(intensity, d, tex_sigmas, u_modulation.z);
+  o_aov = vec4(intensity, d >= kFar ? no_probe_distance() : d, tex_sigmas, u_modulation.z);
 }

@@ -148,7 +148,7 @@ vec4 gabor_noise_sample(GaborMaterial g, vec2 uv, int period_cells) {
 #if PS_GABOR_BAKED == 2
 // Baked lookup, bilinear: the tile holds values only (R16F, GL_LINEAR, GL_REPEAT), sample i at
 // u_i = -period/2 + i h, i.e. texel centre (i + 0.5) / texels. tile: (period mm, texel h mm,
-// texels, 0). CPU twin: gabor_noise_baked (plan.linear) in src/reference/gabor.cpp.
+// texels, period cells). CPU twin: gabor_noise_baked (plan.linear) in src/reference/gabor.cpp.
 float gabor_noise_baked(sampler2D tile_tex, vec4 tile, vec2 uv) {
   vec2 s = (uv + 0.5 * tile.x) / tile.y;
   s = s - tile.z * floor(s / tile.z);  // into [0, texels): keeps the coordinate's float precision
@@ -156,7 +156,7 @@ float gabor_noise_baked(sampler2D tile_tex, vec4 tile, vec2 uv) {
 }
 #elif PS_GABOR_BAKED
 // Baked lookup: bicubic Hermite interpolation of the tile's samples (f, f_u h, f_v h,
-// f_uv h^2) at u_i = -period/2 + i h. tile: (period mm, texel h mm, texels, 0). CPU twin:
+// f_uv h^2) at u_i = -period/2 + i h. tile: (period mm, texel h mm, texels, period cells). CPU twin:
 // gabor_noise_baked in src/reference/gabor.cpp.
 float gabor_noise_baked(sampler2D tile_tex, vec4 tile, vec2 uv) {
   vec2 s = (uv + 0.5 * tile.x) / tile.y;

@@ -2,6 +2,8 @@
 // (std140: only vec4/mat4/uvec4 members so C++ and GLSL agree on every offset).
 #pragma once
 
+#include "gabor_block.glsl"
+
 layout(std140, binding = 0) uniform SurfaceBlock {
   mat4 u_view_proj;
   vec4 u_light_dir;      // xyz: direction the light travels (unit); w: ambient
@@ -11,11 +13,8 @@ layout(std140, binding = 0) uniform SurfaceBlock {
   vec4 u_ref_b;          // reference plane bitangent (v axis)
   vec4 u_window;         // xy: depth-map window centre (u, v) mm; z: half size mm; w: depth map texels
   vec4 u_albedo;         // rgb albedo; a: 1 when an albedo texture is bound
+  vec4 u_albedo_scale;   // x: world size of one albedo texture repeat, mm; yzw: unused
   vec4 u_intensity;      // x floor, y scale, z offset mm, w influence distance mm
-  vec4 u_gabor_a;        // x A_min, y A_max, z lambda_min mm, w lambda_max mm
-  vec4 u_gabor_b;        // x theta_min rad, y theta_max rad, z n_min, w n_max
-  vec4 u_gabor_c;        // x kernel_periods, y cell mm, z trunc factor, w sigma_unit
   vec4 u_modulation;     // x speed gain [0,1], y onset distance mm, z resistance, w contrast (sigmas)
-  vec4 u_misc;           // x albedo texture repeat mm; y baked tile period mm, z texel mm, w texels
-  uvec4 u_seed;          // x seed, y max impulses per cell, z stratified impulses per cell
+  GaborBlock u_gabor;    // the material's texture (lib/gabor_block.glsl)
 };

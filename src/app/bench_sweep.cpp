@@ -94,7 +94,7 @@ void frame_errors(const Scene& s, const Renderer& r, const TextureRefs& refs, Me
       const glm::dvec2 w = pixel_world(s, x, y);
       const double rho2 = (w.x - c.x) * (w.x - c.x) + (w.y - c.y) * (w.y - c.y);
       // Inside 0.9 r: the silhouette's infinite slope would make any texel look wrong.
-      if (rho2 < 0.81 * rad * rad && d < 1e29)
+      if (rho2 < 0.81 * rad * rad && !std::isnan(d))  // NaN: no probe above the pixel
         m.distance_max_mm = std::max(m.distance_max_mm, std::abs(d - (c.z - std::sqrt(rad * rad - rho2))));
       if (d < onset) pix.emplace_back(x, y);
     }

@@ -46,7 +46,7 @@ options:
   --out IMAGE.png       output image (default: render.png). For every output file: its
                         directory must exist, or only its last directory may be missing
                         (it is created); all outputs are written, or none
-  --aov NAME=FILE.exr   also write an AOV: intensity, distance (mm; 1e30 outside the shadow),
+  --aov NAME=FILE.exr   also write an AOV: intensity, distance (mm; NaN: no probe above),
                         texture (Gabor value in sigmas, before speed modulation), normal,
                         displacement (weighted displacement xyz, weight w) (repeatable)
   --show-probe          also draw the probe itself (where the haptic proxy is, after the

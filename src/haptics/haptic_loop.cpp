@@ -12,10 +12,10 @@ namespace ps {
 HapticLoop::HapticLoop(Device& device, Clock& clock, const HapticLoopParams& params)
     : device_(device), clock_(clock), params_(params),
       period_(static_cast<std::int64_t>(std::llround(1e9 / params.rate_hz))),
-      sanitizer_(params.sanitizer), kalman_(params.kalman) {
-  periods_us_.reserve(std::min<std::size_t>(params.keep_periods, 100'000));
-  window_jitter_us_.reserve(2048);
-}
+      sanitizer_(params.sanitizer), kalman_(params.kalman), periods_us_(params.keep_periods),
+      // A HUD window is 1 s of ticks; after a stall sleep_until() runs the missed ticks back to
+      // back inside one window, so room for 2 s (beyond that the HUD's p99 skips samples).
+      window_jitter_us_(2 * static_cast<std::size_t>(std::ceil(params.rate_hz)) + 16) {}
 
 HapticLoop::~HapticLoop() { stop(); }
 
@@ -56,15 +56,17 @@ void HapticLoop::scheduled_tick() {
 void HapticLoop::update_rate(Clock::Ns now) {
   if (local_.tick > 0) {
     const double period_us = static_cast<double>((now - last_tick_).count()) * 1e-3;
-    if (periods_us_.size() < params_.keep_periods) periods_us_.push_back(period_us);
-    window_jitter_us_.push_back(std::abs(period_us - static_cast<double>(period_.count()) * 1e-3));
+    periods_us_.push(period_us);  // dropped once keep_periods are logged
+    window_jitter_us_.push(std::abs(period_us - static_cast<double>(period_.count()) * 1e-3));
+    ++window_ticks_;
   }
   last_tick_ = now;
   const double window_s = static_cast<double>((now - window_start_).count()) * 1e-9;
   if (window_s >= 1.0) {  // HUD numbers, refreshed once per second
-    local_.rate_hz = static_cast<double>(window_jitter_us_.size()) / window_s;
-    local_.jitter_p99_us = percentiles(window_jitter_us_).p99;
+    local_.rate_hz = static_cast<double>(window_ticks_) / window_s;
+    local_.jitter_p99_us = percentiles_in_place(window_jitter_us_.mutable_values()).p99;
     window_jitter_us_.clear();
+    window_ticks_ = 0;
     window_start_ = now;
   }
 }

@@ -30,7 +30,9 @@ struct HapticLoopParams {
   KalmanParams kalman;
   HapticsParams forces;
   SanitizerParams sanitizer;
-  std::size_t keep_periods = 600'000;  // raw periods kept for the final statistics (10 min)
+  // Raw periods kept for the final statistics (10 min at 1 kHz; 4.8 MB allocated up front: the
+  // haptic thread never allocates after start, later periods are dropped).
+  std::size_t keep_periods = 600'000;
   // > 0: ask for SCHED_FIFO at this priority (1..99) for the haptic thread. Needs CAP_SYS_NICE
   // (or an RLIMIT_RTPRIO); without it the loop runs at normal priority and says so. Opt-in:
   // the thread sleeps every tick, but a real-time thread is still a system-wide decision.
@@ -71,8 +73,12 @@ class HapticLoop {
   const Snapshot<HapticState>& state() const { return state_; }
   Snapshot<SurfaceModel>& surface() { return surface_; }
   // After stop() (or between run_ticks): measured periods in microseconds.
-  const std::vector<double>& periods_us() const { return periods_us_; }
-  Percentiles period_stats() const { return percentiles(periods_us_); }
+  const std::vector<double>& periods_us() const { return periods_us_.values(); }
+  Percentiles period_stats() const { return percentiles(periods_us_.values()); }
+  // Storage of the two logs the thread appends to, fixed at construction (tests check it never
+  // grows: a reallocation on the 1 kHz thread would stall a tick).
+  std::size_t period_log_capacity() const { return periods_us_.capacity(); }
+  std::size_t jitter_window_capacity() const { return window_jitter_us_.capacity(); }
 
  private:
   void scheduled_tick();  // sleep_until(next += period), then tick()
@@ -88,7 +94,9 @@ class HapticLoop {
   Kalman3 kalman_;
   HapticState local_;        // haptic thread's working copy
   SampleRecorder* recorder_ = nullptr;
-  std::vector<double> periods_us_, window_jitter_us_;
+  BoundedLog periods_us_;         // every period, for period_stats()
+  BoundedLog window_jitter_us_;   // |period - nominal| of the current 1 s HUD window
+  std::uint64_t window_ticks_ = 0;  // ticks in the HUD window (the jitter log may have dropped some)
   Snapshot<HapticState> state_;
   Snapshot<SurfaceModel> surface_;
   std::string priority_ = "normal";

@@ -6,7 +6,9 @@
 
 namespace ps {
 
-Percentiles percentiles(std::vector<double> v) {
+Percentiles percentiles(std::vector<double> v) { return percentiles_in_place(v); }
+
+Percentiles percentiles_in_place(std::span<double> v) {
   Percentiles p;
   p.count = v.size();
   if (v.empty()) return p;

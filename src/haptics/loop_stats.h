@@ -1,6 +1,9 @@
-// Rate and period-jitter statistics of a periodic loop (and latencies), from raw samples.
+// Rate and period-jitter statistics of a periodic loop (and latencies), from raw samples, and
+// the fixed-capacity log the haptic thread keeps them in.
 #pragma once
 
+#include <cstddef>
+#include <span>
 #include <vector>
 
 namespace ps {
@@ -12,5 +15,28 @@ struct Percentiles {
 
 // Nearest-rank percentiles of `values` (copied; the input is not reordered).
 Percentiles percentiles(std::vector<double> values);
+// The same, sorting `values` in place: no allocation (the haptic thread's per-second HUD numbers).
+Percentiles percentiles_in_place(std::span<double> values);
+
+// A log of samples whose storage is allocated once, at construction: push() beyond the
+// capacity drops the sample and returns false. The haptic thread appends to it at 1 kHz, where
+// a std::vector growing past its reservation would reallocate (and copy megabytes) mid-tick.
+class BoundedLog {
+ public:
+  explicit BoundedLog(std::size_t capacity) { values_.reserve(capacity); }
+  bool push(double v) {
+    if (values_.size() == values_.capacity()) return false;
+    values_.push_back(v);  // within the reservation: never allocates
+    return true;
+  }
+  void clear() { values_.clear(); }  // keeps the storage
+  std::size_t size() const { return values_.size(); }
+  std::size_t capacity() const { return values_.capacity(); }
+  const std::vector<double>& values() const { return values_; }
+  std::span<double> mutable_values() { return values_; }
+
+ private:
+  std::vector<double> values_;
+};
 
 }  // namespace ps

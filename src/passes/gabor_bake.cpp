@@ -1,17 +1,25 @@
 #include "passes/gabor_bake.h"
 
-#include <glm/glm.hpp>
+#include <cassert>
 
 #include "gl/shader.h"
 
 namespace ps {
 
-Result<gl::Texture> bake_gabor_tile(const std::string& glsl_root, const GaborParams& g,
-                                    const GaborSetup& s, const GaborBakePlan& plan,
-                                    std::uint32_t seed) {
-  if (!plan.ok) return make_error("gabor bake: the material is too fine for a baked tile");
-  auto prog = gl::build_program({{"displacement_weights.vert", "gabor_bake.frag"}, {}}, glsl_root);
-  if (!prog) return prog.error();
+Status GaborBakePass::init(const std::string& glsl_root) {
+  auto built = gl::build_program({{"gabor_bake.vert", "gabor_bake.frag"}, {}}, glsl_root);
+  if (!built) return built.error();
+  program_ = std::move(built.value());
+  fbo_ = gl::make_framebuffer();
+  ubo_ = gl::make_buffer(sizeof(GaborBakeBlock), nullptr, GL_DYNAMIC_STORAGE_BIT);
+  empty_vao_ = gl::make_vertex_array();
+  return ok_status();
+}
+
+Result<gl::Texture> GaborBakePass::run(const GaborBlock& block, const GaborBakePlan& plan) {
+  assert(ready() && "GaborBakePass::run: init() first");
+  assert(plan.ok && block.tile.z == static_cast<float>(plan.texels) &&
+         "GaborBakePass::run: block.tile must come from the same (ok) plan");
   // Hermite: (f, f_u h, f_v h, f_uv h^2) per texel, fetched exactly. Bilinear: f alone (the
   // shader's vec4 keeps .x), filtered and wrapped by the sampler, in half precision: half the
   // memory traffic made the lookup ~10 % faster in the bench (Gabor evaluation 12.5x -> 14.3x
@@ -22,31 +30,29 @@ Result<gl::Texture> bake_gabor_tile(const std::string& glsl_root, const GaborPar
   glTextureParameteri(tile.id(), GL_TEXTURE_MAG_FILTER, filter);
   glTextureParameteri(tile.id(), GL_TEXTURE_WRAP_S, GL_REPEAT);
   glTextureParameteri(tile.id(), GL_TEXTURE_WRAP_T, GL_REPEAT);
-  gl::Framebuffer fbo = gl::make_framebuffer();
-  glNamedFramebufferTexture(fbo.id(), GL_COLOR_ATTACHMENT0, tile.id(), 0);
-  glNamedFramebufferDrawBuffer(fbo.id(), GL_COLOR_ATTACHMENT0);
-  if (glCheckNamedFramebufferStatus(fbo.id(), GL_FRAMEBUFFER) != GL_FRAMEBUFFER_COMPLETE)
-    return make_error(std::string("gabor bake: ") + (plan.linear ? "R16F" : "RGBA32F") + " tile framebuffer incomplete");
-  glBindFramebuffer(GL_FRAMEBUFFER, fbo.id());
+  glNamedFramebufferTexture(fbo_.id(), GL_COLOR_ATTACHMENT0, tile.id(), 0);
+  glNamedFramebufferDrawBuffer(fbo_.id(), GL_COLOR_ATTACHMENT0);
+  if (glCheckNamedFramebufferStatus(fbo_.id(), GL_FRAMEBUFFER) != GL_FRAMEBUFFER_COMPLETE)
+    return make_error(std::string("gabor bake pass: ") + (plan.linear ? "R16F" : "RGBA32F") +
+                      " tile framebuffer incomplete");
+  const GaborBakeBlock uniforms{block};
+  glNamedBufferSubData(ubo_.id(), 0, sizeof(uniforms), &uniforms);
+
+  // All state this pass depends on is set here.
+  glBindFramebuffer(GL_FRAMEBUFFER, fbo_.id());
   glViewport(0, 0, plan.texels, plan.texels);
   glDisable(GL_DEPTH_TEST);
   glDisable(GL_BLEND);
   glDisable(GL_SCISSOR_TEST);
-  glUseProgram(prog->id());
-  const glm::vec4 a(glm::dvec4(g.a_min, g.a_max, g.lambda_min_mm, g.lambda_max_mm));
-  const glm::vec4 b(glm::dvec4(g.theta_min_rad, g.theta_max_rad, g.n_min, g.n_max));
-  const glm::vec4 c(glm::dvec4(g.kernel_periods, s.cell_mm, s.trunc_factor, 0.0));
-  const glm::vec4 t(glm::dvec4(plan.period_mm, plan.texel_mm, plan.texels, plan.period_cells));
-  glUniform4fv(0, 1, &a.x);
-  glUniform4fv(1, 1, &b.x);
-  glUniform4fv(2, 1, &c.x);
-  glUniform4ui(3, seed, static_cast<unsigned>(s.max_impulses), 0u, 0u);
-  glUniform4fv(4, 1, &t.x);
-  gl::VertexArray vao = gl::make_vertex_array();
-  glBindVertexArray(vao.id());
+  glDisable(GL_CULL_FACE);
+  glBindBufferBase(GL_UNIFORM_BUFFER, 0, ubo_.id());
+  glUseProgram(program_.id());
+  glBindVertexArray(empty_vao_.id());
   glDrawArrays(GL_TRIANGLES, 0, 3);
   glBindVertexArray(0);
   glBindFramebuffer(GL_FRAMEBUFFER, 0);
+  // Detached so the FBO never keeps a texture alive that the renderer has let go.
+  glNamedFramebufferTexture(fbo_.id(), GL_COLOR_ATTACHMENT0, 0, 0);
   return tile;
 }
 

@@ -1,25 +1,45 @@
-// Gabor bake pass (strategy "baked"): evaluates one period of a material's periodic Gabor
-// texture, with its derivatives, into an RGBA32F tile once per material; the surface pass's
-// PS_GABOR_BAKED variant then reads it with a bicubic Hermite lookup instead of summing
-// kernels per fragment.
-//   inputs : material Gabor parameters, GaborSetup, GaborBakePlan (src/reference/gabor.h), seed
-//   output : tile texture plan.texels^2 RGBA32F, texel (i, j) = (f, f_u h, f_v h, f_uv h^2) at
-//            (-period/2 + i h, -period/2 + j h)
-// Shaders: glsl/gabor_bake.frag (+ the full-screen triangle of displacement_weights.vert).
+// Gabor bake pass (strategies "baked", "baked_linear", and "auto" when it picks a tile):
+// evaluates one period of a material's periodic Gabor texture into a tile, once per material,
+// so the surface pass's PS_GABOR_BAKED variants read the tile instead of summing kernels per
+// fragment. The tile comes in two forms (GaborBakePlan::linear, src/reference/gabor.h):
+//   "baked"        RGBA32F, GL_NEAREST: texel (i, j) = (f, f_u h, f_v h, f_uv h^2), the value
+//                  and its analytic derivatives (scaled by the texel size h), read by bicubic
+//                  Hermite interpolation from four texel fetches (PS_GABOR_BAKED 1);
+//   "baked_linear" R16F, GL_LINEAR: texel (i, j) = f alone, read by one bilinear, repeating
+//                  texture fetch (PS_GABOR_BAKED 2).
+// Both sample (-period/2 + i h, -period/2 + j h) and repeat (GL_REPEAT) with the period.
+//   inputs : the material's GaborBlock (make_gabor_block with its plan) and GaborBakePlan
+//   output : a new tile texture, plan.texels^2, in the plan's form
+// The program is built once, in init(); run() once per tile.
+// Shaders: glsl/gabor_bake.{vert,frag}; uniform contract glsl/lib/gabor_bake_block.glsl.
 #pragma once
 
-#include <cstdint>
 #include <string>
 
 #include "core/result.h"
 #include "gl/objects.h"
+#include "passes/gabor_block.h"
 #include "reference/gabor.h"
-#include "scene/scene.h"
 
 namespace ps {
 
-Result<gl::Texture> bake_gabor_tile(const std::string& glsl_root, const GaborParams& g,
-                                    const GaborSetup& setup, const GaborBakePlan& plan,
-                                    std::uint32_t seed);
+// std140 mirror of glsl/lib/gabor_bake_block.glsl.
+struct GaborBakeBlock {
+  GaborBlock gabor;
+};
+static_assert(sizeof(GaborBakeBlock) == sizeof(GaborBlock), "GaborBakeBlock must match std140 layout");
+
+struct GaborBakePass {
+  Status init(const std::string& glsl_root);
+  bool ready() const { return static_cast<bool>(program_); }
+  // block.tile must describe `plan` (make_gabor_block(..., plan, ...)); plan.ok must be true.
+  Result<gl::Texture> run(const GaborBlock& block, const GaborBakePlan& plan);
+
+ private:
+  gl::Program program_;
+  gl::Framebuffer fbo_;        // the tile being baked is attached for the draw only
+  gl::Buffer ubo_;
+  gl::VertexArray empty_vao_;  // core profile draws need a bound VAO, even with no attributes
+};
 
 }  // namespace ps

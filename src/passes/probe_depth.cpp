@@ -34,17 +34,18 @@ Status ProbeDepthPass::init(const std::string& glsl_root, const Params& params) 
 }
 
 void ProbeDepthPass::run(const Inputs& in) {
-  assert(in.frame && (in.capsule || in.mesh) && "ProbeDepthPass::run: frame and a probe are required");
+  assert(in.frame && "ProbeDepthPass::run: a reference frame is required");
   const PlaneFrame& f = *in.frame;
   ProbeDepthBlock block;
-  block.model = glm::mat4(in.model);
+  block.model = glm::mat4(in.probe.model);
   block.ref_n = v4(f.n);
   block.ref_t = v4(f.t);
   block.ref_b = v4(f.b);
   block.window = glm::vec4(glm::dvec4(in.window.center_uv, in.window.half_size_mm, params_.size));
-  if (in.capsule) {
-    block.cap_a = v4(to_plane(f, in.capsule->a), in.capsule->radius);
-    block.cap_b = v4(to_plane(f, in.capsule->b));
+  if (!in.probe.mesh) {
+    const CapsuleShape& c = in.probe.capsule;
+    block.cap_a = v4(to_plane(f, c.a), c.radius);
+    block.cap_b = v4(to_plane(f, c.b));
   }
   block.height_range = glm::vec4(glm::dvec4(in.height_lo, in.height_hi, 0.0, 0.0));
   glNamedBufferSubData(ubo_.id(), 0, sizeof(block), &block);
@@ -61,7 +62,7 @@ void ProbeDepthPass::run(const Inputs& in) {
   glClearNamedFramebufferfv(fbo_.id(), GL_COLOR, 0, far_height);
   glClearNamedFramebufferfv(fbo_.id(), GL_DEPTH, 0, &one);
   glBindBufferBase(GL_UNIFORM_BUFFER, 0, ubo_.id());
-  if (in.capsule) {
+  if (!in.probe.mesh) {
     glDisable(GL_DEPTH_TEST);
     glUseProgram(analytic_.id());
     glBindVertexArray(empty_vao_.id());
@@ -70,7 +71,7 @@ void ProbeDepthPass::run(const Inputs& in) {
     glEnable(GL_DEPTH_TEST);
     glDepthFunc(GL_LESS);
     glUseProgram(mesh_.id());
-    in.mesh->draw();
+    in.probe.mesh->draw();
   }
 }
 

@@ -13,6 +13,7 @@
 #include "core/result.h"
 #include "gl/objects.h"
 #include "passes/gpu_mesh.h"
+#include "passes/probe_input.h"
 #include "reference/basis.h"
 #include "reference/probe_geometry.h"
 
@@ -41,9 +42,7 @@ struct ProbeDepthPass {
   struct Inputs {
     const PlaneFrame* frame = nullptr;
     DepthWindow window;
-    const CapsuleShape* capsule = nullptr;  // analytic probe, or
-    const GpuMesh* mesh = nullptr;          // mesh probe (model matrix below)
-    glm::dmat4 model{1.0};
+    ProbeInput probe;
     double height_lo = 0.0, height_hi = 1.0;  // mesh: plane-height range of the probe
   };
 

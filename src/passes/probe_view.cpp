@@ -1,6 +1,7 @@
 #include "passes/probe_view.h"
 
 #include <algorithm>
+#include <cassert>
 #include <cmath>
 #include <numbers>
 
@@ -66,24 +67,36 @@ Status ProbeViewPass::init(const std::string& glsl_root, const SurfacePass& surf
   glNamedFramebufferDrawBuffer(fbo_.id(), GL_COLOR_ATTACHMENT0);
   if (glCheckNamedFramebufferStatus(fbo_.id(), GL_FRAMEBUFFER) != GL_FRAMEBUFFER_COMPLETE)
     return make_error("probe view pass: framebuffer incomplete (surface colour + depth)");
+  ubo_ = gl::make_buffer(sizeof(ProbeViewBlock), nullptr, GL_DYNAMIC_STORAGE_BIT);
   return ok_status();
 }
 
 void ProbeViewPass::run(const Inputs& in) {
-  glm::dmat4 model = in.model;
-  const GpuMesh* mesh = in.mesh;
+  assert(in.light && "ProbeViewPass::run: a light is required");
+  glm::dmat4 model = in.probe.model;
+  const GpuMesh* mesh = in.probe.mesh;
   if (!mesh) {
     // Tessellate in the capsule's own frame (tip cap at the origin) so moving the probe only
     // changes the model matrix.
-    const CapsuleShape local{glm::dvec3(0.0), in.capsule->b - in.capsule->a, in.capsule->radius};
+    const CapsuleShape& c = in.probe.capsule;
+    const CapsuleShape local{glm::dvec3(0.0), c.b - c.a, c.radius};
     if (!have_capsule_ || local.b != cached_.b || local.radius != cached_.radius) {
       capsule_mesh_ = GpuMesh::upload(make_capsule_mesh(local, kSegments));
       cached_ = local;
       have_capsule_ = true;
     }
     mesh = &capsule_mesh_;
-    model = glm::translate(glm::dmat4(1.0), in.capsule->a);
+    model = glm::translate(glm::dmat4(1.0), c.a);
   }
+  ProbeViewBlock block;
+  block.view_proj = glm::mat4(in.view_proj);
+  block.model = glm::mat4(model);
+  block.light_dir = glm::vec4(glm::dvec4(in.light->direction, in.light->ambient));
+  block.light_color = glm::vec4(glm::dvec4(in.light->color, in.gamma));
+  block.probe_color = glm::vec4(glm::dvec4(kColor, 0.0));
+  glNamedBufferSubData(ubo_.id(), 0, sizeof(block), &block);
+
+  // All state this pass depends on is set here.
   glBindFramebuffer(GL_FRAMEBUFFER, fbo_.id());
   glViewport(0, 0, surface_->width(), surface_->height());
   glDisable(GL_SCISSOR_TEST);
@@ -92,16 +105,8 @@ void ProbeViewPass::run(const Inputs& in) {
   glEnable(GL_DEPTH_TEST);
   glDepthFunc(GL_LESS);
   glDepthMask(GL_TRUE);
+  glBindBufferBase(GL_UNIFORM_BUFFER, 0, ubo_.id());
   glUseProgram(program_.id());
-  const glm::mat4 vp(in.view_proj), mm(model);
-  glUniformMatrix4fv(0, 1, GL_FALSE, &vp[0][0]);
-  glUniformMatrix4fv(1, 1, GL_FALSE, &mm[0][0]);
-  const glm::vec4 light_dir(glm::dvec4(in.light->direction, in.light->ambient));
-  const glm::vec4 light_color(glm::dvec4(in.light->color, in.gamma));
-  const glm::vec3 color(kColor);
-  glUniform4fv(2, 1, &light_dir.x);
-  glUniform4fv(3, 1, &light_color.x);
-  glUniform3fv(4, 1, &color.x);
   mesh->draw();
 }
 

@@ -5,7 +5,7 @@
 //            the surface pass's colour target and depth buffer
 //   output : the surface pass's color(), probe pixels only. Runs after the reductions, so the
 //            normal/AOV targets, the reference plane and the displacement are unchanged.
-// Shaders: glsl/probe_view.{vert,frag}.
+// Shaders: glsl/probe_view.{vert,frag}; uniform contract glsl/lib/probe_view_block.glsl.
 #pragma once
 
 #include <string>
@@ -15,6 +15,7 @@
 #include "core/result.h"
 #include "gl/objects.h"
 #include "passes/gpu_mesh.h"
+#include "passes/probe_input.h"
 #include "passes/surface.h"
 #include "reference/probe_geometry.h"
 #include "scene/mesh.h"
@@ -27,6 +28,16 @@ namespace ps {
 // are the exact surface normals. Every vertex lies on the capsule surface (tested).
 Mesh make_capsule_mesh(const CapsuleShape& capsule, int segments);
 
+// std140 mirror of glsl/lib/probe_view_block.glsl.
+struct ProbeViewBlock {
+  glm::mat4 view_proj{1.0f};
+  glm::mat4 model{1.0f};
+  glm::vec4 light_dir;    // direction the light travels; w ambient
+  glm::vec4 light_color;  // rgb; a output gamma
+  glm::vec4 probe_color;  // rgb linear
+};
+static_assert(sizeof(ProbeViewBlock) == 2 * 64 + 3 * 16, "ProbeViewBlock must match std140 layout");
+
 struct ProbeViewPass {
   // Tessellation of sphere/capsule probes: 64 segments keep the silhouette within
   // r (1 - cos(pi / 64)) = 0.12 % of r of the true outline.
@@ -38,9 +49,7 @@ struct ProbeViewPass {
     glm::dmat4 view_proj{1.0};
     const Light* light = nullptr;
     double gamma = 1.0 / 2.2;
-    const CapsuleShape* capsule = nullptr;  // analytic probe (world space), or
-    const GpuMesh* mesh = nullptr;          // mesh probe with its model matrix
-    glm::dmat4 model{1.0};
+    ProbeInput probe;  // after this frame's displacement
   };
   void run(const Inputs& in);
 
@@ -48,6 +57,7 @@ struct ProbeViewPass {
   const SurfacePass* surface_ = nullptr;
   gl::Program program_;
   gl::Framebuffer fbo_;
+  gl::Buffer ubo_;
   GpuMesh capsule_mesh_;
   CapsuleShape cached_{};  // capsule_mesh_ is rebuilt only when the shape changes
   bool have_capsule_ = false;

@@ -14,9 +14,8 @@ glm::vec4 v4(double x, double y, double z, double w) { return glm::vec4(glm::dve
 
 int next_pow2(int v) { return static_cast<int>(std::bit_ceil(static_cast<unsigned>(std::max(v, 1)))); }
 
-SurfaceBlock make_surface_block(const SurfaceFrame& fr, const Material& m, const GaborSetup& gs,
+SurfaceBlock make_surface_block(const SurfaceFrame& fr, const Material& m, const GaborBlock& gabor,
                                 double speed_gain, bool has_albedo_tex) {
-  const GaborParams& g = m.gabor;
   SurfaceBlock b;
   b.view_proj = glm::mat4(fr.view_proj);
   b.light_dir = v4(glm::normalize(fr.light->direction), fr.light->ambient);
@@ -26,14 +25,10 @@ SurfaceBlock make_surface_block(const SurfaceFrame& fr, const Material& m, const
   b.ref_b = v4(fr.plane.b);
   b.window = v4(fr.window_center_uv.x, fr.window_center_uv.y, fr.window_half_mm, fr.depth_map_size);
   b.albedo = v4(m.albedo, has_albedo_tex ? 1.0 : 0.0);
+  b.albedo_scale = v4(m.albedo_texture_scale_mm, 0.0, 0.0, 0.0);
   b.intensity = v4(m.intensity_floor, m.intensity_scale, m.intensity_offset_mm, m.influence_distance_mm);
-  b.gabor_a = v4(g.a_min, g.a_max, g.lambda_min_mm, g.lambda_max_mm);
-  b.gabor_b = v4(g.theta_min_rad, g.theta_max_rad, g.n_min, g.n_max);
-  b.gabor_c = v4(g.kernel_periods, gs.cell_mm, gs.trunc_factor, gs.sigma_unit);
   b.modulation = v4(speed_gain, m.onset_distance_mm, m.resistance, fr.contrast_sigmas);
-  b.misc = v4(m.albedo_texture_scale_mm, 0.0, 0.0, 0.0);
-  b.seed = glm::uvec4(fr.seed, static_cast<unsigned>(gs.max_impulses),
-                      static_cast<unsigned>(gs.stratified_count), 0u);
+  b.gabor = gabor;
   return b;
 }
 
@@ -93,7 +88,7 @@ Status SurfacePass::run(const std::vector<SurfaceDraw>& draws, const gl::Texture
   glDepthFunc(GL_LESS);
   glDepthMask(GL_TRUE);
   const glm::vec4 bg(glm::dvec4(background, 1.0));
-  const float zero[4] = {0, 0, 0, 0}, aov_clear[4] = {0, 1.0e30f, 0, 0}, one = 1.0f;
+  const float zero[4] = {0, 0, 0, 0}, aov_clear[4] = {0, kNoProbeDistance, 0, 0}, one = 1.0f;
   glClearNamedFramebufferfv(fbo_.id(), GL_COLOR, 0, &bg.x);
   glClearNamedFramebufferfv(fbo_.id(), GL_COLOR, 1, zero);
   glClearNamedFramebufferfv(fbo_.id(), GL_COLOR, 2, aov_clear);

@@ -4,7 +4,8 @@
 //   outputs: color()  RGBA8    lit surface with the pseudo-shadow (gamma-encoded)
 //            normal() RGBA32F  (front-facing normal, 1) per covered pixel, full mip chain
 //            aov()    RGBA32F  (intensity, distance d mm, texture in sigmas, resistance);
-//                              cleared to (0, 1e30, 0, 0)
+//                              cleared to (0, NaN, 0, 0); d is NaN wherever no probe is above
+//                              the pixel (kNoProbeDistance)
 //   All targets are allocated at the next power of two of the image size (mipmap averages are
 //   exact only for power-of-two RGBA32F on llvmpipe, docs/gl-stack.md); the viewport covers the
 //   image, the padding stays cleared and drops out of every ratio computed from the mips.
@@ -12,6 +13,7 @@
 // PS_GABOR_BAKED.
 #pragma once
 
+#include <limits>
 #include <map>
 #include <tuple>
 #include <string>
@@ -22,6 +24,7 @@
 
 #include "core/result.h"
 #include "gl/objects.h"
+#include "passes/gabor_block.h"
 #include "passes/gpu_mesh.h"
 #include "reference/basis.h"
 #include "reference/gabor.h"
@@ -32,11 +35,18 @@ namespace ps {
 // std140 mirror of glsl/lib/surface_block.glsl.
 struct SurfaceBlock {
   glm::mat4 view_proj{1.0f};
-  glm::vec4 light_dir, light_color, ref_n, ref_t, ref_b, window, albedo, intensity;
-  glm::vec4 gabor_a, gabor_b, gabor_c, modulation, misc;
-  glm::uvec4 seed;
+  glm::vec4 light_dir, light_color, ref_n, ref_t, ref_b, window, albedo, albedo_scale, intensity;
+  glm::vec4 modulation;
+  GaborBlock gabor;
 };
-static_assert(sizeof(SurfaceBlock) == 64 + 14 * 16, "SurfaceBlock must match std140 layout");
+static_assert(sizeof(SurfaceBlock) == 64 + 10 * 16 + sizeof(GaborBlock),
+              "SurfaceBlock must match std140 layout");
+
+// The distance AOV's value (aov().y) wherever no probe is above the pixel: outside the probe's
+// footprint, on surfaces beyond their influence distance, on the background. NaN, not a huge
+// number, so image statistics (oiiotool --stats) count those pixels apart instead of averaging
+// them in; test with std::isnan. Never reaches the colour target.
+inline constexpr float kNoProbeDistance = std::numeric_limits<float>::quiet_NaN();
 
 // Per-frame values shared by every surface draw.
 struct SurfaceFrame {
@@ -48,11 +58,11 @@ struct SurfaceFrame {
   const Light* light = nullptr;
   double gamma = 1.0 / 2.2;
   double contrast_sigmas = 2.5;  // texture shown as 0.5 +- 0.5 * value / contrast_sigmas
-  std::uint32_t seed = 1;
 };
 
-SurfaceBlock make_surface_block(const SurfaceFrame& frame, const Material& m,
-                                const GaborSetup& gabor, double speed_gain, bool has_albedo_tex);
+// `gabor`: the material's texture as make_gabor_block() packed it (with its baked tile, if any).
+SurfaceBlock make_surface_block(const SurfaceFrame& frame, const Material& m, const GaborBlock& gabor,
+                                double speed_gain, bool has_albedo_tex);
 
 struct SurfaceDraw {
   const GpuMesh* mesh = nullptr;

@@ -68,13 +68,13 @@ double gabor_baked_rms_vs_naive(const GaborParams& g, const GaborSetup& s, const
 // The tile a material gets: strategy kBaked / kBakedLinear -> its bake_samples_per_lambda as
 // asked (no error check); kAuto -> bilinear at 24 and 32, then Hermite at 16 and 32 samples per
 // lambda_min (fastest lookup first, bench-measured), the first whose measured RMS against the
-// naive texture is <= kAutoBakeMaxRms and whose period is >= min_period_mm; otherwise (and for
+// naive texture is <= kAutoBakeSelectRms and whose period is >= min_period_mm; otherwise (and for
 // other strategies) ok == false. The renderer passes the pseudo-shadow window's width (the probe's
 // bounding diameter) as min_period_mm, so "auto" never shows a repeat inside one shadow.
-inline constexpr double kAutoBakeMaxRms = 0.01;  // sigma; the bar
-// What the estimate must show: the error sits on sparse truncation circles, so an RMS from a
-// few thousand points scatters by ~10-20 % between point sets (sparse textures most); a tile
-// chosen at 0.99 % measured 1.27 % on another set. 0.9 % leaves that margin.
+// Sigma. The bar a tile must meet is 1 % RMS; what the estimate must show is lower: the error
+// sits on sparse truncation circles, so an RMS from a few thousand points scatters by ~10-20 %
+// between point sets (sparse textures most); a tile chosen at 0.99 % measured 1.27 % on another
+// set. 0.9 % leaves that margin.
 inline constexpr double kAutoBakeSelectRms = 0.009;
 struct GaborStrategyChoice {
   GaborBakePlan plan;          // ok: bake this; else evaluate naive (or stratified)

@@ -8,18 +8,11 @@
 #include <glm/gtc/matrix_transform.hpp>
 
 #include "gl/shader.h"
-#include "passes/gabor_bake.h"
 #include "reference/modulation.h"
 #include "render/camera.h"
 #include "scene/mesh.h"
 
 namespace ps {
-
-const std::vector<std::string>& aov_names() {
-  static const std::vector<std::string> names = {"intensity", "distance", "texture", "normal",
-                                                 "displacement"};
-  return names;
-}
 
 namespace {
 
@@ -46,6 +39,35 @@ Result<gl::Texture> upload_albedo(const std::string& path) {
   glTextureParameteri(t.id(), GL_TEXTURE_WRAP_S, GL_REPEAT);
   glTextureParameteri(t.id(), GL_TEXTURE_WRAP_T, GL_REPEAT);
   return t;
+}
+
+// What --stats says about a textured material's Gabor strategy: auto's choice and why, or a
+// baked strategy's fallback to the naive sum; empty when there is nothing to say.
+std::string strategy_note(const Material& m, const GaborStrategyChoice& choice, double shadow_window_mm) {
+  const GaborBakePlan& plan = choice.plan;
+  char note[200];
+  if (m.gabor.strategy == GaborParams::Strategy::kAuto) {
+    if (plan.ok)
+      std::snprintf(note, sizeof note, "material '%s': Gabor sum replaced by a baked %d^2 tile "
+                    "(%s lookup, %.0f mm period, RMS %.4f sigma vs naive)", m.name.c_str(), plan.texels,
+                    plan.linear ? "bilinear" : "Hermite", plan.period_mm, choice.rms_vs_naive);
+    else if (choice.best_period_mm == 0.0)
+      std::snprintf(note, sizeof note, "material '%s': naive Gabor sum (too fine for a %d^2 tile)",
+                    m.name.c_str(), kMaxBakeTexels);
+    else if (choice.best_period_mm < shadow_window_mm)
+      std::snprintf(note, sizeof note, "material '%s': naive Gabor sum (a tile would repeat every "
+                    "%.1f mm, inside the %.1f mm shadow)", m.name.c_str(), choice.best_period_mm,
+                    shadow_window_mm);
+    else
+      std::snprintf(note, sizeof note, "material '%s': naive Gabor sum (no tile within %.0f %% "
+                    "sigma of it: best %.4f)", m.name.c_str(), kAutoBakeSelectRms * 100.0, choice.rms_vs_naive);
+    return note;
+  }
+  if (!plan.ok && (m.gabor.strategy == GaborParams::Strategy::kBaked ||
+                   m.gabor.strategy == GaborParams::Strategy::kBakedLinear))
+    return "material '" + m.name + "': too fine for a baked tile "
+           "(lambda_max / lambda_min too large), naive Gabor used";
+  return {};
 }
 
 class PassTimer {
@@ -77,8 +99,11 @@ Result<std::unique_ptr<Renderer>> Renderer::create(const Scene& scene, const Ren
   r->options_ = options;
   if (r->options_.glsl_root.empty()) r->options_.glsl_root = gl::default_glsl_root();
   r->frame_ = make_plane_frame(toward_viewer(scene.camera));
-  if (Status s = r->load_scene_resources(); !s) return s.error();
-  if (Status s = r->init_passes(); !s) return s.error();
+  for (Status (Renderer::*step)() : {&Renderer::upload_surfaces, &Renderer::load_probe_mesh,
+                                     &Renderer::load_materials, &Renderer::init_passes,
+                                     &Renderer::bake_gabor_tiles}) {
+    if (Status s = (r.get()->*step)(); !s) return s.error();
+  }
   if (options.prime_reference_plane) {
     if (Status s = r->prime_reference_plane(); !s) return s.error();
   }
@@ -87,82 +112,48 @@ Result<std::unique_ptr<Renderer>> Renderer::create(const Scene& scene, const Ren
   return r;
 }
 
-Status Renderer::load_scene_resources() {
+Status Renderer::upload_surfaces() {
   for (const Surface& s : scene_.surfaces) {
     auto mesh = build_surface_mesh(s);
     if (!mesh) return mesh.error();
-    surface_bounds_.push_back(mesh_bounds(mesh.value()));
-    surface_meshes_.push_back(GpuMesh::upload(mesh.value()));
+    geometry_.surface_bounds.push_back(mesh_bounds(mesh.value()));
+    geometry_.surface_meshes.push_back(GpuMesh::upload(mesh.value()));
   }
-  if (scene_.probe.shape == ProbeShape::kMesh) {
-    auto mesh = load_mesh_file(scene_.probe.mesh_file);
-    if (!mesh) return mesh.error();
-    transform_mesh(mesh.value(), scene_.probe.mesh_scale, glm::dvec3(0.0), glm::dvec3(0.0));
-    probe_mesh_bounds_ = mesh_bounds(mesh.value());
-    probe_mesh_ = GpuMesh::upload(mesh.value());
-  }
+  return ok_status();
+}
+
+Status Renderer::load_probe_mesh() {
+  if (scene_.probe.shape != ProbeShape::kMesh) return ok_status();  // analytic: nothing to load
+  auto mesh = load_mesh_file(scene_.probe.mesh_file);
+  if (!mesh) return mesh.error();
+  transform_mesh(mesh.value(), scene_.probe.mesh_scale, glm::dvec3(0.0), glm::dvec3(0.0));
+  geometry_.probe_mesh_bounds = mesh_bounds(mesh.value());
+  geometry_.probe_mesh = GpuMesh::upload(mesh.value());
+  return ok_status();
+}
+
+Status Renderer::load_materials() {
   // The pseudo-shadow lives in a square window as wide as the probe's bounding diameter
   // (plan.cpp): a baked tile chosen by "auto" must be at least that long so no shadow shows a
   // repeat. (Editing the probe's size builds a new Renderer, so this is chosen again.)
   const double shadow_window_mm = 2.0 * current_probe_bounds().radius;
-  for (const Material& m : scene_.materials) {
-    gabor_setups_.push_back(make_gabor_setup(m.gabor));
-    gl::Texture tex;
+  const std::uint32_t seed = scene_.render.seed;
+  materials_.resize(scene_.materials.size());
+  for (size_t i = 0; i < materials_.size(); ++i) {
+    const Material& m = scene_.materials[i];
+    MaterialState& ms = materials_[i];
     if (!m.albedo_texture.empty()) {
       auto t = upload_albedo(m.albedo_texture);
       if (!t) return t.error();
-      tex = std::move(t.value());
+      ms.albedo = std::move(t.value());
     }
-    albedo_textures_.push_back(std::move(tex));
-    // Strategy "baked": one tile per material, baked here, i.e. again only when the material
-    // changes (every edit builds a new Renderer). Too fine for a tile: the naive sum is used.
-    GaborBakePlan plan;
-    std::shared_ptr<gl::Texture> tile;
+    ms.gabor_setup = make_gabor_setup(m.gabor);
     if (m.textured) {
-      const GaborStrategyChoice choice = choose_gabor_tile(m.gabor, gabor_setups_.back(), scene_.render.seed,
-                                                             shadow_window_mm);
-      plan = choice.plan;
-      if (m.gabor.strategy == GaborParams::Strategy::kAuto) {
-        char note[200];
-        if (plan.ok)
-          std::snprintf(note, sizeof note, "material '%s': Gabor sum replaced by a baked %d^2 tile "
-                        "(%s lookup, %.0f mm period, RMS %.4f sigma vs naive)", m.name.c_str(), plan.texels,
-                        plan.linear ? "bilinear" : "Hermite", plan.period_mm, choice.rms_vs_naive);
-        else if (choice.best_period_mm == 0.0)
-          std::snprintf(note, sizeof note, "material '%s': naive Gabor sum (too fine for a %d^2 tile)",
-                        m.name.c_str(), kMaxBakeTexels);
-        else if (choice.best_period_mm < shadow_window_mm)
-          std::snprintf(note, sizeof note, "material '%s': naive Gabor sum (a tile would repeat every "
-                        "%.1f mm, inside the %.1f mm shadow)", m.name.c_str(), choice.best_period_mm,
-                        shadow_window_mm);
-        else
-          std::snprintf(note, sizeof note, "material '%s': naive Gabor sum (no tile within %.0f %% "
-                        "sigma of it: best %.4f)", m.name.c_str(), kAutoBakeSelectRms * 100.0, choice.rms_vs_naive);
-        strategy_notes_.push_back(note);
-      } else if (!plan.ok && (m.gabor.strategy == GaborParams::Strategy::kBaked ||
-                              m.gabor.strategy == GaborParams::Strategy::kBakedLinear)) {
-        strategy_notes_.push_back("material '" + m.name + "': too fine for a baked tile "
-                                  "(lambda_max / lambda_min too large), naive Gabor used");
-      }
-      const Renderer* old = options_.reuse_tiles_from;
-      if (plan.ok && old)
-        for (size_t k = 0; k < old->scene_.materials.size() && !tile; ++k)
-          if (old->gabor_tiles_[k] && old->scene_.materials[k].gabor == m.gabor &&
-              old->scene_.render.seed == scene_.render.seed && old->bake_plans_[k].linear == plan.linear &&
-              old->bake_plans_[k].texels == plan.texels && old->bake_plans_[k].period_cells == plan.period_cells)
-            tile = old->gabor_tiles_[k];
-      if (plan.ok && !tile) {
-        const auto t0 = std::chrono::steady_clock::now();
-        auto baked = bake_gabor_tile(options_.glsl_root, m.gabor, gabor_setups_.back(), plan,
-                                     scene_.render.seed);
-        if (!baked) return baked.error();
-        tile = std::make_shared<gl::Texture>(std::move(baked.value()));
-        glFinish();
-        stats_.bake_ms += std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
-      }
+      const GaborStrategyChoice choice = choose_gabor_tile(m.gabor, ms.gabor_setup, seed, shadow_window_mm);
+      ms.bake_plan = choice.plan;
+      ms.strategy_note = strategy_note(m, choice, shadow_window_mm);
     }
-    bake_plans_.push_back(plan);
-    gabor_tiles_.push_back(std::move(tile));
+    ms.gabor_block = make_gabor_block(m.gabor, ms.gabor_setup, ms.bake_plan, seed);
   }
   return ok_status();
 }
@@ -175,16 +166,47 @@ Status Renderer::init_passes() {
   return probe_view_.init(options_.glsl_root, surface_);
 }
 
+// Strategy "baked": one tile per material, baked here, i.e. again only when the material
+// changes (every edit builds a new Renderer; reuse_tiles_from keeps the unchanged ones).
+Status Renderer::bake_gabor_tiles() {
+  for (size_t i = 0; i < materials_.size(); ++i) {
+    MaterialState& ms = materials_[i];
+    if (!ms.bake_plan.ok) continue;
+    ms.gabor_tile = reusable_tile(scene_.materials[i], ms.bake_plan);
+    if (ms.gabor_tile) continue;
+    const auto t0 = std::chrono::steady_clock::now();
+    if (!gabor_bake_.ready()) {
+      if (Status s = gabor_bake_.init(options_.glsl_root); !s) return s;
+    }
+    auto baked = gabor_bake_.run(ms.gabor_block, ms.bake_plan);
+    if (!baked) return baked.error();
+    ms.gabor_tile = std::make_shared<gl::Texture>(std::move(baked.value()));
+    glFinish();
+    stats_.bake_ms += std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
+  }
+  return ok_status();
+}
+
+// A tile of options_.reuse_tiles_from made from the same Gabor parameters, seed and plan.
+std::shared_ptr<gl::Texture> Renderer::reusable_tile(const Material& m, const GaborBakePlan& plan) const {
+  const Renderer* old = options_.reuse_tiles_from;
+  if (!old || old->scene_.render.seed != scene_.render.seed) return nullptr;
+  for (size_t k = 0; k < old->materials_.size(); ++k) {
+    const MaterialState& o = old->materials_[k];
+    if (o.gabor_tile && old->scene_.materials[k].gabor == m.gabor && o.bake_plan.linear == plan.linear &&
+        o.bake_plan.texels == plan.texels && o.bake_plan.period_cells == plan.period_cells)
+      return o.gabor_tile;
+  }
+  return nullptr;
+}
+
 Status Renderer::prime_reference_plane() {
-  FramePlan plan = make_plan(scene_, surface_bounds_, current_probe_bounds(), frame_,
+  FramePlan plan = make_plan(scene_, geometry_.surface_bounds, current_probe_bounds(), frame_,
                              scene_.render.depth_map_size);
   plan.surface_shadow.assign(plan.surface_shadow.size(), false);
   plan.surface_textured.assign(plan.surface_textured.size(), false);
   if (Status s = surface_.run(surface_draws(plan), nullptr, scene_.render.background); !s) return s;
-  const ReductionResult r = reductions_.run(surface_, {scene_.render.weight_exponent}, false);
-  const double len = glm::length(r.normal_sum);
-  if (len > 1e-6 * std::max(r.normal_coverage, 1e-30) && std::isfinite(len))
-    frame_ = make_plane_frame(r.normal_sum / len);
+  update_reference_plane(reductions_.run(surface_, {scene_.render.weight_exponent}, false));
   return ok_status();
 }
 
@@ -195,7 +217,19 @@ void Renderer::set_probe_state(const glm::dvec3& position, const glm::dvec3& vel
 
 BoundingSphere Renderer::current_probe_bounds() const {
   const Probe& p = scene_.probe;
-  return probe_bounds(p, probe_mesh_bounds_.min + p.position, probe_mesh_bounds_.max + p.position);
+  const Aabb& b = geometry_.probe_mesh_bounds;
+  return probe_bounds(p, b.min + p.position, b.max + p.position);
+}
+
+ProbeInput Renderer::probe_input() const {
+  ProbeInput in;
+  if (scene_.probe.shape == ProbeShape::kMesh) {
+    in.mesh = &geometry_.probe_mesh;
+    in.model = glm::translate(glm::dmat4(1.0), scene_.probe.position);
+  } else {
+    in.capsule = capsule_of(scene_.probe);
+  }
+  return in;
 }
 
 std::vector<SurfaceDraw> Renderer::surface_draws(const FramePlan& plan) {
@@ -208,44 +242,42 @@ std::vector<SurfaceDraw> Renderer::surface_draws(const FramePlan& plan) {
   fr.depth_map_size = scene_.render.depth_map_size;
   fr.light = &scene_.light;
   fr.contrast_sigmas = options_.contrast_sigmas;
-  fr.seed = scene_.render.seed;
   std::vector<SurfaceDraw> draws;
   bool gain_recorded = false;
   for (size_t i = 0; i < scene_.surfaces.size(); ++i) {
     const size_t mi = static_cast<size_t>(scene_.surfaces[i].material_index);
     const Material& m = scene_.materials[mi];
+    const MaterialState& ms = materials_[mi];
     const double gain = speed_gain(m, frame_, scene_.probe.velocity);
     if (plan.surface_shadow[i] && !gain_recorded) {
       stats_.speed_gain = gain;
       gain_recorded = true;
     }
-    const gl::Texture* albedo = albedo_textures_[mi] ? &albedo_textures_[mi] : nullptr;
     SurfaceDraw d;
-    d.mesh = &surface_meshes_[i];
-    d.block = make_surface_block(fr, m, gabor_setups_[mi], gain, albedo != nullptr);
+    d.mesh = &geometry_.surface_meshes[i];
+    d.block = make_surface_block(fr, m, ms.gabor_block, gain, static_cast<bool>(ms.albedo));
     d.shadow = plan.surface_shadow[i];
     d.textured = plan.surface_textured[i];
-    d.stratified = gabor_setups_[mi].stratified_count > 0;
-    d.albedo = albedo;
-    if (gabor_tiles_[mi]) {
-      const GaborBakePlan& plan = bake_plans_[mi];
-      d.gabor_tile = gabor_tiles_[mi].get();
-      d.gabor_tile_linear = plan.linear;
-      d.block.misc = glm::vec4(d.block.misc.x, static_cast<float>(plan.period_mm),
-                               static_cast<float>(plan.texel_mm), static_cast<float>(plan.texels));
-    }
+    d.stratified = ms.gabor_setup.stratified_count > 0;
+    d.albedo = ms.albedo ? &ms.albedo : nullptr;
+    d.gabor_tile = ms.gabor_tile.get();
+    d.gabor_tile_linear = ms.bake_plan.linear;
     draws.push_back(std::move(d));
   }
   return draws;
 }
 
-void Renderer::apply_reductions(const ReductionResult& r, const FramePlan& plan) {
-  // Mean of the visible normals becomes the next frame's reference normal (thesis §4.5.2).
-  // A mean of (nearly) zero length - a sheet seen edge-on, a sphere seen from inside - has no
-  // direction: keep the previous plane rather than normalising noise.
+// Mean of the visible normals becomes the next frame's reference normal (thesis §4.5.2).
+// A mean of (nearly) zero length - a sheet seen edge-on, a sphere seen from inside - has no
+// direction: keep the previous plane rather than normalising noise.
+void Renderer::update_reference_plane(const ReductionResult& r) {
   const double len = glm::length(r.normal_sum);
   if (len > 1e-6 * std::max(r.normal_coverage, 1e-30) && std::isfinite(len))
     frame_ = make_plane_frame(r.normal_sum / len);
+}
+
+void Renderer::apply_reductions(const ReductionResult& r, const FramePlan& plan) {
+  update_reference_plane(r);
   glm::dvec3 disp(0.0);
   if (plan.shadow_active) {
     if (scene_.render.displacement == DisplacementMethod::kExactMax)
@@ -267,25 +299,14 @@ Status Renderer::render_frame() {
   stats_.timings_ms.clear();
   PassTimer timer(options_.time_passes, stats_);
   const BoundingSphere probe = current_probe_bounds();
-  const FramePlan plan = make_plan(scene_, surface_bounds_, probe, frame_, scene_.render.depth_map_size);
+  const FramePlan plan = make_plan(scene_, geometry_.surface_bounds, probe, frame_,
+                                   scene_.render.depth_map_size);
   stats_.skipped = plan.skipped;
-  stats_.skipped.insert(stats_.skipped.end(), strategy_notes_.begin(), strategy_notes_.end());
+  for (const MaterialState& ms : materials_)
+    if (!ms.strategy_note.empty()) stats_.skipped.push_back(ms.strategy_note);
   timer.lap("plan");
   if (plan.shadow_active) {
-    ProbeDepthPass::Inputs in;
-    in.frame = &frame_;
-    in.window = plan.window;
-    const CapsuleShape capsule = capsule_of(scene_.probe);
-    if (scene_.probe.shape == ProbeShape::kMesh) {
-      in.mesh = &probe_mesh_;
-      in.model = glm::translate(glm::dmat4(1.0), scene_.probe.position);
-      const double hc = glm::dot(probe.center, frame_.n);
-      in.height_lo = hc - probe.radius - 1.0;
-      in.height_hi = hc + probe.radius + 1.0;
-    } else {
-      in.capsule = &capsule;
-    }
-    probe_depth_.run(in);
+    run_probe_depth(plan, probe);
     timer.lap("probe_depth");
   }
   if (Status s = surface_.run(surface_draws(plan), plan.shadow_active ? &probe_depth_.depth() : nullptr,
@@ -300,21 +321,30 @@ Status Renderer::render_frame() {
     apply_reductions(ReductionResult{}, plan);  // zero sum: plane kept, no displacement
   }
   if (show_probe_) {
-    ProbeViewPass::Inputs in;
-    in.view_proj = view_projection(scene_.camera,
-                                   static_cast<double>(scene_.render.width) / scene_.render.height);
-    in.light = &scene_.light;
-    const CapsuleShape capsule = capsule_of(scene_.probe);  // after the displacement
-    if (scene_.probe.shape == ProbeShape::kMesh) {
-      in.mesh = &probe_mesh_;
-      in.model = glm::translate(glm::dmat4(1.0), scene_.probe.position);
-    } else {
-      in.capsule = &capsule;
-    }
-    probe_view_.run(in);
+    run_probe_view();
     timer.lap("probe_view");
   }
   return ok_status();
+}
+
+void Renderer::run_probe_depth(const FramePlan& plan, const BoundingSphere& probe) {
+  ProbeDepthPass::Inputs in;
+  in.frame = &frame_;
+  in.window = plan.window;
+  in.probe = probe_input();
+  // Mesh probes: the depth buffer spans the probe's plane-height range, with 1 mm of margin.
+  const double hc = glm::dot(probe.center, frame_.n);
+  in.height_lo = hc - probe.radius - 1.0;
+  in.height_hi = hc + probe.radius + 1.0;
+  probe_depth_.run(in);
+}
+
+void Renderer::run_probe_view() {
+  ProbeViewPass::Inputs in;
+  in.view_proj = view_projection(scene_.camera, static_cast<double>(scene_.render.width) / scene_.render.height);
+  in.light = &scene_.light;
+  in.probe = probe_input();  // after this frame's displacement
+  probe_view_.run(in);
 }
 
 namespace {
@@ -368,24 +398,29 @@ Image Renderer::read_color() const {
                      GL_UNSIGNED_BYTE);
 }
 
-Result<Image> Renderer::read_aov(const std::string& name) const {
+Result<Image> Renderer::read_aov(Aov aov) const {
+  const AovInfo& e = aov_info(aov);
   const int w = scene_.render.width, h = scene_.render.height;
-  if (name == "normal") return read_region(surface_.normal(), w, h, 3, GL_RGBA, GL_FLOAT);
-  if (name == "displacement") {
-    // Drawn on request from the frame's targets (the frame's average uses row sums instead).
-    auto tex = reductions_.displacement_aov(surface_);
-    if (!tex) return tex.error();
-    return read_region(tex.value(), w, h, 4, GL_RGBA, GL_FLOAT);
+  switch (e.source) {
+    case AovSource::kSurfaceAov:
+      return pick_channel(read_region(surface_.aov(), w, h, 4, GL_RGBA, GL_FLOAT), e.channel);
+    case AovSource::kNormal:
+      return read_region(surface_.normal(), w, h, 3, GL_RGBA, GL_FLOAT);
+    case AovSource::kDisplacement: {
+      // Drawn on request from the frame's targets (the frame's average uses row sums instead).
+      auto tex = reductions_.displacement_aov(surface_);
+      if (!tex) return tex.error();
+      return read_region(tex.value(), w, h, 4, GL_RGBA, GL_FLOAT);
+    }
   }
-  const auto& names = aov_names();
-  const auto it = std::find(names.begin(), names.begin() + 3, name);
-  if (it == names.begin() + 3) {
-    std::string list;
-    for (const auto& n : names) list += (list.empty() ? "" : ", ") + n;
-    return make_error("unknown AOV '" + name + "' (known: " + list + ")");
-  }
-  const Image all = read_region(surface_.aov(), w, h, 4, GL_RGBA, GL_FLOAT);
-  return pick_channel(all, static_cast<int>(it - names.begin()));
+  return make_error("read_aov: unhandled AOV source");  // unreachable: the switch covers AovSource
+}
+
+Result<Image> Renderer::read_aov(const std::string& name) const {
+  if (const std::optional<Aov> aov = parse_aov(name)) return read_aov(*aov);
+  std::string list;
+  for (const auto& n : aov_names()) list += (list.empty() ? "" : ", ") + n;
+  return make_error("unknown AOV '" + name + "' (known: " + list + ")");
 }
 
 }  // namespace ps

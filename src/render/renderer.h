@@ -12,10 +12,13 @@
 
 #include "core/result.h"
 #include "image/image.h"
+#include "passes/gabor_bake.h"
+#include "passes/gabor_block.h"
 #include "passes/probe_depth.h"
 #include "passes/probe_view.h"
 #include "passes/reductions.h"
 #include "passes/surface.h"
+#include "render/aov.h"
 #include "render/plan.h"
 #include "scene/scene.h"
 
@@ -45,11 +48,9 @@ struct FrameStats {
   std::uint32_t shadow_pixels = 0, penetrating_pixels = 0;
   std::vector<std::pair<std::string, double>> timings_ms;
   std::vector<std::string> skipped;
-  double bake_ms = 0.0;  // Gabor tiles baked when the renderer was created (strategy "baked")
+  double bake_ms = 0.0;  // baking the Gabor tiles at creation, with the bake program's one build
 };
 
-// AOV names accepted by read_aov().
-const std::vector<std::string>& aov_names();
 
 class Renderer {
  public:
@@ -57,11 +58,12 @@ class Renderer {
 
   Status render_frame();
   Image read_color() const;                        // RGB, top row first, image size
-  Result<Image> read_aov(const std::string& name) const;
+  Result<Image> read_aov(Aov aov) const;
+  Result<Image> read_aov(const std::string& name) const;  // unknown name: error listing aov_names()
 
   const FrameStats& stats() const { return stats_; }
   // The baked tile material i is drawn with (ok == false: the per-pixel sum), as chosen at creation.
-  const GaborBakePlan& gabor_bake_plan(size_t material) const { return bake_plans_[material]; }
+  const GaborBakePlan& gabor_bake_plan(size_t material) const { return materials_[material].bake_plan; }
   const Scene& scene() const { return scene_; }
   const PlaneFrame& reference() const { return frame_; }
   void set_probe_state(const glm::dvec3& position, const glm::dvec3& velocity);
@@ -75,27 +77,49 @@ class Renderer {
   const gl::Texture& color_texture() const { return surface_.color(); }
 
  private:
+  // Everything the renderer keeps for one scene material (index = Scene::materials), built once
+  // at creation: what was decided on the CPU, then what lives on the GPU.
+  struct MaterialState {
+    GaborSetup gabor_setup;
+    GaborBakePlan bake_plan;    // ok == false: not baked (naive or stratified sum)
+    std::string strategy_note;  // auto's choice or baked's fallback, for stats.skipped; empty: none
+    GaborBlock gabor_block;     // the Gabor uniforms (with the tile plan), packed once
+    gl::Texture albedo;         // empty: no albedo texture
+    std::shared_ptr<gl::Texture> gabor_tile;  // null: none; shared with reuse_tiles_from
+  };
+  // The scene's meshes on the GPU.
+  struct Geometry {
+    std::vector<GpuMesh> surface_meshes;  // index = Scene::surfaces
+    std::vector<Aabb> surface_bounds;     // the same surfaces' world bounds (the plan's input)
+    GpuMesh probe_mesh;                   // mesh probes only
+    Aabb probe_mesh_bounds;               // model space, scaled
+  };
+
   Renderer() = default;
-  Status load_scene_resources();
+  // Creation, in order: each builds one part of the state.
+  Status upload_surfaces();
+  Status load_probe_mesh();
+  Status load_materials();        // albedo textures, Gabor setup and strategy
   Status init_passes();
+  Status bake_gabor_tiles();      // tiles of the materials whose strategy chose one
   Status prime_reference_plane();
+  std::shared_ptr<gl::Texture> reusable_tile(const Material& m, const GaborBakePlan& plan) const;
+  // Per frame.
   BoundingSphere current_probe_bounds() const;
+  ProbeInput probe_input() const;
+  void run_probe_depth(const FramePlan& plan, const BoundingSphere& probe);
   std::vector<SurfaceDraw> surface_draws(const FramePlan& plan);
+  void update_reference_plane(const ReductionResult& r);
   void apply_reductions(const ReductionResult& r, const FramePlan& plan);
+  void run_probe_view();
 
   Scene scene_;
   RendererOptions options_;
   PlaneFrame frame_;
   FrameStats stats_;
-  std::vector<GpuMesh> surface_meshes_;
-  std::vector<Aabb> surface_bounds_;
-  std::vector<GaborSetup> gabor_setups_;     // per material
-  std::vector<gl::Texture> albedo_textures_; // per material (empty texture = none)
-  std::vector<GaborBakePlan> bake_plans_;    // per material (ok == false: not baked)
-  std::vector<std::shared_ptr<gl::Texture>> gabor_tiles_;  // per material (null = none)
-  std::vector<std::string> strategy_notes_;  // Gabor strategy per material: auto's choice, baked's fallback (stats.skipped)
-  GpuMesh probe_mesh_;
-  Aabb probe_mesh_bounds_;                   // model space, scaled
+  Geometry geometry_;
+  std::vector<MaterialState> materials_;
+  GaborBakePass gabor_bake_;  // initialised on the first tile to bake
   ProbeDepthPass probe_depth_;
   SurfacePass surface_;
   ReductionsPass reductions_;

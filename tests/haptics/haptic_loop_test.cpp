@@ -1,6 +1,7 @@
 // The haptic loop under a fake clock, device logs and the sanitizer. No GL.
 #include <gtest/gtest.h>
 
+#include <chrono>
 #include <cmath>
 #include <limits>
 
@@ -42,6 +43,41 @@ TEST(HapticLoopTest, FakeClockGivesDeterministicTicks) {
   EXPECT_DOUBLE_EQ(last.time_s, 0.999);
   EXPECT_NEAR(last.device_mm.x, 99.9, 1e-9);
   EXPECT_NEAR(last.velocity_mm_s.x, 100.0, 2.0);  // Kalman velocity of a 100 mm/s ramp
+}
+
+// The loop's logs are allocated at construction: logging past the old 100 k reservation, and a
+// stall whose missed ticks run back to back inside one HUD window, must not grow either (a
+// reallocation on the 1 kHz thread copies megabytes mid-tick).
+TEST(HapticLoopTest, LogsNeverReallocateWhileLogging) {
+  LogDevice device(line_samples(), true, "line");
+  FakeClock clock;
+  const HapticLoopParams params;
+  HapticLoop loop(device, clock, params);
+  const std::size_t period_capacity = loop.period_log_capacity();
+  const std::size_t window_capacity = loop.jitter_window_capacity();
+  EXPECT_GE(period_capacity, params.keep_periods);
+  const double* storage = loop.periods_us().data();
+  loop.run_ticks(130'000);
+  clock.advance(std::chrono::seconds(5));  // 5000 missed ticks, then caught up at once
+  loop.run_ticks(6'000);
+  EXPECT_EQ(loop.periods_us().size(), 135'999u);  // every period of 136 000 ticks so far
+  EXPECT_EQ(loop.period_log_capacity(), period_capacity);
+  EXPECT_EQ(loop.periods_us().data(), storage);
+  EXPECT_EQ(loop.jitter_window_capacity(), window_capacity);
+  EXPECT_GT(loop.state().read().rate_hz, 0.0);
+}
+
+TEST(HapticLoopTest, PeriodLogKeepsAtMostKeepPeriods) {
+  LogDevice device(line_samples(), true, "line");
+  FakeClock clock;
+  HapticLoopParams params;
+  params.keep_periods = 500;
+  HapticLoop loop(device, clock, params);
+  const std::size_t capacity = loop.period_log_capacity();
+  loop.run_ticks(2'000);
+  EXPECT_EQ(loop.periods_us().size(), 500u);  // the first 500 periods; later ones dropped
+  EXPECT_EQ(loop.period_log_capacity(), capacity);
+  EXPECT_EQ(loop.period_stats().p50, 1000.0);  // exactly 1 ms: the fake clock wakes on time
 }
 
 TEST(HapticLoopTest, ProxyStaysOnSurfacePublishedByRenderThread) {

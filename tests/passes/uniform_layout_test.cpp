@@ -10,7 +10,10 @@
 #include <gtest/gtest.h>
 
 #include "gl/shader.h"
+#include "passes/gabor_bake.h"
+#include "passes/gabor_block.h"
 #include "passes/probe_depth.h"
+#include "passes/probe_view.h"
 #include "passes/reductions.h"
 #include "passes/surface.h"
 
@@ -25,8 +28,9 @@ class GlslangProcess : public ::testing::Environment {
 const auto* const kEnv = ::testing::AddGlobalTestEnvironment(new GlslangProcess);
 
 // Offsets of every uniform-block member of `file` (a fragment or compute shader), by name.
-std::map<std::string, int> block_offsets(const std::string& file, EShLanguage stage) {
-  auto src = gl::preprocess_shader(std::string(PS_SOURCE_DIR) + "/glsl/" + file, {},
+std::map<std::string, int> block_offsets(const std::string& file, EShLanguage stage,
+                                         const gl::Defines& defines = {}) {
+  auto src = gl::preprocess_shader(std::string(PS_SOURCE_DIR) + "/glsl/" + file, defines,
                                    std::string(PS_SOURCE_DIR) + "/glsl");
   EXPECT_TRUE(src.ok()) << (src.ok() ? "" : src.error().message);
   if (!src.ok()) return {};
@@ -55,8 +59,28 @@ std::map<std::string, int> block_offsets(const std::string& file, EShLanguage st
   return out;
 }
 
+// at(): a member missing from the GLSL block throws, failing the test with its name unknown;
+// find() keeps the name in the message.
+int offset_of(const std::map<std::string, int>& offsets, const std::string& glsl_name) {
+  const auto it = offsets.find(glsl_name);
+  EXPECT_NE(it, offsets.end()) << "no block member named " << glsl_name;
+  return it == offsets.end() ? -1 : it->second;
+}
+
 #define EXPECT_MEMBER(offsets, glsl_name, Struct, member) \
-  EXPECT_EQ(offsets.at(glsl_name), static_cast<int>(offsetof(Struct, member))) << glsl_name
+  EXPECT_EQ(offset_of(offsets, glsl_name), static_cast<int>(offsetof(Struct, member))) << glsl_name
+
+// Every member of the GaborBlock struct that Struct holds as `member` (named `glsl_prefix` in
+// GLSL): std140 places a struct member at a multiple of 16 and its members after it.
+#define EXPECT_GABOR_BLOCK(offsets, glsl_prefix, Struct, member)                                  \
+  do {                                                                                             \
+    const int base = static_cast<int>(offsetof(Struct, member));                                   \
+    EXPECT_EQ(offset_of(offsets, glsl_prefix ".amplitude_lambda"), base + static_cast<int>(offsetof(GaborBlock, amplitude_lambda))); \
+    EXPECT_EQ(offset_of(offsets, glsl_prefix ".theta_density"), base + static_cast<int>(offsetof(GaborBlock, theta_density)));       \
+    EXPECT_EQ(offset_of(offsets, glsl_prefix ".kernel"), base + static_cast<int>(offsetof(GaborBlock, kernel)));                     \
+    EXPECT_EQ(offset_of(offsets, glsl_prefix ".tile"), base + static_cast<int>(offsetof(GaborBlock, tile)));                         \
+    EXPECT_EQ(offset_of(offsets, glsl_prefix ".counts"), base + static_cast<int>(offsetof(GaborBlock, counts)));                     \
+  } while (false)
 
 TEST(UniformLayoutTest, SurfaceBlockMatches) {
   const auto o = block_offsets("surface.frag", EShLangFragment);
@@ -69,13 +93,34 @@ TEST(UniformLayoutTest, SurfaceBlockMatches) {
   EXPECT_MEMBER(o, "u_ref_b", SurfaceBlock, ref_b);
   EXPECT_MEMBER(o, "u_window", SurfaceBlock, window);
   EXPECT_MEMBER(o, "u_albedo", SurfaceBlock, albedo);
+  EXPECT_MEMBER(o, "u_albedo_scale", SurfaceBlock, albedo_scale);
   EXPECT_MEMBER(o, "u_intensity", SurfaceBlock, intensity);
-  EXPECT_MEMBER(o, "u_gabor_a", SurfaceBlock, gabor_a);
-  EXPECT_MEMBER(o, "u_gabor_b", SurfaceBlock, gabor_b);
-  EXPECT_MEMBER(o, "u_gabor_c", SurfaceBlock, gabor_c);
   EXPECT_MEMBER(o, "u_modulation", SurfaceBlock, modulation);
-  EXPECT_MEMBER(o, "u_misc", SurfaceBlock, misc);
-  EXPECT_MEMBER(o, "u_seed", SurfaceBlock, seed);
+  EXPECT_GABOR_BLOCK(o, "u_gabor", SurfaceBlock, gabor);
+}
+
+// The Gabor parameters' one contract (lib/gabor_block.glsl) as each pass that reads it sees it:
+// the surface pass (every variant that evaluates the texture) and the bake pass.
+TEST(UniformLayoutTest, GaborBlockMatchesInEveryPassThatReadsIt) {
+  const auto bake = block_offsets("gabor_bake.frag", EShLangFragment);
+  ASSERT_FALSE(bake.empty());
+  EXPECT_GABOR_BLOCK(bake, "u_gabor", GaborBakeBlock, gabor);
+  for (const gl::Defines& variant : {gl::Defines{}, gl::Defines{{"PS_GABOR_STRATIFIED", "1"}},
+                                     gl::Defines{{"PS_GABOR_BAKED", "1"}}, gl::Defines{{"PS_GABOR_BAKED", "2"}}}) {
+    const auto surface = block_offsets("surface.frag", EShLangFragment, variant);
+    ASSERT_FALSE(surface.empty());
+    EXPECT_GABOR_BLOCK(surface, "u_gabor", SurfaceBlock, gabor);
+  }
+}
+
+TEST(UniformLayoutTest, ProbeViewBlockMatches) {
+  const auto o = block_offsets("probe_view.frag", EShLangFragment);
+  ASSERT_FALSE(o.empty());
+  EXPECT_MEMBER(o, "u_view_proj", ProbeViewBlock, view_proj);
+  EXPECT_MEMBER(o, "u_model", ProbeViewBlock, model);
+  EXPECT_MEMBER(o, "u_light_dir", ProbeViewBlock, light_dir);
+  EXPECT_MEMBER(o, "u_light_color", ProbeViewBlock, light_color);
+  EXPECT_MEMBER(o, "u_probe_color", ProbeViewBlock, probe_color);
 }
 
 TEST(UniformLayoutTest, ProbeDepthBlockMatches) {

@@ -136,7 +136,7 @@ bool render_one(const Scene& s, Frame& out) {
 void pixel_errors(const Scene& s, const Frame& fr, int px, int py, const glm::dvec3& q, Errors& e) {
   const Material& m = s.materials[0];
   const double d_gpu = fr.dist.at(px, py, 0);
-  if (d_gpu < 1e29) {
+  if (!std::isnan(d_gpu)) {  // NaN: no probe above this pixel
     const CapsuleShape cap = capsule_of(s.probe);
     double err = 1e30;  // the texel choice may differ by one at a texel edge (float st)
     for (double nx : {-1e-3, 0.0, 1e-3})

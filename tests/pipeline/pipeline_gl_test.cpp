@@ -53,8 +53,10 @@ TEST_P(PipelineGLTest, SphereOverPlaneDistanceAndIntensityAtCentre) {
   EXPECT_NEAR(d_centre, 2.003, 1e-3);
   EXPECT_NEAR(dist.at(64, 64, 0), d_centre, 2e-3);
   EXPECT_NEAR(inten.at(64, 64, 0), 0.1 + 0.9 / (d_centre + 1.25), 3e-4);
-  // Outside the probe's silhouette there is no pseudo-shadow.
+  // Outside the probe's silhouette there is no pseudo-shadow, and no distance: the AOV's
+  // documented "no probe" value is NaN (kNoProbeDistance).
   EXPECT_EQ(inten.at(2, 2, 0), 0.0f);
+  EXPECT_TRUE(std::isnan(dist.at(2, 2, 0))) << dist.at(2, 2, 0);
 }
 
 TEST_P(PipelineGLTest, FlatPlaneReferenceNormalIsExact) {
