@@ -17,6 +17,13 @@ namespace ps {
 
 namespace {
 
+constexpr const char* kDescription =
+    "Sweeps the accuracy knobs (reduction base resolution, probe depth-map size, Gabor impulses per\n"
+    "kernel n, kernel truncation, Gabor evaluation strategy, displacement method) on an analytic\n"
+    "scene (flat plane, orthographic camera, sphere probe 0.5 mm deep) and measures frame time and\n"
+    "error against the CPU reference on the same frame. Also measures the skip ratios and the peak\n"
+    "RSS of `pseudoshadow render` at 512x512 and 2048x2048. Takes a few minutes on 2 cores.";
+
 struct BenchArgs {
   int size = 512, frames = 3;
   std::string out_dir = "bench_out";
@@ -38,11 +45,9 @@ void declare(cli::Command& cmd, BenchArgs& a) {
          },
          "image size for the sweep, square: NxN or N (default 512x512; 64..2048 per side)")
       ->type_name("WxH");
-  app.add_option_function<std::string>(
-         "--frames", [&a](const std::string& v) { a.frames = static_cast<int>(cli::parse_int("--frames", v, 1, 1000)); },
-         "timed warm frames per configuration and round (default 3); every configuration is measured "
-         "in 3 round-robin rounds, the median over all its timed frames is reported")
-      ->type_name("N");
+  cli::add_int(app, "--frames", "N", a.frames, 1, 1000,
+               "timed warm frames per configuration and round (default 3); every configuration is measured "
+               "in 3 round-robin rounds, the median over all its timed frames is reported");
   cli::add_gl_options(app, a.backend);
   app.add_option("--out-dir", a.out_dir, "output directory (default bench_out): bench.csv, bench.png, bench.md")
       ->type_name("DIR")
@@ -90,21 +95,15 @@ Status run(const BenchArgs& a) {
   return ok_status();
 }
 
+int run_and_report(const cli::Command& cmd, const BenchArgs& a) {
+  const Status s = run(a);
+  return s ? cli::kExitOk : cmd.fail(s.error());
+}
+
 }  // namespace
 
 int run_bench(int argc, char** argv) {
-  cli::Command cmd("bench",
-                   "Sweeps the accuracy knobs (reduction base resolution, probe depth-map size, Gabor impulses per\n"
-                   "kernel n, kernel truncation, Gabor evaluation strategy, displacement method) on an analytic\n"
-                   "scene (flat plane, orthographic camera, sphere probe 0.5 mm deep) and measures frame time and\n"
-                   "error against the CPU reference on the same frame. Also measures the skip ratios and the peak\n"
-                   "RSS of `pseudoshadow render` at 512x512 and 2048x2048. Takes a few minutes on 2 cores.");
-  BenchArgs a;
-  declare(cmd, a);
-  return cmd.run(argc, argv, [&] {
-    const Status s = run(a);
-    return s ? cli::kExitOk : cmd.fail(s.error());
-  });
+  return cli::run_command<BenchArgs>(argc, argv, "bench", kDescription, declare, run_and_report);
 }
 
 }  // namespace ps

@@ -58,6 +58,11 @@ Status measure(Renderer& renderer, HapticLoop& loop, double seconds, std::vector
   return ok_status();
 }
 
+constexpr const char* kDescription =
+    "Runs the 1 kHz haptic loop (synthetic device: a 30 mm circle over the surface, 1 turn/s) while\n"
+    "the renderer draws the scene flat out, and prints the loop rate, the period percentiles\n"
+    "(p50/p99/p99.9/max), the jitter |period - 1 ms| and the latency device sample -> frame done.";
+
 struct BenchArgs {
   cli::SceneArgs scene;
   gl::Backend backend = gl::Backend::kAuto;
@@ -69,16 +74,10 @@ void declare(cli::Command& cmd, BenchArgs& a) {
   CLI::App& app = cmd.app();
   cli::add_scene_options(app, a.scene);
   cli::add_image_options(app, a.scene);
-  app.add_option_function<std::string>(
-         "--seconds", [&a](const std::string& v) { a.seconds = cli::parse_positive("--seconds", v, 3600.0, "5"); },
-         "duration (default 5)")
-      ->type_name("S");
+  cli::add_positive(app, "--seconds", "S", a.seconds, 3600.0, "5", "duration (default 5)");
   cli::add_gl_options(app, a.backend);
-  app.add_option_function<std::string>(
-         "--realtime",
-         [&a](const std::string& v) { a.realtime = static_cast<int>(cli::parse_int("--realtime", v, 1, 99)); },
-         "run the haptic thread SCHED_FIFO at PRIO (1..99; needs CAP_SYS_NICE)")
-      ->type_name("PRIO");
+  cli::add_int(app, "--realtime", "PRIO", a.realtime, 1, 99,
+               "run the haptic thread SCHED_FIFO at PRIO (1..99; needs CAP_SYS_NICE)");
 }
 
 int bench(const cli::Command& cmd, const BenchArgs& a) {
@@ -106,13 +105,7 @@ int bench(const cli::Command& cmd, const BenchArgs& a) {
 }  // namespace
 
 int run_bench_haptics(int argc, char** argv) {
-  cli::Command cmd("bench-haptics",
-                   "Runs the 1 kHz haptic loop (synthetic device: a 30 mm circle over the surface, 1 turn/s) while\n"
-                   "the renderer draws the scene flat out, and prints the loop rate, the period percentiles\n"
-                   "(p50/p99/p99.9/max), the jitter |period - 1 ms| and the latency device sample -> frame done.");
-  BenchArgs a;
-  declare(cmd, a);
-  return cmd.run(argc, argv, [&] { return bench(cmd, a); });
+  return cli::run_command<BenchArgs>(argc, argv, "bench-haptics", kDescription, declare, bench);
 }
 
 }  // namespace ps

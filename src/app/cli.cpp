@@ -165,6 +165,13 @@ double parse_positive(std::string_view option, std::string_view text, double hi,
   return v;
 }
 
+CLI::Option* add_positive(CLI::App& app, const std::string& name, const std::string& value_name, double& out,
+                          double hi, const std::string& example, const std::string& help) {
+  return app.add_option_function<std::string>(
+                name, [name, &out, hi, example](const std::string& v) { out = parse_positive(name, v, hi, example); }, help)
+      ->type_name(value_name);
+}
+
 glm::ivec2 parse_size(std::string_view text, int max_side, long long max_pixels) {
   const std::string limit = " refused: the limit is " + std::to_string(max_side) + " pixels per side (at least 1) and " +
                             std::to_string(max_pixels) + " pixels in all";

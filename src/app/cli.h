@@ -67,6 +67,17 @@ class Command {
 CLI::Option* add_ordered(CLI::App& app, const std::string& name, const std::string& value_name,
                          const std::string& help, std::function<void(const std::string&)> apply);
 
+// Runs a command whose options live in an `Args` struct: declare(cmd, args) adds them, then
+// action(cmd, args) runs after a successful parse. The entry point of every command.
+template <class Args>
+int run_command(int argc, char** argv, std::string name, std::string description,
+                void (*declare)(Command&, Args&), int (*action)(const Command&, const Args&)) {
+  Command cmd(std::move(name), std::move(description));
+  Args args;
+  declare(cmd, args);
+  return cmd.run(argc, argv, [&] { return action(cmd, args); });
+}
+
 // Typed values; each throws UsageError whose message names `option` and shows a right input.
 // "1,2,3" -> three finite doubles.
 glm::dvec3 parse_vec3(std::string_view option, std::string_view text, std::string_view example);
@@ -76,6 +87,18 @@ glm::ivec2 parse_size(std::string_view text, int max_side, long long max_pixels)
 long long parse_int(std::string_view option, std::string_view text, long long lo, long long hi);
 // Finite number in (lo, hi].
 double parse_positive(std::string_view option, std::string_view text, double hi, std::string_view example);
+
+// An option taking a whole number in [lo, hi], or a number in (0, hi], stored in `out`.
+template <class Int>
+CLI::Option* add_int(CLI::App& app, const std::string& name, const std::string& value_name, Int& out,
+                     long long lo, long long hi, const std::string& help) {
+  return app.add_option_function<std::string>(
+                name, [name, &out, lo, hi](const std::string& v) { out = static_cast<Int>(parse_int(name, v, lo, hi)); },
+                help)
+      ->type_name(value_name);
+}
+CLI::Option* add_positive(CLI::App& app, const std::string& name, const std::string& value_name, double& out,
+                          double hi, const std::string& example, const std::string& help);
 
 // The one spelling of a vector as an override value: "[x,y,z]", each at %.17g (round-trips).
 std::string override_value(const glm::dvec3& v);

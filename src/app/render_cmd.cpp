@@ -22,6 +22,9 @@ namespace {
 // The distance AOV is float mm with NaN outside the shadow: only float formats keep it.
 constexpr std::string_view kFloatImageExtensions[] = {".exr", ".tif", ".tiff", ".hdr", ".pfm"};
 
+constexpr const char* kDescription =
+    "Renders a scene headless (EGL or OSMesa) and writes the image.";
+
 struct RenderArgs {
   cli::SceneArgs scene;
   gl::Backend backend = gl::Backend::kAuto;
@@ -147,10 +150,7 @@ int render(const cli::Command& cmd, const RenderArgs& a) {
 }  // namespace
 
 int run_render(int argc, char** argv) {
-  cli::Command cmd("render", "Renders a scene headless (EGL or OSMesa) and writes the image.");
-  RenderArgs a;
-  declare(cmd, a);
-  return cmd.run(argc, argv, [&] { return render(cmd, a); });
+  return cli::run_command<RenderArgs>(argc, argv, "render", kDescription, declare, render);
 }
 
 }  // namespace ps

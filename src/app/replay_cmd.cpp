@@ -16,6 +16,11 @@ namespace ps {
 
 namespace {
 
+constexpr const char* kDescription =
+    "Renders the frames of a device session (a recording made with `run --record`, or a scripted\n"
+    "trajectory) headless at a fixed frame rate. Deterministic: the haptic loop runs on a fake\n"
+    "clock, so the same log and scene always give byte-identical images.";
+
 struct ReplayArgs {
   cli::SceneArgs scene;
   gl::Backend backend = gl::Backend::kAuto;
@@ -33,14 +38,8 @@ void declare(cli::Command& cmd, ReplayArgs& a) {
                  "device log, lines 'time_s x y z buttons'; KIND playback (default: sample-and-hold, "
                  "exact) or trajectory (linear interpolation) (required)")
       ->type_name("[KIND:]FILE");
-  app.add_option_function<std::string>(
-         "--every", [&a](const std::string& v) { a.every = cli::parse_int("--every", v, 1, 1'000'000); },
-         "write every N-th frame (default 1)")
-      ->type_name("N");
-  app.add_option_function<std::string>(
-         "--fps", [&a](const std::string& v) { a.fps = cli::parse_positive("--fps", v, 10000.0, "30"); },
-         "frames per second of session time (default 30)")
-      ->type_name("F");
+  cli::add_int(app, "--every", "N", a.every, 1, 1'000'000, "write every N-th frame (default 1)");
+  cli::add_positive(app, "--fps", "F", a.fps, 10000.0, "30", "frames per second of session time (default 30)");
   cli::add_gl_options(app, a.backend);
   app.add_option("--out", a.out_dir, "writes DIR/frame_00000.png ... (required)")->type_name("DIR")->group(cli::kOutputGroup);
   app.add_option("--contact-sheet", a.sheet, "also one labelled sheet of the written frames (PNG)")
@@ -128,13 +127,7 @@ int replay(const cli::Command& cmd, const ReplayArgs& a) {
 }  // namespace
 
 int run_replay(int argc, char** argv) {
-  cli::Command cmd("replay",
-                   "Renders the frames of a device session (a recording made with `run --record`, or a scripted\n"
-                   "trajectory) headless at a fixed frame rate. Deterministic: the haptic loop runs on a fake\n"
-                   "clock, so the same log and scene always give byte-identical images.");
-  ReplayArgs a;
-  declare(cmd, a);
-  return cmd.run(argc, argv, [&] { return replay(cmd, a); });
+  return cli::run_command<ReplayArgs>(argc, argv, "replay", kDescription, declare, replay);
 }
 
 }  // namespace ps

@@ -39,6 +39,10 @@ file keeps the last good state running and shows its file:line in the title and 
 The title shows frame time, haptic rate and jitter, distance, speed, penetration.
 )";
 
+constexpr const char* kDescription =
+    "Opens a window and lets you move the probe over the scene with a device; the haptic loop\n"
+    "runs at 1 kHz on its own thread. Works under Xvfb (xvfb-run -a pseudoshadow run ...).";
+
 struct RunArgs {
   cli::SceneArgs scene;
   std::string device = "mouse", record, stats_path;
@@ -76,19 +80,10 @@ void declare(cli::Command& cmd, RunArgs& a) {
   app.add_flag("--show-probe", a.show_probe, "start with the probe drawn (P toggles it)");
   app.add_flag("--panel", a.panel, "start with the parameter panel shown (F1 toggles it)");
   app.add_flag("!--no-watch", a.watch, "do not reload the scene, its textures and glsl/ when they change");
-  app.add_option_function<std::string>(
-         "--realtime", [&a](const std::string& v) { a.realtime = cli::parse_int("--realtime", v, 1, 99); },
-         "haptic thread SCHED_FIFO at PRIO (1..99; needs CAP_SYS_NICE), much lower jitter on a loaded machine")
-      ->type_name("PRIO");
-  app.add_option_function<std::string>(
-         "--frames", [&a](const std::string& v) { a.frames = cli::parse_int("--frames", v, 1, 100'000'000); },
-         "quit after N frames")
-      ->type_name("N");
-  app.add_option_function<std::string>(
-         "--quit-after",
-         [&a](const std::string& v) { a.quit_after_s = cli::parse_positive("--quit-after", v, 1e9, "5"); },
-         "quit after S seconds")
-      ->type_name("S");
+  cli::add_int(app, "--realtime", "PRIO", a.realtime, 1, 99,
+               "haptic thread SCHED_FIFO at PRIO (1..99; needs CAP_SYS_NICE), much lower jitter on a loaded machine");
+  cli::add_int(app, "--frames", "N", a.frames, 1, 100'000'000, "quit after N frames");
+  cli::add_positive(app, "--quit-after", "S", a.quit_after_s, 1e9, "5", "quit after S seconds");
   cli::add_quiet_option(app, a.quiet, "no summary");
   app.footer(std::string(kRunKeys) + cli::kExitStatusHelp);
 }
@@ -289,12 +284,7 @@ int run(const cli::Command& cmd, const RunArgs& a) {
 }  // namespace
 
 int run_window(int argc, char** argv) {
-  cli::Command cmd("run",
-                   "Opens a window and lets you move the probe over the scene with a device; the haptic loop\n"
-                   "runs at 1 kHz on its own thread. Works under Xvfb (xvfb-run -a pseudoshadow run ...).");
-  RunArgs a;
-  declare(cmd, a);
-  return cmd.run(argc, argv, [&] { return run(cmd, a); });
+  return cli::run_command<RunArgs>(argc, argv, "run", kDescription, declare, run);
 }
 
 }  // namespace ps

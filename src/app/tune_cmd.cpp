@@ -22,6 +22,10 @@ save FILE(.png|.exr|.toml), stats, reload, help, quit, # comment. Errors name th
 session continues; the exit status is 1 if any command failed.
 )";
 
+constexpr const char* kDescription =
+    "Sweeps: renders the cross product of the sweeps (one render per cell, exactly as `render`\n"
+    "with --set KEY=VALUE) into one contact sheet, each cell labelled with its values.";
+
 struct TuneArgs {
   cli::SceneArgs scene;
   gl::Backend backend = gl::Backend::kAuto;
@@ -114,12 +118,7 @@ int tune(const cli::Command& cmd, const TuneArgs& a) {
 }  // namespace
 
 int run_tune(int argc, char** argv) {
-  cli::Command cmd("tune",
-                   "Sweeps: renders the cross product of the sweeps (one render per cell, exactly as `render`\n"
-                   "with --set KEY=VALUE) into one contact sheet, each cell labelled with its values.");
-  TuneArgs a;
-  declare(cmd, a);
-  return cmd.run(argc, argv, [&] { return tune(cmd, a); });
+  return cli::run_command<TuneArgs>(argc, argv, "tune", kDescription, declare, tune);
 }
 
 }  // namespace ps
