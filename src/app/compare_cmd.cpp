@@ -62,7 +62,7 @@ void declare(cli::Command& cmd, CompareArgs& args) {
          "always write |A-B| x10, clamped to [0,1], to OUT (PNG or EXR)")
       ->type_name("OUT");
   cmd.usage("pseudoshadow compare A B [--fail T] [--failpercent P] [--diff OUT]");
-  // The golden scripts and their tests read "compare: error: ..." (not "pseudoshadow compare:").
+  // tests/image/compare_cmd_test.cpp checks this prefix; the other commands say "pseudoshadow NAME: ".
   cmd.message_prefix("compare: error: ");
   app.footer(
       "Prints one line: compare: PASS|FAIL  max_abs=... mean_abs=... failing=N (x.xx%)  [limits: ...]\n"

@@ -22,7 +22,7 @@ namespace ps {
 
 struct TuneSource {
   std::string scene_path;               // empty: the built-in default scene
-  std::vector<std::string> overrides;   // "KEY=VALUE" (--overrides file lines, then --set)
+  std::vector<std::string> overrides;   // "KEY=VALUE", in command-line order (--set, --overrides lines)
   RendererOptions renderer;
 };
 
