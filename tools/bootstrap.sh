@@ -12,7 +12,7 @@ readonly kPackages=(
   libopenimageio-dev openimageio-tools libpng-dev
   libgtest-dev libgmock-dev libbenchmark-dev
   libassimp-dev assimp-testmodels libimgui-dev libtomlplusplus-dev nlohmann-json3-dev
-  gnuplot-nox xvfb xauth clang libclang-rt-14-dev ccache
+  libcli11-dev gnuplot-nox xvfb xauth clang libclang-rt-14-dev ccache
 )
 
 repo_root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"

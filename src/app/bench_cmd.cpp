@@ -8,7 +8,8 @@
 
 #include "app/bench_report.h"
 #include "app/bench_sweep.h"
-#include "app/cli_args.h"
+#include "app/cli.h"
+#include "app/cli_groups.h"
 #include "app/commands.h"
 #include "core/output_set.h"
 #include "gl/context.h"
@@ -17,57 +18,45 @@ namespace ps {
 
 namespace {
 
-constexpr const char* kBenchHelp = R"(usage: pseudoshadow bench [options]
-
-Sweeps the accuracy knobs (reduction base resolution, probe depth-map size, Gabor impulses per
-kernel n, kernel truncation, Gabor evaluation strategy, displacement method) on an analytic
-scene (flat plane, orthographic camera, sphere probe 0.5 mm deep) and measures frame time and
-error against the CPU reference on the same frame. Also measures the skip ratios and the peak
-RSS of `pseudoshadow render` at 512x512 and 2048x2048. Takes a few minutes on 2 cores.
-
-options:
-  --size N          image side in pixels for the sweep (default 512; 64..2048)
-  --frames N        timed warm frames per configuration and round (default 3); every
-                    configuration is measured in 3 round-robin rounds, the median over
-                    all its timed frames is reported
-  --out-dir DIR     output directory (default bench_out): bench.csv, bench.png, bench.md;
-                    created if its parent exists
-  --backend B       auto (EGL, then OSMesa) | egl | osmesa
-  -q, --quiet       no progress output
-  -h, --help        this text
-
-exit status: 0 success, 1 runtime error, 2 usage error
-)";
+constexpr const char* kDescription =
+    "Sweeps the accuracy knobs (reduction base resolution, probe depth-map size, Gabor impulses per\n"
+    "kernel n, kernel truncation, Gabor evaluation strategy, displacement method) on an analytic\n"
+    "scene (flat plane, orthographic camera, sphere probe 0.5 mm deep) and measures frame time and\n"
+    "error against the CPU reference on the same frame. Also measures the skip ratios and the peak\n"
+    "RSS of `pseudoshadow render` at 512x512 and 2048x2048. Takes a few minutes on 2 cores.";
 
 struct BenchArgs {
   int size = 512, frames = 3;
-  std::string out_dir = "bench_out", backend = "auto";
-  bool quiet = false, help = false;
+  std::string out_dir = "bench_out";
+  gl::Backend backend = gl::Backend::kAuto;
+  bool quiet = false;
 };
 
-Status parse_one(cli::ArgCursor& c, BenchArgs& a) {
-  if (auto v = c.option("--size")) {
-    if (!*v) return v->error();
-    auto n = cli::parse_int("--size", v->value(), 64, 2048);
-    if (!n) return n.error();
-    a.size = static_cast<int>(n.value());
-    return ok_status();
-  }
-  if (auto v = c.option("--frames")) {
-    if (!*v) return v->error();
-    auto n = cli::parse_int("--frames", v->value(), 1, 1000);
-    if (!n) return n.error();
-    a.frames = static_cast<int>(n.value());
-    return ok_status();
-  }
-  if (auto v = c.option("--out-dir")) return *v ? (a.out_dir = v->value(), ok_status()) : Status(v->error());
-  if (auto v = c.option("--backend")) return *v ? (a.backend = v->value(), ok_status()) : Status(v->error());
-  if (c.flag("-q") || c.flag("--quiet")) { a.quiet = true; return ok_status(); }
-  if (c.flag("-h") || c.flag("--help")) { a.help = true; return ok_status(); }
-  return make_error("unknown option '" + std::string(c.peek()) + "' (see pseudoshadow bench --help)");
+void declare(cli::Command& cmd, BenchArgs& a) {
+  CLI::App& app = cmd.app();
+  app.add_option_function<std::string>(
+         "--size",
+         [&a](const std::string& v) {
+           // The sweep's analytic scene is square: WxH must have W == H (N is short for NxN).
+           const glm::ivec2 sz = cli::parse_size(v, 2048, 2048LL * 2048);
+           if (sz.x != sz.y || sz.x < 64)
+             throw cli::UsageError("--size " + v + ": the sweep renders square images of 64 to 2048 pixels "
+                                   "per side, e.g. --size 512x512 (or --size 512)");
+           a.size = sz.x;
+         },
+         "image size for the sweep, square: NxN or N (default 512x512; 64..2048 per side)")
+      ->type_name("WxH");
+  cli::add_int(app, "--frames", "N", a.frames, 1, 1000,
+               "timed warm frames per configuration and round (default 3); every configuration is measured "
+               "in 3 round-robin rounds, the median over all its timed frames is reported");
+  cli::add_gl_options(app, a.backend);
+  app.add_option("--out-dir", a.out_dir, "output directory (default bench_out): bench.csv, bench.png, bench.md")
+      ->type_name("DIR")
+      ->group(cli::kOutputGroup);
+  cli::add_quiet_option(app, a.quiet);
 }
 
-Status run(const BenchArgs& a, gl::Backend backend) {
+Status run(const BenchArgs& a) {
   // The results (CSV and summary) are checked now and published together at the end, or not at
   // all. The plot is extra (it needs gnuplot) and is drawn after them; the RSS renders and the
   // plot's data files are work files in the same directory.
@@ -83,7 +72,7 @@ Status run(const BenchArgs& a, gl::Backend backend) {
   std::vector<bench::BenchRow> rows;
   {
     gl::ContextDesc desc;
-    desc.backend = backend;
+    desc.backend = a.backend;
     auto ctx = gl::create_context(desc);
     if (!ctx) return ctx.error();
     auto r = bench::run_sweep(o);
@@ -95,7 +84,7 @@ Status run(const BenchArgs& a, gl::Backend backend) {
     skip = s.value();
   }
   bench::RssReport rss;
-  const std::string bname = a.backend;
+  const std::string bname = gl::backend_name(a.backend);
   for (int size : {512, 2048}) {
     if (o.progress) o.progress("peak RSS of render " + std::to_string(size) + "^2 ...");
     auto k = bench::render_peak_rss_kib(size, bname, a.out_dir);
@@ -112,28 +101,15 @@ Status run(const BenchArgs& a, gl::Backend backend) {
   return ok_status();
 }
 
+int run_and_report(const cli::Command& cmd, const BenchArgs& a) {
+  const Status s = run(a);
+  return s ? cli::kExitOk : cmd.fail(s.error());
+}
+
 }  // namespace
 
 int run_bench(int argc, char** argv) {
-  BenchArgs a;
-  cli::ArgCursor c(argc, argv, 1);
-  while (!c.done()) {
-    if (Status s = parse_one(c, a); !s) {
-      std::fprintf(stderr, "pseudoshadow bench: %s\n", s.error().message.c_str());
-      return 2;
-    }
-  }
-  if (a.help) { std::fputs(kBenchHelp, stdout); return 0; }
-  auto backend = gl::parse_backend(a.backend);
-  if (!backend) {
-    std::fprintf(stderr, "pseudoshadow bench: --backend: %s\n", backend.error().message.c_str());
-    return 2;
-  }
-  if (Status s = run(a, backend.value()); !s) {
-    std::fprintf(stderr, "pseudoshadow bench: %s\n", s.error().message.c_str());
-    return 1;
-  }
-  return 0;
+  return cli::run_command<BenchArgs>(argc, argv, "bench", kDescription, declare, run_and_report);
 }
 
 }  // namespace ps

@@ -5,30 +5,15 @@
 #include <cmath>
 #include <cstdio>
 
-#include "app/cli_args.h"
+#include "app/cli.h"
+#include "app/cli_groups.h"
 #include "app/commands.h"
 #include "app/session.h"
 #include "gl/context.h"
-#include "scene/scene_io.h"
 
 namespace ps {
 
 namespace {
-
-constexpr const char* kBenchHelp = R"(usage: pseudoshadow bench-haptics [options]
-
-Runs the 1 kHz haptic loop (synthetic device: a 30 mm circle over the surface, 1 turn/s) while
-the renderer draws the scene flat out, and prints the loop rate, the period percentiles
-(p50/p99/p99.9/max), the jitter |period - 1 ms| and the latency device sample -> frame done.
-
-options:
-  --scene FILE       scene (default: the built-in default scene, 512x512)
-  --seconds S        duration (default 5)
-  --backend B        auto | egl | osmesa
-  --set KEY=VALUE    scene override
-  --realtime PRIO    run the haptic thread SCHED_FIFO at PRIO (1..99; needs CAP_SYS_NICE)
-  -h, --help         this text
-)";
 
 std::vector<DeviceSample> circle_samples(const glm::dvec3& center, double seconds) {
   std::vector<DeviceSample> out;
@@ -73,53 +58,35 @@ Status measure(Renderer& renderer, HapticLoop& loop, double seconds, std::vector
   return ok_status();
 }
 
+constexpr const char* kDescription =
+    "Runs the 1 kHz haptic loop (synthetic device: a 30 mm circle over the surface, 1 turn/s) while\n"
+    "the renderer draws the scene flat out, and prints the loop rate, the period percentiles\n"
+    "(p50/p99/p99.9/max), the jitter |period - 1 ms| and the latency device sample -> frame done.";
+
 struct BenchArgs {
-  std::string scene_path, backend = "auto";
-  std::vector<std::string> overrides;
+  cli::SceneArgs scene;
+  gl::Backend backend = gl::Backend::kAuto;
   double seconds = 5.0;
   int realtime = 0;
 };
 
-// 0 = run, 1 = --help printed, 2 = usage error (printed).
-int parse_args(int argc, char** argv, BenchArgs& a) {
-  cli::ArgCursor c(argc, argv, 1);
-  while (!c.done()) {
-    std::optional<Result<std::string>> v;
-    if ((v = c.option("--scene"))) { if (*v) a.scene_path = v->value(); }
-    else if ((v = c.option("--backend"))) { if (*v) a.backend = v->value(); }
-    else if ((v = c.option("--set"))) { if (*v) a.overrides.push_back(v->value()); }
-    else if ((v = c.option("--seconds"))) { if (*v) a.seconds = std::strtod(v->value().c_str(), nullptr); }
-    else if ((v = c.option("--realtime"))) {
-      if (*v) {
-        auto n = cli::parse_int("--realtime", v->value(), 1, 99);
-        if (!n) { std::fprintf(stderr, "pseudoshadow bench-haptics: %s\n", n.error().message.c_str()); return 2; }
-        a.realtime = static_cast<int>(n.value());
-      }
-    }
-    else if (c.flag("-h") || c.flag("--help")) { std::fputs(kBenchHelp, stdout); return 1; }
-    else { std::fprintf(stderr, "pseudoshadow bench-haptics: unknown option '%s'\n", std::string(c.peek()).c_str()); return 2; }
-    if (v && !*v) { std::fprintf(stderr, "pseudoshadow bench-haptics: %s\n", v->error().message.c_str()); return 2; }
-  }
-  if (!(a.seconds > 0.0 && a.seconds <= 3600.0)) { std::fputs("pseudoshadow bench-haptics: --seconds in (0, 3600]\n", stderr); return 2; }
-  return 0;
+void declare(cli::Command& cmd, BenchArgs& a) {
+  CLI::App& app = cmd.app();
+  cli::add_scene_options(app, a.scene);
+  cli::add_image_options(app, a.scene);
+  cli::add_positive(app, "--seconds", "S", a.seconds, 3600.0, "5", "duration (default 5)");
+  cli::add_gl_options(app, a.backend);
+  cli::add_int(app, "--realtime", "PRIO", a.realtime, 1, 99,
+               "run the haptic thread SCHED_FIFO at PRIO (1..99; needs CAP_SYS_NICE)");
 }
 
-}  // namespace
-
-int run_bench_haptics(int argc, char** argv) {
-  BenchArgs a;
-  if (const int r = parse_args(argc, argv, a); r != 0) return r == 1 ? 0 : 2;
-  auto fail = [](const Error& e) { std::fprintf(stderr, "pseudoshadow bench-haptics: %s\n", e.message.c_str()); return 1; };
-  auto scene = a.scene_path.empty()
-                   ? parse_scene(default_scene_text(), "<built-in default scene>", default_scene_base_dir(), a.overrides)
-                   : load_scene(a.scene_path, a.overrides);
-  if (!scene) return fail(scene.error());
-  auto backend = gl::parse_backend(a.backend);
-  if (!backend) return fail(backend.error());
-  auto ctx = gl::create_context({backend.value()});
-  if (!ctx) return fail(ctx.error());
+int bench(const cli::Command& cmd, const BenchArgs& a) {
+  auto scene = cli::load_scene_or_default(a.scene);
+  if (!scene) return cmd.fail(scene.error(), cli::scene_exit_code(scene.error()));
+  auto ctx = gl::create_context({a.backend});
+  if (!ctx) return cmd.fail(ctx.error());
   auto renderer = Renderer::create(scene.value(), {});
-  if (!renderer) return fail(renderer.error());
+  if (!renderer) return cmd.fail(renderer.error());
   LogDevice device(circle_samples(scene->probe.position, a.seconds + 1.0), true, "synthetic circle");
   SteadyClock clock;
   HapticLoopParams params;
@@ -127,12 +94,18 @@ int run_bench_haptics(int argc, char** argv) {
   HapticLoop loop(device, clock, params);
   std::vector<double> latency_ms, frame_ms;
   const auto t0 = std::chrono::steady_clock::now();
-  if (Status s = measure(*renderer.value(), loop, a.seconds, latency_ms, frame_ms); !s) return fail(s.error());
+  if (Status s = measure(*renderer.value(), loop, a.seconds, latency_ms, frame_ms); !s) return cmd.fail(s.error());
   const double elapsed = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   std::printf("bench-haptics: %s, %dx%d, %s, haptic thread %s\n", scene->path.c_str(), scene->render.width,
               scene->render.height, ctx.value()->renderer().c_str(), loop.priority().c_str());
   print_report(loop, elapsed, latency_ms, frame_ms);
-  return 0;
+  return cli::kExitOk;
+}
+
+}  // namespace
+
+int run_bench_haptics(int argc, char** argv) {
+  return cli::run_command<BenchArgs>(argc, argv, "bench-haptics", kDescription, declare, bench);
 }
 
 }  // namespace ps

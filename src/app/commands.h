@@ -1,12 +1,35 @@
-// CLI subcommands. argv[0] is the subcommand's name; each returns the process exit status.
+// The `pseudoshadow` commands: one table, used by main() for dispatch, the top-level --help and
+// the "did you mean" hint. Each entry's argv[0] is the command's name; it returns the exit status.
 #pragma once
 
+#include <span>
+#include <string_view>
+
+#include "app/compare_cmd.h"
+
 namespace ps {
-int run_render(int argc, char** argv);
-int run_compare(int argc, char** argv);  // src/app/compare_cmd.cpp
-int run_window(int argc, char** argv);   // `run`, src/app/run_cmd.cpp
-int run_replay(int argc, char** argv);
-int run_bench_haptics(int argc, char** argv);
-int run_bench(int argc, char** argv);    // src/app/bench_cmd.cpp
-int run_tune(int argc, char** argv);     // src/app/tune_cmd.cpp
+
+int run_render(int argc, char** argv);         // src/app/render_cmd.cpp
+int run_window(int argc, char** argv);         // `run`, src/app/run_cmd.cpp
+int run_replay(int argc, char** argv);         // src/app/replay_cmd.cpp
+int run_bench_haptics(int argc, char** argv);  // src/app/bench_haptics_cmd.cpp
+int run_bench(int argc, char** argv);          // src/app/bench_cmd.cpp
+int run_tune(int argc, char** argv);           // src/app/tune_cmd.cpp
+
+struct CommandInfo {
+  std::string_view name;
+  std::string_view summary;  // one line for the top-level --help
+  int (*run)(int argc, char** argv);
+};
+
+inline constexpr CommandInfo kCommands[] = {
+    {"render", "render a scene headless and write the image, AOVs and stats", run_render},
+    {"compare", "compare two images pixel by pixel (exit 0 pass, 1 fail, 2 error)", run_compare},
+    {"run", "interactive window: move the probe with a device, 1 kHz haptic loop", run_window},
+    {"replay", "render a recorded or scripted device session headless, deterministically", run_replay},
+    {"bench-haptics", "measure the haptic loop's rate, jitter and latency while rendering", run_bench_haptics},
+    {"bench", "sweep accuracy knobs: time vs error CSV + plot, skip ratios, peak RSS", run_bench},
+    {"tune", "parameter sweeps into a labelled contact sheet, or a scripted console session", run_tune},
+};
+
 }  // namespace ps

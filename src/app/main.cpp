@@ -1,50 +1,59 @@
-// pseudoshadow: makes touch visible. Entry point: dispatches to the subcommands.
+// pseudoshadow: makes touch visible. Entry point: finds the command in kCommands and runs it.
+#include <algorithm>
 #include <cstdio>
-#include <cstring>
+#include <string>
+#include <string_view>
+#include <vector>
 
+#include "app/cli.h"
 #include "app/commands.h"
 
 namespace {
 
-constexpr const char* kHelp = R"(usage: pseudoshadow <command> [options]
+std::string top_help() {
+  std::string h =
+      "usage: pseudoshadow <command> [options]\n\n"
+      "Draws the pseudo-shadow of a probe on virtual surfaces: a translucent shadow-like projection\n"
+      "whose opacity shows proximity, whose Gabor texture shows the surface's tactile texture\n"
+      "(amplitude following probe speed), and whose displacement pushes the probe out of the surface.\n\n"
+      "commands:\n";
+  for (const ps::CommandInfo& c : ps::kCommands) {
+    std::string name(c.name);
+    name.resize(std::max<std::size_t>(name.size() + 2, 15), ' ');
+    h += "  " + name + std::string(c.summary) + "\n";
+  }
+  h += "\nRun `pseudoshadow <command> --help` for the options of a command.\n"
+       "Units: lengths in mm, speeds in mm/s, frequencies in Hz (docs/scene-format.md).\n";
+  h += std::string(ps::cli::kExitStatusHelp) + "\n";
+  return h;
+}
 
-Draws the pseudo-shadow of a probe on virtual surfaces: a translucent shadow-like projection
-whose opacity shows proximity, whose Gabor texture shows the surface's tactile texture
-(amplitude following probe speed), and whose displacement pushes the probe out of the surface.
-
-commands:
-  render    render a scene headless and write the image, AOVs and stats
-  compare   compare two images pixel by pixel (exit 0 pass, 1 fail, 2 error)
-  run       interactive window: move the probe with a device, 1 kHz haptic loop
-  replay    render a recorded or scripted device session headless, deterministically
-  bench-haptics  measure the haptic loop's rate, jitter and latency while rendering
-  bench     sweep accuracy knobs: time vs error CSV + plot, skip ratios, peak RSS
-  tune      parameter sweeps into a labelled contact sheet, or a scripted console session
-
-Run `pseudoshadow <command> --help` for the options of a command.
-Units: lengths in mm, speeds in mm/s, frequencies in Hz (docs/scene-format.md).
-)";
+int unknown_command(std::string_view cmd) {
+  std::vector<std::string_view> names;
+  std::string list;
+  for (const ps::CommandInfo& c : ps::kCommands) {
+    names.push_back(c.name);
+    list += (list.empty() ? "" : ", ") + std::string(c.name);
+  }
+  const std::string hint = ps::cli::did_you_mean(cmd, names);
+  std::fprintf(stderr, "pseudoshadow: unknown command '%.*s'%s (commands: %s; see pseudoshadow --help)\n",
+               static_cast<int>(cmd.size()), cmd.data(), hint.empty() ? "" : ("; " + hint).c_str(), list.c_str());
+  return ps::cli::kExitUsage;
+}
 
 }  // namespace
 
 int main(int argc, char** argv) {
-  if (argc < 2 || !std::strcmp(argv[1], "-h") || !std::strcmp(argv[1], "--help") ||
-      !std::strcmp(argv[1], "help")) {
-    std::fputs(kHelp, argc < 2 ? stderr : stdout);
-    return argc < 2 ? 2 : 0;
+  const std::string_view first = argc < 2 ? "" : argv[1];
+  if (argc < 2 || first == "-h" || first == "--help" || first == "help") {
+    std::fputs(top_help().c_str(), argc < 2 ? stderr : stdout);
+    return argc < 2 ? ps::cli::kExitUsage : ps::cli::kExitOk;
   }
-  if (!std::strcmp(argv[1], "--version")) {
+  if (first == "--version") {
     std::puts("pseudoshadow " PS_VERSION);
-    return 0;
+    return ps::cli::kExitOk;
   }
-  const char* cmd = argv[1];
-  if (!std::strcmp(cmd, "render")) return ps::run_render(argc - 1, argv + 1);
-  if (!std::strcmp(cmd, "compare")) return ps::run_compare(argc - 1, argv + 1);
-  if (!std::strcmp(cmd, "run")) return ps::run_window(argc - 1, argv + 1);
-  if (!std::strcmp(cmd, "replay")) return ps::run_replay(argc - 1, argv + 1);
-  if (!std::strcmp(cmd, "bench-haptics")) return ps::run_bench_haptics(argc - 1, argv + 1);
-  if (!std::strcmp(cmd, "bench")) return ps::run_bench(argc - 1, argv + 1);
-  if (!std::strcmp(cmd, "tune")) return ps::run_tune(argc - 1, argv + 1);
-  std::fprintf(stderr, "pseudoshadow: unknown command '%s' (commands: render, compare, run, replay, bench, bench-haptics, tune; see --help)\n", cmd);
-  return 2;
+  for (const ps::CommandInfo& c : ps::kCommands)
+    if (c.name == first) return c.run(argc - 1, argv + 1);
+  return unknown_command(first);
 }

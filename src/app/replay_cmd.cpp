@@ -3,7 +3,8 @@
 #include <cstdio>
 #include <unistd.h>
 
-#include "app/cli_args.h"
+#include "app/cli.h"
+#include "app/cli_groups.h"
 #include "app/commands.h"
 #include "app/session.h"
 #include "core/output_set.h"
@@ -16,75 +17,41 @@ namespace ps {
 
 namespace {
 
-constexpr const char* kReplayHelp = R"(usage: pseudoshadow replay --log FILE --out DIR [options]
-
-Renders the frames of a device session (a recording made with `run --record`, or a scripted
-trajectory) headless at a fixed frame rate. Deterministic: the haptic loop runs on a fake
-clock, so the same log and scene always give byte-identical images.
-
-options:
-  --scene FILE            scene file (default: the built-in default scene)
-  --log [KIND:]FILE       device log, lines 'time_s x y z buttons'; KIND playback (default:
-                          sample-and-hold, exact) or trajectory (linear interpolation)
-  --out DIR               writes DIR/frame_00000.png ... (DIR is created if its parent
-                          exists; frames and sheet are all written, or none)
-  --every N               write every N-th frame (default 1)
-  --fps F                 frames per second of session time (default 30)
-  --contact-sheet FILE    also one labelled sheet of the written frames (PNG)
-  --record FILE           record the device stream the loop read (a playback log)
-  --set KEY=VALUE         scene override (as for render)
-  --backend B             auto | egl | osmesa
-  --show-probe            also draw the probe itself (the haptic proxy) in the frames
-  -q, --quiet             no progress
-  -h, --help              this text
-
-exit status: 0 success, 1 runtime error, 2 usage error
-)";
+constexpr const char* kDescription =
+    "Renders the frames of a device session (a recording made with `run --record`, or a scripted\n"
+    "trajectory) headless at a fixed frame rate. Deterministic: the haptic loop runs on a fake\n"
+    "clock, so the same log and scene always give byte-identical images.";
 
 struct ReplayArgs {
-  std::string scene_path, log, out_dir, sheet, record, backend = "auto";
-  std::vector<std::string> overrides;
+  cli::SceneArgs scene;
+  gl::Backend backend = gl::Backend::kAuto;
+  std::string log, out_dir, sheet, record;
   long long every = 1;
   double fps = 30.0;
-  bool quiet = false, help = false, show_probe = false;
+  bool quiet = false, show_probe = false;
 };
 
-Status parse_one(cli::ArgCursor& c, ReplayArgs& a) {
-  auto str = [&](std::string_view name, std::string& dst) -> std::optional<Status> {
-    auto v = c.option(name);
-    if (!v) return std::nullopt;
-    if (!*v) return Status(v->error());
-    dst = v->value();
-    return ok_status();
-  };
-  using S = std::optional<Status>;
-  std::string tmp;
-  if (S s = str("--scene", a.scene_path)) return *s;
-  if (S s = str("--log", a.log)) return *s;
-  if (S s = str("--out", a.out_dir)) return *s;
-  if (S s = str("--contact-sheet", a.sheet)) return *s;
-  if (S s = str("--record", a.record)) return *s;
-  if (S s = str("--backend", a.backend)) return *s;
-  if (S s = str("--set", tmp)) { if (*s) a.overrides.push_back(tmp); return *s; }
-  if (S s = str("--every", tmp); s) {
-    if (!*s) return *s;
-    auto n = cli::parse_int("--every", tmp, 1, 1'000'000);
-    if (!n) return n.error();
-    a.every = n.value();
-    return ok_status();
-  }
-  if (S s = str("--fps", tmp); s) {
-    if (!*s) return *s;
-    char* end = nullptr;
-    a.fps = std::strtod(tmp.c_str(), &end);
-    if (end != tmp.c_str() + tmp.size() || !(a.fps > 0.0 && a.fps <= 10000.0))
-      return make_error("--fps: expected a number in (0, 10000], e.g. --fps 30");
-    return ok_status();
-  }
-  if (c.flag("--show-probe")) { a.show_probe = true; return ok_status(); }
-  if (c.flag("-q") || c.flag("--quiet")) { a.quiet = true; return ok_status(); }
-  if (c.flag("-h") || c.flag("--help")) { a.help = true; return ok_status(); }
-  return make_error("unknown option '" + std::string(c.peek()) + "' (see pseudoshadow replay --help)");
+void declare(cli::Command& cmd, ReplayArgs& a) {
+  CLI::App& app = cmd.app();
+  cli::add_scene_options(app, a.scene);
+  cli::add_image_options(app, a.scene);
+  app.add_option("--log", a.log,
+                 "device log, lines 'time_s x y z buttons'; KIND playback (default: sample-and-hold, "
+                 "exact) or trajectory (linear interpolation) (required)")
+      ->type_name("[KIND:]FILE");
+  cli::add_int(app, "--every", "N", a.every, 1, 1'000'000, "write every N-th frame (default 1)");
+  cli::add_positive(app, "--fps", "F", a.fps, 10000.0, "30", "frames per second of session time (default 30)");
+  cli::add_gl_options(app, a.backend);
+  app.add_option("--out", a.out_dir, std::string("writes DIR/frame_00000.png ... (required). ") + cli::kOutputRule)->type_name("DIR")->group(cli::kOutputGroup);
+  app.add_option("--contact-sheet", a.sheet, "also one labelled sheet of the written frames (PNG)")
+      ->type_name("FILE")
+      ->group(cli::kOutputGroup);
+  app.add_option("--record", a.record, "record the device stream the loop read (a playback log)")
+      ->type_name("FILE")
+      ->group(cli::kOutputGroup);
+  app.add_flag("--show-probe", a.show_probe, "also draw the probe itself (the haptic proxy) in the frames");
+  cli::add_quiet_option(app, a.quiet, "no progress");
+  cmd.usage("pseudoshadow replay --log FILE --out DIR [options]");
 }
 
 Image thumbnail(const Image& im, int width) {
@@ -104,16 +71,10 @@ struct ReplayGl {  // context first: the renderer's GL objects die before it
   std::unique_ptr<Renderer> renderer;
 };
 
-Result<ReplayGl> open_renderer(const ReplayArgs& a) {
-  auto scene = a.scene_path.empty()
-                   ? parse_scene(default_scene_text(), "<built-in default scene>", default_scene_base_dir(), a.overrides)
-                   : load_scene(a.scene_path, a.overrides);
-  if (!scene) return scene.error();
-  auto backend = gl::parse_backend(a.backend);
-  if (!backend) return backend.error();
-  auto ctx = gl::create_context({backend.value()});
+Result<ReplayGl> open_renderer(const ReplayArgs& a, const Scene& scene) {
+  auto ctx = gl::create_context({a.backend});
   if (!ctx) return ctx.error();
-  auto renderer = Renderer::create(scene.value(), {});
+  auto renderer = Renderer::create(scene, {});
   if (!renderer) return renderer.error();
   renderer.value()->set_show_probe(a.show_probe);
   return ReplayGl{std::move(ctx.value()), std::move(renderer.value())};
@@ -137,14 +98,18 @@ Status add_outputs(const ReplayArgs& a, OutputSet& out) {
   return ok_status();
 }
 
-int replay(const ReplayArgs& a) {
-  auto fail = [](const Error& e) { std::fprintf(stderr, "pseudoshadow replay: %s\n", e.message.c_str()); return 1; };
+int replay(const cli::Command& cmd, const ReplayArgs& a) {
+  if (a.log.empty() || a.out_dir.empty())
+    return cmd.usage_error(make_error("--log FILE and --out DIR are required (see --help)"));
+  auto fail = [&cmd](const Error& e) { return cmd.fail(e); };
   OutputSet outputs;
   if (Status s = add_outputs(a, outputs); !s) return fail(s.error());
   const std::string spec = a.log.find(':') == std::string::npos ? "playback:" + a.log : a.log;
   auto device = open_log_device(spec);
   if (!device) return fail(device.error());
-  auto gl_state = open_renderer(a);
+  auto scene = cli::load_scene_or_default(a.scene);
+  if (!scene) return cmd.fail(scene.error(), cli::scene_exit_code(scene.error()));
+  auto gl_state = open_renderer(a, scene.value());
   if (!gl_state) return fail(gl_state.error());
   Renderer* renderer = gl_state->renderer.get();
   ReplayOptions opt;
@@ -161,7 +126,7 @@ int replay(const ReplayArgs& a) {
     ++written;
     if (!a.sheet.empty()) {
       char label[64];
-      std::snprintf(label, sizeof label, "%d T=%.2fS V=%.0f", i, t, glm::length(st.velocity_mm_s));
+      std::snprintf(label, sizeof label, "%d t=%.2f s v=%.0f mm/s", i, t, glm::length(st.velocity_mm_s));
       thumbs.push_back(thumbnail(img, 256));
       labels.emplace_back(label);
     }
@@ -176,26 +141,13 @@ int replay(const ReplayArgs& a) {
     std::printf("replayed %d frames at %g fps, wrote %d images to %s; rejected device samples: %llu\n",
                 result->frames, a.fps, written, a.out_dir.c_str(),
                 static_cast<unsigned long long>(result->rejected.total()));
-  return 0;
+  return cli::kExitOk;
 }
 
 }  // namespace
 
 int run_replay(int argc, char** argv) {
-  ReplayArgs a;
-  cli::ArgCursor c(argc, argv, 1);
-  while (!c.done()) {
-    if (Status s = parse_one(c, a); !s) {
-      std::fprintf(stderr, "pseudoshadow replay: %s\n", s.error().message.c_str());
-      return 2;
-    }
-  }
-  if (a.help) { std::fputs(kReplayHelp, stdout); return 0; }
-  if (a.log.empty() || a.out_dir.empty()) {
-    std::fputs("pseudoshadow replay: --log FILE and --out DIR are required (see --help)\n", stderr);
-    return 2;
-  }
-  return replay(a);
+  return cli::run_command<ReplayArgs>(argc, argv, "replay", kDescription, declare, replay);
 }
 
 }  // namespace ps

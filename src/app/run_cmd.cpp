@@ -10,7 +10,8 @@
 #include <map>
 #include <memory>
 
-#include "app/cli_args.h"
+#include "app/cli.h"
+#include "app/cli_groups.h"
 #include "app/commands.h"
 #include "app/session.h"
 #include "app/tune_panel.h"
@@ -27,29 +28,7 @@ namespace ps {
 
 namespace {
 
-constexpr const char* kRunHelp = R"(usage: pseudoshadow run [options]
-
-Opens a window and lets you move the probe over the scene with a device; the haptic loop runs
-at 1 kHz on its own thread. Works under Xvfb (xvfb-run -a pseudoshadow run ...).
-
-options:
-  --scene FILE        scene file (default: the built-in default scene)
-  --device D          mouse (default) | gamepad | trajectory:FILE | playback:FILE
-  --record FILE       record the device stream (replay it with `pseudoshadow replay`)
-  --backend glfw      the only window backend
-  --set KEY=VALUE     scene override (as for render)
-  --overrides FILE    apply an override file (as saved by the panel) before --set
-  --show-probe        start with the probe drawn (P toggles it)
-  --panel             start with the parameter panel shown (F1 toggles it)
-  --no-watch          do not reload the scene, its textures and glsl/ when they change
-  --realtime PRIO     haptic thread SCHED_FIFO at PRIO (1..99; needs CAP_SYS_NICE), much
-                      lower jitter on a loaded machine
-  --frames N          quit after N frames
-  --quit-after S      quit after S seconds
-  -q, --quiet         no summary
-  -h, --help          this text
-
-keys: mouse moves the probe on the reference plane, Shift+scroll or PageUp/PageDown change its
+constexpr const char* kRunKeys = R"(keys: mouse moves the probe on the reference plane, Shift+scroll or PageUp/PageDown change its
 height; right drag orbits, scroll zooms; M captures the mouse (raw motion where supported);
 P shows or hides the probe itself (hidden by default: the pseudo-shadow is the display; when
 shown it is drawn where the haptic proxy is, after the push-out); S saves screenshot_NNNN.png
@@ -59,67 +38,55 @@ parameter panel; Esc or Q quits.
 Saved changes to the shaders, the scene or its textures are reloaded within 0.5 s; a broken
 file keeps the last good state running and shows its file:line in the title and the console.
 The title shows frame time, haptic rate and jitter, distance, speed, penetration.
-exit status: 0 success, 1 runtime error, 2 usage error
 )";
 
+constexpr const char* kDescription =
+    "Opens a window and lets you move the probe over the scene with a device; the haptic loop\n"
+    "runs at 1 kHz on its own thread. Works under Xvfb (xvfb-run -a pseudoshadow run ...).";
+
 struct RunArgs {
-  std::string scene_path, device = "mouse", record, backend = "glfw";
-  std::vector<std::string> overrides;
+  cli::SceneArgs scene;
+  std::string device = "mouse", record, stats_path;
   long long frames = 0, realtime = 0;
   double quit_after_s = 0.0;
-  bool quiet = false, help = false, watch = true, show_probe = false, panel = false;
+  bool quiet = false, watch = true, show_probe = false, panel = false;
 };
 
-Status parse_one(cli::ArgCursor& c, RunArgs& a) {
-  auto str = [&](std::string_view name, std::string& dst) -> std::optional<Status> {
-    auto v = c.option(name);
-    if (!v) return std::nullopt;
-    if (!*v) return Status(v->error());
-    dst = v->value();
-    return ok_status();
-  };
-  using S = std::optional<Status>;
-  std::string tmp;
-  if (S s = str("--scene", a.scene_path)) return *s;
-  if (S s = str("--device", a.device)) return *s;
-  if (S s = str("--record", a.record)) return *s;
-  if (S s = str("--backend", a.backend)) return *s;
-  if (S s = str("--set", tmp)) { if (*s) a.overrides.push_back(tmp); return *s; }
-  if (S s = str("--overrides", tmp); s) {
-    if (!*s) return *s;
-    auto lines = read_overrides(tmp);
-    if (!lines) return lines.error();
-    a.overrides.insert(a.overrides.end(), lines->begin(), lines->end());
-    return ok_status();
-  }
-  if (c.flag("--no-watch")) { a.watch = false; return ok_status(); }
-  if (c.flag("--show-probe")) { a.show_probe = true; return ok_status(); }
-  if (c.flag("--panel")) { a.panel = true; return ok_status(); }
-  if (S s = str("--frames", tmp); s) {
-    if (!*s) return *s;
-    auto n = cli::parse_int("--frames", tmp, 1, 100'000'000);
-    if (!n) return n.error();
-    a.frames = n.value();
-    return ok_status();
-  }
-  if (S s = str("--realtime", tmp); s) {
-    if (!*s) return *s;
-    auto n = cli::parse_int("--realtime", tmp, 1, 99);
-    if (!n) return n.error();
-    a.realtime = n.value();
-    return ok_status();
-  }
-  if (S s = str("--quit-after", tmp); s) {
-    if (!*s) return *s;
-    char* end = nullptr;
-    a.quit_after_s = std::strtod(tmp.c_str(), &end);
-    if (end != tmp.c_str() + tmp.size() || !(a.quit_after_s > 0.0))
-      return make_error("--quit-after: expected seconds > 0, e.g. --quit-after 5");
-    return ok_status();
-  }
-  if (c.flag("-q") || c.flag("--quiet")) { a.quiet = true; return ok_status(); }
-  if (c.flag("-h") || c.flag("--help")) { a.help = true; return ok_status(); }
-  return make_error("unknown option '" + std::string(c.peek()) + "' (see pseudoshadow run --help)");
+void check_device(const std::string& d) {
+  const bool log_device = d.rfind("trajectory:", 0) == 0 || d.rfind("playback:", 0) == 0;
+  if (d != "mouse" && d != "gamepad" && !log_device)
+    throw cli::UsageError("--device: unknown device '" + d + "' (mouse, gamepad, trajectory:FILE, playback:FILE)");
+}
+
+void declare(cli::Command& cmd, RunArgs& a) {
+  CLI::App& app = cmd.app();
+  cli::add_scene_options(app, a.scene);
+  cli::add_probe_options(app, a.scene);
+  cli::add_image_options(app, a.scene);
+  app.add_option_function<std::string>("--device", [&a](const std::string& v) { check_device(v); a.device = v; },
+                                       "mouse (default) | gamepad | trajectory:FILE | playback:FILE")
+      ->type_name("D");
+  app.add_option("--record", a.record, "record the device stream (replay it with `pseudoshadow replay`)")
+      ->type_name("FILE")
+      ->group(cli::kOutputGroup);
+  cli::add_stats_option(app, a.stats_path);
+  app.add_option_function<std::string>(
+         "--backend",
+         [](const std::string& v) {
+           if (v != "glfw") throw cli::UsageError("--backend: only glfw opens a window (got '" + v + "')");
+         },
+         "glfw, the only window backend")
+      ->type_name("B")
+      ->group(cli::kGlGroup);
+  app.add_flag("--show-probe", a.show_probe, "start with the probe drawn (P toggles it)");
+  app.add_flag("--panel", a.panel, "start with the parameter panel shown (F1 toggles it)");
+  app.add_flag("!--no-watch", a.watch, "do not reload the scene, its textures and glsl/ when they change");
+  cli::add_int(app, "--realtime", "PRIO", a.realtime, 1, 99,
+               "haptic thread SCHED_FIFO at PRIO (1..99; needs CAP_SYS_NICE), much lower jitter on a loaded machine");
+  cli::add_int(app, "--frames", "N", a.frames, 1, 100'000'000, "quit after N frames");
+  cli::add_positive(app, "--quit-after", "S", a.quit_after_s, 1e9, "5", "quit after S seconds");
+  cli::add_quiet_option(app, a.quiet, "no summary");
+  app.footer(std::string(kRunKeys) + cli::kExitStatusHelp);
 }
 
 struct Session {  // everything the window loop touches, grouped by owner thread
@@ -133,6 +100,7 @@ struct Session {  // everything the window loop touches, grouped by owner thread
   std::unique_ptr<HapticLoop> loop;
   std::unique_ptr<SampleRecorder> recorder;
   WindowInput input;
+  int screenshots_saved = 0;          // numbers the next screenshot_NNNN.png
   PlaneAxes axes;
   std::vector<double> latency_ms, frame_ms;
 };
@@ -151,20 +119,18 @@ Status open_device(const RunArgs& a, Session& s) {
   return ok_status();
 }
 
-Status open_session(const RunArgs& a, Session& s) {
-  auto scene = a.scene_path.empty()
-                   ? parse_scene(default_scene_text(), "<built-in default scene>", default_scene_base_dir(), a.overrides)
-                   : load_scene(a.scene_path, a.overrides);
-  if (!scene) return scene.error();
-  gl::ContextDesc desc{gl::Backend::kGlfw, scene->render.width, scene->render.height, "pseudoshadow", true};
+// The scene is loaded once, before the window: its render.size is the window's size.
+Status open_session(const RunArgs& a, Scene scene, Session& s) {
+  gl::ContextDesc desc{gl::Backend::kGlfw, scene.render.width, scene.render.height, "pseudoshadow", true};
   auto ctx = gl::create_context(desc);
   if (!ctx) return ctx.error();
   s.ctx = std::move(ctx.value());
-  auto tune = TuneSession::open({a.scene_path, a.overrides, {}});
+  const glm::dvec3 target = scene.camera.target;
+  auto tune = TuneSession::open({a.scene.path, a.scene.lines(), {}}, std::move(scene));
   if (!tune) return tune.error();
   s.tune = std::move(tune.value());
   const PlaneFrame& f = s.tune->renderer().reference();
-  s.axes = {scene->camera.target, f.t, f.b, f.n};  // fixed at start so the mapping stays put
+  s.axes = {target, f.t, f.b, f.n};  // fixed at start so the mapping stays put
   if (Status st = open_device(a, s); !st) return st;
   HapticLoopParams params;
   params.realtime_priority = static_cast<int>(a.realtime);
@@ -195,23 +161,17 @@ void update_title(Session& s, const HapticState& st, double frame_ms) {
   glfwSetWindowTitle(s.ctx->window(), title);
 }
 
-std::string vec_text(const glm::dvec3& v) {
-  char buf[128];
-  std::snprintf(buf, sizeof buf, "[%.17g, %.17g, %.17g]", v.x, v.y, v.z);
-  return buf;
-}
-
 std::string screenshot_state(const TuneSession& tune) {
   const Renderer& r = tune.renderer();
   std::map<std::string, std::string> state = tune.edits();
   const Scene& sc = r.scene();
-  state["camera.position"] = vec_text(sc.camera.position);
-  state["camera.target"] = vec_text(sc.camera.target);
-  state["camera.up"] = vec_text(sc.camera.up);
+  state["camera.position"] = cli::override_value(sc.camera.position);
+  state["camera.target"] = cli::override_value(sc.camera.target);
+  state["camera.up"] = cli::override_value(sc.camera.up);
   // The frame was drawn before its displacement moved the probe.
-  state["probe.position"] = vec_text(sc.probe.position - r.stats().displacement);
-  state["probe.velocity"] = vec_text(sc.probe.velocity);
-  return format_overrides(state, tune.scene_path().empty() ? "<built-in default scene>" : tune.scene_path());
+  state["probe.position"] = cli::override_value(sc.probe.position - r.stats().displacement);
+  state["probe.velocity"] = cli::override_value(sc.probe.velocity);
+  return format_overrides(state, cli::scene_display_name(tune.scene_path()));
 }
 
 Status handle_keys(Session& s, int w, int h) {
@@ -231,9 +191,8 @@ Status handle_keys(Session& s, int w, int h) {
   apply_orbit_zoom(in, cam);
   s.tune->renderer().set_camera(cam);
   for (; in.screenshots > 0; --in.screenshots) {
-    static int n = 0;
     char name[64];
-    std::snprintf(name, sizeof name, "screenshot_%04d.png", n++);
+    std::snprintf(name, sizeof name, "screenshot_%04d.png", s.screenshots_saved++);
     // Beside it, the state that made it as an override file: the panel's edits, the camera
     // and the probe as this frame drew them, so `render --scene S --overrides THIS` repeats it.
     // Both appear together or neither does.
@@ -258,6 +217,14 @@ void poll_reload(Session& s) {
   else if (err != s.shown_error) std::fprintf(stderr, "reload failed, keeping the last good state: %s\n", err.c_str());
   s.shown_error = err;
   std::fflush(stdout);
+}
+
+void print_summary(const Session& s) {
+  const Percentiles p = s.loop->period_stats(), lat = percentiles(s.latency_ms), fr = percentiles(s.frame_ms);
+  std::printf("frames %zu (median %.1f ms); haptic ticks %zu, period p50 %.0f us p99 %.0f us p99.9 %.0f us "
+              "max %.0f us; ", fr.count, fr.p50, p.count + 1, p.p50, p.p99, p.p999, p.max);
+  if (lat.count == 0) std::printf("no device samples (latency not measured)\n");
+  else std::printf("latency sample->frame p50 %.1f ms p99 %.1f ms\n", lat.p50, lat.p99);
 }
 
 Status window_loop(const RunArgs& a, Session& s) {
@@ -296,43 +263,32 @@ Status window_loop(const RunArgs& a, Session& s) {
   return ok_status();
 }
 
-}  // namespace
-
-int run_window(int argc, char** argv) {
-  RunArgs a;
-  cli::ArgCursor c(argc, argv, 1);
-  while (!c.done()) {
-    if (Status s = parse_one(c, a); !s) {
-      std::fprintf(stderr, "pseudoshadow run: %s\n", s.error().message.c_str());
-      return 2;
-    }
-  }
-  if (a.help) { std::fputs(kRunHelp, stdout); return 0; }
-  const bool log_device = a.device.rfind("trajectory:", 0) == 0 || a.device.rfind("playback:", 0) == 0;
-  if (a.device != "mouse" && a.device != "gamepad" && !log_device) {
-    std::fprintf(stderr, "pseudoshadow run: --device: unknown device '%s' (mouse, gamepad, trajectory:FILE, "
-                 "playback:FILE)\n", a.device.c_str());
-    return 2;
-  }
-  if (a.backend != "glfw") { std::fputs("pseudoshadow run: --backend: only glfw opens a window\n", stderr); return 2; }
-  auto fail = [](const Error& e) { std::fprintf(stderr, "pseudoshadow run: %s\n", e.message.c_str()); return 1; };
+int run(const cli::Command& cmd, const RunArgs& a) {
+  auto scene = cli::load_scene_or_default(a.scene);
+  if (!scene) return cmd.fail(scene.error(), cli::scene_exit_code(scene.error()));
   Session s;
-  if (Status st = open_session(a, s); !st) return fail(st.error());
+  if (Status st = open_session(a, std::move(scene.value()), s); !st) return cmd.fail(st.error());
   s.loop->start();
   if (a.realtime > 0 && !a.quiet) std::printf("haptic thread: %s\n", s.loop->priority().c_str());
   const Status looped = window_loop(a, s);
   s.loop->stop();  // join the haptic thread before touching what it wrote
   if (s.recorder)
-    if (Status st = s.recorder->close(); !st) return fail(st.error());
-  if (!looped) return fail(looped.error());
-  if (!a.quiet) {
-    const Percentiles p = s.loop->period_stats(), lat = percentiles(s.latency_ms), fr = percentiles(s.frame_ms);
-    std::printf("frames %zu (median %.1f ms); haptic ticks %zu, period p50 %.0f us p99 %.0f us p99.9 %.0f us "
-                "max %.0f us; ", fr.count, fr.p50, p.count + 1, p.p50, p.p99, p.p999, p.max);
-    if (lat.count == 0) std::printf("no device samples (latency not measured)\n");
-    else std::printf("latency sample->frame p50 %.1f ms p99 %.1f ms\n", lat.p50, lat.p99);
+    if (Status st = s.recorder->close(); !st) return cmd.fail(st.error());
+  if (!looped) return cmd.fail(looped.error());
+  if (!a.stats_path.empty()) {
+    const Renderer& r = s.tune->renderer();
+    const std::string json = stats_json(r.stats(), gl::backend_name(s.ctx->backend()), s.ctx->renderer(),
+                                        static_cast<int>(s.frame_ms.size()));
+    if (Status st = write_file_atomic(a.stats_path, json); !st) return cmd.fail(st.error());
   }
-  return 0;
+  if (!a.quiet) print_summary(s);
+  return cli::kExitOk;
+}
+
+}  // namespace
+
+int run_window(int argc, char** argv) {
+  return cli::run_command<RunArgs>(argc, argv, "run", kDescription, declare, run);
 }
 
 }  // namespace ps

@@ -125,6 +125,9 @@ Result<Scene> parse_scene(std::string_view text, const std::string& source_name,
 }
 
 Result<Scene> load_scene(const std::string& path, const std::vector<std::string>& overrides) {
+  // An ifstream opens a directory and reads nothing, which would be reported as an empty scene.
+  if (std::error_code dir_ec; std::filesystem::is_directory(path, dir_ec))
+    return make_error(path + ": is a directory, not a scene file (give a .toml file, e.g. scenes/default.toml)");
   std::error_code size_ec;
   const std::uintmax_t bytes = std::filesystem::file_size(path, size_ec);
   if (!size_ec && bytes > kMaxSceneFileBytes)
@@ -142,6 +145,11 @@ Result<Scene> load_scene(const std::string& path, const std::vector<std::string>
   const std::string base_dir =
       std::filesystem::absolute(std::filesystem::path(path)).parent_path().string();
   return parse_scene(text.str(), path, base_dir, overrides);
+}
+
+Result<Scene> load_scene_or_default(const std::string& path, const std::vector<std::string>& overrides) {
+  if (path.empty()) return parse_scene(default_scene_text(), kDefaultSceneName, default_scene_base_dir(), overrides);
+  return load_scene(path, overrides);
 }
 
 std::string default_scene_base_dir() { return PS_DEFAULT_SCENE_BASE_DIR; }

@@ -28,6 +28,11 @@ Result<Scene> parse_scene(std::string_view text, const std::string& source_name,
 // Reads `path` and parses it (missing file -> "path: cannot open scene file: <reason>").
 Result<Scene> load_scene(const std::string& path, const std::vector<std::string>& overrides = {});
 
+// `path`, or the built-in default scene (scenes/default.toml, embedded) when `path` is empty;
+// the one place that rule is written. Messages about the default scene name kDefaultSceneName.
+inline constexpr const char* kDefaultSceneName = "<built-in default scene>";
+Result<Scene> load_scene_or_default(const std::string& path, const std::vector<std::string>& overrides = {});
+
 // The embedded copy of scenes/default.toml (compiled in so `render` works with no --scene).
 std::string_view default_scene_text();
 

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <array>
+#include <utility>
 #include <cassert>
 #include <numeric>
 #include <utility>
@@ -50,6 +51,19 @@ std::span<const std::string_view> known_keys(Section section) {
     case Section::kSurface: return kSurfaceKeys;
   }
   assert(false && "known_keys: unhandled Section");
+  return {};
+}
+
+std::string_view key_unit(std::string_view leaf) {
+  if (leaf.ends_with("_mm")) return "mm";
+  if (leaf.ends_with("_deg")) return "deg";
+  if (leaf.ends_with("_hz")) return "Hz";
+  static constexpr std::pair<std::string_view, std::string_view> kNamed[] = {
+      {"position", "mm"},   {"target", "mm"},     {"center", "mm"},    {"velocity", "mm/s"},
+      {"lambda_min", "mm"}, {"lambda_max", "mm"}, {"theta_min", "deg"}, {"theta_max", "deg"},
+      {"size", "px"},       {"depth_map_size", "px"}};
+  for (const auto& [name, unit] : kNamed)
+    if (leaf == name) return unit;
   return {};
 }
 

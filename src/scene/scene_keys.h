@@ -15,6 +15,11 @@ enum class Section { kRoot, kCamera, kLight, kProbe, kRender, kMaterial, kSurfac
 
 std::span<const std::string_view> known_keys(Section section);
 
+// The unit of a key's value for labels ("mm", "mm/s", "deg", "Hz", "px"), from its leaf name
+// (the suffix _mm, _deg, _hz, or a known name: position, velocity, lambda_min, ...); "" when
+// unitless. docs/scene-format.md has the same units in its tables.
+std::string_view key_unit(std::string_view leaf);
+
 // Levenshtein distance (insert, delete, substitute all cost 1).
 std::size_t edit_distance(std::string_view a, std::string_view b);
 

@@ -16,6 +16,27 @@ std::string trim(const std::string& s) {
   return s.substr(b, s.find_last_not_of(" \t\r") - b + 1);
 }
 
+// The commands, once: `help` prints this and an unknown command lists their names.
+struct ConsoleCommand {
+  const char* name;
+  const char* usage;
+};
+constexpr ConsoleCommand kCommands[] = {
+    {"set", "set KEY VALUE      edit a scene value, as --set KEY=VALUE (rebuilds; keeps the last good on error)"},
+    {"render", "render [N]         render N frames (default 1)"},
+    {"save", "save FILE          write the last frame (.png/.exr), or the edits as an override file (.toml)"},
+    {"stats", "stats              print the last frame's numbers"},
+    {"reload", "reload             re-read the scene and shaders from disk"},
+    {"help", "help               this list"},
+    {"quit", "quit               stop reading (also: exit)"},
+};
+
+std::string command_names() {
+  std::string names;
+  for (const ConsoleCommand& c : kCommands) names += (names.empty() ? "" : ", ") + std::string(c.name);
+  return names;
+}
+
 class Console {
  public:
   Console(TuneSession& s, std::ostream& out) : session_(s), out_(out) {}
@@ -28,11 +49,16 @@ class Console {
     else if (verb == "save") status = cmd_save(rest);
     else if (verb == "stats") status = cmd_stats();
     else if (verb == "reload") status = cmd_reload();
-    else status = make_error("unknown command '" + verb + "' (commands: set, render, save, stats, reload, quit)");
+    else if (verb == "help") cmd_help();
+    else status = make_error("unknown command '" + verb + "' (commands: " + command_names() + ")");
     return true;
   }
 
  private:
+  void cmd_help() {
+    for (const ConsoleCommand& c : kCommands) out_ << c.usage << "\n";
+    out_ << "# starts a comment; blank lines are ignored\n";
+  }
   Status cmd_set(const std::string& rest) {
     const auto sp = rest.find_first_of(" \t=");
     if (rest.empty() || sp == std::string::npos || trim(rest.substr(sp + 1)).empty())

@@ -6,6 +6,7 @@
 //                     as an override file if FILE ends in .toml
 //   stats             print the last frame's numbers
 //   reload            re-read the scene and shaders from disk
+//   help              list the commands
 //   quit              stop reading
 //   # comment         ignored, as are blank lines
 // An error prints "<source>:<line>: <message>" on `err` and the session continues.

@@ -2,7 +2,8 @@
 // `<scene>.overrides.toml`. Format: one dotted `KEY = VALUE` line per changed key, exactly a
 // `--set KEY=VALUE` (docs/tuning.md), plus `#` comments. Only the changed keys are written, so
 // the scene file stays the reviewed source and the overrides are one visible diff on top.
-// `render --overrides FILE` and `tune --overrides FILE` apply them before any --set.
+// `--overrides FILE` (every command with a scene) applies them where it stands among the --set
+// options, so a later --set wins over the file and a later file over an earlier --set.
 #pragma once
 
 #include <map>

@@ -6,6 +6,7 @@
 #include <filesystem>
 
 #include "scene/scene_io.h"
+#include "scene/scene_keys.h"
 
 namespace ps {
 
@@ -134,8 +135,11 @@ std::string sweep_label(const std::vector<SweepAxis>& axes, const std::vector<st
     if (axes[i].key == kSceneAxisKey) {
       label += std::filesystem::path(v).stem().string();
     } else {
+      // The key as given, and the value's unit: "probe.velocity=[500,0,0] mm/s".
       const auto dot = axes[i].key.rfind('.');
-      label += axes[i].key.substr(dot == std::string::npos ? 0 : dot + 1) + "=" + v;
+      const std::string_view unit =
+          scene_detail::key_unit(std::string_view(axes[i].key).substr(dot == std::string::npos ? 0 : dot + 1));
+      label += axes[i].key + "=" + v + (unit.empty() ? "" : " " + std::string(unit));
     }
   }
   return label;

@@ -53,8 +53,8 @@ struct SweepCell {
   double frame_ms = 0.0;  // sum of the last frame's pass timings
 };
 
-// Loads (parses and validates) every cell's scene without rendering: a bad key or value
-// names the --sweep. Runs before any GL work so errors come first and fast.
+// Loads (parses and validates) the base scene with its --set overrides (a bad one names the
+// --set), then every cell's scene without rendering (a bad key or value names the --sweep). Runs before any GL work so errors come first and fast.
 Status validate_sweep(const SweepJob& job);
 
 using SweepProgress = std::function<void(std::size_t done, std::size_t total, const std::string& label)>;

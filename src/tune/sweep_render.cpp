@@ -1,4 +1,5 @@
 // Rendering a sweep: every cell through Renderer::create + render_frame, like `render`.
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 
@@ -24,11 +25,7 @@ CellInput cell_input(const SweepJob& job, const std::vector<std::size_t>& cell) 
   return in;
 }
 
-Result<Scene> load_cell(const CellInput& in) {
-  if (in.scene_path.empty())
-    return parse_scene(default_scene_text(), "<built-in default scene>", default_scene_base_dir(), in.overrides);
-  return load_scene(in.scene_path, in.overrides);
-}
+Result<Scene> load_cell(const CellInput& in) { return load_scene_or_default(in.scene_path, in.overrides); }
 
 // The scene loader names a bad override "--set KEY: ..."; in a sweep it came from --sweep.
 Error as_sweep_error(const Error& e) {
@@ -41,6 +38,12 @@ Error as_sweep_error(const Error& e) {
 Status validate_sweep(const SweepJob& job) {
   auto count = sweep_cell_count(job.axes);
   if (!count) return count.error();
+  // The scene and its --set overrides first, without any axis: a bad --set is blamed on --set,
+  // not on the --sweep whose cells it breaks. (With a scene axis there is no one base scene.)
+  const bool scene_axis = std::any_of(job.axes.begin(), job.axes.end(),
+                                      [](const SweepAxis& a) { return a.key == kSceneAxisKey; });
+  if (!scene_axis)
+    if (auto base = load_cell({job.scene_path, job.overrides}); !base) return base.error();
   for (std::size_t i = 0; i < count.value(); ++i) {
     auto scene = load_cell(cell_input(job, sweep_cell(job.axes, i)));
     if (!scene) return as_sweep_error(scene.error());

@@ -10,24 +10,27 @@
 namespace ps {
 
 Result<std::unique_ptr<TuneSession>> TuneSession::open(TuneSource source) {
+  auto scene = load_scene_or_default(source.scene_path, source.overrides);
+  if (!scene) return scene.error();
+  return open(std::move(source), std::move(scene.value()));
+}
+
+Result<std::unique_ptr<TuneSession>> TuneSession::open(TuneSource source, Scene scene) {
   if (source.renderer.glsl_root.empty()) source.renderer.glsl_root = gl::default_glsl_root();
   std::unique_ptr<TuneSession> s(new TuneSession());
   s->source_ = std::move(source);
-  if (Status st = s->rebuild({}, false, false, false); !st) return st.error();
+  if (Status st = s->rebuild({}, false, false, false, std::move(scene)); !st) return st.error();
   return s;
 }
 
 Result<Scene> TuneSession::load(const std::map<std::string, std::string>& edits) const {
   std::vector<std::string> sets = source_.overrides;
   for (const auto& [key, value] : edits) sets.push_back(key + "=" + value);
-  if (source_.scene_path.empty())
-    return parse_scene(default_scene_text(), "<built-in default scene>", default_scene_base_dir(), sets);
-  return load_scene(source_.scene_path, sets);
+  return load_scene_or_default(source_.scene_path, sets);
 }
 
 Status TuneSession::rebuild(const std::map<std::string, std::string>& edits, bool keep_probe, bool keep_tiles,
-                            bool keep_camera) {
-  auto scene = load(edits);
+                            bool keep_camera, Result<Scene> scene) {
   // Watch the scene's files even when it fails to load, so fixing it triggers a reload.
   const Scene& watched = scene ? scene.value() : (renderer_ ? renderer_->scene() : Scene{});
   watch_.set_files(reload_dependencies(watched, source_.scene_path, source_.renderer.glsl_root));
@@ -59,10 +62,10 @@ Status TuneSession::set(const std::string& key, const std::string& value) {
   // The probe restarts from the scene's state (so `render --overrides` reproduces a console
   // session); the window's haptic loop sets it again every frame anyway.
   const bool camera_key = key.rfind("camera.", 0) == 0;
-  return rebuild(edits, false, true, !camera_key);
+  return rebuild(edits, false, true, !camera_key, load(edits));
 }
 
-Status TuneSession::reload() { return rebuild(edits_, true, false, true); }
+Status TuneSession::reload() { return rebuild(edits_, true, false, true, load(edits_)); }
 
 bool TuneSession::reload_if_changed() {
   if (!watch_.changed()) return false;
@@ -74,7 +77,7 @@ bool TuneSession::reload_if_changed() {
     const std::string ext = std::filesystem::path(f).extension().string();
     shader_changed |= ext == ".glsl" || ext == ".vert" || ext == ".frag" || ext == ".comp";
   }
-  (void)rebuild(edits_, true, !shader_changed, true);  // outcome in last_error_
+  (void)rebuild(edits_, true, !shader_changed, true, load(edits_));  // outcome in last_error_
   return true;
 }
 

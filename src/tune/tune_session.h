@@ -22,13 +22,16 @@ namespace ps {
 
 struct TuneSource {
   std::string scene_path;               // empty: the built-in default scene
-  std::vector<std::string> overrides;   // "KEY=VALUE" (--overrides file lines, then --set)
+  std::vector<std::string> overrides;   // "KEY=VALUE", in command-line order (--set, --overrides lines)
   RendererOptions renderer;
 };
 
 class TuneSession {
  public:
   static Result<std::unique_ptr<TuneSession>> open(TuneSource source);
+  // As open(), starting from `scene` already loaded from `source` (the caller needed it before
+  // the context existed), so the scene file is not parsed twice.
+  static Result<std::unique_ptr<TuneSession>> open(TuneSource source, Scene scene);
 
   Renderer& renderer() { return *renderer_; }
   const Renderer& renderer() const { return *renderer_; }
@@ -55,7 +58,7 @@ class TuneSession {
   TuneSession() = default;
   Result<Scene> load(const std::map<std::string, std::string>& edits) const;
   Status rebuild(const std::map<std::string, std::string>& edits, bool keep_probe, bool keep_tiles,
-                 bool keep_camera);
+                 bool keep_camera, Result<Scene> scene);
 
   TuneSource source_;
   std::unique_ptr<Renderer> renderer_;

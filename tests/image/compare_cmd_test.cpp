@@ -101,7 +101,7 @@ TEST_F(CompareCmdTest, ErrorsExitTwoWithOneLine) {
   for (const auto& args : bad) {
     CmdRun r = run_cmd(args);
     EXPECT_EQ(r.code, 2) << args.back();
-    EXPECT_EQ(r.err.rfind("compare: error: ", 0), 0u) << r.err;
+    EXPECT_EQ(r.err.rfind("pseudoshadow compare: ", 0), 0u) << r.err;  // the prefix every command uses
     EXPECT_EQ(r.err.find('\n'), r.err.size() - 1) << "one line: " << r.err;
   }
 }

@@ -40,7 +40,9 @@ TEST(SweepTest, CellsRowMajorAndLimit) {
   std::vector<SweepAxis> axes{{"a.x", {"1", "2"}}, {"materials.m.b", {"3", "4", "5"}}};
   ASSERT_EQ(sweep_cell_count(axes).value(), 6u);
   EXPECT_EQ(sweep_cell(axes, 4), (std::vector<std::size_t>{1, 1}));
-  EXPECT_EQ(sweep_label(axes, {1, 2}), "x=2 b=5");
+  EXPECT_EQ(sweep_label(axes, {1, 2}), "a.x=2 materials.m.b=5");  // keys as given; no unit known
+  EXPECT_EQ(sweep_label({{"probe.velocity", {"[500,0,0]"}}, {"probe.radius_mm", {"2"}}}, {0, 0}),
+            "probe.velocity=[500,0,0] mm/s probe.radius_mm=2 mm");
   std::vector<SweepAxis> big{{"a.x", std::vector<std::string>(17, "1")}, {"a.y", std::vector<std::string>(16, "1")}};
   auto n = sweep_cell_count(big);
   ASSERT_FALSE(n);

@@ -1,0 +1,109 @@
+#include "app/cli_groups.h"
+
+#include "app/cli.h"
+#include "scene/scene_io.h"
+#include "tune/overrides_file.h"
+
+namespace ps::cli {
+
+std::vector<std::string> SceneArgs::lines() const {
+  std::vector<std::string> out;
+  out.reserve(overrides.size());
+  for (const Override& o : overrides) out.push_back(o.text);
+  return out;
+}
+
+void add_scene_options(CLI::App& app, SceneArgs& scene) {
+  app.add_option("--scene", scene.path,
+                 "scene file (TOML, docs/scene-format.md); default: the built-in default scene "
+                 "(scenes/default.toml)")
+      ->type_name("FILE")
+      ->group(kSceneGroup);
+  add_ordered(app, "--set", "KEY=VALUE",
+              "override any scene value by its path, e.g. --set materials.wood.lambda_min=0.4 "
+              "--set render.displacement=exact_max (repeatable; VALUE is a TOML value: 0.4, [0,0,5], "
+              "exact_max, \"text\")",
+              [&scene](const std::string& v) { scene.add(v, "--set"); })
+      ->group(kSceneGroup);
+  add_ordered(app, "--overrides", "FILE",
+              "apply an override file (KEY = VALUE lines, as saved by `run` or `tune`, docs/tuning.md) "
+              "where it stands among the --set options: later values win (repeatable)",
+              [&scene](const std::string& path) {
+                auto lines = read_overrides(path);
+                if (!lines) throw UsageError("--overrides: " + lines.error().message);
+                for (std::string& l : lines.value()) scene.add(std::move(l), "--overrides " + path);
+              })
+      ->group(kSceneGroup);
+}
+
+void add_probe_options(CLI::App& app, SceneArgs& scene) {
+  add_ordered(app, "--probe", "X,Y,Z", "probe position in mm (sets probe.position)",
+              [&scene](const std::string& v) {
+                scene.add("probe.position=" + override_value(parse_vec3("--probe", v, "0,0,10")), "--probe");
+              })
+      ->group(kSceneGroup);
+  add_ordered(app, "--velocity", "VX,VY,VZ",
+              "probe velocity in mm/s (sets probe.velocity); drives the texture amplitude",
+              [&scene](const std::string& v) {
+                scene.add("probe.velocity=" + override_value(parse_vec3("--velocity", v, "120,0,0")),
+                          "--velocity");
+              })
+      ->group(kSceneGroup);
+}
+
+void add_image_options(CLI::App& app, SceneArgs& scene) {
+  add_ordered(app, "--size", "WxH",
+              "image size in pixels, or N for NxN (sets render.size; max " + std::to_string(kMaxSide) +
+                  " per side, " + std::to_string(kMaxPixels) + " pixels)",
+              [&scene](const std::string& v) {
+                const glm::ivec2 sz = parse_size(v, kMaxSide, kMaxPixels);
+                scene.add("render.size=[" + std::to_string(sz.x) + "," + std::to_string(sz.y) + "]", "--size");
+              })
+      ->group(kSceneGroup);
+}
+
+void add_gl_options(CLI::App& app, gl::Backend& backend) {
+  app.add_option_function<std::string>(
+         "--backend",
+         [&backend](const std::string& v) {
+           auto b = gl::parse_backend(v);
+           if (!b || b.value() == gl::Backend::kGlfw)
+             throw UsageError("--backend: '" + v + "' is not a headless backend (give auto, egl or osmesa)");
+           backend = b.value();
+         },
+         "auto (EGL, then OSMesa) | egl | osmesa")
+      ->type_name("B")
+      ->group(kGlGroup);
+}
+
+void add_stats_option(CLI::App& app, std::string& path) {
+  app.add_option("--stats", path,
+                 "per-frame numbers of the last frame: backend, gl_renderer, reference_normal, "
+                 "displacement, max_penetration, probe_position, timings_ms per pass, skipped work")
+      ->type_name("FILE.json")
+      ->group(kOutputGroup);
+}
+
+void add_quiet_option(CLI::App& app, bool& quiet, const std::string& help) { app.add_flag("-q,--quiet", quiet, help); }
+
+Result<Scene> load_scene_or_default(const SceneArgs& scene) {
+  auto loaded = ps::load_scene_or_default(scene.path, scene.lines());
+  if (loaded) return loaded;
+  // The loader names a bad override "--set KEY: ..."; if the last value for KEY came from
+  // another option (--velocity, --size, ...), name that option instead.
+  const std::string& m = loaded.error().message;
+  if (m.rfind("--set ", 0) != 0) return loaded;
+  const std::string key = m.substr(6, m.find(':') - 6);
+  for (auto o = scene.overrides.rbegin(); o != scene.overrides.rend(); ++o) {
+    if (o->text.substr(0, o->text.find('=')) != key) continue;
+    if (o->option == "--set") return loaded;
+    return make_error(o->option + " (" + key + ")" + m.substr(6 + key.size()));
+  }
+  return loaded;
+}
+
+int scene_exit_code(const Error& e) { return e.message.rfind("--", 0) == 0 ? kExitUsage : kExitRuntime; }
+
+std::string scene_display_name(const std::string& path) { return path.empty() ? kDefaultSceneName : path; }
+
+}  // namespace ps::cli

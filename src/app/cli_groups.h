@@ -1,0 +1,63 @@
+// The option groups shared by the commands: one function per concern, so every command that
+// has the concern spells, checks and documents its options the same way.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include <CLI/CLI.hpp>
+
+#include "core/result.h"
+#include "gl/context.h"
+#include "scene/scene.h"
+
+namespace ps::cli {
+
+// The scene a command renders: a file (or the built-in default) plus overrides, in the order
+// the command line gave them (--set, --overrides lines, --probe, --velocity, --size, ...).
+struct SceneArgs {
+  struct Override {
+    std::string text;    // "KEY=VALUE", as for parse_scene
+    std::string option;  // the option that gave it: "--set", "--velocity", ... (for messages)
+  };
+  std::string path;  // empty: the built-in default scene
+  std::vector<Override> overrides;
+
+  void add(std::string text, std::string option) { overrides.push_back({std::move(text), std::move(option)}); }
+  std::vector<std::string> lines() const;  // the KEY=VALUE texts, in order
+};
+
+// Help group names, in the order they appear in --help.
+inline constexpr const char* kSceneGroup = "scene";
+inline constexpr const char* kGlGroup = "GL";
+inline constexpr const char* kOutputGroup = "output";
+// Said in the help of every command that writes files (src/core/output_set.h does it).
+inline constexpr const char* kOutputRule =
+    "For every output file: its directory must exist, or only its last directory may be missing "
+    "(it is created); all outputs are written, or none.";
+
+// --scene FILE, --set KEY=VALUE, --overrides FILE.
+void add_scene_options(CLI::App& app, SceneArgs& scene);
+// --probe X,Y,Z and --velocity VX,VY,VZ (probe.position / probe.velocity overrides).
+void add_probe_options(CLI::App& app, SceneArgs& scene);
+// --size WxH (render.size override); one limit for every command.
+inline constexpr int kMaxSide = 8192;               // GL_MAX_TEXTURE_SIZE-safe on llvmpipe
+inline constexpr long long kMaxPixels = 16'777'216;  // 4096^2: keeps the padded targets < 1.2 GiB
+void add_image_options(CLI::App& app, SceneArgs& scene);
+// --backend auto|egl|osmesa (headless commands; glfw is refused: it opens a window).
+void add_gl_options(CLI::App& app, gl::Backend& backend);
+// --stats FILE.json (the per-frame numbers of the last frame, Renderer's stats_json).
+void add_stats_option(CLI::App& app, std::string& path);
+// -q, --quiet.
+void add_quiet_option(CLI::App& app, bool& quiet, const std::string& help = "no progress output");
+
+// The scene file with its overrides, or the built-in default scene when no --scene was given.
+// An error caused by the command line names the option that gave the value ("--velocity: ...",
+// "--set KEY: ..."); scene_exit_code() maps it to 2, any other (the file's fault) to 1.
+Result<Scene> load_scene_or_default(const SceneArgs& scene);
+int scene_exit_code(const Error& e);
+
+// The name used in messages and saved files for a scene path ("" = the built-in default).
+std::string scene_display_name(const std::string& path);
+
+}  // namespace ps::cli
