@@ -43,8 +43,6 @@ class Command {
   const std::string& name() const { return name_; }
   // Replaces the help's "usage:" line (default: "pseudoshadow NAME [options]").
   void usage(std::string line);
-  // Replaces the "pseudoshadow NAME: " that starts every message (only `compare` does).
-  void message_prefix(std::string prefix) { prefix_ = std::move(prefix); }
 
   // Parses argv (argv[0] is the command's name), prints --help, maps every parse failure to one
   // line and exit 2, then calls `action` and returns its exit status.

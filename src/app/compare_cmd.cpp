@@ -92,7 +92,7 @@ void print_summary(const CompareResult& r, const CompareOptions& o) {
 
 int compare(const cli::Command& cmd, const CompareArgs& args) {
   const auto error = [&cmd](const Error& e) { return cmd.fail(e, kExitError); };
-  if (args.path_b.empty()) return error(make_error("need two images: compare A B [options] (see compare --help)"));
+  if (args.path_b.empty()) return error(make_error("need two images: pseudoshadow compare A B [options] (see pseudoshadow compare --help)"));
   Result<Image> a = read_image(args.path_a);
   if (!a) return error(a.error());
   Result<Image> b = read_image(args.path_b);

@@ -80,7 +80,8 @@ void declare(cli::Command& cmd, RunArgs& a) {
       ->group(cli::kGlGroup);
   app.add_flag("--show-probe", a.show_probe, "start with the probe drawn (P toggles it)");
   app.add_flag("--panel", a.panel, "start with the parameter panel shown (F1 toggles it)");
-  app.add_flag("!--no-watch", a.watch, "do not reload the scene, its textures and glsl/ when they change");
+  app.add_flag_callback("--no-watch", [&a] { a.watch = false; },
+                        "do not reload the scene, its textures and glsl/ when they change");
   cli::add_int(app, "--realtime", "PRIO", a.realtime, 1, 99,
                "haptic thread SCHED_FIFO at PRIO (1..99; needs CAP_SYS_NICE), much lower jitter on a loaded machine");
   cli::add_int(app, "--frames", "N", a.frames, 1, 100'000'000, "quit after N frames");
