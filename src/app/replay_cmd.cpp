@@ -161,7 +161,7 @@ int replay(const ReplayArgs& a) {
     ++written;
     if (!a.sheet.empty()) {
       char label[64];
-      std::snprintf(label, sizeof label, "%d T=%.2fS V=%.0f", i, t, glm::length(st.velocity_mm_s));
+      std::snprintf(label, sizeof label, "%d t=%.2f s v=%.0f mm/s", i, t, glm::length(st.velocity_mm_s));
       thumbs.push_back(thumbnail(img, 256));
       labels.emplace_back(label);
     }
