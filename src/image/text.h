@@ -1,6 +1,7 @@
-// Labels drawn into images with a tiny built-in 5x7 bitmap font (ASCII: digits, letters -
-// lower case is drawn as upper case - and common punctuation; unknown characters draw as a
-// box), and labelled contact sheets made of several images.
+// Labels drawn into images with a tiny built-in 5x7 bitmap font (ASCII: digits, upper and
+// lower case letters - so units read as written, mm and s - and common punctuation; any other
+// character draws as a hollow box), and labelled contact sheets made of several images.
+// Lower-case descenders (g j p q y) stay inside the 7-row cell: those glyphs sit one row higher.
 #pragma once
 
 #include <string>
