@@ -42,23 +42,20 @@ void declare(cli::Command& cmd, CompareArgs& args) {
   CLI::App& app = cmd.app();
   app.add_option("A", args.path_a, "the golden image")->type_name("");
   app.add_option("B", args.path_b, "the actual image")->type_name("");
-  app.add_option_function<std::string>(
-         "--fail",
-         [&args](const std::string& v) { args.options.fail_threshold = static_cast<float>(parse_limit("--fail", v, 1.0)); },
-         "a pixel fails if any channel differs by more than T, on the [0,1] scale (default 0.0039 = "
-         "1/255, one 8-bit step); 0 <= T <= 1")
-      ->type_name("T");
-  app.add_option_function<std::string>(
-         "--failpercent",
-         [&args](const std::string& v) { args.options.fail_percent = parse_limit("--failpercent", v, 100.0); },
-         "the comparison fails if more than P % of the pixels fail (default 0); 0 <= P <= 100")
-      ->type_name("P");
-  app.add_option_function<std::string>(
-         "--hardfail",
-         [&args](const std::string& v) { args.options.hard_fail_threshold = static_cast<float>(parse_limit("--hardfail", v, 1.0)); },
-         "the comparison fails if ANY pixel differs by more than H, whatever --failpercent allows "
-         "(default: no cap); 0 <= H <= 1")
-      ->type_name("H");
+  // A limit option: its value checked on [0, max], then stored by `store`.
+  auto limit = [&app](const std::string& name, const char* value_name, double max, auto store,
+                      const std::string& help) {
+    app.add_option_function<std::string>(name, [=](const std::string& v) { store(parse_limit(name, v, max)); }, help)
+        ->type_name(value_name);
+  };
+  limit("--fail", "T", 1.0, [&args](double v) { args.options.fail_threshold = static_cast<float>(v); },
+        "a pixel fails if any channel differs by more than T, on the [0,1] scale (default 0.0039 = "
+        "1/255, one 8-bit step); 0 <= T <= 1");
+  limit("--failpercent", "P", 100.0, [&args](double v) { args.options.fail_percent = v; },
+        "the comparison fails if more than P % of the pixels fail (default 0); 0 <= P <= 100");
+  limit("--hardfail", "H", 1.0, [&args](double v) { args.options.hard_fail_threshold = static_cast<float>(v); },
+        "the comparison fails if ANY pixel differs by more than H, whatever --failpercent allows "
+        "(default: no cap); 0 <= H <= 1");
   app.add_option_function<std::string>(
          "--diff",
          [&args](const std::string& v) {
