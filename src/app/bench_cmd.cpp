@@ -3,9 +3,11 @@
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <sstream>
 #include <string>
 #include <unistd.h>
 
+#include "app/bench_plot.h"
 #include "app/bench_report.h"
 #include "app/bench_sweep.h"
 #include "app/cli.h"
@@ -30,6 +32,7 @@ struct BenchArgs {
   std::string out_dir = "bench_out";
   gl::Backend backend = gl::Backend::kAuto;
   bool quiet = false;
+  bool plot_only = false;  // draw the plots from --out-dir's bench.csv; no sweep, no GL
 };
 
 void declare(cli::Command& cmd, BenchArgs& a) {
@@ -50,8 +53,13 @@ void declare(cli::Command& cmd, BenchArgs& a) {
                "timed warm frames per configuration and round (default 3); every configuration is measured "
                "in 3 round-robin rounds, the median over all its timed frames is reported");
   cli::add_gl_options(app, a.backend);
-  app.add_option("--out-dir", a.out_dir, "output directory (default bench_out): bench.csv, bench.png, bench.md")
+  app.add_option("--out-dir", a.out_dir,
+                 "output directory (default bench_out): bench.csv, bench.md, bench.png, bench_ratios.png")
       ->type_name("DIR")
+      ->group(cli::kOutputGroup);
+  app.add_flag("--plot-only", a.plot_only,
+               "only draw bench.png and bench_ratios.png again from the bench.csv already in --out-dir "
+               "(no sweep; needs gnuplot)")
       ->group(cli::kOutputGroup);
   cli::add_quiet_option(app, a.quiet);
 }
@@ -96,13 +104,27 @@ Status run(const BenchArgs& a) {
   if (Status s = outputs.stage_text(md_path, md); !s) return s;
   if (Status s = outputs.publish(); !s) return s;
   if (!a.quiet) std::fputs(md.c_str(), stdout);
-  if (Status s = bench::write_plot(a.out_dir + "/bench.png", a.out_dir, rows); !s)
+  if (Status s = bench::write_plots(a.out_dir, rows); !s)
     std::fprintf(stderr, "pseudoshadow bench: %s\n", s.error().message.c_str());
   return ok_status();
 }
 
+// --plot-only: the plots are the whole job here, so a missing gnuplot is an error, not a warning.
+Status plot_only(const BenchArgs& a) {
+  const std::string csv = a.out_dir + "/bench.csv";
+  std::ifstream in(csv, std::ios::binary);
+  if (!in) return make_error(csv + ": cannot read (--plot-only draws from the bench.csv of an earlier run)");
+  std::ostringstream text;
+  text << in.rdbuf();
+  auto rows = bench::parse_csv(text.str(), csv);
+  if (!rows) return rows.error();
+  if (Status s = bench::write_plots(a.out_dir, rows.value()); !s) return s;
+  if (!a.quiet) std::fprintf(stderr, "wrote %s/bench.png and %s/bench_ratios.png\n", a.out_dir.c_str(), a.out_dir.c_str());
+  return ok_status();
+}
+
 int run_and_report(const cli::Command& cmd, const BenchArgs& a) {
-  const Status s = run(a);
+  const Status s = a.plot_only ? plot_only(a) : run(a);
   return s ? cli::kExitOk : cmd.fail(s.error());
 }
 

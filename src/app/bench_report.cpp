@@ -1,5 +1,6 @@
 #include "app/bench_report.h"
 
+#include "app/bench_plot.h"
 #include "core/file_io.h"
 
 #include <algorithm>
@@ -52,23 +53,13 @@ std::string summary_markdown(const std::vector<BenchRow>& rows, const SkipRatios
       << " | " << r.metric << " | " << g(r.error) << " | " << (r.pareto ? "yes" : "") << " |\n";
   // Gabor strategies against the naive sum, all from this run: whole frame, surface pass, and
   // the Gabor evaluation alone (time above the "none" row, i.e. the same frame untextured).
-  const BenchRow *naive = nullptr, *none = nullptr;
-  for (const BenchRow& r : rows)
-    if (r.group == "gabor_strategy") {
-      if (r.value == "naive") naive = &r;
-      if (r.value == "none") none = &r;
-    }
-  if (naive && none) {
+  if (const std::vector<SpeedUp> speedups = strategy_speedups(rows); !speedups.empty()) {
     o << "\n| Gabor strategy | frame ms | speed-up: frame | surface pass | Gabor evaluation | RMS vs naive (sigma) | <= 1 % |\n"
       << "| --- | --- | --- | --- | --- | --- | --- |\n";
-    for (const BenchRow& r : rows) {
-      if (r.group != "gabor_strategy" || &r == none) continue;
-      const double gabor_naive = naive->m.surface_ms - none->m.surface_ms, gabor_r = r.m.surface_ms - none->m.surface_ms;
-      o << "| " << r.value << " | " << g(r.m.frame_ms) << " | " << g(naive->m.frame_ms / r.m.frame_ms) << "x | "
-        << g(naive->m.surface_ms / r.m.surface_ms) << "x | "
-        << (gabor_r > 0.0 ? g(gabor_naive / gabor_r) + "x" : std::string("(at noise level)")) << " | "
-        << g(r.error) << " | " << (r.error <= 0.01 ? "yes" : "no") << " |\n";
-    }
+    for (const SpeedUp& s : speedups)
+      o << "| " << s.strategy << " | " << g(s.frame_ms) << " | " << g(s.frame) << "x | " << g(s.surface) << "x | "
+        << (std::isfinite(s.gabor) ? g(s.gabor) + "x" : std::string("(at noise level)")) << " | " << g(s.error)
+        << " | " << (s.meets_bar ? "yes" : "no") << " |\n";
   }
   o << "\n| skip check | measured | target |\n| --- | --- | --- |\n";
   o << "| probe beyond influence: frame / plain shading pass | " << g(skip.beyond_influence) << "x | <= 1.1x |\n";
@@ -82,53 +73,152 @@ std::string summary_markdown(const std::vector<BenchRow>& rows, const SkipRatios
 
 namespace {
 
-// One data block per group (all points) and one per group's Pareto front, sorted by time.
-std::string plot_data(const std::vector<BenchRow>& rows, std::vector<std::string>& groups) {
-  std::map<std::string, std::vector<const BenchRow*>> by_group;
-  for (const BenchRow& r : rows) {
-    if (!by_group.count(r.group)) groups.push_back(r.group);
-    by_group[r.group].push_back(&r);
+// A string as a gnuplot double-quoted literal: quotes and backslashes escaped, a line break
+// written as \n (a single-quoted gnuplot string cannot hold one).
+std::string quoted(const std::string& s) {
+  std::string out = "\"";
+  for (char c : s) out += c == '\n' ? std::string("\\n") : c == '"' || c == '\\' ? std::string{'\\', c} : std::string(1, c);
+  return out + "\"";
+}
+
+// The grid of panels: kColumns across, fixed pixels per panel, so that the label placement
+// knows each plotting area's size. Fractions of the canvas, as `set multiplot ... margins`
+// takes them; the gaps leave room for the tick labels, axis labels and the next title.
+struct GridLayout {
+  static constexpr int kColumns = 3;
+  static constexpr int kWidthPx = 1320, kRowPx = 400, kTopPx = 85, kBottomPx = 60;
+  int rows = 1;
+  int height_px() const { return kTopPx + kBottomPx + rows * kRowPx; }
+  double left() const { return 75.0 / kWidthPx; }
+  double right() const { return 1.0 - 25.0 / kWidthPx; }
+  double bottom() const { return double(kBottomPx) / height_px(); }
+  double top() const { return 1.0 - double(kTopPx) / height_px(); }
+  double gap_x() const { return 95.0 / kWidthPx; }
+  double gap_y() const { return 110.0 / height_px(); }
+  LabelGeometry geometry() const {
+    LabelGeometry g;
+    g.plot_w_px = (right() - left() - (kColumns - 1) * gap_x()) / kColumns * kWidthPx;
+    g.plot_h_px = (top() - bottom() - (rows - 1) * gap_y()) / rows * height_px();
+    return g;
   }
+};
+
+// What the short labels of a group stand for, under its panel's title.
+std::string panel_title(const Panel& p) {
+  std::string t = p.group + "  (error: " + p.metric + ")";
+  if (p.group == "gabor_strategy") t += "\nbake = baked_ (Hermite), lin = baked_linear_, strat = stratified_";
+  if (p.group == "displacement") t += "\nc= : weighted average (1 - d)^c";
+  return t;
+}
+
+// Range and ticks. On a log axis gnuplot labels only the powers of ten, which leaves a panel
+// that spans less than a decade or two with one labelled tick or none: label 1, 2 and 5 times
+// each power of ten instead when the axis spans under three decades.
+void axis_commands(std::ostringstream& o, const char* name, const Axis& a) {
+  o << (a.log ? "set logscale " : "unset logscale ") << name << "\nset " << name << "range [" << a.lo << ':' << a.hi
+    << "]\nset " << name << "tics autofreq\n";
+  if (!a.log || std::log10(a.hi / a.lo) >= 3.0) return;
+  o << "set " << name << "tics (";
+  const char* sep = "";
+  for (int e = static_cast<int>(std::floor(std::log10(a.lo))); e <= static_cast<int>(std::ceil(std::log10(a.hi))); ++e)
+    for (double m : {1.0, 2.0, 5.0})
+      if (const double v = m * std::pow(10.0, e); v >= a.lo && v <= a.hi) {
+        o << sep << v;
+        sep = ", ";
+      }
+  o << ")\n";
+}
+
+// One panel: Pareto points filled and joined, dominated points open, every point labelled.
+void panel_commands(std::ostringstream& o, const Panel& p, const LabelGeometry& geo, int index) {
+  const std::string front = "$front" + std::to_string(index), off = "$off" + std::to_string(index);
+  o << front << " << EOD\n";
+  for (const PlotPoint& q : p.points)
+    if (q.pareto) o << q.time_ms << ' ' << q.error << '\n';
+  o << "EOD\n" << off << " << EOD\n";
+  for (const PlotPoint& q : p.points)
+    if (!q.pareto) o << q.time_ms << ' ' << q.error << '\n';
+  o << "EOD\nset title " << quoted(panel_title(p)) << "\nset ylabel " << quoted(p.metric) << "\n";
+  axis_commands(o, "x", p.x);
+  axis_commands(o, "y", p.y);
+  o << "unset label\nunset arrow\n";
+  int n = 0;
+  for (const PlacedLabel& l : place_labels(p, geo)) {
+    ++n;
+    o << "set label " << n << ' ' << quoted(l.text) << " at graph " << l.x0 + 0.25 * geo.char_w_px / geo.plot_w_px
+      << ',' << 0.5 * (l.y0 + l.y1) << " left front\n";
+    if (l.leader)  // from the point to the nearest point of the label's box
+      o << "set arrow " << n << " from graph " << l.px << ',' << l.py << " to graph " << std::clamp(l.px, l.x0, l.x1)
+        << ',' << std::clamp(l.py, l.y0, l.y1) << " nohead lw 0.8 lc rgb '#7f7f7f' back\n";
+  }
+  const bool has_front = std::any_of(p.points.begin(), p.points.end(), [](auto& q) { return q.pareto; });
+  const bool has_off = std::any_of(p.points.begin(), p.points.end(), [](auto& q) { return !q.pareto; });
+  o << "plot ";
+  if (has_front) o << front << " using 1:2 with linespoints pt 7 ps 1.1 lw 1.5 lc rgb '#1f5fa8' notitle";
+  if (has_off) o << (has_front ? ", " : "") << off << " using 1:2 with points pt 6 ps 1.1 lc rgb '#c0392b' notitle";
+  o << "\n";
+}
+
+std::string panels_script(const std::string& png, const std::vector<Panel>& panels) {
+  GridLayout grid;
+  grid.rows = static_cast<int>((panels.size() + GridLayout::kColumns - 1) / GridLayout::kColumns);
   std::ostringstream o;
-  for (const std::string& name : groups) {
-    auto v = by_group[name];
-    std::sort(v.begin(), v.end(), [](auto* a, auto* b) { return a->m.frame_ms < b->m.frame_ms; });
-    // Errors of exactly 0 cannot sit on a log axis: floor them at 1e-7.
-    for (const BenchRow* r : v) o << r->m.frame_ms << ' ' << std::max(r->error, 1e-7) << " \"" << r->value << "\"\n";
-    o << "\n\n";
-    for (const BenchRow* r : v)
-      if (r->pareto) o << r->m.frame_ms << ' ' << std::max(r->error, 1e-7) << " \"" << r->value << "\"\n";
-    o << "\n\n";
-  }
+  o << "set terminal pngcairo size " << GridLayout::kWidthPx << ',' << grid.height_px()
+    << " noenhanced font 'Sans,10'\nset output " << quoted(png) << "\nset grid\nset format x '%g'\n"
+    << "set format y '%g'\nset xlabel 'frame time, ms'\nset multiplot layout " << grid.rows << ','
+    << GridLayout::kColumns << " rowsfirst margins " << grid.left() << ',' << grid.right() << ',' << grid.bottom()
+    << ',' << grid.top() << " spacing " << grid.gap_x() << ',' << grid.gap_y()
+    << " title 'pseudoshadow bench: time vs error per knob group. Filled and joined: the Pareto front; "
+       "open: dominated (another setting is faster and at least as accurate)'\n";
+  for (size_t i = 0; i < panels.size(); ++i) panel_commands(o, panels[i], grid.geometry(), static_cast<int>(i));
+  o << "unset multiplot\n";
   return o.str();
+}
+
+// Clustered bars per strategy: whole frame, surface pass, Gabor evaluation, each naive / strategy.
+std::string ratios_script(const std::string& png, const std::vector<SpeedUp>& speedups) {
+  std::ostringstream o;
+  o << "$ratios << EOD\n";
+  double top = 1.0;
+  for (const SpeedUp& s : speedups) {
+    o << quoted(s.strategy + (s.meets_bar ? " *" : "")) << ' ' << s.frame << ' ' << s.surface << ' '
+      << (std::isfinite(s.gabor) ? s.gabor : 0.0) << '\n';
+    top = std::max({top, s.frame, s.surface, std::isfinite(s.gabor) ? s.gabor : 0.0});
+  }
+  o << "EOD\nset terminal pngcairo size 1100,520 noenhanced font 'Sans,10'\nset output " << quoted(png) << "\n"
+    << "set title 'Gabor strategies: speed-up over the naive per-pixel sum (same run). "
+       "* = texture within 1 % sigma RMS of naive'\n"
+    << "set ylabel 'naive time / strategy time (x)'\nset yrange [0:" << top * 1.12 << "]\nset grid ytics\n"
+    << "set xrange [-0.6:" << speedups.size() - 0.4 << "]\n"
+    << "set style data histogram\nset style histogram cluster gap 1\nset style fill solid 0.85 border -1\n"
+    << "set boxwidth 0.9\nset xtics rotate by -25 nomirror\nset key top left\n"
+    << "plot 1 with lines dashtype 2 lc rgb 'black' title 'naive = 1x', $ratios using 2:xtic(1) title 'whole frame' lc rgb '#8fb3d9', '' using 3 title 'surface pass' "
+       "lc rgb '#3a78b8', '' using 4 title 'Gabor evaluation (surface pass above untextured)' lc rgb '#1b3f6b', "
+       "'' using ($0 - 0.25):2:(sprintf('%.1f', $2)) with labels offset 0,0.6 font ',8' notitle, "
+       "'' using 0:3:(sprintf('%.1f', $3)) with labels offset 0,0.6 font ',8' notitle, "
+       "'' using ($0 + 0.25):4:(sprintf('%.1f', $4)) with labels offset 0,0.6 font ',8' notitle\n";
+  return o.str();
+}
+
+Status run_gnuplot(const std::string& script_path, const std::string& script) {
+  if (Status s = write_file_atomic(script_path, script); !s) return s;
+  std::string shell_arg = "'";  // the path as one shell word: a quote inside becomes '\''
+  for (char c : script_path) shell_arg += c == '\'' ? std::string("'\\''") : std::string(1, c);
+  if (std::system(("gnuplot " + shell_arg + "'").c_str()) != 0)
+    return make_error("gnuplot failed on " + script_path);
+  return ok_status();
 }
 
 }  // namespace
 
-Status write_plot(const std::string& png, const std::string& dir, const std::vector<BenchRow>& rows) {
+Status write_plots(const std::string& dir, const std::vector<BenchRow>& rows) {
   if (std::system("command -v gnuplot > /dev/null 2>&1") != 0)
     return make_error("gnuplot not found (install gnuplot-nox): no plot written, the CSV has the data");
-  std::vector<std::string> groups;
-  std::map<std::string, std::string> metric;
-  for (const BenchRow& r : rows) metric[r.group] = r.metric;
-  const std::string dat = dir + "/bench_plot.dat", gp = dir + "/bench_plot.gp";
-  if (Status s = write_file_atomic(dat, plot_data(rows, groups)); !s) return s;
-  std::ostringstream o;
-  o << "set terminal pngcairo size 1100,750 noenhanced\nset output '" << png << "'\n"
-    << "set logscale xy\nset xlabel 'frame time, ms (median of warm frames)'\n"
-    << "set ylabel 'error (per group: see legend; relative or sigma or mm)'\n"
-    << "set key outside right\nset grid\nset title 'pseudoshadow bench: time vs error, lines = Pareto fronts'\n"
-    << "plot ";
-  for (size_t i = 0; i < groups.size(); ++i) {
-    o << (i ? ", " : "") << "'" << dat << "' index " << 2 * i << " using 1:2 with points pt " << 5 + i
-      << " lc " << i + 1 << " title '" << groups[i] << " (" << metric[groups[i]] << ")', '' index " << 2 * i
-      << " using 1:2:3 with labels offset 0.8,0.6 font ',7' notitle, '' index " << 2 * i + 1
-      << " using 1:2 with lines lc " << i + 1 << " notitle";
-  }
-  o << "\n";
-  if (Status s = write_file_atomic(gp, o.str()); !s) return s;
-  if (std::system(("gnuplot '" + gp + "'").c_str()) != 0) return make_error("gnuplot failed on " + gp);
-  return ok_status();
+  if (Status s = run_gnuplot(dir + "/bench_plot.gp", panels_script(dir + "/bench.png", group_panels(rows))); !s)
+    return s;
+  const std::vector<SpeedUp> speedups = strategy_speedups(rows);
+  if (speedups.empty()) return make_error("no naive and untextured gabor_strategy rows: no bench_ratios.png");
+  return run_gnuplot(dir + "/bench_ratios.gp", ratios_script(dir + "/bench_ratios.png", speedups));
 }
 
 Result<long long> render_peak_rss_kib(int size, const std::string& backend, const std::string& dir) {

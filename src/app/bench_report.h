@@ -1,5 +1,5 @@
-// `pseudoshadow bench`: output side. CSV, a Markdown summary and a gnuplot time-vs-error plot
-// with each knob group's Pareto front drawn as a line.
+// `pseudoshadow bench`: output side. CSV, a Markdown summary and the gnuplot plots: time vs
+// error per knob group with its Pareto front, and the Gabor strategies' speed-ups.
 #pragma once
 
 #include <string>
@@ -17,9 +17,11 @@ struct RssReport {
 std::string csv_text(const std::vector<BenchRow>& rows);  // bench.csv, header line first
 std::string summary_markdown(const std::vector<BenchRow>& rows, const SkipRatios& skip,
                              const RssReport& rss, int size);
-// Runs gnuplot; an Error says why no plot was made (e.g. gnuplot not installed).
-Status write_plot(const std::string& png_path, const std::string& work_dir,
-                  const std::vector<BenchRow>& rows);
+// Runs gnuplot: `dir`/bench.png (one time-vs-error panel per knob group, app/bench_plot.h) and
+// `dir`/bench_ratios.png (the Gabor strategies' speed-ups over the naive sum), with their
+// scripts bench_plot.gp and bench_ratios.gp beside them. An Error says why a plot was not made
+// (e.g. gnuplot not installed).
+Status write_plots(const std::string& dir, const std::vector<BenchRow>& rows);
 // Peak RSS (KiB) of a child `pseudoshadow render` at size^2 (fork + exec of this binary).
 Result<long long> render_peak_rss_kib(int size, const std::string& backend, const std::string& work_dir);
 
