@@ -55,6 +55,7 @@ vec2 probe_height(vec2 uv) {
   ivec2 base = ivec2(floor(p));
   vec2 f = p - vec2(base);
   float h_sum = 0.0, w_sum = 0.0;
+  int covered = 0;
   for (int k = 0; k < 4; ++k) {
     ivec2 o = ivec2(k & 1, k >> 1);
     ivec2 t = base + o;
@@ -64,7 +65,11 @@ vec2 probe_height(vec2 uv) {
     float w = (o.x == 1 ? f.x : 1.0 - f.x) * (o.y == 1 ? f.y : 1.0 - f.y);
     h_sum += w * h;
     w_sum += w;
+    ++covered;
   }
+  // Inside the footprint the coverage is exactly 1 (the float weights sum to 1 +- an ulp; an
+  // intensity of 1 - ulp at contact would no longer be opaque).
+  if (covered == 4) return vec2(h_sum / w_sum, 1.0);
   return w_sum > 0.0 ? vec2(h_sum / w_sum, w_sum) : vec2(kFar, 0.0);
 }
 
