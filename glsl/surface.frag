@@ -2,7 +2,8 @@
 // Surface pass (thesis Table 4.2 step 3), MRT:
 //   0 color   RGBA8   : lit surface blended with the pseudo-shadow (gamma-encoded)
 //   1 normal  RGBA32F : (visible front-facing normal, 1) -> mean = reference plane (step 4)
-//   2 aov     RGBA32F : (intensity, signed distance d mm, texture value in sigmas, resistance);
+//   2 aov     RGBA32F : (intensity x footprint coverage, signed distance d mm, texture value in
+//                       sigmas, resistance);
 //                       d is NaN where no probe is above the fragment (the distance AOV's
 //                       documented "no probe" value, src/render/renderer.h)
 // Variants: PS_SHADOW (0: probe beyond this surface's influence, pseudo-shadow compiled out),
@@ -45,14 +46,31 @@ vec3 shade_surface(vec3 n) {
   return albedo * u_light_color.rgb * (u_light_dir.w + (1.0 - u_light_dir.w) * lambert);
 }
 
-// Signed probe-surface distance along the reference normal (mm); kFar outside the probe's
-// orthographic footprint.
-float probe_distance(vec2 uv, float h_surface) {
-  vec2 st = (uv - u_window.xy) / (2.0 * u_window.z) + 0.5;
-  if (any(lessThan(st, vec2(0.0))) || any(greaterThanEqual(st, vec2(1.0)))) return kFar;
-  ivec2 texel = ivec2(st * u_window.w);
-  float h_probe = texelFetch(u_probe_depth, texel, 0).r;
-  return h_probe >= kFar ? kFar : h_probe - h_surface;
+// The probe depth map read bilinearly by hand: its "no probe" texels (kFar) must not be blended
+// with real heights, so they are left out and their share becomes the footprint's coverage.
+// Returns (h_probe mm, coverage in [0, 1]); coverage 0 outside the probe's footprint. The
+// filter smooths the footprint's edge and the intensity bands at any depth-map size.
+vec2 probe_height(vec2 uv) {
+  vec2 p = ((uv - u_window.xy) / (2.0 * u_window.z) + 0.5) * u_window.w - 0.5;
+  ivec2 base = ivec2(floor(p));
+  vec2 f = p - vec2(base);
+  float h_sum = 0.0, w_sum = 0.0;
+  int covered = 0;
+  for (int k = 0; k < 4; ++k) {
+    ivec2 o = ivec2(k & 1, k >> 1);
+    ivec2 t = base + o;
+    if (any(lessThan(t, ivec2(0))) || any(greaterThanEqual(t, ivec2(u_window.w)))) continue;
+    float h = texelFetch(u_probe_depth, t, 0).r;
+    if (h >= kFar) continue;
+    float w = (o.x == 1 ? f.x : 1.0 - f.x) * (o.y == 1 ? f.y : 1.0 - f.y);
+    h_sum += w * h;
+    w_sum += w;
+    ++covered;
+  }
+  // Inside the footprint the coverage is exactly 1 (the float weights sum to 1 +- an ulp; an
+  // intensity of 1 - ulp at contact would no longer be opaque).
+  if (covered == 4) return vec2(h_sum / w_sum, 1.0);
+  return w_sum > 0.0 ? vec2(h_sum / w_sum, w_sum) : vec2(kFar, 0.0);
 }
 
 void main() {
@@ -61,10 +79,11 @@ void main() {
   float intensity = 0.0, d = kFar, tex_sigmas = 0.0;
 #if PS_SHADOW
   vec2 uv = vec2(dot(v_world, u_ref_t.xyz), dot(v_world, u_ref_b.xyz));
-  d = probe_distance(uv, dot(v_world, u_ref_n.xyz));
+  vec2 hc = probe_height(uv);
+  d = hc.x >= kFar ? kFar : hc.x - dot(v_world, u_ref_n.xyz);
   IntensityCurve curve = IntensityCurve(u_intensity.x, u_intensity.y, u_intensity.z, u_intensity.w);
-  intensity = shadow_intensity(curve, d);
-  float tex = 0.0;  // black shadow outside the onset distance
+  intensity = hc.y * shadow_intensity(curve, d);
+  float s = 0.0;  // texture in [-1, 1] contrasts; 0 = untextured
 #if PS_TEXTURED
   // Only fragments inside the footprint and the onset distance pay for the Gabor sum.
   if (intensity > 0.0 && d < u_modulation.y) {
@@ -73,11 +92,11 @@ void main() {
 #else
     tex_sigmas = gabor_noise(gabor_material(u_gabor), uv) / u_gabor.kernel.w;
 #endif
-    float shown = u_modulation.x * tex_sigmas / u_modulation.w;
-    tex = clamp(0.5 + 0.5 * shown, 0.0, 1.0);
+    s = tex_sigmas / u_modulation.w;
   }
 #endif
-  rgb = composite_pseudo_shadow(rgb, intensity, tex);
+  float darkening = pseudo_shadow_darkening(curve, d, hc.y, u_modulation.y, u_modulation.x, s);
+  rgb = composite_pseudo_shadow(rgb, darkening);
 #endif
   o_color = vec4(pow(clamp(rgb, 0.0, 1.0), vec3(u_light_color.a)), 1.0);
   o_normal = vec4(n, 1.0);

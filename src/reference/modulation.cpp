@@ -12,6 +12,23 @@ double shadow_intensity(const Material& m, double d) {
   return std::clamp(m.intensity_floor + m.intensity_scale / (d + m.intensity_offset_mm), 0.0, 1.0);
 }
 
+double pseudo_shadow_darkening(const Material& m, double d, double coverage, double gain,
+                               double s) {
+  double i = shadow_intensity(m, d);
+  if (i <= 0.0) return 0.0;
+  double amp = 0.0;
+  if (d <= 0.0) {
+    const double i_near =
+        std::clamp(m.intensity_floor + m.intensity_scale / m.intensity_offset_mm, 0.0, 1.0);
+    const double half_gap = 0.5 * (1.0 - i_near);
+    i = 1.0 - gain * half_gap;
+    amp = gain * half_gap;
+  } else if (d < m.onset_distance_mm) {
+    amp = gain * std::max(std::min(i - shadow_intensity(m, m.onset_distance_mm), 1.0 - i), 0.0);
+  }
+  return coverage * (i + amp * std::clamp(s, -1.0, 1.0));
+}
+
 double frequency_gap_hz(double speed, double lambda_min, double lambda_max, double peak_hz) {
   const double lo = std::min(lambda_min, lambda_max), hi = std::max(lambda_min, lambda_max);
   const double f_max = speed / lo;  // shortest wavelength gives the highest frequency

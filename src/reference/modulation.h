@@ -14,6 +14,14 @@ namespace ps {
 // 1 where d <= 0 (contact), floor + scale / (d + offset) where 0 < d < influence, 0 beyond.
 double shadow_intensity(const Material& m, double distance_mm);
 
+// Darkening in [0, 1] (the share of the surface's light the pseudo-shadow removes) with the
+// texture on; twin of pseudo_shadow_darkening() in glsl/lib/pseudo_shadow.glsl:
+//   I + A * clamp(s, -1, 1),  A = gain * min(I - I(onset), 1 - I) for 0 < d < onset, 0 beyond;
+// at contact the mean is 1 - gain * h and A = gain * h, h = (1 - I(0+)) / 2. `s` is the
+// texture value over the contrast (sigmas / sigmas), `coverage` the footprint's share.
+double pseudo_shadow_darkening(const Material& m, double distance_mm, double coverage,
+                               double gain, double s);
+
 // Distance of the vibration frequency range [s/lambda_max, s/lambda_min] from the peak (Hz):
 // 0 when the range contains the peak.
 double frequency_gap_hz(double speed_mm_s, double lambda_min_mm, double lambda_max_mm,

@@ -94,15 +94,27 @@ struct Errors {
   double texel_mm = 0.0;
 };
 
-// The reference distance at the depth-map texel the shader samples for plane point (u, v).
+// The reference distance the shader's bilinear depth read gives for plane point (u, v): the
+// exact heights at the four surrounding texel centres, weighted bilinearly, texels the probe
+// does not cover left out and the weights renormalised (glsl/surface.frag, probe_height).
 double texel_distance(const CapsuleShape& cap, const PlaneFrame& f, const DepthWindow& w, int n,
                       double u, double v, double h, double st_nudge_x, double st_nudge_y) {
-  const double sx = ((u - w.center_uv.x) / (2.0 * w.half_size_mm) + 0.5) * n + st_nudge_x;
-  const double sy = ((v - w.center_uv.y) / (2.0 * w.half_size_mm) + 0.5) * n + st_nudge_y;
-  const double tu = w.center_uv.x + ((std::floor(sx) + 0.5) / n - 0.5) * 2.0 * w.half_size_mm;
-  const double tv = w.center_uv.y + ((std::floor(sy) + 0.5) / n - 0.5) * 2.0 * w.half_size_mm;
-  const double hp = capsule_lowest_height(cap, f, tu, tv);
-  return hp == kNoProbe ? 1e30 : hp - h;
+  const double sx = ((u - w.center_uv.x) / (2.0 * w.half_size_mm) + 0.5) * n - 0.5 + st_nudge_x;
+  const double sy = ((v - w.center_uv.y) / (2.0 * w.half_size_mm) + 0.5) * n - 0.5 + st_nudge_y;
+  const double bx = std::floor(sx), by = std::floor(sy), fx = sx - bx, fy = sy - by;
+  double h_sum = 0.0, w_sum = 0.0;
+  for (int k = 0; k < 4; ++k) {
+    const int ox = k & 1, oy = k >> 1;
+    const double ix = bx + ox, iy = by + oy;
+    if (ix < 0 || iy < 0 || ix >= n || iy >= n) continue;
+    const double tu = w.center_uv.x + ((ix + 0.5) / n - 0.5) * 2.0 * w.half_size_mm;
+    const double tv = w.center_uv.y + ((iy + 0.5) / n - 0.5) * 2.0 * w.half_size_mm;
+    const double hp = capsule_lowest_height(cap, f, tu, tv);
+    if (hp == kNoProbe) continue;
+    const double wt = (ox ? fx : 1.0 - fx) * (oy ? fy : 1.0 - fy);
+    h_sum += wt * hp, w_sum += wt;
+  }
+  return w_sum > 0.0 ? h_sum / w_sum - h : 1e30;
 }
 
 // What one frame produced, read back, plus the plane and window it measured against.
@@ -138,7 +150,7 @@ void pixel_errors(const Scene& s, const Frame& fr, int px, int py, const glm::dv
   const double d_gpu = fr.dist.at(px, py, 0);
   if (!std::isnan(d_gpu)) {  // NaN: no probe above this pixel
     const CapsuleShape cap = capsule_of(s.probe);
-    double err = 1e30;  // the texel choice may differ by one at a texel edge (float st)
+    double err = 1e30;  // float st may put a texel edge on the other side (coverage changes)
     for (double nx : {-1e-3, 0.0, 1e-3})
       for (double ny : {-1e-3, 0.0, 1e-3})
         err = std::min(err, std::abs(d_gpu - texel_distance(cap, fr.plane, fr.window, s.render.depth_map_size,
@@ -211,8 +223,8 @@ void check(const char* name, const Errors& e) {
   EXPECT_LT(e.texture_max_abs, 1e-4);
   EXPECT_LT(e.texture_cut_max_abs, 0.05 * 1.0 + 1e-4);
   EXPECT_LT(e.texture_cut_pixels, e.texture_pixels / 100);
-  // Distance: the shader reads the nearest depth texel, so it equals the reference at that
-  // texel's centre (at most half a texel away per axis). Float32 rounding: near the probe's
+  // Distance: the shader blends the four surrounding depth texels bilinearly, so it equals the
+  // same blend of the exact heights at those texel centres. Float32 rounding: near the probe's
   // silhouette the ray-sphere solve cancels b^2 - c at ~3e3 mm^2 (ulp 2.4e-4 mm^2), measured
   // 2.2e-4 mm; 1e-3 mm is 0.5 % of a texel.
   EXPECT_LT(e.distance_texel_max, 1e-3);

@@ -2,9 +2,11 @@
 // of the texture inside the pseudo-shadow, measured in the colour image, follows the
 // amplitude gain exp(-(gap / bandwidth)^2) of the probe's speed. The texture's own value comes
 // from the `texture` AOV (in sigmas, before the gain), so the gain is the one unknown:
-//   colour_lin = surface_lin * (1 - I (1 - tex)),  tex = 0.5 + 0.5 * gain * T / contrast
-// (glsl/lib/pseudo_shadow.glsl, glsl/surface.frag), solved for gain by least squares over the
-// shadow's pixels. The expected gains are closed forms of the material below, not the renderer's
+//   colour_lin = surface_lin * (1 - D),  s = T / contrast,
+//   D = I + gain * min(I - I(onset), 1 - I) * s     above the surface (0 < d < onset),
+//   D = 1 - gain * h * (1 - s), h = (1 - I(0+)) / 2  at contact (d <= 0)
+// (glsl/lib/pseudo_shadow.glsl, docs/architecture.md "Composite"), linear in gain and solved
+// by least squares over the shadow's pixels. The expected gains are closed forms of the material below, not the renderer's
 // own numbers.
 #include <cmath>
 #include <cstdio>
@@ -49,7 +51,10 @@ Contrast measured_gain(const Renderer& r) {
   const Image tex = r.read_aov("texture").value();
   const Image inten = r.read_aov("intensity").value();
   const Image dist = r.read_aov("distance").value();
-  const double onset = r.scene().materials[0].onset_distance_mm;
+  const Material& m = r.scene().materials[0];
+  const double onset = m.onset_distance_mm;
+  const double i_onset = m.intensity_floor + m.intensity_scale / (onset + m.intensity_offset_mm);
+  const double half_gap = 0.5 * (1.0 - (m.intensity_floor + m.intensity_scale / m.intensity_offset_mm));
   // The unshadowed surface: the view's corner lies 20 mm from the probe's axis, outside its
   // 8 mm footprint; the plane is flat under a directional light, so it is the same everywhere.
   EXPECT_EQ(inten.at(0, 0, 0), 0.0f);
@@ -57,20 +62,24 @@ Contrast measured_gain(const Renderer& r) {
   Contrast c;
   for (int py = 0; py < color.height; ++py)
     for (int px = 0; px < color.width; ++px) {
-      const double i = inten.at(px, py, 0), t = tex.at(px, py, 0);
-      // Intensity near 1 (the inversion divides by it) inside the onset distance, texture not
-      // clamped at the display's ends.
-      if (!(i >= 0.8 && dist.at(px, py, 0) < onset && std::abs(t) < 0.9 * kContrastSigmas)) continue;
+      const double i = inten.at(px, py, 0), t = tex.at(px, py, 0), d = dist.at(px, py, 0);
+      // Near the axis (intensity >= 0.8, whole texels: intensity = the curve's), inside the
+      // onset distance, texture not clamped at the contrast's ends.
+      if (!(i >= 0.8 && d < onset && std::abs(t) < 0.9 * kContrastSigmas)) continue;
+      if (d > 0.0 && std::abs(i - shadow_intensity(m, d)) > 1e-5) continue;
+      const double s = t / kContrastSigmas;
+      // y = gain * x, from the two branches above.
+      const double x = d <= 0.0 ? half_gap * (s - 1.0) : std::min(i - i_onset, 1.0 - i) * s;
       for (int ch = 0; ch < 3; ++ch) {
         const double s_lin = std::pow(color.at(0, 0, ch), kDisplayGamma);
         const double c_lin = std::pow(color.at(px, py, ch), kDisplayGamma);
-        const double shown = 2.0 * (1.0 - (1.0 - c_lin / s_lin) / i) - 1.0;  // = gain * T / contrast
-        num += shown * t;
-        den += t * t;
+        const double y = (1.0 - c_lin / s_lin) - (d <= 0.0 ? 1.0 : i);
+        num += x * y;
+        den += x * x;
       }
       ++c.pixels;
     }
-  c.gain = den > 0.0 ? kContrastSigmas * num / den : 0.0;
+  c.gain = den > 0.0 ? num / den : 0.0;
   return c;
 }
 

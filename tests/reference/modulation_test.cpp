@@ -104,5 +104,54 @@ TEST(DisplacementWeightTest, RescaledThesisWeight) {
   EXPECT_TRUE(std::isfinite(displacement_weight(-500.0, 40.0, 1000.0)));
 }
 
+// The composite's four discounting properties (docs/architecture.md "Composite") on the twin,
+// against hand values of the thesis curve (onset 5 mm: I(5) = 0.1 + 0.9 / 6.25 = 0.244;
+// I(0+) = 0.1 + 0.9 / 1.25 = 0.82).
+TEST(CompositeTest, TextureAddsDetailNotLight) {
+  const Material m = thesis_material();
+  for (double d : {0.5, 1.5, 3.0, 4.9, -0.5})
+    for (double g : {0.0, 0.4, 1.0})
+      for (double s : {0.3, 0.9, 2.0}) {  // +s and -s: a symmetric texture's pair
+        const double mean = 0.5 * (pseudo_shadow_darkening(m, d, 1.0, g, s) +
+                                   pseudo_shadow_darkening(m, d, 1.0, g, -s));
+        const double untextured = d <= 0.0 ? 1.0 - g * 0.09 : shadow_intensity(m, d);
+        EXPECT_NEAR(mean, untextured, 1e-12) << d << " " << g << " " << s;
+      }
+  EXPECT_NEAR(pseudo_shadow_darkening(m, 1.5, 1.0, 1.0, 0.0), 0.1 + 0.9 / 2.75, 1e-12);
+  // d = 1.5: I = 0.42727, amplitude min(I - 0.244, 1 - I) = 0.18327; s = 1 and s = -1.
+  EXPECT_NEAR(pseudo_shadow_darkening(m, 1.5, 1.0, 1.0, 1.0), 0.42727 + 0.18327, 1e-5);
+  EXPECT_NEAR(pseudo_shadow_darkening(m, 1.5, 1.0, 1.0, -1.0), 0.244, 1e-5);
+  // Contact: the mean jumps to 1 - 0.09 at full gain, the texture spans [0.82, 1].
+  EXPECT_NEAR(pseudo_shadow_darkening(m, -1.0, 1.0, 1.0, -1.0), 0.82, 1e-12);
+  EXPECT_NEAR(pseudo_shadow_darkening(m, -1.0, 1.0, 1.0, 1.0), 1.0, 1e-12);
+}
+
+TEST(CompositeTest, DarkerEverywhereAndMonotoneAsTheProbeApproaches) {
+  const Material m = thesis_material();
+  for (double g : {0.0, 0.5, 1.0})
+    for (double s = -1.0; s <= 1.0; s += 0.25) {
+      double prev = 0.0;
+      for (double d = 12.0; d >= -1.0; d -= 0.01) {
+        const double dark = pseudo_shadow_darkening(m, d, 1.0, g, s);
+        EXPECT_GT(dark, 0.0);
+        EXPECT_LE(dark, 1.0);
+        EXPECT_GE(dark, prev - 1e-12) << "d " << d << " gain " << g << " s " << s;
+        prev = dark;
+      }
+    }
+}
+
+TEST(CompositeTest, TextureFadesInAtTheOnset) {
+  const Material m = thesis_material();
+  // Just inside the onset distance the texture's swing is tiny (no ring where it appears):
+  // the slope of I there is 0.9 / 6.25^2 = 0.023 per mm, so 0.01 mm in gives ~2.3e-4.
+  const double in = 5.0 - 0.01;
+  const double swing = pseudo_shadow_darkening(m, in, 1.0, 1.0, 1.0) -
+                       pseudo_shadow_darkening(m, in, 1.0, 1.0, -1.0);
+  EXPECT_NEAR(swing, 2.0 * 0.9 * (1.0 / 6.24 - 1.0 / 6.25), 1e-9);
+  EXPECT_EQ(pseudo_shadow_darkening(m, 5.0, 1.0, 1.0, 1.0), shadow_intensity(m, 5.0));
+  EXPECT_NEAR(pseudo_shadow_darkening(m, 3.0, 0.25, 1.0, 0.5), 0.25 * pseudo_shadow_darkening(m, 3.0, 1.0, 1.0, 0.5), 1e-15);
+}
+
 }  // namespace
 }  // namespace ps
