@@ -1,12 +1,9 @@
 // `pseudoshadow render`: renders a scene headless and writes the image, AOVs and stats.
 #include <algorithm>
 #include <cctype>
-#include <cerrno>
 #include <chrono>
 #include <cstdio>
-#include <cstring>
 #include <filesystem>
-#include <fstream>
 #include <unistd.h>
 
 #include "app/cli.h"
@@ -35,15 +32,11 @@ struct RenderArgs {
 };
 
 void check_aov(const std::string& name, const std::string& file) {
-  const auto& names = aov_names();
-  if (std::find(names.begin(), names.end(), name) == names.end()) {
-    std::string list;
-    for (const auto& n : names) list += (list.empty() ? "" : ", ") + n;
-    throw cli::UsageError("--aov: unknown AOV '" + name + "' (known: " + list + ")");
-  }
+  const Result<Aov> aov = parse_aov(name);
+  if (!aov) throw cli::UsageError("--aov: " + aov.error().message);
   std::string ext = std::filesystem::path(file).extension().string();
   for (char& c : ext) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-  if (name == "distance" && std::find(std::begin(kFloatImageExtensions), std::end(kFloatImageExtensions), ext) ==
+  if (aov.value() == Aov::kDistance && std::find(std::begin(kFloatImageExtensions), std::end(kFloatImageExtensions), ext) ==
                                 std::end(kFloatImageExtensions))
     throw cli::UsageError("--aov distance=" + file + ": the distance AOV is float mm (NaN outside the shadow) "
                           "and needs a float format: write distance=" +

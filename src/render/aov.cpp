@@ -35,10 +35,12 @@ const std::vector<std::string>& aov_names() {
   return names;
 }
 
-std::optional<Aov> parse_aov(const std::string& name) {
+Result<Aov> parse_aov(const std::string& name) {
   for (const AovInfo& e : kAovTable)
     if (name == e.name) return e.aov;
-  return std::nullopt;
+  std::string list;
+  for (const AovInfo& e : kAovTable) list += (list.empty() ? "" : ", ") + std::string(e.name);
+  return make_error("unknown AOV '" + name + "' (known: " + list + ")");
 }
 
 }  // namespace ps

@@ -2,9 +2,10 @@
 // the name the CLI's --aov takes; one table (aov.cpp) says where each comes from.
 #pragma once
 
-#include <optional>
 #include <string>
 #include <vector>
+
+#include "core/result.h"
 
 namespace ps {
 
@@ -34,6 +35,7 @@ const AovInfo& aov_info(Aov aov);
 
 // The names, in enum order: intensity, distance, texture, normal, displacement.
 const std::vector<std::string>& aov_names();
-std::optional<Aov> parse_aov(const std::string& name);
+// An unknown name is the error "unknown AOV 'NAME' (known: intensity, distance, ...)".
+Result<Aov> parse_aov(const std::string& name);
 
 }  // namespace ps

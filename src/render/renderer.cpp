@@ -417,10 +417,9 @@ Result<Image> Renderer::read_aov(Aov aov) const {
 }
 
 Result<Image> Renderer::read_aov(const std::string& name) const {
-  if (const std::optional<Aov> aov = parse_aov(name)) return read_aov(*aov);
-  std::string list;
-  for (const auto& n : aov_names()) list += (list.empty() ? "" : ", ") + n;
-  return make_error("unknown AOV '" + name + "' (known: " + list + ")");
+  const Result<Aov> aov = parse_aov(name);
+  if (!aov) return aov.error();
+  return read_aov(aov.value());
 }
 
 }  // namespace ps
