@@ -18,11 +18,9 @@ constexpr double kPenetrationMm = 1.0;
 
 // Residual penetration (mm) of the sphere into the plane z = 0 after one frame.
 double residual_after_one_frame(Scene s) {
-  auto r = Renderer::create(s, {});
-  EXPECT_TRUE(r.ok()) << (r.ok() ? "" : r.error().message);
-  if (!r.ok()) return 1e30;
-  EXPECT_TRUE(r.value()->render_frame().ok());
-  return std::max(0.0, s.probe.radius_mm - r.value()->stats().probe_position.z);
+  const auto r = test::render_one_frame(s);
+  if (!r) return 1e30;
+  return std::max(0.0, s.probe.radius_mm - r->stats().probe_position.z);
 }
 
 class ContactGLTest : public test::GlTest {};
@@ -73,12 +71,10 @@ ContactBands contact_bands(double probe_gap_mm) {
   Scene s = test::flat_plane_scene(8.0 + probe_gap_mm);
   s.camera.ortho_height_mm = 4.0;
   ContactBands b;
-  auto r = Renderer::create(s, {});
-  EXPECT_TRUE(r.ok()) << (r.ok() ? "" : r.error().message);
-  if (!r.ok()) return b;
-  EXPECT_TRUE(r.value()->render_frame().ok());
-  const Image dist = r.value()->read_aov("distance").value();
-  const Image inten = r.value()->read_aov("intensity").value();
+  const auto r = test::render_one_frame(s);
+  if (!r) return b;
+  const Image dist = r->read_aov("distance").value();
+  const Image inten = r->read_aov("intensity").value();
   for (int py = 0; py < s.render.height; ++py)
     for (int px = 0; px < s.render.width; ++px) {
       const double d = dist.at(px, py, 0), i = inten.at(px, py, 0);

@@ -28,11 +28,9 @@ struct NormalStats {
 
 NormalStats measure_normals(const Scene& s) {
   NormalStats st;
-  auto r = Renderer::create(s, {});
-  EXPECT_TRUE(r.ok()) << (r.ok() ? "" : r.error().message);
-  if (!r.ok()) return st;
-  EXPECT_TRUE(r.value()->render_frame().ok());
-  const Image nrm = r.value()->read_aov("normal").value();
+  const auto r = test::render_one_frame(s);
+  if (!r) return st;
+  const Image nrm = r->read_aov("normal").value();
   const auto meshes = test::scene_meshes(s);
   for (int py = 0; py < s.render.height; ++py)
     for (int px = 0; px < s.render.width; ++px) {

@@ -1,5 +1,7 @@
 #include "pipeline/scenes.h"
 
+#include <gtest/gtest.h>
+
 namespace ps::test {
 
 Scene flat_plane_scene(double probe_z) {
@@ -36,6 +38,19 @@ glm::dvec2 pixel_to_world(const Scene& s, int px, int py) {
   const double x = (px + 0.5) / s.render.width * w - 0.5 * w;
   const double y = 0.5 * h - (py + 0.5) / s.render.height * h;
   return {x, y};
+}
+
+std::unique_ptr<Renderer> render_one_frame(const Scene& s) {
+  auto r = Renderer::create(s, {});
+  if (!r.ok()) {
+    ADD_FAILURE() << r.error().message;
+    return nullptr;
+  }
+  if (Status frame = r.value()->render_frame(); !frame) {
+    ADD_FAILURE() << frame.error().message;
+    return nullptr;
+  }
+  return std::move(r.value());
 }
 
 }  // namespace ps::test
