@@ -13,6 +13,7 @@
 
 #include "app/compare_cmd.h"
 #include "image/image.h"
+#include "image/image_test_util.h"
 
 namespace ps {
 namespace {
@@ -38,15 +39,11 @@ std::vector<GoldenCase> golden_cases() {
   return cases;
 }
 
+// Exit status of `compare ARGS...`; its summary line is echoed so a failure shows the numbers.
 int compare(std::vector<std::string> args) {
-  args.insert(args.begin(), "compare");
-  std::vector<char*> argv;
-  for (std::string& a : args) argv.push_back(a.data());
-  argv.push_back(nullptr);
-  ::testing::internal::CaptureStdout();
-  const int code = run_compare(static_cast<int>(args.size()), argv.data());
-  std::printf("%s", ::testing::internal::GetCapturedStdout().c_str());
-  return code;
+  const test::CompareRun r = test::run_compare_captured(std::move(args));
+  std::printf("%s%s", r.out.c_str(), r.err.c_str());
+  return r.code;
 }
 
 // 23 pixels spread over the image, channel 0 moved by 24 levels (down where up would clip).

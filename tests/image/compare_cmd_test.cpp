@@ -15,24 +15,8 @@ namespace {
 
 namespace fs = std::filesystem;
 
-struct CmdRun {
-  int code = -1;
-  std::string out, err;
-};
-
-CmdRun run_cmd(std::vector<std::string> args) {
-  args.insert(args.begin(), "compare");
-  std::vector<char*> argv;
-  for (std::string& a : args) argv.push_back(a.data());
-  argv.push_back(nullptr);
-  ::testing::internal::CaptureStdout();
-  ::testing::internal::CaptureStderr();
-  CmdRun r;
-  r.code = run_compare(static_cast<int>(args.size()), argv.data());
-  r.out = ::testing::internal::GetCapturedStdout();
-  r.err = ::testing::internal::GetCapturedStderr();
-  return r;
-}
+using CmdRun = test::CompareRun;
+CmdRun run_cmd(std::vector<std::string> args) { return test::run_compare_captured(std::move(args)); }
 
 // golden.png and a copy with one of 100 pixels off by 0.1 (well above 1/255 after quantization).
 class CompareCmdTest : public ::testing::Test {

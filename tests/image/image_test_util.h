@@ -3,9 +3,11 @@
 
 #include <filesystem>
 #include <string>
+#include <vector>
 
 #include <gtest/gtest.h>
 
+#include "app/compare_cmd.h"
 #include "image/image.h"
 
 namespace ps::test {
@@ -35,6 +37,25 @@ inline Image constant_image(int width, int height, int channels, float value) {
   Image image{width, height, channels, {}};
   image.pixels.assign(static_cast<size_t>(width) * height * channels, value);
   return image;
+}
+
+// `pseudoshadow compare ARGS...` run in-process: exit status, stdout and stderr.
+struct CompareRun {
+  int code = -1;
+  std::string out, err;
+};
+inline CompareRun run_compare_captured(std::vector<std::string> args) {
+  args.insert(args.begin(), "compare");
+  std::vector<char*> argv;
+  for (std::string& a : args) argv.push_back(a.data());
+  argv.push_back(nullptr);
+  ::testing::internal::CaptureStdout();
+  ::testing::internal::CaptureStderr();
+  CompareRun r;
+  r.code = run_compare(static_cast<int>(args.size()), argv.data());
+  r.out = ::testing::internal::GetCapturedStdout();
+  r.err = ::testing::internal::GetCapturedStderr();
+  return r;
 }
 
 }  // namespace ps::test
