@@ -9,6 +9,8 @@
 
 #include <glm/glm.hpp>
 
+#include "scene/haptic_material.h"
+
 namespace ps {
 
 enum class Projection { kPerspective, kOrthographic };
@@ -77,9 +79,10 @@ struct Material {
   // Speed modulation (thesis §4.3.1): amplitude *= exp(-(df/bandwidth)^2), df against peak.
   double peak_hz = 250.0;
   double bandwidth_hz = 100.0;
+  HapticMaterial haptic;  // how it feels (scene/haptic_material.h)
 };
 
-enum class SurfaceType { kPlane, kSphere, kTorus, kHeightField, kMesh };
+enum class SurfaceType { kPlane, kSphere, kTorus, kHeightField, kMesh, kBox };
 
 struct Surface {
   SurfaceType type = SurfaceType::kPlane;
@@ -99,7 +102,11 @@ struct Surface {
   // mesh: file loaded through assimp (absolute path after loading), uniform scale
   std::string mesh_file;
   double scale = 1.0;
+  // box: full edge lengths along local X, Y, Z
+  glm::dvec3 box_size_mm{20.0, 20.0, 20.0};
   int resolution = 64;       // tessellation of procedural shapes (segments)
+  bool visible = true;       // false: felt but not drawn (a hidden object)
+  bool touchable = true;     // false: drawn but not felt
   int line = 0;              // line in the scene file, for error messages
 };
 
