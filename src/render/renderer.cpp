@@ -245,6 +245,7 @@ std::vector<SurfaceDraw> Renderer::surface_draws(const FramePlan& plan) {
   std::vector<SurfaceDraw> draws;
   bool gain_recorded = false;
   for (size_t i = 0; i < scene_.surfaces.size(); ++i) {
+    if (!scene_.surfaces[i].visible) continue;  // a hidden object: felt (haptics), never drawn
     const size_t mi = static_cast<size_t>(scene_.surfaces[i].material_index);
     const Material& m = scene_.materials[mi];
     const MaterialState& ms = materials_[mi];

@@ -11,8 +11,15 @@
 
 namespace ps {
 
+// Limits shared by the scene reader and the force code (src/haptics/material_forces.h): the
+// friction history is a fixed ring buffer of this many ticks, and a texture sums at most this
+// many waves, so the haptic thread never allocates.
+inline constexpr int kMaxFrictionHistoryTicks = 32;
+inline constexpr int kMaxHapticWaves = 16;
+
 // One term of a haptic texture along the surface (seed 002 §3): a sine or square wave of the
-// surface coordinate along `direction` (a tangent direction in the surface's local frame),
+// surface coordinate along `direction` (a unit tangent direction in the surface's local frame,
+// normalised by the scene reader),
 // pushing along the surface normal with amplitude `amplitude_n`.
 struct HapticWave {
   enum class Shape { kSine, kSquare };
@@ -30,6 +37,9 @@ struct HapticMaterial {
   double static_friction = 0.3;         // mu_s
   double dynamic_friction = 0.2;        // mu_d <= mu_s
   int friction_history_ticks = 8;       // friction direction averaged over this many ticks
+  // Below this tangential speed friction ramps linearly from 0 (a hand at rest feels no
+  // chatter) to its static peak mu_s; at and above it, it slides at mu_d (the break-away).
+  double stick_speed_mm_s = 2.0;
   // Penetrable medium (water, thick fluid): no surface spring, only F = -b v inside.
   bool penetrable = false;
   double viscosity_n_s_per_mm = 0.0;    // b inside a penetrable material

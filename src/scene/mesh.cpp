@@ -28,7 +28,7 @@ Result<Mesh> local_mesh(const Surface& s) {
     case SurfaceType::kHeightField:
       return mesh_detail::make_height_field(s.heightmap, s.size_mm, s.height_mm, s.resolution);
     case SurfaceType::kMesh: return load_mesh_file(s.mesh_file);
-    case SurfaceType::kBox: break;  // the scene reader does not produce boxes yet
+    case SurfaceType::kBox: return mesh_detail::make_box(s.box_size_mm);
   }
   return make_error("build_surface_mesh: unknown surface type");
 }

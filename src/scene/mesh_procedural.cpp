@@ -94,6 +94,31 @@ Mesh make_torus(double major_radius_mm, double minor_radius_mm, int resolution) 
   });
 }
 
+Mesh make_box(glm::dvec3 size_mm) {
+  const glm::dvec3 h = 0.5 * size_mm;
+  Mesh mesh;
+  // Each face: its outward normal n and two tangents u, v with u x v = n, so the corners
+  // c - u - v, c + u - v, c + u + v, c - u + v run counter-clockwise seen from outside.
+  for (int axis = 0; axis < 3; ++axis) {
+    for (double sign : {-1.0, 1.0}) {
+      glm::dvec3 n(0.0), u(0.0), v(0.0);
+      n[axis] = sign;
+      u[(axis + 1) % 3] = h[(axis + 1) % 3];
+      v[(axis + 2) % 3] = sign * h[(axis + 2) % 3];
+      const glm::dvec3 c = n * h[axis];
+      const auto base = static_cast<std::uint32_t>(mesh.positions.size());
+      for (const glm::dvec3& p : {c - u - v, c + u - v, c + u + v, c - u + v}) {
+        mesh.positions.emplace_back(p);
+        mesh.normals.emplace_back(n);
+      }
+      mesh.indices.insert(mesh.indices.end(),
+                          {base, base + 1, base + 2, base, base + 2, base + 3});
+    }
+  }
+  compute_bounds(mesh);
+  return mesh;
+}
+
 Result<Mesh> make_height_field(const std::string& image_path, glm::dvec2 size_mm,
                                double height_mm, int resolution) {
   Result<Image> image = read_image(image_path);

@@ -12,6 +12,9 @@ Mesh make_plane(glm::dvec2 size_mm, int resolution);
 Mesh make_sphere(double radius_mm, int resolution);
 // Ring torus around local Z: `resolution` segments around Z, resolution/2 (>= 3) around the tube.
 Mesh make_torus(double major_radius_mm, double minor_radius_mm, int resolution);
+// Axis-aligned box centred at the origin, full edge lengths size_mm: six faces of two
+// triangles each, with their own four vertices so every face has its flat normal.
+Mesh make_box(glm::dvec3 size_mm);
 // Height field over size_mm from a grey image: z = height_mm * value (bilinear).
 Result<Mesh> make_height_field(const std::string& image_path, glm::dvec2 size_mm,
                                double height_mm, int resolution);

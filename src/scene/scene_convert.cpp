@@ -22,8 +22,9 @@ constexpr std::array kProjections = {"perspective"sv, "orthographic"sv};
 constexpr std::array kProbeShapes = {"sphere"sv, "capsule"sv, "mesh"sv};
 constexpr std::array kDisplacements = {"weighted_average"sv, "exact_max"sv};
 constexpr std::array kGaborStrategies = {"naive"sv, "stratified"sv, "baked"sv, "auto"sv, "baked_linear"sv};
+// Same order as SurfaceType.
 constexpr std::array kSurfaceTypes = {"plane"sv, "sphere"sv, "torus"sv, "heightfield"sv,
-                                      "mesh"sv};
+                                      "mesh"sv,  "box"sv};
 
 const Range kLength = Range::positive(kMaxLengthMm);
 const Range kCoordinate = Range::closed(-kMaxLengthMm, kMaxLengthMm);
@@ -162,6 +163,8 @@ Status read_material(const ParseContext& ctx, const toml::table& table, const st
   r.number("resistance", out.resistance, kUnit);
   r.number("peak_hz", out.peak_hz, Range::positive(1e6));
   r.number("bandwidth_hz", out.bandwidth_hz, Range::positive(1e6));
+  const toml::table* haptic = r.sub_table("haptic");
+  r.adopt(read_haptic(ctx, haptic, "materials." + name + ".haptic", out.haptic));
   return r.status();
 }
 
@@ -175,7 +178,12 @@ Status read_surface(const ParseContext& ctx, const toml::table& table, int index
   r.string("material", out.material);
   r.vec3("center", out.center, kCoordinate);
   r.vec3("rotation_deg", out.rotation_deg, Range::closed(-3600.0, 3600.0));
-  r.vec2("size_mm", out.size_mm, kLength);
+  // One key for the extent of a shape: [x, y] for planes and height fields, [x, y, z] for a box.
+  if (out.type == SurfaceType::kBox) {
+    r.vec3("size_mm", out.box_size_mm, kLength);
+  } else {
+    r.vec2("size_mm", out.size_mm, kLength);
+  }
   r.number("radius_mm", out.radius_mm, kLength);
   r.number("minor_radius_mm", out.minor_radius_mm, kLength);
   r.file("heightmap", out.heightmap);
@@ -183,6 +191,8 @@ Status read_surface(const ParseContext& ctx, const toml::table& table, int index
   r.file("mesh_file", out.mesh_file);
   r.number("scale", out.scale, Range::positive(1e6));
   r.integer("resolution", out.resolution, 3, kMaxResolution);
+  r.boolean("visible", out.visible);
+  r.boolean("touchable", out.touchable);
   r.require(out.type != SurfaceType::kTorus || out.minor_radius_mm < out.radius_mm,
             "minor_radius_mm", "must be < 'radius_mm' for a torus (a ring torus)");
   r.require(out.type != SurfaceType::kHeightField || !out.heightmap.empty(), "heightmap",

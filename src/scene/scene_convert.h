@@ -17,9 +17,16 @@ Status read_probe(const ParseContext& ctx, const toml::table* table, Probe& out)
 Status read_render(const ParseContext& ctx, const toml::table* table, RenderSettings& out);
 Status read_material(const ParseContext& ctx, const toml::table& table, const std::string& name,
                      Material& out);
+// [materials.NAME.haptic] (`table` may be null: defaults); `path` is "materials.NAME.haptic".
+Status read_haptic(const ParseContext& ctx, const toml::table* table, const std::string& path,
+                   HapticMaterial& out);
 // `material_names` resolves Surface::material to Surface::material_index.
 Status read_surface(const ParseContext& ctx, const toml::table& table, int index,
                     const std::vector<std::string>& material_names, Surface& out);
+
+// Reads the files named by the root's `include` (recursively) into ctx.included
+// (scene_include.cpp); errors carry the including line or the included file's own line.
+Status resolve_includes(toml::table& root, ParseContext& ctx);
 
 // Applies one "KEY=VALUE" override to the parsed document and records it in ctx.overridden.
 Status apply_override(toml::table& root, const std::string& text, ParseContext& ctx);

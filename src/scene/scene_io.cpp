@@ -29,31 +29,64 @@ Result<const toml::table*> section(const ParseContext& ctx, const toml::table& r
   return node->as_table();
 }
 
-// Materials in file order (toml++ keeps keys sorted); ones added by --set go last.
+// Names the surfaces use: materials from includes that no surface uses are validated but not
+// kept, so including a library of ten materials costs nothing at render time.
+std::vector<std::string> used_material_names(const toml::table& root) {
+  std::vector<std::string> names;
+  if (const toml::array* surfaces = root["surfaces"].as_array()) {
+    for (const toml::node& s : *surfaces) {
+      if (const toml::table* t = s.as_table()) {
+        if (auto name = (*t)["material"].value<std::string>()) names.push_back(*name);
+      }
+    }
+  }
+  return names;
+}
+
+struct MaterialEntry {
+  std::string name;
+  const toml::table* table;
+  const scene_detail::IncludedMaterial* included;  // null: defined in the scene itself
+  unsigned order;
+};
+
+// Materials in file order (toml++ keeps keys sorted), then those from includes in inclusion
+// order, then ones added only by --set.
 Status read_materials(const ParseContext& ctx, const toml::table& root, Scene& scene) {
   Result<const toml::table*> table = section(ctx, root, "materials");
   if (!table) return table.error();
-  if (!*table || (*table)->empty()) {
+  if ((!*table || (*table)->empty()) && ctx.included.empty()) {
     return make_error(ctx.source_name + ":1: the scene defines no materials; add at least one "
                       "[materials.NAME] table");
   }
-  std::vector<std::pair<std::string, const toml::table*>> entries;
-  for (const auto& [name, node] : **table) {
+  constexpr unsigned kIncludedBase = 1u << 30;  // after every line of the scene itself
+  std::vector<MaterialEntry> entries;
+  static const toml::table kNone;
+  const toml::table& own = *table ? **table : kNone;  // both lvalues: no copy (it would lose lines)
+  for (const auto& [name, node] : own) {
     if (!node.is_table()) {
       return make_error(line_of(ctx, node) + ": 'materials." + std::string(name.str()) +
                         "' must be a table ([materials." + std::string(name.str()) + "])");
     }
-    entries.emplace_back(std::string(name.str()), node.as_table());
+    const auto line = node.as_table()->source().begin.line;
+    entries.push_back({std::string(name.str()), node.as_table(), nullptr, line == 0 ? ~0u : line});
   }
-  auto order = [](const toml::table* t) {
-    const auto line = t->source().begin.line;
-    return line == 0 ? ~0u : line;
-  };
+  for (const auto& [name, included] : ctx.included) {
+    entries.push_back({name, included.table, &included,
+                       kIncludedBase + static_cast<unsigned>(included.order)});
+  }
   std::stable_sort(entries.begin(), entries.end(),
-                   [&](const auto& a, const auto& b) { return order(a.second) < order(b.second); });
-  for (const auto& [name, t] : entries) {
+                   [](const auto& a, const auto& b) { return a.order < b.order; });
+  const std::vector<std::string> used = used_material_names(root);
+  for (const MaterialEntry& e : entries) {
     Material material;
-    if (Status s = scene_detail::read_material(ctx, *t, name, material); !s) return s;
+    if (e.included) {
+      ParseContext origin{e.included->source_name, e.included->base_dir, ctx.overridden, {}, {}};
+      if (Status s = scene_detail::read_material(origin, *e.table, e.name, material); !s) return s;
+      if (std::find(used.begin(), used.end(), e.name) == used.end()) continue;
+    } else if (Status s = scene_detail::read_material(ctx, *e.table, e.name, material); !s) {
+      return s;
+    }
     scene.materials.push_back(std::move(material));
   }
   return ok_status();
@@ -106,7 +139,7 @@ Status read_sections(const ParseContext& ctx, const toml::table& root, Scene& sc
 Result<Scene> parse_scene(std::string_view text, const std::string& source_name,
                           const std::string& base_dir,
                           const std::vector<std::string>& overrides) {
-  ParseContext ctx{source_name, base_dir, {}};
+  ParseContext ctx{source_name, base_dir, {}, {}, {}};
   toml::table root;
   try {
     root = toml::parse(text, source_name);
@@ -115,6 +148,8 @@ Result<Scene> parse_scene(std::string_view text, const std::string& source_name,
     return make_error(source_name + ":" + std::to_string(line) + ": syntax error: " +
                       std::string(e.description()));
   }
+  // Includes first, so --set reaches included materials too.
+  if (Status s = scene_detail::resolve_includes(root, ctx); !s) return s.error();
   for (const std::string& o : overrides) {
     if (Status s = scene_detail::apply_override(root, o, ctx); !s) return s.error();
   }

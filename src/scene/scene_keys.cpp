@@ -12,8 +12,8 @@ namespace {
 
 using std::string_view_literals::operator""sv;
 
-constexpr std::array kRootKeys = {"camera"sv, "light"sv, "probe"sv, "render"sv, "materials"sv,
-                                  "surfaces"sv};
+constexpr std::array kRootKeys = {"include"sv, "camera"sv,    "light"sv,   "probe"sv,
+                                  "render"sv,  "materials"sv, "surfaces"sv};
 constexpr std::array kCameraKeys = {"projection"sv, "position"sv,        "target"sv, "up"sv,
                                     "fov_y_deg"sv,  "ortho_height_mm"sv, "near_mm"sv, "far_mm"sv};
 constexpr std::array kLightKeys = {"direction"sv, "color"sv, "ambient"sv};
@@ -32,11 +32,21 @@ constexpr std::array kMaterialKeys = {
     "gabor_strategy"sv,  "stratified_impulses"sv, "bake_samples_per_lambda"sv,
     "onset_distance_mm"sv, "influence_distance_mm"sv, "intensity_floor"sv,
     "intensity_scale"sv, "intensity_offset_mm"sv,   "resistance"sv,
-    "peak_hz"sv,         "bandwidth_hz"sv};
+    "peak_hz"sv,         "bandwidth_hz"sv,          "haptic"sv};
+// [materials.NAME.haptic]: how the material feels (scene/haptic_material.h).
+constexpr std::array kHapticKeys = {
+    "stiffness_n_per_mm"sv,   "stiffness_exponent"sv,     "damping_n_s_per_mm"sv,
+    "static_friction"sv,      "dynamic_friction"sv,       "friction_history_ticks"sv,
+    "stick_speed_mm_s"sv,     "penetrable"sv,             "viscosity_n_s_per_mm"sv,
+    "magnetic_force_n"sv,     "magnetic_range_mm"sv,      "stickiness_n"sv,
+    "restitution"sv,          "texture"sv};
+constexpr std::array kHapticWaveKeys = {"shape"sv, "amplitude_n"sv, "period_mm"sv,
+                                        "direction"sv};
 constexpr std::array kSurfaceKeys = {"type"sv,      "material"sv,        "center"sv,
                                      "rotation_deg"sv, "size_mm"sv,      "radius_mm"sv,
                                      "minor_radius_mm"sv, "heightmap"sv, "height_mm"sv,
-                                     "mesh_file"sv, "scale"sv,           "resolution"sv};
+                                     "mesh_file"sv, "scale"sv,           "resolution"sv,
+                                     "visible"sv,   "touchable"sv};
 
 }  // namespace
 
@@ -48,6 +58,8 @@ std::span<const std::string_view> known_keys(Section section) {
     case Section::kProbe: return kProbeKeys;
     case Section::kRender: return kRenderKeys;
     case Section::kMaterial: return kMaterialKeys;
+    case Section::kHaptic: return kHapticKeys;
+    case Section::kHapticWave: return kHapticWaveKeys;
     case Section::kSurface: return kSurfaceKeys;
   }
   assert(false && "known_keys: unhandled Section");
@@ -55,6 +67,11 @@ std::span<const std::string_view> known_keys(Section section) {
 }
 
 std::string_view key_unit(std::string_view leaf) {
+  // Longest suffixes first: "stiffness_n_per_mm" ends in "_mm" too.
+  if (leaf.ends_with("_n_s_per_mm")) return "N s/mm";
+  if (leaf.ends_with("_n_per_mm")) return "N/mm";
+  if (leaf.ends_with("_mm_s")) return "mm/s";
+  if (leaf.ends_with("_n")) return "N";
   if (leaf.ends_with("_mm")) return "mm";
   if (leaf.ends_with("_deg")) return "deg";
   if (leaf.ends_with("_hz")) return "Hz";

@@ -11,12 +11,14 @@
 
 namespace ps::scene_detail {
 
-enum class Section { kRoot, kCamera, kLight, kProbe, kRender, kMaterial, kSurface };
+// kHaptic is [materials.NAME.haptic]; kHapticWave one [[materials.NAME.haptic.texture]] entry.
+enum class Section { kRoot, kCamera, kLight, kProbe, kRender, kMaterial, kHaptic, kHapticWave, kSurface };
 
 std::span<const std::string_view> known_keys(Section section);
 
 // The unit of a key's value for labels ("mm", "mm/s", "deg", "Hz", "px"), from its leaf name
-// (the suffix _mm, _deg, _hz, or a known name: position, velocity, lambda_min, ...); "" when
+// (the suffix _mm, _deg, _hz, _n, _n_per_mm, _n_s_per_mm, _mm_s, or a known name: position,
+// velocity, lambda_min, ...); "" when
 // unitless. docs/scene-format.md has the same units in its tables.
 std::string_view key_unit(std::string_view leaf);
 

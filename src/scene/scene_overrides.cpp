@@ -57,35 +57,75 @@ Error unknown_key(const std::string& label, std::string_view key,
   return make_error(label + ": unknown key; close matches: " + join(matches));
 }
 
+// Inside [materials.NAME] the path's shape says which table the leaf belongs to:
+// materials.NAME.KEY, materials.NAME.haptic.KEY, materials.NAME.haptic.texture.N.KEY.
+Result<Section> material_leaf_section(const std::vector<std::string>& parts,
+                                      const std::string& label) {
+  if (parts.size() == 3) return Section::kMaterial;
+  if (parts.size() == 4 && parts[2] == "haptic") return Section::kHaptic;
+  if (parts.size() == 6 && parts[2] == "haptic" && parts[3] == "texture") {
+    return Section::kHapticWave;
+  }
+  return make_error(label + ": expected materials.NAME.KEY=VALUE (or materials.NAME.haptic.KEY, "
+                    "materials.NAME.haptic.texture.N.KEY)");
+}
+
+// Element `index_text` of an array of tables that must already exist.
+// `what` names one element ("surface"), `holder` the array's owner ("the scene").
+Result<toml::table*> element(toml::array* array, const std::string& index_text,
+                             const std::string& label, const std::string& what,
+                             const std::string& holder) {
+  std::size_t index = 0;
+  const auto& s = index_text;
+  const auto [end, ec] = std::from_chars(s.data(), s.data() + s.size(), index);
+  const std::size_t count = array ? array->size() : 0;
+  if (ec != std::errc() || end != s.data() + s.size() || index >= count) {
+    return make_error(label + ": no " + what + " '" + s + "' (" + holder + " has " +
+                      std::to_string(count) + " " + what + "s, numbered from 0)");
+  }
+  toml::table* t = (*array)[index].as_table();
+  if (!t) return make_error(label + ": " + what + " " + s + " is not a table");
+  return t;
+}
+
+toml::table* child_table(toml::table& parent, const std::string& key) {
+  auto [it, inserted] = parent.insert(key, toml::table{});
+  return it->second.as_table();
+}
+
+// The [materials.NAME] table to edit: the scene's own, else an included one (edited in place,
+// so --set changes one key of a library material), else a new one.
+Result<toml::table*> material_table(toml::table& root, const std::vector<std::string>& parts,
+                                    const std::string& label, ParseContext& ctx) {
+  toml::table* materials = child_table(root, "materials");
+  if (!materials) return make_error(label + ": the scene's 'materials' is not a table");
+  toml::table* t = nullptr;
+  if (auto it = ctx.included.find(parts[1]); !materials->contains(parts[1]) &&
+                                             it != ctx.included.end()) {
+    t = it->second.table;
+  } else {
+    t = child_table(*materials, parts[1]);
+  }
+  if (t && parts.size() >= 4) t = child_table(*t, "haptic");
+  if (!t) return make_error(label + ": " + parts[0] + "." + parts[1] + " is not a table");
+  if (parts.size() == 6) {
+    return element((*t)["texture"].as_array(), parts[4], label, "texture wave",
+                   parts[0] + "." + parts[1] + ".haptic");
+  }
+  return t;
+}
+
 // Finds (or, for sections and materials, creates) the table that holds the key.
 Result<toml::table*> target_table(toml::table& root, const std::vector<std::string>& parts,
-                                  const std::string& label) {
+                                  const std::string& label, ParseContext& ctx) {
   const Section section = section_of(parts[0]);
-  const bool nested = section == Section::kMaterial || section == Section::kSurface;
-  if (parts.size() != (nested ? 3u : 2u)) {
-    return make_error(label + ": expected " +
-                      (nested ? parts[0] + ".NAME.KEY" : parts[0] + ".KEY") + "=VALUE");
-  }
+  if (section == Section::kMaterial) return material_table(root, parts, label, ctx);
   if (section == Section::kSurface) {
-    toml::array* surfaces = root["surfaces"].as_array();
-    std::size_t index = 0;
-    const auto& s = parts[1];
-    const auto [end, ec] = std::from_chars(s.data(), s.data() + s.size(), index);
-    const std::size_t count = surfaces ? surfaces->size() : 0;
-    if (ec != std::errc() || end != s.data() + s.size() || index >= count) {
-      return make_error(label + ": no surface '" + s + "' (the scene has " +
-                        std::to_string(count) + " surfaces, numbered from 0)");
-    }
-    toml::table* t = (*surfaces)[index].as_table();
-    if (!t) return make_error(label + ": surfaces." + s + " is not a table");
-    return t;
+    if (parts.size() != 3) return make_error(label + ": expected surfaces.N.KEY=VALUE");
+    return element(root["surfaces"].as_array(), parts[1], label, "surface", "the scene");
   }
-  auto [it, inserted] = root.insert(parts[0], toml::table{});
-  toml::table* t = it->second.as_table();
-  if (t && section == Section::kMaterial) {
-    auto [m, added] = t->insert(parts[1], toml::table{});
-    t = m->second.as_table();
-  }
+  if (parts.size() != 2) return make_error(label + ": expected " + parts[0] + ".KEY=VALUE");
+  toml::table* t = child_table(root, parts[0]);
   if (!t) return make_error(label + ": the scene's '" + parts[0] + "' is not a table");
   return t;
 }
@@ -100,14 +140,23 @@ Status apply_override(toml::table& root, const std::string& text, ParseContext& 
   const std::string key = trim(std::string_view(text).substr(0, eq));
   const std::string label = "--set " + key;
   const std::vector<std::string> parts = split_dots(key);
-  const Section section = section_of(parts[0]);
+  Section section = section_of(parts[0]);
+  if (parts[0] == "include") {
+    return make_error(label + ": includes cannot be set from the command line; edit the "
+                      "scene file's 'include' instead");
+  }
   if (section == Section::kRoot) return unknown_key(label, parts[0], known_keys(Section::kRoot));
+  if (section == Section::kMaterial && parts.size() >= 2) {
+    Result<Section> leaf_section = material_leaf_section(parts, label);
+    if (!leaf_section) return leaf_section.error();
+    section = *leaf_section;
+  }
   const auto known = known_keys(section);
   const std::string& leaf = parts.back();
   if (parts.size() >= 2 && std::find(known.begin(), known.end(), leaf) == known.end()) {
     return unknown_key(label, leaf, known);
   }
-  Result<toml::table*> table = target_table(root, parts, label);
+  Result<toml::table*> table = target_table(root, parts, label, ctx);
   if (!table) return table.error();
   toml::table value = parse_value(trim(std::string_view(text).substr(eq + 1)));
   value["v"].node()->visit([&](auto& node) { (*table)->insert_or_assign(leaf, std::move(node)); });

@@ -212,6 +212,33 @@ void TableReader::file(std::string_view key, std::string& out) {
   out = path.string();
 }
 
+const toml::table* TableReader::sub_table(std::string_view key) {
+  const toml::node* node = visit(key);
+  if (!node) return nullptr;
+  if (!node->is_table()) {
+    fail(key, "must be a table ([" + path_ + "." + std::string(key) + "])");
+    return nullptr;
+  }
+  return node->as_table();
+}
+
+const toml::array* TableReader::table_array(std::string_view key) {
+  const toml::node* node = visit(key);
+  if (!node) return nullptr;
+  const toml::array* array = node->as_array();
+  if (!array || !array->is_array_of_tables()) {
+    fail(key, "must be an array of tables ([[" + path_ + "." + std::string(key) + "]])");
+    return nullptr;
+  }
+  return array;
+}
+
+void TableReader::adopt(const Status& nested) {
+  if (!ok_ || nested) return;
+  ok_ = false;
+  error_ = nested.error().message;
+}
+
 void TableReader::check_unknown_keys() {
   if (!table_ || !ok_) return;
   for (const auto& [key, node] : *table_) {

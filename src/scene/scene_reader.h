@@ -6,10 +6,12 @@
 
 #include <limits>
 #include <map>
+#include <memory>
 #include <set>
 #include <span>
 #include <string>
 #include <string_view>
+#include <vector>
 
 #include <glm/glm.hpp>
 #include <toml++/toml.h>
@@ -19,10 +21,23 @@
 
 namespace ps::scene_detail {
 
+// A [materials.NAME] table that came from an included file (scene_include.cpp).
+struct IncludedMaterial {
+  toml::table* table = nullptr;  // owned by ParseContext::included_docs
+  std::string source_name;       // the file that defines it, as messages name it
+  std::string base_dir;          // its relative paths resolve against this
+  std::string identity;          // "canonical path:line": the same definition reached twice
+  int order = 0;                 // depth-first inclusion order
+};
+
 struct ParseContext {
   std::string source_name;  // file name used in messages
   std::string base_dir;     // relative paths resolve against this
   std::map<std::string, std::string, std::less<>> overridden;  // dotted key path -> "--set KEY"
+  // Materials from `include`d files that the scene does not define itself, by name; --set
+  // edits these tables in place, so an override reaches an included material too.
+  std::vector<std::unique_ptr<toml::table>> included_docs;
+  std::map<std::string, IncludedMaterial, std::less<>> included;
 };
 
 // Allowed interval for a number; open ends exclude the bound.
@@ -64,6 +79,12 @@ class TableReader {
   void choice(std::string_view key, int& out, std::span<const std::string_view> choices);
   // Reads a file name, resolves it against the base dir and checks that the file exists.
   void file(std::string_view key, std::string& out);
+  // A nested table ([materials.NAME.haptic]) or array of tables ([[...texture]]): null when
+  // absent or after an error; the wrong kind of value fails with the expected TOML form.
+  const toml::table* sub_table(std::string_view key);
+  const toml::array* table_array(std::string_view key);
+  // Adopts another reader's error (a nested table's) so the first error still wins.
+  void adopt(const Status& nested);
 
   void check_unknown_keys();
   // Cross-key rule: when `ok` is false, fails at `key` with "'key' <what>".
@@ -74,6 +95,8 @@ class TableReader {
   bool ok() const { return ok_; }
   Status status() const;
   std::string where(std::string_view key) const;  // "file:line" or "--set KEY"
+  const std::string& path() const { return path_; }
+  const std::string& label() const { return label_; }
 
  private:
   const toml::node* visit(std::string_view key);

@@ -64,6 +64,38 @@ TEST(MeshTest, PlaneRotatedAndMoved) {
   EXPECT_NEAR(mesh->bounds_max.z, 8.0, 1e-5);
 }
 
+// A closed, outward-wound box: its flat normals point away from the centre along one axis,
+// its area is 2(xy + yz + zx) and the divergence theorem gives its volume xyz.
+TEST(MeshTest, BoxHasFlatOutwardFacesAreaAndVolume) {
+  Surface s;
+  s.type = SurfaceType::kBox;
+  s.box_size_mm = {10.0, 20.0, 30.0};
+  s.center = {1.0, 2.0, 3.0};
+  Result<Mesh> mesh = build_surface_mesh(s);
+  ASSERT_TRUE(mesh) << mesh.error().message;
+  EXPECT_EQ(mesh->indices.size(), 36u);  // 6 faces x 2 triangles
+  expect_consistent_winding(*mesh);
+  for (std::size_t i = 0; i < mesh->positions.size(); ++i) {
+    const glm::dvec3 n(mesh->normals[i]);
+    const glm::dvec3 from_centre = pos(*mesh, static_cast<std::uint32_t>(i)) - s.center;
+    EXPECT_EQ(glm::length(n), 1.0);
+    EXPECT_EQ(std::abs(n.x) + std::abs(n.y) + std::abs(n.z), 1.0) << "axis-aligned, flat";
+    EXPECT_DOUBLE_EQ(glm::dot(n, from_centre), glm::dot(glm::abs(n), 0.5 * s.box_size_mm))
+        << "vertex " << i << " lies on its face's plane";
+  }
+  EXPECT_DOUBLE_EQ(total_area(*mesh), 2.0 * (10.0 * 20.0 + 20.0 * 30.0 + 30.0 * 10.0));
+  double volume = 0.0;  // sum over triangles of a . (b x c) / 6
+  for (std::size_t t = 0; t < mesh->indices.size(); t += 3) {
+    volume += glm::dot(pos(*mesh, mesh->indices[t]),
+                       glm::cross(pos(*mesh, mesh->indices[t + 1]),
+                                  pos(*mesh, mesh->indices[t + 2]))) / 6.0;
+  }
+  // Float positions (mesh storage) of coordinates up to 18 mm: ~1e-6 relative per product.
+  EXPECT_NEAR(volume, 10.0 * 20.0 * 30.0, 1e-4 * 6000.0);
+  EXPECT_DOUBLE_EQ(mesh->bounds_min.x, -4.0);
+  EXPECT_DOUBLE_EQ(mesh->bounds_max.z, 18.0);
+}
+
 TEST(MeshTest, SphereVerticesOnRadiusNormalsOutward) {
   Surface s;
   s.type = SurfaceType::kSphere;

@@ -97,7 +97,8 @@ TEST(SceneOverrideTest, MalformedOverrides) {
             "--set surfaces.7.radius_mm: no surface '7' (the scene has 2 surfaces, numbered "
             "from 0)");
   EXPECT_EQ(error_of(kScene, {"materials.lambda_min=3"}),
-            "--set materials.lambda_min: expected materials.NAME.KEY=VALUE");
+            "--set materials.lambda_min: expected materials.NAME.KEY=VALUE (or "
+            "materials.NAME.haptic.KEY, materials.NAME.haptic.texture.N.KEY)");
 }
 
 }  // namespace
