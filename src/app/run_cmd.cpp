@@ -31,7 +31,7 @@ namespace {
 
 constexpr const char* kRunKeys = R"(keys: the probe follows the pointer: its shadow's centre sits under it, on any camera and zoom.
 Scroll raises (up) or lowers (down) the probe 0.5 mm per notch; PageUp/Up and PageDown/Down step
-it 0.5 mm per press and repeat while held; it starts 1.5 mm above the surface and goes down to
+it 0.5 mm per press and repeat while held; it starts 1 mm above the surface and goes down to
 4 mm into it. Right drag orbits, Shift+scroll zooms; M captures the mouse (raw relative motion,
 0.1 mm per count, where supported; M again puts the probe back under the pointer);
 P shows or hides the probe itself (hidden by default: the pseudo-shadow is the display; when

@@ -48,9 +48,10 @@ glm::dvec2 project_to_window(const PointerView& view, const glm::dvec3& p_mm);
 
 // The person-controlled height h of the probe's lowest point above the hit point, mm.
 struct HeightParams {
-  // 1.5 mm: the 8 mm default probe's shadow is dark and plainly visible, yet out of contact,
-  // so nothing pushes back until the person lowers it.
-  double start_mm = 1.5;
+  // 1 mm: the default 8 mm probe's shadow shows a dark core (at 4 mm only a faint grey disc is
+  // left), yet the probe is out of contact, so nothing pushes back until the person lowers it
+  // (two key presses).
+  double start_mm = 1.0;
   double step_mm = 0.5;     // per key press (and per key repeat while held)
   double scroll_mm = 0.5;   // per scroll notch
   double min_mm = -4.0;     // pressing in: half the default probe's radius (2 N at 0.5 N/mm)

@@ -25,15 +25,15 @@ constexpr double kLeg = 0.5;         // s per stop: 0.1 s moving, then held
 // Stops, as fractions of the window: across it, off its centre in both directions.
 const std::vector<glm::dvec2> kStops = {{0.30, 0.35}, {0.45, 0.62}, {0.62, 0.48}, {0.70, 0.30}, {0.38, 0.70}};
 
-// Moves to stop k during [k leg, k leg + 0.1 s], then holds still; 1.5 mm above the plank
-// (the start height of the mouse), no buttons.
+// Moves to stop k during [k leg, k leg + 0.1 s], then holds still; 1 mm above the plank (the
+// start height of the mouse), no buttons.
 std::string pointer_script() {
   std::string s = "# time_s x_px y_px height_mm buttons\n";
   char line[96];
   for (size_t k = 0; k < kStops.size(); ++k) {
     const glm::dvec2 p = kStops[k] * static_cast<double>(kSize);
     for (double t : {k * kLeg + (k == 0 ? 0.0 : 0.1), (k + 1) * kLeg - 1e-3}) {
-      std::snprintf(line, sizeof line, "%.6f %.3f %.3f 1.5 0\n", t, p.x, p.y);
+      std::snprintf(line, sizeof line, "%.6f %.3f %.3f 1 0\n", t, p.x, p.y);
       s += line;
     }
   }

@@ -155,9 +155,9 @@ TEST(PointerMapTest, RelativeMotionIsScreenAlignedAtTheStatedScale) {
 
 TEST(PointerMapTest, HeightIsClampedToItsStatedLimits) {
   HeightControl h(HeightParams{});
-  EXPECT_EQ(h.mm(), 1.5);
-  h.scroll(-2.0);
-  EXPECT_DOUBLE_EQ(h.mm(), 0.5);
+  EXPECT_EQ(h.mm(), 1.0);
+  h.scroll(-3.0);
+  EXPECT_DOUBLE_EQ(h.mm(), -0.5);
   h.step(-100);
   EXPECT_EQ(h.mm(), -4.0);
   h.set(std::nan(""));
