@@ -144,12 +144,10 @@ Status open_session(const RunArgs& a, Scene scene, Session& s) {
   auto ctx = gl::create_context(desc);
   if (!ctx) return ctx.error();
   s.ctx = std::move(ctx.value());
-  const glm::dvec3 target = scene.camera.target;
   auto tune = TuneSession::open({a.scene.path, a.scene.lines(), {}}, std::move(scene));
   if (!tune) return tune.error();
   s.tune = std::move(tune.value());
   s.axes = pointer_plane(s.tune->renderer());  // fixed at start so the mapping stays put
-  s.axes.origin = target;
   if (Status st = open_device(a, s); !st) return st;
   HapticLoopParams params;
   params.realtime_priority = static_cast<int>(a.realtime);
