@@ -37,7 +37,8 @@ void declare(cli::Command& cmd, ReplayArgs& a) {
   cli::add_image_options(app, a.scene);
   app.add_option("--log", a.log,
                  "device log, lines 'time_s x y z buttons'; KIND playback (default: sample-and-hold, "
-                 "exact) or trajectory (linear interpolation) (required)")
+                 "exact) or trajectory (linear interpolation), or pointer: lines 'time_s x_px y_px "
+                 "height_mm buttons' mapped through the scene camera like run's mouse (required)")
       ->type_name("[KIND:]FILE");
   cli::add_int(app, "--every", "N", a.every, 1, 1'000'000, "write every N-th frame (default 1)");
   cli::add_positive(app, "--fps", "F", a.fps, 10000.0, "30", "frames per second of session time (default 30)");
@@ -105,13 +106,15 @@ int replay(const cli::Command& cmd, const ReplayArgs& a) {
   OutputSet outputs;
   if (Status s = add_outputs(a, outputs); !s) return fail(s.error());
   const std::string spec = a.log.find(':') == std::string::npos ? "playback:" + a.log : a.log;
-  auto device = open_log_device(spec);
+  auto device = open_device_log(spec);
   if (!device) return fail(device.error());
   auto scene = cli::load_scene_or_default(a.scene);
   if (!scene) return cmd.fail(scene.error(), cli::scene_exit_code(scene.error()));
   auto gl_state = open_renderer(a, scene.value());
   if (!gl_state) return fail(gl_state.error());
   Renderer* renderer = gl_state->renderer.get();
+  // A scripted pointer moves in a window the size of the image, through the scene's camera.
+  if (device->pointer) device->pointer->set_view(pointer_view(*renderer, pointer_plane(*renderer)));
   ReplayOptions opt;
   opt.fps = a.fps;
   opt.record_path = a.record;
@@ -132,7 +135,7 @@ int replay(const cli::Command& cmd, const ReplayArgs& a) {
     }
     return ok_status();
   };
-  auto result = replay_session(*renderer, *device.value(), opt, sink);
+  auto result = replay_session(*renderer, *device->device, opt, sink);
   if (!result) return fail(result.error());
   if (!a.sheet.empty())
     if (Status s = stage_image(outputs, a.sheet, contact_sheet(thumbs, labels)); !s) return fail(s.error());

@@ -9,6 +9,7 @@
 #include <cstring>
 #include <map>
 #include <memory>
+#include <thread>
 
 #include "app/cli.h"
 #include "app/cli_groups.h"
@@ -28,8 +29,11 @@ namespace ps {
 
 namespace {
 
-constexpr const char* kRunKeys = R"(keys: mouse moves the probe on the reference plane, Shift+scroll or PageUp/PageDown change its
-height; right drag orbits, scroll zooms; M captures the mouse (raw motion where supported);
+constexpr const char* kRunKeys = R"(keys: the probe follows the pointer: its shadow's centre sits under it, on any camera and zoom.
+Scroll raises (up) or lowers (down) the probe 0.5 mm per notch; PageUp/Up and PageDown/Down step
+it 0.5 mm per press and repeat while held; it starts 1 mm above the surface and goes down to
+4 mm into it. Right drag orbits, Shift+scroll zooms; M captures the mouse (raw relative motion,
+0.1 mm per count, where supported; M again puts the probe back under the pointer);
 P shows or hides the probe itself (hidden by default: the pseudo-shadow is the display; when
 shown it is drawn where the haptic proxy is, after the push-out); S saves screenshot_NNNN.png
 (without the panel) and screenshot_NNNN.overrides.toml (panel edits, camera, probe: `render
@@ -53,9 +57,10 @@ struct RunArgs {
 };
 
 void check_device(const std::string& d) {
-  const bool log_device = d.rfind("trajectory:", 0) == 0 || d.rfind("playback:", 0) == 0;
+  const bool log_device = d.rfind("trajectory:", 0) == 0 || d.rfind("playback:", 0) == 0 || d.rfind("pointer:", 0) == 0;
   if (d != "mouse" && d != "gamepad" && !log_device)
-    throw cli::UsageError("--device: unknown device '" + d + "' (mouse, gamepad, trajectory:FILE, playback:FILE)");
+    throw cli::UsageError("--device: unknown device '" + d +
+                          "' (mouse, gamepad, trajectory:FILE, playback:FILE, pointer:FILE)");
 }
 
 void declare(cli::Command& cmd, RunArgs& a) {
@@ -64,7 +69,8 @@ void declare(cli::Command& cmd, RunArgs& a) {
   cli::add_probe_options(app, a.scene);
   cli::add_image_options(app, a.scene);
   app.add_option_function<std::string>("--device", [&a](const std::string& v) { check_device(v); a.device = v; },
-                                       "mouse (default) | gamepad | trajectory:FILE | playback:FILE")
+                                       "mouse (default) | gamepad | trajectory:FILE | playback:FILE | pointer:FILE "
+                                       "(lines 'time_s x_px y_px height_mm buttons', mapped like the mouse)")
       ->type_name("D");
   app.add_option("--record", a.record, "record the device stream (replay it with `pseudoshadow replay`)")
       ->type_name("FILE")
@@ -97,6 +103,7 @@ struct Session {  // everything the window loop touches, grouped by owner thread
   std::string shown_error;            // last reload error printed to the console
   std::unique_ptr<Device> device;
   GlfwInputDevice* glfw_device = nullptr;  // == device.get() for mouse/gamepad
+  PointerLogDevice* pointer_device = nullptr;  // == device.get() for pointer:FILE
   SteadyClock clock;
   std::unique_ptr<HapticLoop> loop;
   std::unique_ptr<SampleRecorder> recorder;
@@ -114,10 +121,21 @@ Status open_device(const RunArgs& a, Session& s) {
     s.device = std::move(d);
     return ok_status();
   }
-  auto d = open_log_device(a.device);
+  auto d = open_device_log(a.device);
   if (!d) return make_error("--device: " + d.error().message);
-  s.device = std::move(d.value());
+  s.device = std::move(d->device);
+  s.pointer_device = d->pointer;
   return ok_status();
+}
+
+// The pointer devices map through the camera this frame draws with (it orbits and zooms) and
+// the window's current size (the image is stretched to it).
+void poll_device(Session& s, double now_s, bool poll_glfw) {
+  int w = 0, h = 0;
+  glfwGetWindowSize(s.ctx->window(), &w, &h);
+  const PointerView view = pointer_view(s.tune->renderer(), s.axes, {static_cast<double>(w), static_cast<double>(h)});
+  if (s.glfw_device && poll_glfw) s.glfw_device->poll(now_s, view);
+  if (s.pointer_device) s.pointer_device->set_view(view);
 }
 
 // The scene is loaded once, before the window: its render.size is the window's size.
@@ -126,16 +144,18 @@ Status open_session(const RunArgs& a, Scene scene, Session& s) {
   auto ctx = gl::create_context(desc);
   if (!ctx) return ctx.error();
   s.ctx = std::move(ctx.value());
-  const glm::dvec3 target = scene.camera.target;
   auto tune = TuneSession::open({a.scene.path, a.scene.lines(), {}}, std::move(scene));
   if (!tune) return tune.error();
   s.tune = std::move(tune.value());
-  const PlaneFrame& f = s.tune->renderer().reference();
-  s.axes = {target, f.t, f.b, f.n};  // fixed at start so the mapping stays put
+  s.axes = pointer_plane(s.tune->renderer());  // fixed at start so the mapping stays put
   if (Status st = open_device(a, s); !st) return st;
   HapticLoopParams params;
   params.realtime_priority = static_cast<int>(a.realtime);
   s.loop = std::make_unique<HapticLoop>(*s.device, s.clock, params);
+  if (s.glfw_device || s.pointer_device) {  // they move over the plane: distance known from the start
+    s.loop->surface().publish(initial_surface_model(s.axes, s.tune->renderer().scene().probe.radius_mm));
+    poll_device(s, 0.0, true);  // the first tick already has a sample
+  }
   if (!a.record.empty()) {
     s.recorder = std::make_unique<SampleRecorder>(a.record);
     s.loop->set_recorder(s.recorder.get());
@@ -182,8 +202,12 @@ Status handle_keys(Session& s, int w, int h) {
   if (s.panel->wants_input()) {  // scrolling or dragging over the panel: not for camera or probe
     in.scroll_zoom = in.scroll_height = in.orbit_dx = in.orbit_dy = 0.0;
   }
-  if (s.glfw_device) s.glfw_device->add_scroll(in.scroll_height);
+  if (s.glfw_device) {
+    s.glfw_device->add_scroll(in.scroll_height);
+    s.glfw_device->add_height_steps(in.height_steps);
+  }
   in.scroll_height = 0.0;
+  in.height_steps = 0;
   if (in.toggle_panel) s.panel->toggle();
   in.toggle_panel = false;
   if (in.toggle_probe) s.tune->renderer().set_show_probe(!s.tune->renderer().show_probe());
@@ -238,7 +262,7 @@ Status window_loop(const RunArgs& a, Session& s) {
     glfwPollEvents();
     if (glfwWindowShouldClose(win) || s.input.quit) break;
     if ((a.frames > 0 && static_cast<long long>(frame) >= a.frames) || (a.quit_after_s > 0 && now_s >= a.quit_after_s)) break;
-    if (s.glfw_device && !s.panel->wants_input()) s.glfw_device->poll(s.loop->state().read().time_s, s.axes);
+    poll_device(s, s.loop->state().read().time_s, !s.panel->wants_input());
     HapticState st;
     if (a.watch && now_s - last_watch >= kWatchPeriodS) {
       last_watch = now_s;
@@ -270,6 +294,10 @@ int run(const cli::Command& cmd, const RunArgs& a) {
   Session s;
   if (Status st = open_session(a, std::move(scene.value()), s); !st) return cmd.fail(st.error());
   s.loop->start();
+  // The first frame shows the device's probe, not the scene's: wait for the first tick (about
+  // 1 ms; bounded, as a gamepad may have nothing to give yet).
+  for (int i = 0; i < 100 && !s.loop->state().read().have_sample; ++i)
+    std::this_thread::sleep_for(std::chrono::milliseconds(1));
   if (a.realtime > 0 && !a.quiet) std::printf("haptic thread: %s\n", s.loop->priority().c_str());
   const Status looped = window_loop(a, s);
   s.loop->stop();  // join the haptic thread before touching what it wrote

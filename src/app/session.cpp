@@ -20,6 +20,49 @@ Status drive_frame(Renderer& renderer, HapticLoop& loop, std::uint64_t frame, Ha
   return ok_status();
 }
 
+PlaneAxes pointer_plane(const Renderer& renderer) {
+  const PlaneFrame& f = renderer.reference();
+  return {renderer.scene().camera.target, f.t, f.b, f.n};
+}
+
+PointerView pointer_view(const Renderer& renderer, const PlaneAxes& plane, glm::dvec2 window_size) {
+  const Scene& sc = renderer.scene();
+  PointerView v;
+  v.camera = sc.camera;
+  v.aspect = static_cast<double>(sc.render.width) / sc.render.height;
+  v.window_size = window_size.x > 0.0 && window_size.y > 0.0 ? window_size : glm::dvec2(sc.render.width, sc.render.height);
+  v.plane = plane;
+  v.probe_radius_mm = sc.probe.radius_mm;
+  return v;
+}
+
+Result<LogDeviceSpec> open_device_log(const std::string& spec) {
+  const std::string kind = spec.substr(0, spec.find(':'));
+  if (kind != "trajectory" && kind != "playback" && kind != "pointer")
+    return make_error("device '" + spec + "': expected trajectory:FILE, playback:FILE or pointer:FILE");
+  LogDeviceSpec out;
+  if (kind == "pointer") {
+    auto d = open_pointer_device(spec);
+    if (!d) return d.error();
+    out.pointer = d.value().get();
+    out.device = std::move(d.value());
+    return out;
+  }
+  auto d = open_log_device(spec);
+  if (!d) return d.error();
+  out.device = std::move(d.value());
+  return out;
+}
+
+SurfaceModel initial_surface_model(const PlaneAxes& plane, double probe_radius_mm) {
+  SurfaceModel m;
+  m.normal = plane.n;
+  m.point_mm = plane.origin;
+  m.probe_radius_mm = probe_radius_mm;
+  m.valid = true;
+  return m;
+}
+
 Result<ReplayResult> replay_session(Renderer& renderer, Device& device, const ReplayOptions& options,
                                     const FrameSink& sink) {
   if (!(options.fps > 0.0)) return make_error("replay: fps must be > 0");

@@ -6,6 +6,8 @@
 #include <string>
 
 #include "core/result.h"
+#include "devices/pointer_map.h"
+#include "devices/sample_log.h"
 #include "haptics/haptic_loop.h"
 #include "render/renderer.h"
 
@@ -14,6 +16,24 @@ namespace ps {
 // One frame: renderer <- (proxy, filtered velocity) of `state`; render; the frame's reference
 // normal and penetration -> loop.surface(). `state` is what was rendered.
 Status drive_frame(Renderer& renderer, HapticLoop& loop, std::uint64_t frame, HapticState& state);
+
+// The plane a pointer maps onto: through the camera target, along the renderer's reference
+// frame (taken once when a session opens, so the mapping stays put while the plane converges).
+PlaneAxes pointer_plane(const Renderer& renderer);
+// The pointer mapping's view of what `renderer` draws now: its camera and aspect, the plane,
+// the probe radius, and the window the pointer moves in (default: the image size).
+PointerView pointer_view(const Renderer& renderer, const PlaneAxes& plane, glm::dvec2 window_size = {0.0, 0.0});
+
+// A device given as a log: trajectory:FILE, playback:FILE or pointer:FILE.
+struct LogDeviceSpec {
+  std::unique_ptr<Device> device;
+  PointerLogDevice* pointer = nullptr;  // == device.get() for pointer:FILE: set_view() it
+};
+Result<LogDeviceSpec> open_device_log(const std::string& spec);
+
+// The surface model a session starts from: the pointer's plane, so that distance and contact
+// are known before the first contact (later frames keep or replace it, update_surface_model).
+SurfaceModel initial_surface_model(const PlaneAxes& plane, double probe_radius_mm);
 
 struct ReplayOptions {
   double fps = 30.0;          // frames per second of session time
@@ -31,7 +51,8 @@ struct ReplayResult {
 using FrameSink = std::function<Status(int index, double time_s, const HapticState&, const Renderer&)>;
 
 // Deterministic: a FakeClock drives the loop on this thread (no haptic thread), frames at
-// exactly i / fps. Same scene + same log => the same images, byte for byte.
+// exactly i / fps. Same scene + same log => the same images, byte for byte. A pointer device
+// must have its view set (pointer_view) before.
 Result<ReplayResult> replay_session(Renderer& renderer, Device& device, const ReplayOptions& options,
                                     const FrameSink& sink);
 

@@ -12,22 +12,12 @@ namespace {
 
 WindowInput& input_of(GLFWwindow* w) { return *static_cast<WindowInput*>(glfwGetWindowUserPointer(w)); }
 
-void on_key(GLFWwindow* w, int key, int, int action, int) {
-  if (action != GLFW_PRESS) return;
-  WindowInput& in = input_of(w);
-  if (key == GLFW_KEY_F1) in.toggle_panel = true;
-  if (in.keys_captured) return;  // the user is typing into the parameter panel
-  if (key == GLFW_KEY_S) ++in.screenshots;
-  if (key == GLFW_KEY_M) in.toggle_capture = true;
-  if (key == GLFW_KEY_P) in.toggle_probe = true;
-  if (key == GLFW_KEY_ESCAPE || key == GLFW_KEY_Q) in.quit = true;
-}
+void on_key(GLFWwindow* w, int key, int, int action, int mods) { handle_key(input_of(w), key, action, mods); }
 
 void on_scroll(GLFWwindow* w, double, double dy) {
-  WindowInput& in = input_of(w);
   const bool shift = glfwGetKey(w, GLFW_KEY_LEFT_SHIFT) == GLFW_PRESS ||
                      glfwGetKey(w, GLFW_KEY_RIGHT_SHIFT) == GLFW_PRESS;
-  (shift ? in.scroll_height : in.scroll_zoom) += dy;
+  handle_scroll(input_of(w), dy, shift);
 }
 
 void on_button(GLFWwindow* w, int button, int action, int) {
@@ -48,6 +38,26 @@ void on_cursor(GLFWwindow* w, double x, double y) {
 }
 
 }  // namespace
+
+void handle_key(WindowInput& in, int key, int action, int) {
+  if (action != GLFW_PRESS && action != GLFW_REPEAT) return;
+  if (key == GLFW_KEY_F1 && action == GLFW_PRESS) in.toggle_panel = true;
+  if (in.keys_captured) return;  // the user is typing into the parameter panel
+  // The height keys step on every press and keep stepping while held (the system's key repeat).
+  if (key == GLFW_KEY_PAGE_UP || key == GLFW_KEY_UP) ++in.height_steps;
+  if (key == GLFW_KEY_PAGE_DOWN || key == GLFW_KEY_DOWN) --in.height_steps;
+  if (action != GLFW_PRESS) return;  // the other keys act once per press
+  if (key == GLFW_KEY_S) ++in.screenshots;
+  if (key == GLFW_KEY_M) in.toggle_capture = true;
+  if (key == GLFW_KEY_P) in.toggle_probe = true;
+  if (key == GLFW_KEY_ESCAPE || key == GLFW_KEY_Q) in.quit = true;
+}
+
+void handle_scroll(WindowInput& in, double dy, bool shift) {
+  // Plain scroll is the height: pressing the probe into the surface is what a newcomer reaches
+  // for under the hand; zoom is set once and left, so it takes the modifier.
+  (shift ? in.scroll_zoom : in.scroll_height) += dy;
+}
 
 void install_window_input(GLFWwindow* window, WindowInput& input) {
   glfwSetWindowUserPointer(window, &input);

@@ -1,5 +1,7 @@
-// Window-side input of `run`: camera orbit/zoom and the app keys, collected by GLFW callbacks
-// on the main thread (the probe itself is moved by the mouse/gamepad Device).
+// Window-side input of `run`: camera orbit/zoom, the probe's height steps and the app keys,
+// collected by GLFW callbacks on the main thread (the probe itself is moved by the
+// mouse/gamepad Device). handle_key / handle_scroll are the callbacks' bodies without a window,
+// so the key handling is testable headless.
 #pragma once
 
 #include "scene/scene.h"
@@ -9,8 +11,9 @@ struct GLFWwindow;
 namespace ps {
 
 struct WindowInput {
-  double scroll_zoom = 0.0;     // accumulated scroll steps (camera zoom)
-  double scroll_height = 0.0;   // accumulated Shift+scroll steps (probe height)
+  double scroll_zoom = 0.0;     // accumulated Shift+scroll steps (camera zoom)
+  double scroll_height = 0.0;   // accumulated scroll steps (probe height; up = raise)
+  int height_steps = 0;         // PageUp/Up minus PageDown/Down presses, key repeats included
   int screenshots = 0;          // S presses not handled yet
   bool toggle_capture = false;  // M
   bool quit = false;            // Esc / Q
@@ -21,6 +24,11 @@ struct WindowInput {
   double last_x = 0.0, last_y = 0.0;
   double orbit_dx = 0.0, orbit_dy = 0.0;  // accumulated drag, pixels
 };
+
+// A key event (GLFW key, action, mods): presses and, for the height keys, repeats count.
+void handle_key(WindowInput& input, int key, int action, int mods);
+// A scroll event: plain scroll moves the probe's height, Shift+scroll zooms the camera.
+void handle_scroll(WindowInput& input, double dy, bool shift);
 
 // Installs the callbacks; `input` must outlive the window.
 void install_window_input(GLFWwindow* window, WindowInput& input);

@@ -1,12 +1,17 @@
 // Mouse+keyboard and gamepad through GLFW. GLFW input may only be polled on the main thread,
 // so poll() runs there once per frame and publishes a DeviceSample through a single-writer
 // Snapshot; read() on the haptic thread returns the newest one (sample-and-hold).
-//   mouse:   cursor x/y move the probe on the reference plane (mm_per_pixel around the
-//            plane origin), scroll or PageUp/PageDown change the height along the normal;
-//            buttons = mouse buttons. Key M captures the cursor, which enables raw (unscaled,
-//            unaccelerated) motion where GLFW supports it.
-//   gamepad: left stick moves on the plane at stick_speed_mm_s, triggers raise/lower, buttons
-//            = gamepad buttons (first connected joystick with a gamepad mapping).
+//   mouse:   the probe is where the pointer is (PointerMap's absolute mapping through the
+//            current camera, devices/pointer_map.h): its shadow's centre sits under the pointer.
+//            Until the pointer first moves, the window centre stands in for it (a pointer
+//            outside a fresh window must not put the probe in a corner). Key M captures the
+//            cursor: raw relative motion (unaccelerated where GLFW supports it) then moves the
+//            probe by mm_per_count per count, screen-aligned; M again returns it under the
+//            pointer. The height comes from a HeightControl (scroll, stepping keys:
+//            add_scroll / add_height_steps); buttons = mouse buttons.
+//   gamepad: left stick moves on the plane at stick_speed_mm_s (screen-aligned), right/left
+//            trigger raise/lower at stick_speed_mm_s / 2, buttons = gamepad buttons (first
+//            connected joystick with a gamepad mapping).
 #pragma once
 
 #include <memory>
@@ -15,20 +20,19 @@
 #include "core/result.h"
 #include "core/snapshot.h"
 #include "devices/device.h"
+#include "devices/pointer_map.h"
 
 struct GLFWwindow;
 
 namespace ps {
 
-struct PlaneAxes {  // where the device moves: origin and orthonormal tangents/normal (mm)
-  glm::dvec3 origin{0.0}, t{1.0, 0.0, 0.0}, b{0.0, 1.0, 0.0}, n{0.0, 0.0, 1.0};
-};
-
 struct GlfwInputParams {
-  double mm_per_pixel = 0.25;
-  double scroll_step_mm = 1.0;
+  // Captured pointer: mm on the plane per raw count. 0.1 mm is about one screen pixel of the
+  // default scene at its default zoom (~0.084 mm per pixel at the plank), so the feel matches
+  // the absolute mapping's.
+  double mm_per_count = 0.1;
   double stick_speed_mm_s = 80.0;
-  double start_height_mm = 20.0;
+  HeightParams height;
 };
 
 class GlfwInputDevice final : public Device {
@@ -36,23 +40,28 @@ class GlfwInputDevice final : public Device {
   enum class Kind { kMouse, kGamepad };
   GlfwInputDevice(Kind kind, GLFWwindow* window, const GlfwInputParams& params);
   ~GlfwInputDevice() override;
-  // Main thread, once per frame: polls GLFW state (after glfwPollEvents) and publishes.
-  void poll(double now_s, const PlaneAxes& axes);
+  // Main thread, once per frame: polls GLFW state (after glfwPollEvents), maps it with the
+  // current view (camera, window, plane) and publishes.
+  void poll(double now_s, const PointerView& view);
   DeviceSample read(double now_s) override { return latest_.read(); }
   std::string name() const override { return kind_ == Kind::kMouse ? "mouse" : "gamepad"; }
-  void add_scroll(double dy) { height_mm_ += dy * params_.scroll_step_mm; }
+  void add_scroll(double notches) { height_.scroll(notches); }
+  void add_height_steps(int presses) { height_.step(presses); }
+  double height_mm() const { return height_.mm(); }
   void toggle_capture();
 
  private:
-  void poll_mouse(double now_s, const PlaneAxes& axes);
-  void poll_gamepad(double now_s, const PlaneAxes& axes);
+  glm::dvec3 poll_mouse(const PointerView& view);
+  bool poll_gamepad(double now_s, const PointerView& view, DeviceSample& s);
 
   Kind kind_;
   GLFWwindow* window_;
   GlfwInputParams params_;
-  double height_mm_, last_poll_s_ = 0.0;
-  glm::dvec2 stick_pos_mm_{0.0};
-  bool captured_ = false;
+  HeightControl height_;
+  PointerMap map_;
+  double last_poll_s_ = 0.0;
+  glm::dvec2 first_cursor_{0.0}, last_cursor_{0.0};
+  bool have_cursor_ = false, cursor_moved_ = false, captured_ = false;
   Snapshot<DeviceSample> latest_;
 };
 

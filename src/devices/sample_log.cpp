@@ -23,16 +23,23 @@ Result<double> parse_number(const std::string& word, const std::string& where, c
   return v;
 }
 
-Result<DeviceSample> parse_line(const std::string& line, const std::string& where) {
+// The five fields of a log line; the names differ between the mm logs and the pointer log.
+struct LogFields {
+  const char* names[4];
+  const char* line;  // the whole line, for the messages
+};
+constexpr LogFields kSampleFields{{"time_s", "x", "y", "z"}, "time_s x y z buttons"};
+constexpr LogFields kPointerFields{{"time_s", "x_px", "y_px", "height_mm"}, "time_s x_px y_px height_mm buttons"};
+
+Result<DeviceSample> parse_line(const std::string& line, const std::string& where, const LogFields& fields) {
   std::istringstream in(line);
   std::vector<std::string> words;
   for (std::string w; in >> w;) words.push_back(w);
   if (words.size() != 5)
-    return make_error(where + ": expected 5 fields 'time_s x y z buttons', got " + std::to_string(words.size()));
-  static const char* kNames[] = {"time_s", "x", "y", "z"};
+    return make_error(where + ": expected 5 fields '" + fields.line + "', got " + std::to_string(words.size()));
   double v[4];
   for (int i = 0; i < 4; ++i) {
-    auto r = parse_number(words[static_cast<size_t>(i)], where, kNames[i]);
+    auto r = parse_number(words[static_cast<size_t>(i)], where, fields.names[i]);
     if (!r) return r.error();
     v[i] = r.value();
   }
@@ -43,9 +50,7 @@ Result<DeviceSample> parse_line(const std::string& line, const std::string& wher
   return DeviceSample{v[0], {v[1], v[2], v[3]}, static_cast<std::uint32_t>(b), true};
 }
 
-}  // namespace
-
-Result<std::vector<DeviceSample>> parse_sample_log(std::string_view text, const std::string& source) {
+Result<std::vector<DeviceSample>> parse_log(std::string_view text, const std::string& source, const LogFields& fields) {
   std::vector<DeviceSample> out;
   std::istringstream in{std::string(text)};
   int line_no = 0;
@@ -53,20 +58,32 @@ Result<std::vector<DeviceSample>> parse_sample_log(std::string_view text, const 
     ++line_no;
     if (const size_t hash = line.find('#'); hash != std::string::npos) line.resize(hash);
     if (line.find_first_not_of(" \t\r") == std::string::npos) continue;
-    auto s = parse_line(line, source + ":" + std::to_string(line_no));
+    auto s = parse_line(line, source + ":" + std::to_string(line_no), fields);
     if (!s) return s.error();
     out.push_back(s.value());
   }
-  if (out.empty()) return make_error(source + ": no samples (expected lines 'time_s x y z buttons')");
+  if (out.empty()) return make_error(source + ": no samples (expected lines '" + fields.line + "')");
   return out;
 }
 
-Result<std::vector<DeviceSample>> load_sample_log(const std::string& path) {
+Result<std::vector<DeviceSample>> load_log(const std::string& path, const LogFields& fields) {
   std::ifstream f(path, std::ios::binary);
   if (!f) return make_error(path + ": cannot open device log: " + std::strerror(errno));
   std::ostringstream ss;
   ss << f.rdbuf();
-  return parse_sample_log(ss.str(), path);
+  return parse_log(ss.str(), path, fields);
+}
+
+}  // namespace
+
+Result<std::vector<DeviceSample>> parse_sample_log(std::string_view text, const std::string& source) {
+  return parse_log(text, source, kSampleFields);
+}
+
+Result<std::vector<DeviceSample>> load_sample_log(const std::string& path) { return load_log(path, kSampleFields); }
+
+Result<std::vector<DeviceSample>> parse_pointer_log(std::string_view text, const std::string& source) {
+  return parse_log(text, source, kPointerFields);
 }
 
 std::string format_sample(const DeviceSample& s) {
@@ -159,6 +176,37 @@ Result<std::unique_ptr<LogDevice>> open_log_device(const std::string& spec) {
   auto samples = load_sample_log(spec.substr(colon + 1));
   if (!samples) return samples.error();
   return std::make_unique<LogDevice>(std::move(samples.value()), kind == "trajectory", spec);
+}
+
+}  // namespace ps
+
+namespace ps {
+
+PointerLogDevice::PointerLogDevice(std::vector<DeviceSample> samples, std::string name)
+    : log_(std::move(samples), true, name), name_(std::move(name)) {}
+
+DeviceSample PointerLogDevice::read(double now_s) {
+  const ViewState v = view_.read();
+  DeviceSample s = log_.read(now_s);
+  if (!v.set) {  // nothing to map through yet
+    s.valid = false;
+    return s;
+  }
+  const glm::dvec3 script = s.position_mm;  // (x_px, y_px, height_mm)
+  if (std::isfinite(script.x) && std::isfinite(script.y) && std::isfinite(script.z))
+    s.position_mm = map_.absolute(v.view, {script.x, script.y}, script.z);
+  else  // scripted bad data: handed on as NaN for the sanitizer to count and drop
+    s.position_mm = glm::dvec3(std::nan(""));
+  return s;
+}
+
+Result<std::unique_ptr<PointerLogDevice>> open_pointer_device(const std::string& spec) {
+  const std::string prefix = "pointer:";
+  if (spec.rfind(prefix, 0) != 0 || spec.size() == prefix.size())
+    return make_error("device '" + spec + "': expected pointer:FILE");
+  auto samples = load_log(spec.substr(prefix.size()), kPointerFields);
+  if (!samples) return samples.error();
+  return std::make_unique<PointerLogDevice>(std::move(samples.value()), spec);
 }
 
 }  // namespace ps

@@ -1,7 +1,7 @@
 // Device logs: the text format shared by scripted trajectories and recordings.
 //   # comment
 //   time_s x_mm y_mm z_mm buttons
-// One sample per line, whitespace separated; numbers are written with 17 significant digits so
+// One sample per line, whitespace separated (a pointer log: time_s x_px y_px height_mm buttons); numbers are written with 17 significant digits so
 // a recording reads back bit-exactly. nan/inf parse (so bad data can be tested) and are then
 // rejected by the DeviceSanitizer; malformed lines are errors "file:line: what".
 #pragma once
@@ -14,13 +14,17 @@
 #include <vector>
 
 #include "core/result.h"
+#include "core/snapshot.h"
 #include "devices/device.h"
+#include "devices/pointer_map.h"
 
 namespace ps {
 
 Result<std::vector<DeviceSample>> parse_sample_log(std::string_view text, const std::string& source);
 Result<std::vector<DeviceSample>> load_sample_log(const std::string& path);
 std::string format_sample(const DeviceSample& s);  // one line with '\n'
+// A pointer log: position_mm holds (x_px, y_px, height_mm) of each line.
+Result<std::vector<DeviceSample>> parse_pointer_log(std::string_view text, const std::string& source);
 
 // Records a device stream without losing more than the last flush interval on a crash:
 //   append()  (haptic thread) formats the sample into a pending buffer under a mutex that is
@@ -71,5 +75,36 @@ class LogDevice final : public Device {
 
 // "trajectory:FILE" or "playback:FILE" -> LogDevice (errors name the file and line).
 Result<std::unique_ptr<LogDevice>> open_log_device(const std::string& spec);
+
+}  // namespace ps
+
+namespace ps {
+
+// A scripted pointer ("pointer:FILE"): lines 'time_s x_px y_px height_mm buttons', linearly
+// interpolated like a trajectory, then mapped by the absolute pointer mapping (PointerMap) with
+// the view the render thread last set, exactly as `run`'s mouse is. Until the first set_view()
+// its samples are invalid. The height is used as scripted (no HeightControl limits).
+class PointerLogDevice final : public Device {
+ public:
+  PointerLogDevice(std::vector<DeviceSample> samples, std::string name);
+  // Render thread (the one writer): the camera, window and plane the pointer is mapped with.
+  void set_view(const PointerView& view) { view_.publish({view, true}); }
+  DeviceSample read(double now_s) override;  // haptic thread
+  double duration_s() const override { return log_.duration_s(); }
+  std::string name() const override { return name_; }
+
+ private:
+  struct ViewState {
+    PointerView view;
+    bool set = false;
+  };
+  LogDevice log_;
+  PointerMap map_;  // haptic thread only
+  Snapshot<ViewState> view_;
+  std::string name_;
+};
+
+// "pointer:FILE" -> PointerLogDevice (errors name the file and line).
+Result<std::unique_ptr<PointerLogDevice>> open_pointer_device(const std::string& spec);
 
 }  // namespace ps

@@ -1,0 +1,92 @@
+#include "devices/pointer_map.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include <glm/gtc/matrix_transform.hpp>
+
+#include "render/camera.h"
+
+namespace ps {
+
+namespace {
+
+glm::dvec3 unproject(const glm::dmat4& inv_vp, const glm::dvec2& ndc, double z) {
+  const glm::dvec4 p = inv_vp * glm::dvec4(ndc, z, 1.0);
+  return glm::dvec3(p) / p.w;
+}
+
+bool finite(const glm::dvec3& v) { return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z); }
+
+// The screen's right and up directions laid onto the plane (the relative mapping's axes).
+void screen_axes_on_plane(const PointerView& view, glm::dvec3& right, glm::dvec3& up) {
+  const Camera& c = view.camera;
+  const glm::dmat4 v = glm::lookAt(c.position, c.target, c.up);
+  const glm::dvec3 screen_right(v[0][0], v[1][0], v[2][0]);  // first row: the camera's x axis
+  const glm::dvec3& n = view.plane.n;
+  right = screen_right - glm::dot(screen_right, n) * n;
+  const double len = glm::length(right);
+  // The screen's right runs along the normal only when the plane is seen edge-on.
+  right = len > 1e-9 ? right / len : view.plane.t;
+  up = glm::cross(n, right);
+}
+
+}  // namespace
+
+PointerRay pointer_ray(const PointerView& view, const glm::dvec2& pointer) {
+  const glm::dmat4 inv_vp = glm::inverse(view_projection(view.camera, view.aspect));
+  // Window y grows downwards, NDC y upwards.
+  const glm::dvec2 ndc(2.0 * pointer.x / view.window_size.x - 1.0, 1.0 - 2.0 * pointer.y / view.window_size.y);
+  return {unproject(inv_vp, ndc, -1.0), unproject(inv_vp, ndc, 1.0)};
+}
+
+std::optional<glm::dvec3> intersect_plane(const PointerRay& ray, const PlaneAxes& plane) {
+  const glm::dvec3 d = ray.far_mm - ray.near_mm;
+  const double denom = glm::dot(d, plane.n);
+  const double num = glm::dot(plane.origin - ray.near_mm, plane.n);
+  // Parallel within 1e-12 of the segment's length (a grazing ray's hit is not a usable place).
+  if (!(std::abs(denom) > 1e-12 * glm::length(d))) return std::nullopt;
+  const double t = num / denom;
+  if (!(t >= 0.0 && t <= 1.0)) return std::nullopt;  // behind the eye or past the far plane
+  const glm::dvec3 hit = ray.near_mm + t * d;
+  if (!finite(hit)) return std::nullopt;
+  return hit;
+}
+
+glm::dvec2 project_to_window(const PointerView& view, const glm::dvec3& p_mm) {
+  const glm::dvec4 clip = view_projection(view.camera, view.aspect) * glm::dvec4(p_mm, 1.0);
+  const glm::dvec2 ndc = glm::dvec2(clip) / clip.w;
+  return {(ndc.x + 1.0) * 0.5 * view.window_size.x, (1.0 - ndc.y) * 0.5 * view.window_size.y};
+}
+
+void HeightControl::set(double mm) {
+  if (std::isnan(mm)) return;
+  mm_ = std::clamp(mm, params_.min_mm, params_.max_mm);
+}
+
+glm::dvec3 PointerMap::centre(const PointerView& view, double height_mm) const {
+  return hit(view) + (view.probe_radius_mm + height_mm) * view.plane.n;
+}
+
+glm::dvec3 PointerMap::absolute(const PointerView& view, const glm::dvec2& pointer, double height_mm) {
+  if (std::isfinite(pointer.x) && std::isfinite(pointer.y) && view.window_size.x > 0.0 && view.window_size.y > 0.0)
+    if (auto h = intersect_plane(pointer_ray(view, pointer), view.plane)) {
+      hit_ = *h;
+      have_hit_ = true;
+    }
+  return centre(view, height_mm);
+}
+
+glm::dvec3 PointerMap::relative(const PointerView& view, const glm::dvec2& counts, double mm_per_count,
+                                double height_mm) {
+  glm::dvec3 right, up;
+  screen_axes_on_plane(view, right, up);
+  const glm::dvec3 moved = hit(view) + mm_per_count * (counts.x * right - counts.y * up);  // y down on screen
+  if (finite(moved)) {
+    hit_ = moved;
+    have_hit_ = true;
+  }
+  return centre(view, height_mm);
+}
+
+}  // namespace ps

@@ -1,0 +1,94 @@
+// Pointer -> probe: where a pointer on the window puts the probe, without GL or GLFW, so the
+// mouse of `run`, the scripted pointer device and the tests share one mapping.
+//   absolute (the default): the pointer's ray through the scene camera (the same matrices the
+//            renderer draws with, render/camera.h) meets the reference plane at the hit point;
+//            the probe hovers over it: centre = hit + (R + h) n, R the probe radius, h the
+//            person-controlled height of the probe's lowest point. The pseudo-shadow is the
+//            probe projected along n (passes/probe_depth.h), so its centre is the hit point:
+//            the shadow sits under the pointer on any camera and zoom.
+//   relative (captured pointer): raw counts move the hit point along the plane, screen-aligned
+//            (right on screen = right on the plane), at a fixed mm per count.
+// Units: window positions in the units of the window size (GLFW screen coordinates, origin top
+// left, y down, pixel i covering [i, i + 1)); everything else in mm.
+#pragma once
+
+#include <optional>
+
+#include <glm/glm.hpp>
+
+#include "scene/scene.h"
+
+namespace ps {
+
+struct PlaneAxes {  // where the device moves: origin and orthonormal tangents/normal (mm)
+  glm::dvec3 origin{0.0}, t{1.0, 0.0, 0.0}, b{0.0, 1.0, 0.0}, n{0.0, 0.0, 1.0};
+};
+
+// Everything the mapping needs, taken from the render thread's current state at every poll
+// (the camera orbits and zooms in `run`). Trivially copyable: it crosses threads in a Snapshot.
+struct PointerView {
+  Camera camera;
+  double aspect = 1.0;                  // the renderer's width / height (the image is stretched to the window)
+  glm::dvec2 window_size{512.0, 512.0}; // in the pointer's units
+  PlaneAxes plane;
+  double probe_radius_mm = 8.0;         // R: sphere/capsule radius (mesh probes: an approximation)
+};
+
+// A segment of the pointer's ray: from the near plane (t = 0) to the far plane (t = 1).
+struct PointerRay {
+  glm::dvec3 near_mm{0.0}, far_mm{0.0};
+};
+
+PointerRay pointer_ray(const PointerView& view, const glm::dvec2& pointer);
+// The ray's point on the plane, or none when the ray is parallel to it or meets it outside the
+// near..far segment (behind the camera, or past what the camera draws).
+std::optional<glm::dvec3> intersect_plane(const PointerRay& ray, const PlaneAxes& plane);
+// Where a world point lands in the window (the inverse of pointer_ray for points in view).
+glm::dvec2 project_to_window(const PointerView& view, const glm::dvec3& p_mm);
+
+// The person-controlled height h of the probe's lowest point above the hit point, mm.
+struct HeightParams {
+  // 1 mm: the default 8 mm probe's shadow shows a dark core (at 4 mm only a faint grey disc is
+  // left), yet the probe is out of contact, so nothing pushes back until the person lowers it
+  // (two key presses).
+  double start_mm = 1.0;
+  double step_mm = 0.5;     // per key press (and per key repeat while held)
+  double scroll_mm = 0.5;   // per scroll notch
+  double min_mm = -4.0;     // pressing in: half the default probe's radius (2 N at 0.5 N/mm)
+  double max_mm = 60.0;     // a cap that keeps the probe within reach of the scene
+};
+
+class HeightControl {
+ public:
+  explicit HeightControl(const HeightParams& params) : params_(params), mm_(params.start_mm) {}
+  double mm() const { return mm_; }
+  void step(int presses) { set(mm_ + presses * params_.step_mm); }
+  void scroll(double notches) { set(mm_ + notches * params_.scroll_mm); }
+  void add_mm(double dmm) { set(mm_ + dmm); }
+  void set(double mm);  // clamped to [min_mm, max_mm]; NaN is ignored
+  const HeightParams& params() const { return params_; }
+
+ private:
+  HeightParams params_;
+  double mm_;
+};
+
+// Keeps the last good hit point, so a pointer whose ray misses the plane (parallel, pointing
+// away, outside the window far beyond the horizon) leaves the probe where it was: never NaN.
+class PointerMap {
+ public:
+  // Absolute mapping: the probe centre over the pointer at height_mm.
+  glm::dvec3 absolute(const PointerView& view, const glm::dvec2& pointer, double height_mm);
+  // Relative mapping: moves the hit point by `counts` (x right, y down) at mm_per_count.
+  glm::dvec3 relative(const PointerView& view, const glm::dvec2& counts, double mm_per_count, double height_mm);
+  // The current hit point (the shadow's centre); the plane origin before the first hit.
+  glm::dvec3 hit(const PointerView& view) const { return have_hit_ ? hit_ : view.plane.origin; }
+  bool have_hit() const { return have_hit_; }
+
+ private:
+  glm::dvec3 centre(const PointerView& view, double height_mm) const;
+  glm::dvec3 hit_{0.0};
+  bool have_hit_ = false;
+};
+
+}  // namespace ps
