@@ -15,12 +15,20 @@ WindowInput& input_of(GLFWwindow* w) { return *static_cast<WindowInput*>(glfwGet
 void on_key(GLFWwindow* w, int key, int, int action, int) {
   if (action != GLFW_PRESS) return;
   WindowInput& in = input_of(w);
+  ++in.key_presses;
   if (key == GLFW_KEY_F1) in.toggle_panel = true;
   if (in.keys_captured) return;  // the user is typing into the parameter panel
+  if (key == GLFW_KEY_H) in.toggle_help = true;
   if (key == GLFW_KEY_S) ++in.screenshots;
   if (key == GLFW_KEY_M) in.toggle_capture = true;
   if (key == GLFW_KEY_P) in.toggle_probe = true;
   if (key == GLFW_KEY_ESCAPE || key == GLFW_KEY_Q) in.quit = true;
+}
+
+// '?' by the character it types, whatever the keyboard layout puts it on.
+void on_char(GLFWwindow* w, unsigned int codepoint) {
+  WindowInput& in = input_of(w);
+  if (codepoint == '?' && !in.keys_captured) in.toggle_help = true;
 }
 
 void on_scroll(GLFWwindow* w, double, double dy) {
@@ -52,6 +60,7 @@ void on_cursor(GLFWwindow* w, double x, double y) {
 void install_window_input(GLFWwindow* window, WindowInput& input) {
   glfwSetWindowUserPointer(window, &input);
   glfwSetKeyCallback(window, on_key);
+  glfwSetCharCallback(window, on_char);
   glfwSetScrollCallback(window, on_scroll);
   glfwSetMouseButtonCallback(window, on_button);
   glfwSetCursorPosCallback(window, on_cursor);
