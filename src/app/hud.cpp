@@ -140,7 +140,6 @@ UiFrameReport WindowUi::draw(const HudReadouts& readouts, const ShadowMeasure& s
 
   UiFrameReport report;
   report.shadow = shadow.bbox;
-  report.distance_mm = readouts.distance_mm;
   if (layout.panel) {
     UiRect dock = *layout.panel;
     dock.y1 = display.y;  // the expanded size; a collapsed panel draws its title bar only

@@ -12,7 +12,7 @@ namespace {
 constexpr float kEdgeMargin = 6.f;    // boxes keep this far from the window's edges
 constexpr float kShadowMargin = 4.f;  // and this far from the shadow's bounding box
 
-// Placement score: covering the shadow is worse than any overlap of two boxes.
+// The readouts' score: covering the shadow is worse than any overlap with the panel.
 constexpr float kShadowWeight = 1e6f;
 
 struct Candidate {
@@ -87,9 +87,9 @@ float overlap_area(const UiRect& a, const UiRect& b) {
 
 UiRect grown(const UiRect& r, float by) { return {r.x0 - by, r.y0 - by, r.x1 + by, r.y1 + by}; }
 
-ShadowMeasure measure_shadow(const Image& intensity, const Image& distance, int window_w, int window_h) {
-  assert(intensity.channels == 1 && distance.channels == 1 && "measure_shadow: expects 1-channel AOVs");
-  assert(intensity.width == distance.width && intensity.height == distance.height &&
+ShadowMeasure measure_shadow(const Image& intensity, const Image* distance, int window_w, int window_h) {
+  assert(intensity.channels == 1 && (!distance || distance->channels == 1) && "measure_shadow: expects 1-channel AOVs");
+  assert((!distance || (intensity.width == distance->width && intensity.height == distance->height)) &&
          "measure_shadow: the intensity and distance AOVs differ in size");
   ShadowMeasure m;
   int x0 = intensity.width, y0 = intensity.height, x1 = -1, y1 = -1;
@@ -99,7 +99,8 @@ ShadowMeasure measure_shadow(const Image& intensity, const Image& distance, int 
       ++m.pixels;
       x0 = std::min(x0, x); x1 = std::max(x1, x);
       y0 = std::min(y0, y); y1 = std::max(y1, y);
-      const double d = distance.at(x, y, 0);
+      if (!distance) continue;
+      const double d = distance->at(x, y, 0);
       if (!std::isnan(d) && (!m.min_distance_mm || d < *m.min_distance_mm)) m.min_distance_mm = d;
     }
   if (m.pixels == 0) return m;
@@ -134,7 +135,8 @@ UiLayout layout_ui(const UiLayoutInput& in) {
   out.placement.hud_corner = hud.corner;
   if (in.help) {
     out.help = best(help_places(in, x0, x1), [&](const UiRect& r) {
-                 return kShadowWeight * shadow_cost(r) + overlap_area(r, out.hud) + overlap_area(r, panel);
+                 // Text over text is as unreadable as a box over the shadow is unwanted.
+                 return shadow_cost(r) + overlap_area(r, out.hud) + overlap_area(r, panel);
                }).rect;
   }
   return out;
@@ -151,10 +153,7 @@ std::string ui_report_json(int window_w, int window_h, const std::vector<UiFrame
     append_rect(out, "hud", f.hud);
     append_rect(out, "help", f.help);
     append_rect(out, "panel", f.panel);
-    char d[64];
-    if (f.distance_mm) std::snprintf(d, sizeof d, ", \"distance_mm\": %.4f}", *f.distance_mm);
-    else std::snprintf(d, sizeof d, ", \"distance_mm\": null}");
-    out += d;
+    out += "}";
   }
   out += "\n  ]\n}\n";
   return out;

@@ -36,12 +36,12 @@ constexpr float kShadowVisibleIntensity = 1.0f / 255.0f;
 // row first) and scaled to a window of window_w x window_h pixels.
 struct ShadowMeasure {
   std::optional<UiRect> bbox;              // bounding box of the shadowed pixels; none: no shadow
-  std::optional<double> min_distance_mm;   // smallest probe-surface distance d over them
+  std::optional<double> min_distance_mm;   // smallest probe-surface distance d over them (if read)
   std::uint32_t pixels = 0;                // shadowed pixels (image pixels, not window pixels)
 };
 // `intensity`: the intensity AOV (1 channel); `distance`: the distance AOV (1 channel, NaN
-// where no probe is above the pixel). Both the same size.
-ShadowMeasure measure_shadow(const Image& intensity, const Image& distance, int window_w, int window_h);
+// where no probe is above the pixel; the same size) or null: no min_distance_mm.
+ShadowMeasure measure_shadow(const Image& intensity, const Image* distance, int window_w, int window_h);
 
 enum class PanelSide { kRight, kLeft };
 enum class Corner { kTopLeft, kTopRight, kBottomLeft, kBottomRight };
@@ -85,10 +85,9 @@ float panel_width_for(float window_width);
 struct UiFrameReport {
   std::uint64_t frame = 0;
   std::optional<UiRect> shadow, hud, help, panel;
-  std::optional<double> distance_mm;
 };
 // {"window": [w, h], "frames": [{"frame": 0, "shadow": [x0, y0, x1, y1] or null, "hud": ...,
-//  "help": ..., "panel": ..., "distance_mm": ...}, ...]}
+//  "help": ..., "panel": ...}, ...]}
 std::string ui_report_json(int window_w, int window_h, const std::vector<UiFrameReport>& frames);
 
 }  // namespace ps
