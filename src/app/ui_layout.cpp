@@ -121,7 +121,10 @@ UiLayout layout_ui(const UiLayoutInput& in) {
   if (in.panel) {
     const PanelSide other = in.last.panel_side == PanelSide::kRight ? PanelSide::kLeft : PanelSide::kRight;
     const UiRect keep = panel_strip(in, in.last.panel_side), flip = panel_strip(in, other);
-    const bool flip_it = shadow_cost(keep) > 0.f && shadow_cost(flip) < shadow_cost(keep);
+    // When both sides cover the shadow (a probe larger than the room), flip only for a clear
+    // gain: a shadow sliding to and fro in the middle would otherwise swap sides every stroke.
+    const float kept = shadow_cost(keep), flipped = shadow_cost(flip);
+    const bool flip_it = kept > 0.f && (flipped == 0.f || flipped < 0.5f * kept);
     out.placement.panel_side = flip_it ? other : in.last.panel_side;
     out.panel = flip_it ? flip : keep;
     (out.placement.panel_side == PanelSide::kRight ? x1 : x0) =

@@ -72,7 +72,8 @@ struct UiLayout {
 };
 
 // Panel: a strip along the right edge (full height), or along the left edge when the shadow
-// would be under it; if both would cover it, the side that covers less. Readouts: the corner
+// would be under it; if both would cover it, the side that covers less than half of what the
+// other does, else the last frame's side. Readouts: the corner
 // of the rest of the window that keeps clear of the shadow, the farthest from it first. Help:
 // bottom or top centre of the rest, else a corner, clear of the shadow and the readouts.
 UiLayout layout_ui(const UiLayoutInput& in);

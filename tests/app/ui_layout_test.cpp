@@ -139,11 +139,14 @@ TEST(UiLayoutTest, LastPlacementIsKeptWhileItStaysClear) {
 }
 
 TEST(UiLayoutTest, ShadowWiderThanTheRoomLeavesThePanelOnTheSideItCoversLess) {
-  const UiRect shadow{100, 100, 470, 400};  // 370 of 512 px wide: no strip is clear
+  const UiRect shadow{100, 100, 480, 400};  // 380 of 512 px wide: no strip is clear
   const UiLayout l = layout_ui(default_scene(shadow));
-  // With the 4 px margin the right strip [358, 512) would cover columns 358..474, the left one
-  // [0, 154) columns 96..154.
+  // With the 4 px margin the right strip [358, 512) would cover columns 358..484 (126), the
+  // left one [0, 154) columns 96..154 (58): less than half, worth the move.
   EXPECT_EQ(l.placement.panel_side, PanelSide::kLeft);
+  // Covering 104 columns on the left instead of 126 on the right is not: the panel stays.
+  const UiRect wide{54, 100, 480, 400};
+  EXPECT_EQ(layout_ui(default_scene(wide)).placement.panel_side, PanelSide::kRight);
 }
 
 TEST(UiLayoutTest, ReportIsJsonWithOneObjectPerFrame) {
