@@ -145,7 +145,7 @@ UiFrameReport WindowUi::draw(const HudReadouts& readouts, const ShadowMeasure& s
     dock.y1 = display.y;  // the expanded size; a collapsed panel draws its title bar only
     report.panel = panel_.draw(session, dock);
   }
-  report.hud = text_box("##readouts", layout.hud, hud_text, 0.65f);
+  if (layout.hud) report.hud = text_box("##readouts", *layout.hud, hud_text, 0.65f);
   if (layout.help) report.help = text_box("##help", *layout.help, help, 0.8f);
   ImGui::Render();
   glBindFramebuffer(GL_FRAMEBUFFER, 0);

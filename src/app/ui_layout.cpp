@@ -136,11 +136,18 @@ UiLayout layout_ui(const UiLayoutInput& in) {
   });
   out.hud = hud.rect;
   out.placement.hud_corner = hud.corner;
-  if (in.help) {
-    out.help = best(help_places(in, x0, x1), [&](const UiRect& r) {
-                 // Text over text is as unreadable as a box over the shadow is unwanted.
-                 return shadow_cost(r) + overlap_area(r, out.hud) + overlap_area(r, panel);
-               }).rect;
+  if (!in.help) return out;
+  const auto help_cost = [&](const UiRect* hud) {
+    return [&, hud](const UiRect& r) {
+      return shadow_cost(r) + overlap_area(r, panel) + (hud ? overlap_area(r, *hud) : 0.f);
+    };
+  };
+  out.help = best(help_places(in, x0, x1), help_cost(&*out.hud)).rect;
+  if (intersects(*out.help, *out.hud)) {
+    // No room for both (text over text reads as neither): the readouts wait until the help,
+    // which is transient, hides; the help takes the place that covers the least.
+    out.help = best(help_places(in, x0, x1), help_cost(nullptr)).rect;
+    out.hud.reset();
   }
   return out;
 }

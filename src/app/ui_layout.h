@@ -67,7 +67,7 @@ struct UiLayoutInput {
 
 struct UiLayout {
   std::optional<UiRect> panel, help;
-  UiRect hud;
+  std::optional<UiRect> hud;  // none: no room beside the help, shown again once it hides
   UiPlacement placement;
 };
 
@@ -75,7 +75,8 @@ struct UiLayout {
 // would be under it; if both would cover it, the side that covers less than half of what the
 // other does, else the last frame's side. Readouts: the corner
 // of the rest of the window that keeps clear of the shadow, the farthest from it first. Help:
-// bottom or top centre of the rest, else a corner, clear of the shadow and the readouts.
+// bottom or top centre of the rest, else a corner, clear of the shadow and the readouts; when
+// the two cannot both stay clear, the readouts are left out while the help shows.
 UiLayout layout_ui(const UiLayoutInput& in);
 
 // 30 % of the window, but at least 150 px (the longest parameter name, 19 characters of the

@@ -88,13 +88,14 @@ UiLayoutInput default_scene(const UiRect& shadow) {
 void expect_clear(const UiLayout& l, const UiRect& shadow) {
   ASSERT_TRUE(l.panel.has_value());
   ASSERT_TRUE(l.help.has_value());
+  ASSERT_TRUE(l.hud.has_value()) << "the default scene has room for the readouts beside the help";
   EXPECT_FALSE(intersects(*l.panel, shadow));
-  EXPECT_FALSE(intersects(l.hud, shadow));
+  EXPECT_FALSE(intersects(*l.hud, shadow));
   EXPECT_FALSE(intersects(*l.help, shadow));
-  EXPECT_FALSE(intersects(l.hud, *l.panel));
+  EXPECT_FALSE(intersects(*l.hud, *l.panel));
   EXPECT_FALSE(intersects(*l.help, *l.panel));
-  EXPECT_FALSE(intersects(*l.help, l.hud));
-  for (const UiRect& r : {*l.panel, l.hud, *l.help}) {
+  EXPECT_FALSE(intersects(*l.help, *l.hud));
+  for (const UiRect& r : {*l.panel, *l.hud, *l.help}) {
     EXPECT_GE(r.x0, 0.f);
     EXPECT_GE(r.y0, 0.f);
     EXPECT_LE(r.x1, 512.f);
@@ -124,7 +125,8 @@ TEST(UiLayoutTest, ShadowInTheTopLeftSendsTheReadoutsToAnotherCorner) {
   in.panel = in.help = false;
   const UiLayout l = layout_ui(in);
   EXPECT_NE(l.placement.hud_corner, Corner::kTopLeft);
-  EXPECT_FALSE(intersects(l.hud, shadow));
+  ASSERT_TRUE(l.hud.has_value());
+  EXPECT_FALSE(intersects(*l.hud, shadow));
   // The corner farthest from the shadow.
   EXPECT_EQ(l.placement.hud_corner, Corner::kBottomRight);
 }
@@ -147,6 +149,19 @@ TEST(UiLayoutTest, ShadowWiderThanTheRoomLeavesThePanelOnTheSideItCoversLess) {
   // Covering 104 columns on the left instead of 126 on the right is not: the panel stays.
   const UiRect wide{54, 100, 480, 400};
   EXPECT_EQ(layout_ui(default_scene(wide)).placement.panel_side, PanelSide::kRight);
+}
+
+TEST(UiLayoutTest, ReadoutsWaitWhileTheHelpHasNoRoomBesideThem) {
+  // A large shadow leaves only a band of 146 px at the top: 339 + 184 px of help and readouts
+  // do not fit side by side in the 358 px the panel leaves, and below the shadow the help
+  // would cover it.
+  UiLayoutInput in = default_scene(UiRect{100, 150, 400, 470});
+  const UiLayout l = layout_ui(in);
+  ASSERT_TRUE(l.help.has_value());
+  EXPECT_FALSE(l.hud.has_value());
+  EXPECT_FALSE(intersects(*l.help, UiRect{100, 150, 400, 470}));
+  in.help = false;
+  EXPECT_TRUE(layout_ui(in).hud.has_value()) << "the readouts come back when the help hides";
 }
 
 TEST(UiLayoutTest, ReportIsJsonWithOneObjectPerFrame) {
