@@ -1,6 +1,7 @@
 // `pseudoshadow run`: the interactive window. Main thread: GLFW events, device polling (mouse/
 // gamepad), rendering through the same Renderer as headless, blit to the window, readouts, help
-// and parameter panel over it (app/hud.h), a short summary in the title. Haptic thread: HapticLoop at 1 kHz. They meet only in the loop's two Snapshots.
+// and parameter panel over it (app/hud.h), a short summary in the title. Haptic thread:
+// HapticLoop at 1 kHz. They meet only in the loop's two Snapshots.
 #define GLFW_INCLUDE_NONE
 #include <GLFW/glfw3.h>
 
@@ -103,6 +104,8 @@ struct Session {  // everything the window loop touches, grouped by owner thread
   std::unique_ptr<gl::Context> ctx;
   std::unique_ptr<TuneSession> tune;  // owns the Renderer; swaps in a new one on reload
   std::unique_ptr<WindowUi> ui;       // readouts, help, parameter panel (one ImGui frame)
+  HudReadouts readouts;               // shown until the next refresh
+  double readouts_s = -1.0;           // session time of their last refresh
   std::vector<UiFrameReport> ui_frames;  // --ui-report
   std::string shown_error;            // last reload error printed to the console
   std::unique_ptr<Device> device;
@@ -261,11 +264,29 @@ void print_summary(const Session& s) {
   else std::printf("latency sample->frame p50 %.1f ms p99 %.1f ms\n", lat.p50, lat.p99);
 }
 
+// Readouts, help and panel over the frame, placed around its shadow; drawn after the
+// screenshots are read back, so they are never in them.
+Status draw_overlays(const RunArgs& a, Session& s, const HapticState& st, std::uint64_t frame, double now_s) {
+  const bool refresh = now_s - s.readouts_s >= kReadoutPeriodS;
+  int w = 0, h = 0;  // ImGui's units: window coordinates, not framebuffer pixels
+  glfwGetWindowSize(s.ctx->window(), &w, &h);
+  auto shadow = measure_frame_shadow(s.tune->renderer(), w, h, refresh);
+  if (!shadow) return shadow.error();
+  if (refresh) {
+    s.readouts = readouts(s, st, shadow.value());
+    glfwSetWindowTitle(s.ctx->window(), title_summary(s.readouts).c_str());
+    s.readouts_s = now_s;
+  }
+  UiFrameReport report = s.ui->draw(s.readouts, shadow.value(), *s.tune, now_s);
+  report.frame = frame;
+  if (!a.ui_report.empty()) s.ui_frames.push_back(report);
+  return ok_status();
+}
+
 Status window_loop(const RunArgs& a, Session& s) {
   GLFWwindow* win = s.ctx->window();
   const auto t0 = std::chrono::steady_clock::now();
-  double last_readout = -1.0, last_flush = 0.0, last_watch = 0.0;
-  HudReadouts shown;
+  double last_flush = 0.0, last_watch = 0.0;
   for (std::uint64_t frame = 0;; ++frame) {
     const auto f0 = std::chrono::steady_clock::now();
     const double now_s = std::chrono::duration<double>(f0 - t0).count();
@@ -283,18 +304,7 @@ Status window_loop(const RunArgs& a, Session& s) {
     glfwGetFramebufferSize(win, &w, &h);
     present_to_default_framebuffer(s.tune->renderer(), w, h);
     if (Status r = handle_keys(s, w, h); !r) return r;  // screenshots read GL_BACK before the swap
-    // After the screenshots: the overlays are never in them.
-    const bool refresh = now_s - last_readout >= kReadoutPeriodS;
-    auto shadow = measure_frame_shadow(s.tune->renderer(), w, h, refresh);
-    if (!shadow) return shadow.error();
-    if (refresh) {
-      shown = readouts(s, st, shadow.value());
-      glfwSetWindowTitle(win, title_summary(shown).c_str());
-      last_readout = now_s;
-    }
-    UiFrameReport report = s.ui->draw(shown, shadow.value(), *s.tune, now_s);
-    report.frame = frame;
-    if (!a.ui_report.empty()) s.ui_frames.push_back(report);
+    if (Status r = draw_overlays(a, s, st, frame, now_s); !r) return r;  // after the screenshots
     s.input.keys_captured = s.ui->panel().wants_input();
     glfwSwapBuffers(win);
     const auto f1 = std::chrono::steady_clock::now();

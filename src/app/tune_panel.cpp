@@ -85,8 +85,9 @@ bool slider(const std::string& label, const std::string& key, float* v, int n, f
 // PlotLines just made). The sample under the mouse is found as PlotLines finds it.
 void curve(const char* id, const float* y, int n, const char* caption, double x_lo, double x_hi,
            const char* x_name, const char* x_unit, const char* y_name) {
+  ImGui::TextWrapped("%s", caption);  // above, not inside the plot: a narrow panel would cut it
   ImGui::SetNextItemWidth(-FLT_MIN);
-  ImGui::PlotLines(id, y, n, 0, caption, 0.f, 1.f, ImVec2(0, 70));
+  ImGui::PlotLines(id, y, n, 0, nullptr, 0.f, 1.f, ImVec2(0, 70));
   if (!ImGui::IsItemHovered()) return;
   const float pad = ImGui::GetStyle().FramePadding.x;
   const float x0 = ImGui::GetItemRectMin().x + pad, x1 = ImGui::GetItemRectMax().x - pad;
