@@ -127,8 +127,8 @@ UiLayout layout_ui(const UiLayoutInput& in) {
     const bool flip_it = kept > 0.f && (flipped == 0.f || flipped < 0.5f * kept);
     out.placement.panel_side = flip_it ? other : in.last.panel_side;
     out.panel = flip_it ? flip : keep;
-    (out.placement.panel_side == PanelSide::kRight ? x1 : x0) =
-        out.placement.panel_side == PanelSide::kRight ? out.panel->x0 : out.panel->x1;
+    if (out.placement.panel_side == PanelSide::kRight) x1 = out.panel->x0;
+    else x0 = out.panel->x1;
   }
   const UiRect panel = out.panel.value_or(UiRect{});
   const Candidate hud = best(hud_corners(in, x0, x1, avoid), [&](const UiRect& r) {
