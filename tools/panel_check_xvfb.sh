@@ -62,9 +62,9 @@ shot panel
 xdotool mousemove 508 433 click 1
 sleep 1
 xdotool mousemove 600 50 key F1   # hide the panel, then S: a screenshot of the image alone
-sleep 1
+sleep 3
 xdotool key s
-sleep 1.5
+sleep 3  # Q in the same frame as S would quit before the screenshot is taken
 shot after
 xdotool key q
 wait "${run_pid}" || { cat run.log; echo "panel_check: run failed" >&2; exit 1; }
