@@ -20,9 +20,10 @@ mkdir -p "${work}/scenes" "${work}/textures"
 cp "${repo}/scenes/table5_1_wood.toml" "${work}/scenes/wood.toml"
 cp "${repo}/textures/wood.png" "${work}/textures/"
 rm -f "${work}/scenes/wood.overrides.toml" "${work}"/screenshot_*.png
-# The probe slides along x at 60 mm/s, 0.5 mm above the sample: the texture's amplitude
-# follows speed, so a still probe would show almost none.
-awk 'BEGIN { for (i = 0; i <= 600; ++i) printf "%.2f %d 0 8.5 0\n", i * 0.25, (i % 2 ? 7.5 : -7.5) }' \
+# The probe slides along y at 56 mm/s, 0.5 mm above the sample: the texture's amplitude
+# follows speed, so a still probe would show almost none. Along y, the shadow moves up and down
+# on screen and the docked panel has no reason to change sides (docs/window.md).
+awk 'BEGIN { for (i = 0; i <= 600; ++i) printf "%.2f 0 %d 8.5 0\n", i * 0.25, (i % 2 ? 7 : -7) }' \
   > "${work}/stroke.traj"
 
 display=":$(( 90 + RANDOM % 100 ))"
@@ -41,26 +42,29 @@ shot() { xwd -root -silent > "$1.xwd"; }
 shot before
 xdotool mousemove 600 50 key s  # screenshot_0000: before the edits
 sleep 1.5
-# Slider rows of the panel at its default place (8, 8), width 420: lambda_min at y = 113,
-# theta_max at y = 182; handles dragged right in small steps, one step per frame or so.
+# The panel docks along the right edge of the 640x480 window (x 448..640; docs/window.md), each
+# slider on the line under its label: lambda_min's at y = 155, theta_max's at y = 275; handles
+# dragged right in small steps, one step per frame or so.
 drag() {  # x0 x1 y
   xdotool mousemove "$1" "$3" mousedown 1
   for x in $(seq "$1" 8 "$2"); do xdotool mousemove "${x}" "$3"; sleep 0.05; done
-  sleep 0.3; xdotool mouseup 1; sleep 1.5
+  # An edit rebuilds the renderer (and re-bakes the Gabor tile: seconds on a loaded machine);
+  # ImGui 1.86 has no input queue, so input sent during that frame would be lost.
+  sleep 0.3; xdotool mouseup 1; sleep 6
 }
-drag 53 110 113
-drag 174 250 182
+drag 476 512 155
+drag 553 599 275
 # Scroll the panel to its end (must not zoom the camera) and press "Save overrides".
-xdotool mousemove 200 300
+xdotool mousemove 540 300
 for _ in $(seq 10); do xdotool click 5; sleep 0.1; done
 sleep 1
 shot panel
-xdotool mousemove 68 438 click 1
+xdotool mousemove 508 433 click 1
 sleep 1
 xdotool mousemove 600 50 key F1   # hide the panel, then S: a screenshot of the image alone
-sleep 1
+sleep 3
 xdotool key s
-sleep 1.5
+sleep 3  # Q in the same frame as S would quit before the screenshot is taken
 shot after
 xdotool key q
 wait "${run_pid}" || { cat run.log; echo "panel_check: run failed" >&2; exit 1; }

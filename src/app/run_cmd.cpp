@@ -1,12 +1,14 @@
 // `pseudoshadow run`: the interactive window. Main thread: GLFW events, device polling (mouse/
-// gamepad), rendering through the same Renderer as headless, blit to the window, HUD in the
-// title. Haptic thread: HapticLoop at 1 kHz. They meet only in the loop's two Snapshots.
+// gamepad), rendering through the same Renderer as headless, blit to the window, readouts, help
+// and parameter panel over it (app/hud.h), a short summary in the title. Haptic thread:
+// HapticLoop at 1 kHz. They meet only in the loop's two Snapshots.
 #define GLFW_INCLUDE_NONE
 #include <GLFW/glfw3.h>
 
 #include <chrono>
 #include <cstdio>
 #include <cstring>
+#include <filesystem>
 #include <map>
 #include <memory>
 #include <thread>
@@ -14,9 +16,11 @@
 #include "app/cli.h"
 #include "app/cli_groups.h"
 #include "app/commands.h"
+#include "app/hud.h"
+#include "app/run_keys.h"
 #include "app/session.h"
-#include "app/tune_panel.h"
 #include "app/window_input.h"
+#include "core/file_io.h"
 #include "core/output_set.h"
 #include "devices/glfw_input.h"
 #include "gl/context.h"
@@ -29,20 +33,23 @@ namespace ps {
 
 namespace {
 
-constexpr const char* kRunKeys = R"(keys: the probe follows the pointer: its shadow's centre sits under it, on any camera and zoom.
-Scroll raises (up) or lowers (down) the probe 0.5 mm per notch; PageUp/Up and PageDown/Down step
-it 0.5 mm per press and repeat while held; it starts 1 mm above the surface and goes down to
-4 mm into it. Right drag orbits, Shift+scroll zooms; M captures the mouse (raw relative motion,
-0.1 mm per count, where supported; M again puts the probe back under the pointer);
-P shows or hides the probe itself (hidden by default: the pseudo-shadow is the display; when
-shown it is drawn where the haptic proxy is, after the push-out); S saves screenshot_NNNN.png
-(without the panel) and screenshot_NNNN.overrides.toml (panel edits, camera, probe: `render
---scene FILE --overrides screenshot_NNNN.overrides.toml` draws the same image); F1 shows the
-parameter panel; Esc or Q quits.
+// The key list comes from app/run_keys.h (the help overlay shows the same table).
+constexpr const char* kRunNotes = R"(The probe follows the pointer: its shadow's centre sits under it, on any camera and zoom.
+Scroll raises (up) or lowers (down) it 0.5 mm per notch; PageUp/Up and PageDown/Down step it
+0.5 mm per press and repeat while held; it starts 1 mm above the surface and goes down to 4 mm
+into it. M captures the mouse (raw relative motion, 0.1 mm per count, where supported; M again
+puts the probe back under the pointer).
+The probe itself is hidden by default (P shows it): the pseudo-shadow is the display; when
+shown it is drawn where the haptic proxy is, after the push-out. S saves screenshot_NNNN.png
+(without the overlays) and screenshot_NNNN.overrides.toml (panel edits, camera, probe: `render
+--scene FILE --overrides screenshot_NNNN.overrides.toml` draws the same image).
 Saved changes to the shaders, the scene or its textures are reloaded within 0.5 s; a broken
 file keeps the last good state running and shows its file:line in the title and the console.
-The title shows frame time, haptic rate and jitter, distance, speed, penetration.
+A box in a corner shows frame time, haptic rate and jitter, distance, speed, penetration,
+contact, force and the scene; the title shows the scene and the distance.
 )";
+
+std::string run_footer() { return "keys and mouse:\n" + run_keys_text("  ", 1) + kRunNotes; }
 
 constexpr const char* kDescription =
     "Opens a window and lets you move the probe over the scene with a device; the haptic loop\n"
@@ -50,7 +57,7 @@ constexpr const char* kDescription =
 
 struct RunArgs {
   cli::SceneArgs scene;
-  std::string device = "mouse", record, stats_path;
+  std::string device = "mouse", record, stats_path, ui_report;
   long long frames = 0, realtime = 0;
   double quit_after_s = 0.0;
   bool quiet = false, watch = true, show_probe = false, panel = false;
@@ -76,6 +83,11 @@ void declare(cli::Command& cmd, RunArgs& a) {
       ->type_name("FILE")
       ->group(cli::kOutputGroup);
   cli::add_stats_option(app, a.stats_path);
+  app.add_option("--ui-report", a.ui_report,
+                 "at exit, write JSON with every frame's overlay, help and panel rectangles and the "
+                 "pseudo-shadow's bounding box, in window pixels")
+      ->type_name("FILE")
+      ->group(cli::kOutputGroup);
   app.add_option_function<std::string>(
          "--backend",
          [](const std::string& v) {
@@ -93,13 +105,16 @@ void declare(cli::Command& cmd, RunArgs& a) {
   cli::add_int(app, "--frames", "N", a.frames, 1, 100'000'000, "quit after N frames");
   cli::add_positive(app, "--quit-after", "S", a.quit_after_s, 1e9, "5", "quit after S seconds");
   cli::add_quiet_option(app, a.quiet, "no summary");
-  app.footer(std::string(kRunKeys) + cli::kExitStatusHelp);
+  app.footer(run_footer() + cli::kExitStatusHelp);
 }
 
 struct Session {  // everything the window loop touches, grouped by owner thread
   std::unique_ptr<gl::Context> ctx;
   std::unique_ptr<TuneSession> tune;  // owns the Renderer; swaps in a new one on reload
-  std::unique_ptr<TunePanel> panel;
+  std::unique_ptr<WindowUi> ui;       // readouts, help, parameter panel (one ImGui frame)
+  HudReadouts readouts;               // shown until the next refresh
+  double readouts_s = -1.0;           // session time of their last refresh
+  std::vector<UiFrameReport> ui_frames;  // --ui-report
   std::string shown_error;            // last reload error printed to the console
   std::unique_ptr<Device> device;
   GlfwInputDevice* glfw_device = nullptr;  // == device.get() for mouse/gamepad
@@ -161,25 +176,43 @@ Status open_session(const RunArgs& a, Scene scene, Session& s) {
     s.loop->set_recorder(s.recorder.get());
   }
   install_window_input(s.ctx->window(), s.input);
-  s.panel = std::make_unique<TunePanel>(s.ctx->window());  // after: chains to our callbacks
-  if (a.panel) s.panel->toggle();
+  s.ui = std::make_unique<WindowUi>(s.ctx->window());  // after: chains to our callbacks
+  if (a.panel) s.ui->panel().toggle();
   s.tune->renderer().set_show_probe(a.show_probe);
   return ok_status();
 }
 
-void update_title(Session& s, const HapticState& st, double frame_ms) {
-  const SurfaceModel m = s.loop->surface().read();
-  char title[256];
-  const double dist = m.valid ? glm::dot(m.normal, st.proxy_mm - m.point_mm) - m.probe_radius_mm : -1.0;
-  std::snprintf(title, sizeof title,
-                "pseudoshadow | frame %.1f ms | haptic %.0f Hz, jitter p99 %.0f us | dist %s%.1f mm | "
-                "speed %.0f mm/s | pen %.2f mm | F %.2f N",
-                frame_ms, st.rate_hz, st.jitter_p99_us, m.valid ? "" : "? ", std::max(dist, 0.0),
-                glm::length(st.velocity_mm_s), s.tune->renderer().stats().max_penetration_mm, glm::length(st.force_n));
-  if (!s.tune->last_error().empty())
-    std::snprintf(title, sizeof title, "pseudoshadow | RELOAD FAILED (last good state kept): %s",
-                  s.tune->last_error().c_str());
-  glfwSetWindowTitle(s.ctx->window(), title);
+// The readouts (and the title) change 4 times a second: legible numbers, and the distance AOV
+// is read back only then.
+constexpr double kReadoutPeriodS = 0.25;
+
+// The frame's pseudo-shadow, measured on its own AOVs: where the overlays must not go (every
+// frame) and, with `distance`, the probe-surface distance the readouts show. Each AOV is one
+// float read-back of the image: ~6 ms at 512^2 on llvmpipe (measured on this project's
+// machine), so the distance is read only when the readouts refresh.
+Result<ShadowMeasure> measure_frame_shadow(const Renderer& r, int w, int h, bool distance) {
+  auto intensity = r.read_aov(Aov::kIntensity);
+  if (!intensity) return intensity.error();
+  if (!distance) return measure_shadow(intensity.value(), nullptr, w, h);
+  auto d = r.read_aov(Aov::kDistance);
+  if (!d) return d.error();
+  return measure_shadow(intensity.value(), &d.value(), w, h);
+}
+
+HudReadouts readouts(const Session& s, const HapticState& st, const ShadowMeasure& shadow) {
+  HudReadouts r;
+  const std::string& path = s.tune->scene_path();
+  r.scene = path.empty() ? cli::scene_display_name(path) : std::filesystem::path(path).filename().string();
+  r.frame_ms = s.frame_ms.empty() ? 0.0 : s.frame_ms.back();
+  r.haptic_hz = st.rate_hz;
+  r.jitter_p99_us = st.jitter_p99_us;
+  r.distance_mm = shadow.min_distance_mm;
+  r.speed_mm_s = glm::length(st.velocity_mm_s);
+  r.penetration_mm = s.tune->renderer().stats().max_penetration_mm;
+  r.contact = st.in_contact || r.penetration_mm > 0.0;
+  r.force_n = glm::length(st.force_n);
+  r.error = s.tune->last_error();
+  return r;
 }
 
 std::string screenshot_state(const TuneSession& tune) {
@@ -199,7 +232,7 @@ Status handle_keys(Session& s, int w, int h) {
   WindowInput& in = s.input;
   if (in.toggle_capture && s.glfw_device) s.glfw_device->toggle_capture();
   in.toggle_capture = false;
-  if (s.panel->wants_input()) {  // scrolling or dragging over the panel: not for camera or probe
+  if (s.ui->panel().wants_input()) {  // scrolling or dragging over the panel: not for camera or probe
     in.scroll_zoom = in.scroll_height = in.orbit_dx = in.orbit_dy = 0.0;
   }
   if (s.glfw_device) {
@@ -208,8 +241,13 @@ Status handle_keys(Session& s, int w, int h) {
   }
   in.scroll_height = 0.0;
   in.height_steps = 0;
-  if (in.toggle_panel) s.panel->toggle();
+  if (in.toggle_panel) s.ui->panel().toggle();
   in.toggle_panel = false;
+  // H or ? toggles the help; any other key hides it (the person has started).
+  if (in.toggle_help) s.ui->toggle_help();
+  else if (in.key_presses > 0) s.ui->hide_help();
+  in.toggle_help = false;
+  in.key_presses = 0;
   if (in.toggle_probe) s.tune->renderer().set_show_probe(!s.tune->renderer().show_probe());
   in.toggle_probe = false;
   Camera cam = s.tune->renderer().scene().camera;
@@ -252,17 +290,36 @@ void print_summary(const Session& s) {
   else std::printf("latency sample->frame p50 %.1f ms p99 %.1f ms\n", lat.p50, lat.p99);
 }
 
+// Readouts, help and panel over the frame, placed around its shadow; drawn after the
+// screenshots are read back, so they are never in them.
+Status draw_overlays(const RunArgs& a, Session& s, const HapticState& st, std::uint64_t frame, double now_s) {
+  const bool refresh = now_s - s.readouts_s >= kReadoutPeriodS;
+  int w = 0, h = 0;  // ImGui's units: window coordinates, not framebuffer pixels
+  glfwGetWindowSize(s.ctx->window(), &w, &h);
+  auto shadow = measure_frame_shadow(s.tune->renderer(), w, h, refresh);
+  if (!shadow) return shadow.error();
+  if (refresh) {
+    s.readouts = readouts(s, st, shadow.value());
+    glfwSetWindowTitle(s.ctx->window(), title_summary(s.readouts).c_str());
+    s.readouts_s = now_s;
+  }
+  UiFrameReport report = s.ui->draw(s.readouts, shadow.value(), *s.tune, now_s);
+  report.frame = frame;
+  if (!a.ui_report.empty()) s.ui_frames.push_back(report);
+  return ok_status();
+}
+
 Status window_loop(const RunArgs& a, Session& s) {
   GLFWwindow* win = s.ctx->window();
   const auto t0 = std::chrono::steady_clock::now();
-  double last_title = -1.0, last_flush = 0.0, last_watch = 0.0;
+  double last_flush = 0.0, last_watch = 0.0;
   for (std::uint64_t frame = 0;; ++frame) {
     const auto f0 = std::chrono::steady_clock::now();
     const double now_s = std::chrono::duration<double>(f0 - t0).count();
     glfwPollEvents();
     if (glfwWindowShouldClose(win) || s.input.quit) break;
     if ((a.frames > 0 && static_cast<long long>(frame) >= a.frames) || (a.quit_after_s > 0 && now_s >= a.quit_after_s)) break;
-    poll_device(s, s.loop->state().read().time_s, !s.panel->wants_input());
+    poll_device(s, s.loop->state().read().time_s, !s.ui->panel().wants_input());
     HapticState st;
     if (a.watch && now_s - last_watch >= kWatchPeriodS) {
       last_watch = now_s;
@@ -273,13 +330,12 @@ Status window_loop(const RunArgs& a, Session& s) {
     glfwGetFramebufferSize(win, &w, &h);
     present_to_default_framebuffer(s.tune->renderer(), w, h);
     if (Status r = handle_keys(s, w, h); !r) return r;  // screenshots read GL_BACK before the swap
-    s.panel->draw(*s.tune);  // after the screenshots: the panel is never in them
-    s.input.keys_captured = s.panel->wants_input();
+    if (Status r = draw_overlays(a, s, st, frame, now_s); !r) return r;  // after the screenshots
+    s.input.keys_captured = s.ui->panel().wants_input();
     glfwSwapBuffers(win);
     const auto f1 = std::chrono::steady_clock::now();
     s.frame_ms.push_back(std::chrono::duration<double, std::milli>(f1 - f0).count());
     if (st.have_sample) s.latency_ms.push_back(static_cast<double>(f1.time_since_epoch().count() - st.sample_clock_ns) * 1e-6);
-    if (now_s - last_title > 0.25) { update_title(s, st, s.frame_ms.back()); last_title = now_s; }
     if (s.recorder && now_s - last_flush >= 1.0) {  // a crash loses at most the last second
       if (Status r = s.recorder->flush(); !r) return r;
       last_flush = now_s;
@@ -309,6 +365,11 @@ int run(const cli::Command& cmd, const RunArgs& a) {
     const std::string json = stats_json(r.stats(), gl::backend_name(s.ctx->backend()), s.ctx->renderer(),
                                         static_cast<int>(s.frame_ms.size()));
     if (Status st = write_file_atomic(a.stats_path, json); !st) return cmd.fail(st.error());
+  }
+  if (!a.ui_report.empty()) {
+    int w = 0, h = 0;
+    glfwGetWindowSize(s.ctx->window(), &w, &h);
+    if (Status st = write_file_atomic(a.ui_report, ui_report_json(w, h, s.ui_frames)); !st) return cmd.fail(st.error());
   }
   if (!a.quiet) print_summary(s);
   return cli::kExitOk;

@@ -2,17 +2,12 @@
 
 #include <cfloat>
 
-#define GLFW_INCLUDE_NONE
-#include <GLFW/glfw3.h>
 #include <imgui.h>
-#include <backends/imgui_impl_glfw.h>
-#include <backends/imgui_impl_opengl3.h>
 
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
 
-#include "gl/gl.h"
 #include "reference/modulation.h"
 #include "tune/overrides_file.h"
 
@@ -68,11 +63,15 @@ struct ActiveEdit {
 };
 ActiveEdit g_active;  // the single item ImGui can have active; render thread only
 
-bool slider(const char* label, const std::string& key, float* v, int n, float lo, float hi, bool log) {
+// The label on its own line (wrapped, never cut), the slider below it across the panel.
+bool slider(const std::string& label, const std::string& key, float* v, int n, float lo, float hi, bool log) {
   if (g_active.key == key) std::copy(g_active.value, g_active.value + n, v);
+  ImGui::TextWrapped("%s", label.c_str());
+  ImGui::SetNextItemWidth(-FLT_MIN);
+  const std::string id = "##" + key;
   const ImGuiSliderFlags flags = log ? ImGuiSliderFlags_Logarithmic : 0;
-  if (n == 1) ImGui::SliderFloat(label, v, lo, hi, "%.4g", flags);
-  else ImGui::DragFloat3(label, v, (hi - lo) / 400.f, lo, hi, "%.3g");
+  if (n == 1) ImGui::SliderFloat(id.c_str(), v, lo, hi, "%.4g", flags);
+  else ImGui::DragFloat3(id.c_str(), v, (hi - lo) / 400.f, lo, hi, "%.3g");
   if (ImGui::IsItemActive()) {
     g_active.key = key;
     std::copy(v, v + n, g_active.value);
@@ -81,22 +80,24 @@ bool slider(const char* label, const std::string& key, float* v, int n, float lo
   return ImGui::IsItemDeactivatedAfterEdit();
 }
 
+// A curve over x in [x_lo, x_hi] whose tooltip names the axis value under the mouse in its
+// unit ("d = 2.50 mm: 0.431") instead of ImGui's sample index (SetTooltip replaces the tooltip
+// PlotLines just made). The sample under the mouse is found as PlotLines finds it.
+void curve(const char* id, const float* y, int n, const char* caption, double x_lo, double x_hi,
+           const char* x_name, const char* x_unit, const char* y_name) {
+  ImGui::TextWrapped("%s", caption);  // above, not inside the plot: a narrow panel would cut it
+  ImGui::SetNextItemWidth(-FLT_MIN);
+  ImGui::PlotLines(id, y, n, 0, nullptr, 0.f, 1.f, ImVec2(0, 70));
+  if (!ImGui::IsItemHovered()) return;
+  const float pad = ImGui::GetStyle().FramePadding.x;
+  const float x0 = ImGui::GetItemRectMin().x + pad, x1 = ImGui::GetItemRectMax().x - pad;
+  const float t = std::clamp((ImGui::GetIO().MousePos.x - x0) / std::max(x1 - x0, 1.f), 0.f, 0.9999f);
+  const int i = static_cast<int>(t * n);
+  const double x = x_lo + (x_hi - x_lo) * i / (n - 1);
+  ImGui::SetTooltip("%s = %.4g %s\n%s %.3f", x_name, x, x_unit, y_name, y[i]);
+}
+
 }  // namespace
-
-TunePanel::TunePanel(GLFWwindow* window) {
-  IMGUI_CHECKVERSION();
-  ImGui::CreateContext();
-  ImGui::GetIO().IniFilename = nullptr;  // no imgui.ini next to the user's files
-  ImGui::StyleColorsDark();
-  ImGui_ImplGlfw_InitForOpenGL(window, true);
-  ImGui_ImplOpenGL3_Init("#version 450 core");
-}
-
-TunePanel::~TunePanel() {
-  ImGui_ImplOpenGL3_Shutdown();
-  ImGui_ImplGlfw_Shutdown();
-  ImGui::DestroyContext();
-}
 
 bool TunePanel::wants_input() const {
   return visible_ && (ImGui::GetIO().WantCaptureMouse || ImGui::GetIO().WantCaptureKeyboard);
@@ -123,7 +124,7 @@ void TunePanel::material_section(TuneSession& session) {
   for (const Param& p : kMaterialParams) {
     float v = static_cast<float>(p.get(m));
     const std::string label = std::string(p.key) + (p.unit[0] ? std::string(" (") + p.unit + ")" : "");
-    if (slider(label.c_str(), prefix + p.key, &v, 1, p.lo, p.hi, p.log)) apply(session, prefix + p.key, number(v));
+    if (slider(label, prefix + p.key, &v, 1, p.lo, p.hi, p.log)) apply(session, prefix + p.key, number(v));
   }
   float c = static_cast<float>(scene.render.weight_exponent);
   if (slider("weight exponent c", "render.weight_exponent", &c, 1, 1.f, 100.f, false))
@@ -137,7 +138,9 @@ void TunePanel::probe_camera_section(TuneSession& session) {
   float vel[3] = {float(scene.probe.velocity.x), float(scene.probe.velocity.y), float(scene.probe.velocity.z)};
   if (slider("probe velocity (mm/s)", "probe.velocity", vel, 3, -2000.f, 2000.f, false))
     apply(session, "probe.velocity", vec_text(vel));
-  ImGui::TextDisabled("probe position follows the device (mouse); velocity too while it moves");
+  ImGui::PushStyleColor(ImGuiCol_Text, ImGui::GetStyle().Colors[ImGuiCol_TextDisabled]);
+  ImGui::TextWrapped("probe position follows the device (mouse); velocity too while it moves");
+  ImGui::PopStyleColor();
   float fov = static_cast<float>(scene.camera.fov_y_deg);
   if (slider("camera fov_y (deg)", "camera.fov_y_deg", &fov, 1, 5.f, 120.f, false))
     apply(session, "camera.fov_y_deg", number(fov));
@@ -161,25 +164,28 @@ void TunePanel::plots(const TuneSession& session) {
   }
   char caption[96];
   std::snprintf(caption, sizeof caption, "intensity vs distance, -1..%.0f mm", d_max);
-  ImGui::PlotLines("##intensity", intensity, kSamples, 0, caption, 0.f, 1.f, ImVec2(0, 70));
-  char gain_caption[96];
-  std::snprintf(gain_caption, sizeof gain_caption, "amplitude gain vs speed, 0..%.0f mm/s", v_max);
-  ImGui::PlotLines("##gain", gain, kSamples, 0, gain_caption, 0.f, 1.f, ImVec2(0, 70));
+  curve("##intensity", intensity, kSamples, caption, -1.0, d_max, "d", "mm", "intensity");
+  std::snprintf(caption, sizeof caption, "amplitude gain vs speed, 0..%.0f mm/s", v_max);
+  curve("##gain", gain, kSamples, caption, 0.0, v_max, "speed", "mm/s", "gain");
   ImGui::Text("speed gain this frame: %.3f", session.renderer().stats().speed_gain);
 }
 
-void TunePanel::draw(TuneSession& session) {
-  if (!visible_) return;
-  ImGui_ImplOpenGL3_NewFrame();
-  ImGui_ImplGlfw_NewFrame();
-  ImGui::NewFrame();
-  ImGui::SetNextWindowPos(ImVec2(8, 8), ImGuiCond_FirstUseEver);
-  ImGui::SetNextWindowSize(ImVec2(420, 0), ImGuiCond_FirstUseEver);
-  // Never taller than the window (a 512-pixel window cannot show every section at once): the
-  // panel scrolls instead, so the curves and the save button stay reachable.
-  const float max_h = std::max(ImGui::GetIO().DisplaySize.y - 16.f, 100.f);
-  ImGui::SetNextWindowSizeConstraints(ImVec2(200, 0), ImVec2(FLT_MAX, max_h));
-  ImGui::Begin("parameters (F1)");
+UiRect TunePanel::draw(TuneSession& session, const UiRect& dock) {
+  ImGui::SetNextWindowPos(ImVec2(dock.x0, dock.y0), ImGuiCond_Always);
+  ImGui::SetNextWindowSize(ImVec2(dock.width(), dock.height()), ImGuiCond_Always);
+  constexpr ImGuiWindowFlags kDocked = ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize |
+                                       ImGuiWindowFlags_NoSavedSettings;
+  // Taller content than the window scrolls inside the strip (a 512-pixel window cannot show
+  // every section at once), so the curves and the save button stay reachable.
+  const bool open = ImGui::Begin("parameters (F1)", nullptr, kDocked);
+  collapsed_ = ImGui::IsWindowCollapsed();
+  const ImVec2 pos = ImGui::GetWindowPos(), size = ImGui::GetWindowSize();
+  if (open) contents(session);
+  ImGui::End();
+  return UiRect::at(pos.x, pos.y, size.x, size.y);
+}
+
+void TunePanel::contents(TuneSession& session) {
   if (!session.last_error().empty()) {  // reload errors are long (file:line + driver log): wrap
     ImGui::PushStyleColor(ImGuiCol_Text, ImVec4(1, 0.4f, 0.3f, 1));
     ImGui::TextWrapped("reload failed, last good state kept: %s", session.last_error().c_str());
@@ -195,10 +201,6 @@ void TunePanel::draw(TuneSession& session) {
     std::printf("%s\n", status_.c_str());
   }
   ImGui::TextWrapped("%s", status_.c_str());
-  ImGui::End();
-  ImGui::Render();
-  glBindFramebuffer(GL_FRAMEBUFFER, 0);
-  ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
 }
 
 }  // namespace ps

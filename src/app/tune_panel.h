@@ -4,44 +4,49 @@
 // overrides". Edits go through TuneSession::set, i.e. exactly a --set, and apply to the next
 // frame. Drawn after screenshots are taken, so it never appears in them.
 //
-// ImGui backends: Debian's imgui_impl_glfw.cpp and imgui_impl_opengl3.cpp, the latter built
-// with IMGUI_IMPL_OPENGL_LOADER_CUSTOM on our GL pointer table (gl/gl.h) instead of its own
-// dlopen("libGL") loader: one loader for the whole process. It saves and restores the GL state
-// it touches, so the renderer's passes are unaffected.
+// Docked: a full-height strip along one side of the window, whose place app/ui_layout.h picks
+// (away from the pseudo-shadow); collapsible to its title bar. Every label sits on its own line
+// above its slider, wrapped if the strip is narrow, so no name is ever cut; units are in the
+// slider's value text ("0.5 mm") and in the curves' tooltips (the axis value under the mouse).
+//
+// The ImGui context and frame belong to WindowUi (app/hud.h), which draws the panel in the
+// same frame as the readouts and the help.
 #pragma once
 
 #include <memory>
 #include <string>
 
+#include "app/ui_layout.h"
 #include "tune/tune_session.h"
-
-struct GLFWwindow;
 
 namespace ps {
 
 class TunePanel {
  public:
-  // Installs ImGui's GLFW callbacks, chained to the ones already installed (window input).
-  explicit TunePanel(GLFWwindow* window);
-  ~TunePanel();
+  TunePanel() = default;
   TunePanel(const TunePanel&) = delete;
   TunePanel& operator=(const TunePanel&) = delete;
 
   void toggle() { visible_ = !visible_; }
   bool visible() const { return visible_; }
+  // Collapsed to its title bar (the last frame's state: ImGui's collapse arrow toggles it).
+  bool collapsed() const { return collapsed_; }
   // True while the panel has the mouse/keyboard (the probe should then ignore them).
   bool wants_input() const;
 
-  // Builds and draws the panel into the current framebuffer; applies edits to `session`.
-  void draw(TuneSession& session);
+  // Inside an ImGui frame: builds the panel in `dock` (window pixels) and applies edits to
+  // `session`. Returns the rectangle it covers (its title bar only when collapsed).
+  UiRect draw(TuneSession& session, const UiRect& dock);
 
  private:
+  void contents(TuneSession& session);
   void material_section(TuneSession& session);
   void probe_camera_section(TuneSession& session);
   void plots(const TuneSession& session);
   void apply(TuneSession& session, const std::string& key, const std::string& value);
 
   bool visible_ = false;
+  bool collapsed_ = false;
   int material_ = 0;
   std::string status_;
 };

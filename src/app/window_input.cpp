@@ -14,6 +14,12 @@ WindowInput& input_of(GLFWwindow* w) { return *static_cast<WindowInput*>(glfwGet
 
 void on_key(GLFWwindow* w, int key, int, int action, int mods) { handle_key(input_of(w), key, action, mods); }
 
+// '?' by the character it types, whatever the keyboard layout puts it on.
+void on_char(GLFWwindow* w, unsigned int codepoint) {
+  WindowInput& in = input_of(w);
+  if (codepoint == '?' && !in.keys_captured) in.toggle_help = true;
+}
+
 void on_scroll(GLFWwindow* w, double, double dy) {
   const bool shift = glfwGetKey(w, GLFW_KEY_LEFT_SHIFT) == GLFW_PRESS ||
                      glfwGetKey(w, GLFW_KEY_RIGHT_SHIFT) == GLFW_PRESS;
@@ -41,12 +47,14 @@ void on_cursor(GLFWwindow* w, double x, double y) {
 
 void handle_key(WindowInput& in, int key, int action, int) {
   if (action != GLFW_PRESS && action != GLFW_REPEAT) return;
+  if (action == GLFW_PRESS) ++in.key_presses;
   if (key == GLFW_KEY_F1 && action == GLFW_PRESS) in.toggle_panel = true;
   if (in.keys_captured) return;  // the user is typing into the parameter panel
   // The height keys step on every press and keep stepping while held (the system's key repeat).
   if (key == GLFW_KEY_PAGE_UP || key == GLFW_KEY_UP) ++in.height_steps;
   if (key == GLFW_KEY_PAGE_DOWN || key == GLFW_KEY_DOWN) --in.height_steps;
   if (action != GLFW_PRESS) return;  // the other keys act once per press
+  if (key == GLFW_KEY_H) in.toggle_help = true;
   if (key == GLFW_KEY_S) ++in.screenshots;
   if (key == GLFW_KEY_M) in.toggle_capture = true;
   if (key == GLFW_KEY_P) in.toggle_probe = true;
@@ -62,6 +70,7 @@ void handle_scroll(WindowInput& in, double dy, bool shift) {
 void install_window_input(GLFWwindow* window, WindowInput& input) {
   glfwSetWindowUserPointer(window, &input);
   glfwSetKeyCallback(window, on_key);
+  glfwSetCharCallback(window, on_char);
   glfwSetScrollCallback(window, on_scroll);
   glfwSetMouseButtonCallback(window, on_button);
   glfwSetCursorPosCallback(window, on_cursor);

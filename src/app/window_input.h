@@ -19,6 +19,8 @@ struct WindowInput {
   bool quit = false;            // Esc / Q
   bool toggle_panel = false;    // F1: parameter panel
   bool toggle_probe = false;    // P: draw the probe itself (the displayed proxy)
+  bool toggle_help = false;     // H or ?: the help overlay
+  int key_presses = 0;          // every key pressed (any key hides the help overlay)
   bool keys_captured = false;   // set by the panel while it has the keyboard: S/M/Q ignored
   bool dragging = false;        // right button held
   double last_x = 0.0, last_y = 0.0;

@@ -1,0 +1,156 @@
+#include "app/hud.h"
+
+#define GLFW_INCLUDE_NONE
+#include <GLFW/glfw3.h>
+#include <imgui.h>
+#include <backends/imgui_impl_glfw.h>
+#include <backends/imgui_impl_opengl3.h>
+
+#include <cmath>
+#include <cstdarg>
+#include <cstdio>
+
+#include "app/run_keys.h"
+#include "gl/gl.h"
+
+namespace ps {
+
+namespace {
+
+// Scene names longer than this are cut ("table5_1_constr..."): the box stays narrow.
+constexpr size_t kMaxSceneChars = 16;
+
+std::string line(const char* name, const char* fmt, ...) __attribute__((format(printf, 2, 3)));
+std::string line(const char* name, const char* fmt, ...) {
+  char value[96];
+  va_list args;
+  va_start(args, fmt);
+  std::vsnprintf(value, sizeof value, fmt, args);
+  va_end(args);
+  char out[128];
+  std::snprintf(out, sizeof out, "%-12s%s", name, value);  // the font is monospaced: columns align
+  return out;
+}
+
+std::string distance_text(const HudReadouts& r) {
+  if (!r.distance_mm) return "out of reach";
+  if (*r.distance_mm <= 0.0) return "touching";
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%.1f mm", *r.distance_mm);
+  return buf;
+}
+
+std::string help_text() {
+  std::string text = run_keys_text("", 2);
+  text += "\n";
+  for (const char* l : shadow_legend()) text += std::string(l) + "\n";
+  text.pop_back();
+  return text;
+}
+
+// A box of text at `rect` that takes no input, so a click on it reaches the probe and camera.
+UiRect text_box(const char* id, const UiRect& rect, const std::string& text, float bg_alpha) {
+  constexpr ImGuiWindowFlags kOverlay = ImGuiWindowFlags_NoDecoration | ImGuiWindowFlags_NoInputs |
+                                        ImGuiWindowFlags_NoSavedSettings | ImGuiWindowFlags_NoFocusOnAppearing |
+                                        ImGuiWindowFlags_NoNav | ImGuiWindowFlags_NoMove;
+  ImGui::SetNextWindowPos(ImVec2(rect.x0, rect.y0), ImGuiCond_Always);
+  ImGui::SetNextWindowSize(ImVec2(rect.width(), rect.height()), ImGuiCond_Always);
+  ImGui::SetNextWindowBgAlpha(bg_alpha);
+  ImGui::Begin(id, nullptr, kOverlay);
+  ImGui::TextUnformatted(text.c_str());
+  const ImVec2 pos = ImGui::GetWindowPos(), size = ImGui::GetWindowSize();
+  ImGui::End();
+  return UiRect::at(pos.x, pos.y, size.x, size.y);
+}
+
+// The box a text needs: the text's extent plus the window padding on each side.
+ImVec2 box_size(const std::string& text) {
+  const ImVec2 t = ImGui::CalcTextSize(text.c_str());
+  const ImVec2 pad = ImGui::GetStyle().WindowPadding;
+  return ImVec2(std::ceil(t.x + 2.f * pad.x), std::ceil(t.y + 2.f * pad.y));
+}
+
+}  // namespace
+
+std::vector<std::string> hud_lines(const HudReadouts& r) {
+  std::string scene = r.scene;
+  if (scene.size() > kMaxSceneChars) scene = scene.substr(0, kMaxSceneChars - 3) + "...";
+  std::vector<std::string> out = {
+      line("scene", "%s", scene.c_str()),
+      line("distance", "%s", distance_text(r).c_str()),
+      line("penetration", "%.2f mm", r.penetration_mm),
+      line("contact", "%s", r.contact ? "yes" : "no"),
+      line("force", "%.2f N", r.force_n),
+      line("speed", "%.0f mm/s", r.speed_mm_s),
+      line("frame", "%.1f ms", r.frame_ms),
+      line("haptic", "%.0f Hz", r.haptic_hz),
+      line("jitter p99", "%.0f us", r.jitter_p99_us),
+  };
+  if (!r.error.empty()) out.push_back(line("reload", "FAILED (F1)"));
+  return out;
+}
+
+std::string title_summary(const HudReadouts& r) {
+  const std::string head = "pseudoshadow \u2014 " + r.scene + " \u2014 ";
+  if (!r.error.empty()) return head + "RELOAD FAILED (last good state kept): " + r.error;
+  return head + distance_text(r);
+}
+
+WindowUi::WindowUi(GLFWwindow* window) {
+  IMGUI_CHECKVERSION();
+  ImGui::CreateContext();
+  ImGui::GetIO().IniFilename = nullptr;  // no imgui.ini next to the user's files
+  ImGui::StyleColorsDark();
+  ImGui_ImplGlfw_InitForOpenGL(window, true);
+  ImGui_ImplOpenGL3_Init("#version 450 core");
+}
+
+WindowUi::~WindowUi() {
+  ImGui_ImplOpenGL3_Shutdown();
+  ImGui_ImplGlfw_Shutdown();
+  ImGui::DestroyContext();
+}
+
+UiFrameReport WindowUi::draw(const HudReadouts& readouts, const ShadowMeasure& shadow, TuneSession& session,
+                             double now_s) {
+  if (help_timeout_ && now_s >= kHelpSeconds) hide_help();
+  ImGui_ImplOpenGL3_NewFrame();
+  ImGui_ImplGlfw_NewFrame();
+  ImGui::NewFrame();
+  std::string hud_text;
+  for (const std::string& l : hud_lines(readouts)) hud_text += l + "\n";
+  hud_text.pop_back();
+  const std::string help = help_text();
+  const ImVec2 display = ImGui::GetIO().DisplaySize, hud_size = box_size(hud_text), help_size = box_size(help);
+  UiLayoutInput in;
+  in.width = display.x;
+  in.height = display.y;
+  in.shadow = shadow.bbox;
+  in.panel = panel_.visible();
+  in.panel_width = panel_width_for(display.x);
+  in.panel_height = panel_.collapsed() ? ImGui::GetFrameHeight() : display.y;
+  in.hud_w = hud_size.x;
+  in.hud_h = hud_size.y;
+  in.help = help_;
+  in.help_w = help_size.x;
+  in.help_h = help_size.y;
+  in.last = placement_;
+  const UiLayout layout = layout_ui(in);
+  placement_ = layout.placement;
+
+  UiFrameReport report;
+  report.shadow = shadow.bbox;
+  if (layout.panel) {
+    UiRect dock = *layout.panel;
+    dock.y1 = display.y;  // the expanded size; a collapsed panel draws its title bar only
+    report.panel = panel_.draw(session, dock);
+  }
+  if (layout.hud) report.hud = text_box("##readouts", *layout.hud, hud_text, 0.65f);
+  if (layout.help) report.help = text_box("##help", *layout.help, help, 0.8f);
+  ImGui::Render();
+  glBindFramebuffer(GL_FRAMEBUFFER, 0);
+  ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
+  return report;
+}
+
+}  // namespace ps
