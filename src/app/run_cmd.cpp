@@ -98,6 +98,7 @@ struct Session {  // everything the window loop touches, grouped by owner thread
   std::unique_ptr<Device> device;
   GlfwInputDevice* glfw_device = nullptr;  // == device.get() for mouse/gamepad
   SteadyClock clock;
+  std::unique_ptr<world::HapticScene> haptic_scene;  // before the loop: it must outlive the haptic thread
   std::unique_ptr<HapticLoop> loop;
   std::unique_ptr<SampleRecorder> recorder;
   WindowInput input;
@@ -135,7 +136,10 @@ Status open_session(const RunArgs& a, Scene scene, Session& s) {
   if (Status st = open_device(a, s); !st) return st;
   HapticLoopParams params;
   params.realtime_priority = static_cast<int>(a.realtime);
-  s.loop = std::make_unique<HapticLoop>(*s.device, s.clock, params);
+  auto haptic_scene = world::HapticScene::build(s.tune->renderer().scene());
+  if (!haptic_scene) return haptic_scene.error();
+  s.haptic_scene = std::make_unique<world::HapticScene>(std::move(haptic_scene.value()));
+  s.loop = std::make_unique<HapticLoop>(*s.device, s.clock, params, s.haptic_scene.get());
   if (!a.record.empty()) {
     s.recorder = std::make_unique<SampleRecorder>(a.record);
     s.loop->set_recorder(s.recorder.get());
