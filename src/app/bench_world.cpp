@@ -124,6 +124,23 @@ void BM_ClosestLocal(benchmark::State& state, Fixture& (*fixture)()) {
   Fixture& f = fixture();
   run(state, f, [&](const glm::dvec3& p) { return f.bvh.closest(p, kQueryRadiusMm).visited; });
 }
+// The haptic loop's pattern: consecutive queries 0.05 mm apart (50 mm/s at 1 kHz), along 5 mm
+// strokes that start at the query points above (so they stay near the surface), each query
+// starting from the previous hit (MeshBvh::closest's hint).
+void BM_ClosestCoherent(benchmark::State& state, Fixture& (*fixture)()) {
+  Fixture& f = fixture();
+  MeshHit last;
+  std::size_t k = 0;
+  double along = 0.0;
+  run(state, f, [&](const glm::dvec3&) {
+    const glm::dvec3 a = f.points[k % f.points.size()], b = f.points[(k + 1) % f.points.size()];
+    const glm::dvec3 dir = glm::normalize(b - a + glm::dvec3(1e-9, 0.0, 0.0));
+    const glm::dvec3 p = a + along * dir;
+    if ((along += 0.05) > 5.0) { along = 0.0; ++k; }
+    last = f.bvh.closest(p, kQueryRadiusMm, &last);
+    return last.visited;
+  });
+}
 void BM_ClosestUnlimited(benchmark::State& state, Fixture& (*fixture)()) {
   Fixture& f = fixture();
   run(state, f, [&](const glm::dvec3& p) { return f.bvh.closest(p, 1e9).visited; });
@@ -167,6 +184,8 @@ void BM_GodObjectMoveSuzanne(benchmark::State& state) {
 
 BENCHMARK_CAPTURE(BM_ClosestLocal, suzanne, &suzanne);
 BENCHMARK_CAPTURE(BM_ClosestLocal, torus_102k, &torus100k);
+BENCHMARK_CAPTURE(BM_ClosestCoherent, suzanne, &suzanne);
+BENCHMARK_CAPTURE(BM_ClosestCoherent, torus_102k, &torus100k);
 BENCHMARK_CAPTURE(BM_ClosestUnlimited, suzanne, &suzanne);
 BENCHMARK_CAPTURE(BM_ClosestUnlimited, torus_102k, &torus100k);
 BENCHMARK_CAPTURE(BM_ClosestBruteForce, suzanne, &suzanne);

@@ -71,9 +71,10 @@ glm::dvec3 GodObject::constrained_target(const glm::dvec3& goal, const Plane* pl
 }
 
 // Distance from p to the nearest surface within `limit`, minus R (infinity when none).
-double GodObject::gap(const glm::dvec3& p, double limit, Contact& c, std::uint32_t& facets) const {
-  c = scene_.closest(p, radius_ + limit);
+double GodObject::gap(const glm::dvec3& p, double limit, Contact& c, std::uint32_t& facets) {
+  c = scene_.closest(p, radius_ + limit, &hint_);
   facets += c.facets_visited;
+  if (c.mesh_hit.hit) hint_.mesh_hit = c.mesh_hit;
   return c.hit ? c.distance_mm - radius_ : std::numeric_limits<double>::infinity();
 }
 
@@ -81,7 +82,7 @@ double GodObject::gap(const glm::dvec3& p, double limit, Contact& c, std::uint32
 // along (centre - nearest point). The centre moves less than R, so it cannot cross a surface
 // (distance is 1-Lipschitz and was >= R - epsilon): the push-out direction points to the side
 // the proxy came from. False (p unchanged) if the pushed-out sphere still overlaps something.
-bool GodObject::slide(glm::dvec3& p, const glm::dvec3& target, std::uint32_t& facets) const {
+bool GodObject::slide(glm::dvec3& p, const glm::dvec3& target, std::uint32_t& facets) {
   const glm::dvec3 dir = target - p;
   const double len = glm::length(dir);
   const double s = std::min(len, params_.slide_step_fraction * radius_);

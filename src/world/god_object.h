@@ -62,8 +62,8 @@ class GodObject {
     glm::dvec3 n;
     double d;  // n . x >= d
   };
-  double gap(const glm::dvec3& p, double limit, Contact& c, std::uint32_t& facets) const;
-  bool slide(glm::dvec3& p, const glm::dvec3& target, std::uint32_t& facets) const;
+  double gap(const glm::dvec3& p, double limit, Contact& c, std::uint32_t& facets);
+  bool slide(glm::dvec3& p, const glm::dvec3& target, std::uint32_t& facets);
   glm::dvec3 constrained_target(const glm::dvec3& goal, const Plane* planes, int count,
                                 const glm::dvec3& fallback) const;
 
@@ -72,6 +72,7 @@ class GodObject {
   double radius_ = 0.0;
   glm::dvec3 proxy_{0.0};
   bool initialized_ = false;
+  Contact hint_;  // last mesh hit: starts the next query's search radius (local model)
 };
 
 }  // namespace ps::world

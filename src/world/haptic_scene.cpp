@@ -87,7 +87,7 @@ Contact HapticScene::closest_analytic(const Shape& s, const glm::dvec3& p) const
   return c;
 }
 
-Contact HapticScene::closest(const glm::dvec3& p, double max_distance_mm) const {
+Contact HapticScene::closest(const glm::dvec3& p, double max_distance_mm, const Contact* hint) const {
   Contact best;
   double limit = max_distance_mm;
   for (const Shape& s : shapes_) {
@@ -99,8 +99,9 @@ Contact HapticScene::closest(const glm::dvec3& p, double max_distance_mm) const 
       limit = c.distance_mm;
     }
   }
-  const MeshHit h = meshes_.closest(p, limit);
+  const MeshHit h = meshes_.closest(p, limit, hint != nullptr ? &hint->mesh_hit : nullptr);
   best.facets_visited = h.visited;
+  if (h.hit) best.mesh_hit = h;
   if (h.hit && h.distance_mm <= limit) {
     best.hit = true;
     best.surface = mesh_surface_[h.mesh];

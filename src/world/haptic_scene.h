@@ -27,6 +27,7 @@ struct Contact {
   glm::dvec3 shaded_normal{0.0, 0.0, 1.0};  // force-shading normal (== normal on analytic shapes)
   double distance_mm = 0.0;
   std::uint32_t facets_visited = 0;  // mesh triangles examined by this query (local model)
+  MeshHit mesh_hit;                  // the mesh hit (a hint for the next query nearby)
 };
 
 // The same XYZ Euler convention as scene/mesh.cpp (R = Rz Ry Rx, degrees), so an analytic
@@ -39,7 +40,8 @@ class HapticScene {
   static Result<HapticScene> build(const Scene& scene);
 
   // Closest point on any touchable surface within max_distance_mm of p (hit = false if none).
-  Contact closest(const glm::dvec3& p, double max_distance_mm) const;
+  // `hint`: an earlier Contact near p (MeshBvh::closest); same result, fewer facets examined.
+  Contact closest(const glm::dvec3& p, double max_distance_mm, const Contact* hint = nullptr) const;
 
   const HapticMaterial& material(int surface) const;  // that surface's feel
   double probe_radius_mm() const { return probe_radius_mm_; }

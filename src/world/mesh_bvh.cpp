@@ -2,6 +2,7 @@
 
 #include <embree3/rtcore.h>
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <map>
@@ -159,16 +160,23 @@ Status MeshBvh::commit() {
   return ok_status();
 }
 
-MeshHit MeshBvh::closest(const glm::dvec3& p, double max_distance_mm) const {
+MeshHit MeshBvh::closest(const glm::dvec3& p, double max_distance_mm, const MeshHit* hint) const {
   const Impl& m = *impl_;
   QueryState q{&m.geometries, p, {}, max_distance_mm * max_distance_mm};
   if (!m.scene || !m.committed || !(max_distance_mm > 0.0)) return q.best;
+  if (hint != nullptr && hint->hit && hint->mesh < m.geometries.size() &&
+      hint->triangle < m.geometries[hint->mesh].triangles.size()) {
+    consider(q, hint->mesh, hint->triangle);  // best so far: only closer triangles replace it
+    max_distance_mm = std::min(max_distance_mm, std::sqrt(q.best_d2));
+  }
   RTCPointQuery query;
   query.x = static_cast<float>(p.x);
   query.y = static_cast<float>(p.y);
   query.z = static_cast<float>(p.z);
   query.time = 0.0f;
-  query.radius = std::isfinite(max_distance_mm) ? static_cast<float>(max_distance_mm) : std::numeric_limits<float>::infinity();
+  query.radius = std::isfinite(max_distance_mm)
+                     ? std::nextafter(static_cast<float>(max_distance_mm), std::numeric_limits<float>::max())
+                     : std::numeric_limits<float>::infinity();
   RTCPointQueryContext context;
   rtcInitPointQueryContext(&context);
   rtcPointQuery(m.scene, &query, &context, point_query_callback, &q);

@@ -165,6 +165,7 @@ TEST(ShapesTest, TriangleClosestPointMatchesDenseBarycentricSampling) {
 void expect_bvh_matches_brute_force(const MeshBvh& bvh, glm::dvec3 lo, glm::dvec3 hi, int n) {
   std::mt19937 rng(11);
   std::uniform_real_distribution<double> ux(lo.x, hi.x), uy(lo.y, hi.y), uz(lo.z, hi.z);
+  MeshHit previous;
   for (int i = 0; i < n; ++i) {
     const glm::dvec3 p{ux(rng), uy(rng), uz(rng)};
     const MeshHit ref = bvh.closest_brute_force(p);
@@ -172,6 +173,10 @@ void expect_bvh_matches_brute_force(const MeshBvh& bvh, glm::dvec3 lo, glm::dvec
     ASSERT_TRUE(h.hit);
     // 1e-9 mm: both compute the same triangle distances in double; only ties may differ.
     EXPECT_NEAR(h.distance_mm, ref.distance_mm, 1e-9);
+    // A hint (here the previous, unrelated query's hit) never changes the answer.
+    EXPECT_NEAR(bvh.closest(p, 1e9, &previous).distance_mm, ref.distance_mm, 1e-9);
+    EXPECT_NEAR(bvh.closest(p, 1e9, &h).distance_mm, ref.distance_mm, 1e-9);
+    previous = h;
     // Radius-limited: a hit exactly when something lies within the limit.
     const double limit = 2.0;
     EXPECT_EQ(bvh.closest(p, limit).hit, ref.distance_mm <= limit);
@@ -226,6 +231,10 @@ TEST(MeshBvhTest, RadiusLimitedQueriesTouchOnlyTheLocalModel) {
   EXPECT_NEAR(local.distance_mm, overall.distance_mm, 1e-12);
   EXPECT_GE(local.visited, 1u);
   EXPECT_LE(local.visited, 4u * 50u);
+  // Continuity: starting from the hit of a query 0.1 mm away, Embree prunes with that
+  // triangle's distance from the first node on: no more triangles than without the hint.
+  const MeshHit next = bvh.closest(p + glm::dvec3(0.0, 0.1, 0.0), 9.0, &local);
+  EXPECT_LE(next.visited, local.visited);
   EXPECT_EQ(bvh.triangle_count(), 2304u);
 }
 
