@@ -11,7 +11,7 @@ readonly kPackages=(
   glslang-dev glslang-tools spirv-tools
   libopenimageio-dev openimageio-tools libpng-dev
   libgtest-dev libgmock-dev libbenchmark-dev
-  libassimp-dev assimp-testmodels libimgui-dev libtomlplusplus-dev nlohmann-json3-dev
+  libassimp-dev assimp-testmodels libembree-dev libimgui-dev libtomlplusplus-dev nlohmann-json3-dev
   libcli11-dev gnuplot-nox xvfb xauth clang libclang-rt-14-dev ccache
 )
 

@@ -25,7 +25,8 @@ std::vector<DeviceSample> circle_samples(const glm::dvec3& center, double second
 }
 
 void print_report(const HapticLoop& loop, double seconds, const std::vector<double>& latency_ms,
-                  const std::vector<double>& frame_ms) {
+                  const std::vector<double>& frame_ms, const std::vector<double>& facets,
+                  const world::HapticScene& scene) {
   const auto& periods = loop.periods_us();
   std::vector<double> jitter;
   jitter.reserve(periods.size());
@@ -38,11 +39,17 @@ void print_report(const HapticLoop& loop, double seconds, const std::vector<doub
   std::printf("jitter us:   p50 %.1f  p99 %.1f  p99.9 %.1f  max %.1f\n", j.p50, j.p99, j.p999, j.max);
   std::printf("frames:      %zu, ms p50 %.1f  p99 %.1f  max %.1f\n", f.count, f.p50, f.p99, f.max);
   std::printf("latency ms (device sample -> frame finished): p50 %.1f  p99 %.1f  max %.1f\n", l.p50, l.p99, l.max);
+  // Seed 000 Table 1: polygons in the overall model vs those a tick examined (sampled once per
+  // frame from the published state; ticks in free space count too).
+  const Percentiles fc = percentiles(facets);
+  std::printf("haptic scene: %zu analytic shapes, %zu triangles overall; local model per tick: mean %.1f  "
+              "p99 %.0f  max %.0f triangles\n",
+              scene.analytic_count(), scene.triangle_count(), fc.mean, fc.p99, fc.max);
 }
 
 // Renders flat out for `seconds` while the loop runs; per-frame time and latency in ms.
 Status measure(Renderer& renderer, HapticLoop& loop, double seconds, std::vector<double>& latency_ms,
-               std::vector<double>& frame_ms) {
+               std::vector<double>& frame_ms, std::vector<double>& facets) {
   const auto t0 = std::chrono::steady_clock::now();
   loop.start();
   for (std::uint64_t frame = 0;; ++frame) {
@@ -52,6 +59,7 @@ Status measure(Renderer& renderer, HapticLoop& loop, double seconds, std::vector
     if (Status s = drive_frame(renderer, loop, frame, st); !s) { loop.stop(); return s; }
     const auto f1 = std::chrono::steady_clock::now();  // render_frame ends with a synchronous readback
     frame_ms.push_back(std::chrono::duration<double, std::milli>(f1 - f0).count());
+    facets.push_back(st.local_facets);
     if (st.have_sample) latency_ms.push_back(static_cast<double>(f1.time_since_epoch().count() - st.sample_clock_ns) * 1e-6);
   }
   loop.stop();
@@ -59,8 +67,9 @@ Status measure(Renderer& renderer, HapticLoop& loop, double seconds, std::vector
 }
 
 constexpr const char* kDescription =
-    "Runs the 1 kHz haptic loop (synthetic device: a 30 mm circle over the surface, 1 turn/s) while\n"
-    "the renderer draws the scene flat out, and prints the loop rate, the period percentiles\n"
+    "Runs the 1 kHz haptic loop (synthetic device: a 30 mm circle around the probe's position, 1\n"
+    "turn/s; the proxy collides with the scene's haptic geometry) while the renderer draws the scene\n"
+    "flat out, and prints the loop rate, the period percentiles\n"
     "(p50/p99/p99.9/max), the jitter |period - 1 ms| and the latency device sample -> frame done.";
 
 struct BenchArgs {
@@ -88,17 +97,19 @@ int bench(const cli::Command& cmd, const BenchArgs& a) {
   auto renderer = Renderer::create(scene.value(), {});
   if (!renderer) return cmd.fail(renderer.error());
   LogDevice device(circle_samples(scene->probe.position, a.seconds + 1.0), true, "synthetic circle");
+  auto haptic_scene = world::HapticScene::build(scene.value());  // what the proxy collides with
+  if (!haptic_scene) return cmd.fail(haptic_scene.error());
   SteadyClock clock;
   HapticLoopParams params;
   params.realtime_priority = a.realtime;
-  HapticLoop loop(device, clock, params);
-  std::vector<double> latency_ms, frame_ms;
+  HapticLoop loop(device, clock, params, &haptic_scene.value());
+  std::vector<double> latency_ms, frame_ms, facets;
   const auto t0 = std::chrono::steady_clock::now();
-  if (Status s = measure(*renderer.value(), loop, a.seconds, latency_ms, frame_ms); !s) return cmd.fail(s.error());
+  if (Status s = measure(*renderer.value(), loop, a.seconds, latency_ms, frame_ms, facets); !s) return cmd.fail(s.error());
   const double elapsed = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   std::printf("bench-haptics: %s, %dx%d, %s, haptic thread %s\n", scene->path.c_str(), scene->render.width,
               scene->render.height, ctx.value()->renderer().c_str(), loop.priority().c_str());
-  print_report(loop, elapsed, latency_ms, frame_ms);
+  print_report(loop, elapsed, latency_ms, frame_ms, facets, haptic_scene.value());
   return cli::kExitOk;
 }
 

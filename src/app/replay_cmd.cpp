@@ -112,12 +112,15 @@ int replay(const cli::Command& cmd, const ReplayArgs& a) {
   if (!scene) return cmd.fail(scene.error(), cli::scene_exit_code(scene.error()));
   auto gl_state = open_renderer(a, scene.value());
   if (!gl_state) return fail(gl_state.error());
+  auto haptic_scene = world::HapticScene::build(scene.value());  // what the proxy collides with
+  if (!haptic_scene) return fail(haptic_scene.error());
   Renderer* renderer = gl_state->renderer.get();
   // A scripted pointer moves in a window the size of the image, through the scene's camera.
   if (device->pointer) device->pointer->set_view(pointer_view(*renderer, pointer_plane(*renderer)));
   ReplayOptions opt;
   opt.fps = a.fps;
   opt.record_path = a.record;
+  opt.haptic_scene = &haptic_scene.value();
   opt.progress = !a.quiet && isatty(STDERR_FILENO);
   std::vector<Image> thumbs;
   std::vector<std::string> labels;

@@ -120,6 +120,7 @@ struct Session {  // everything the window loop touches, grouped by owner thread
   GlfwInputDevice* glfw_device = nullptr;  // == device.get() for mouse/gamepad
   PointerLogDevice* pointer_device = nullptr;  // == device.get() for pointer:FILE
   SteadyClock clock;
+  std::unique_ptr<world::HapticScene> haptic_scene;  // before the loop: it must outlive the haptic thread
   std::unique_ptr<HapticLoop> loop;
   std::unique_ptr<SampleRecorder> recorder;
   WindowInput input;
@@ -166,7 +167,10 @@ Status open_session(const RunArgs& a, Scene scene, Session& s) {
   if (Status st = open_device(a, s); !st) return st;
   HapticLoopParams params;
   params.realtime_priority = static_cast<int>(a.realtime);
-  s.loop = std::make_unique<HapticLoop>(*s.device, s.clock, params);
+  auto haptic_scene = world::HapticScene::build(s.tune->renderer().scene());
+  if (!haptic_scene) return haptic_scene.error();
+  s.haptic_scene = std::make_unique<world::HapticScene>(std::move(haptic_scene.value()));
+  s.loop = std::make_unique<HapticLoop>(*s.device, s.clock, params, s.haptic_scene.get());
   if (s.glfw_device || s.pointer_device) {  // they move over the plane: distance known from the start
     s.loop->surface().publish(initial_surface_model(s.axes, s.tune->renderer().scene().probe.radius_mm));
     poll_device(s, 0.0, true);  // the first tick already has a sample

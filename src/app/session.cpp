@@ -69,7 +69,7 @@ Result<ReplayResult> replay_session(Renderer& renderer, Device& device, const Re
   const double duration = std::max(0.0, device.duration_s());
   const int frames = static_cast<int>(std::floor(duration * options.fps + 1e-9)) + 1;
   FakeClock clock;
-  HapticLoop loop(device, clock, options.haptics);
+  HapticLoop loop(device, clock, options.haptics, options.haptic_scene);
   SampleRecorder recorder(options.record_path);
   if (!options.record_path.empty()) loop.set_recorder(&recorder);
   std::uint64_t ticks_done = 0;

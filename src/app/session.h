@@ -39,6 +39,7 @@ struct ReplayOptions {
   double fps = 30.0;          // frames per second of session time
   HapticLoopParams haptics;   // the loop runs at haptics.rate_hz on a fake clock
   std::string record_path;    // non-empty: record the device stream read by the loop
+  const world::HapticScene* haptic_scene = nullptr;  // the proxy collides with it (null: the render plane)
   bool progress = false;      // "\rframe i/n" on stderr
 };
 

@@ -2,6 +2,8 @@
 
 #include <cmath>
 
+#include "world/god_object.h"
+
 namespace ps {
 
 glm::dmat3 normal_projector(const glm::dvec3& n) { return glm::outerProduct(n, n); }
@@ -57,6 +59,48 @@ ForceResult compute_force(const HapticsParams& p, const SurfaceModel& m, const g
     glm::dvec3 proxy = prev_proxy_mm;
     f += friction(p, n, fn, x_surface, proxy, out.sticking);
     out.proxy_mm = proxy;
+  }
+  const double len = glm::length(f);
+  if (len > p.max_force_n && len > 0.0) f *= p.max_force_n / len;
+  out.force_n = f;
+  return out;
+}
+
+HapticsParams with_material(const HapticsParams& p, const HapticMaterial& m) {
+  HapticsParams q = p;
+  q.stiffness_n_per_mm = m.stiffness_n_per_mm;
+  q.stiffness_exponent = m.stiffness_exponent;
+  q.damping_n_s_per_mm = m.damping_n_s_per_mm;
+  q.static_friction = m.static_friction;
+  q.dynamic_friction = m.dynamic_friction;
+  return q;
+}
+
+ForceResult compute_proxy_force(const HapticsParams& p, world::GodObject& god, const glm::dvec3& x_mm,
+                                const glm::dvec3& v_mm_s, double time_s) {
+  ForceResult out;
+  glm::dvec3 f = external_force_n(p, time_s) - p.viscosity_n_s_per_mm * v_mm_s;
+  const glm::dvec3 stick_point = god.proxy();  // last tick's proxy: where friction holds it
+  const world::ProxyStep step = god.move(x_mm);
+  out.proxy_mm = step.proxy_mm;
+  out.facets_visited = step.facets_visited;
+  const double r = glm::length(step.proxy_mm - x_mm);
+  if (step.in_contact && r > 0.0) {
+    const HapticsParams q = with_material(p, god.scene().material(step.surface));
+    out.in_contact = true;
+    out.surface = step.surface;
+    out.penetration_mm = r;
+    const glm::dvec3 n = q.force_shading ? step.shaded_normal : (step.proxy_mm - x_mm) / r;
+    const double fn = spring_magnitude_n(q, r);
+    f += fn * n;
+    f -= q.damping_n_s_per_mm * glm::dot(n, v_mm_s) * n;
+    glm::dvec3 held = stick_point;
+    f += friction(q, step.contact_normal, fn, step.proxy_mm, held, out.sticking);
+    if (held != step.proxy_mm) {
+      const world::ProxyStep back = god.move(held);  // constrained: stops at any surface
+      out.proxy_mm = back.proxy_mm;
+      out.facets_visited += back.facets_visited;
+    }
   }
   const double len = glm::length(f);
   if (len > p.max_force_n && len > 0.0) f *= p.max_force_n / len;

@@ -11,9 +11,15 @@
 //   external      f_e = F0 + F1 sin(2 pi f t)            (seed 003, room 5)
 #pragma once
 
+#include <cstdint>
+
 #include <glm/glm.hpp>
 
+#include "scene/haptic_material.h"
+
 namespace ps {
+
+namespace world { class GodObject; }
 
 // Kept out of the scene format on purpose: these are device-side tuning values, not the look
 // of a surface; the defaults suit a desktop 3-DOF device (Falcon-class, ~9 N peak).
@@ -29,7 +35,13 @@ struct HapticsParams {
   glm::dvec3 external_fluctuation_n{0.0};   // F1, amplitude of the sinusoidal part
   double external_frequency_hz = 1.0;       // f
   double max_force_n = 8.0;                 // magnitude clamp (device safety)
+  // Haptic scene contacts: the normal force follows the interpolated vertex normal at the
+  // contact (seed 002 §6) instead of the god-object's own direction (proxy - device).
+  bool force_shading = true;
 };
+
+// The loop's values with the touched surface's feel (stiffness, exponent, damping, friction).
+HapticsParams with_material(const HapticsParams& p, const HapticMaterial& m);
 
 // Published by the render thread, read by the haptic thread (Snapshot<SurfaceModel>).
 struct SurfaceModel {
@@ -46,6 +58,8 @@ struct ForceResult {
   double penetration_mm = 0.0;
   bool in_contact = false;
   bool sticking = false;
+  int surface = -1;                 // haptic scene: the surface touched (Scene::surfaces index)
+  std::uint32_t facets_visited = 0; // haptic scene: mesh triangles examined this tick
 };
 
 glm::dmat3 normal_projector(const glm::dvec3& n);   // P = n n^T
@@ -57,6 +71,15 @@ glm::dvec3 external_force_n(const HapticsParams& p, double time_s);
 // One tick: device position x and (filtered) velocity v, the previous proxy, session time.
 ForceResult compute_force(const HapticsParams& p, const SurfaceModel& m, const glm::dvec3& x_mm,
                           const glm::dvec3& v_mm_s, const glm::dvec3& prev_proxy_mm, double time_s);
+
+// One tick against the haptic scene (docs/haptics.md, "Haptic geometry"): the god-object moves
+// toward the device x; in contact, with r = |proxy - x| and n the contact normal (force-shaded
+// when p.force_shading, else (proxy - x) / r), the touched material's spring and damping act
+// along n, and the stick/slide friction above acts on the proxy's contact plane: the stick
+// point is the previous proxy, the frictionless god-object position plays x_surface, and the
+// proxy is moved (never through a surface) to where friction leaves it.
+ForceResult compute_proxy_force(const HapticsParams& p, world::GodObject& god, const glm::dvec3& x_mm,
+                                const glm::dvec3& v_mm_s, double time_s);
 
 // Render-side update of the local model from one frame: probe_in_mm is the position given to
 // the renderer, max_penetration_mm and reference_normal come from its FrameStats; no shadow

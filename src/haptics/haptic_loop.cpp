@@ -9,13 +9,16 @@
 
 namespace ps {
 
-HapticLoop::HapticLoop(Device& device, Clock& clock, const HapticLoopParams& params)
+HapticLoop::HapticLoop(Device& device, Clock& clock, const HapticLoopParams& params,
+                       const world::HapticScene* scene)
     : device_(device), clock_(clock), params_(params),
       period_(static_cast<std::int64_t>(std::llround(1e9 / params.rate_hz))),
       sanitizer_(params.sanitizer), kalman_(params.kalman), periods_us_(params.keep_periods),
       // A HUD window is 1 s of ticks; after a stall sleep_until() runs the missed ticks back to
       // back inside one window, so room for 2 s (beyond that the HUD's p99 skips samples).
-      window_jitter_us_(2 * static_cast<std::size_t>(std::ceil(params.rate_hz)) + 16) {}
+      window_jitter_us_(2 * static_cast<std::size_t>(std::ceil(params.rate_hz)) + 16) {
+  if (scene != nullptr) god_.emplace(*scene);
+}
 
 HapticLoop::~HapticLoop() { stop(); }
 
@@ -94,9 +97,11 @@ void HapticLoop::tick(Clock::Ns now) {
   if (local_.have_sample) {
     local_.position_mm = kalman_.position();
     local_.velocity_mm_s = kalman_.velocity();
-    const SurfaceModel model = surface_.read();
-    const ForceResult f = compute_force(params_.forces, model, local_.position_mm, local_.velocity_mm_s,
-                                        local_.proxy_mm, t);
+    const ForceResult f = god_ ? compute_proxy_force(params_.forces, *god_, local_.position_mm, local_.velocity_mm_s, t)
+                               : compute_force(params_.forces, surface_.read(), local_.position_mm,
+                                               local_.velocity_mm_s, local_.proxy_mm, t);
+    local_.contact_surface = f.surface;
+    local_.local_facets = f.facets_visited;
     local_.proxy_mm = f.proxy_mm;
     local_.force_n = f.force_n;
     local_.penetration_mm = f.penetration_mm;

@@ -1,5 +1,5 @@
-// The haptic loop: read device -> sanitize -> Kalman filter -> proxy + force against the local
-// surface model -> write force -> publish. Runs on its own thread at 1 kHz, scheduled with
+// The haptic loop: read device -> sanitize -> Kalman filter -> proxy + force against the haptic
+// scene (or the render thread's local plane) -> write force -> publish. Runs on its own thread at 1 kHz, scheduled with
 // clock.sleep_until(next += period) so the rate does not drift; never calls GL.
 // Exchange with the render thread, one single-writer Snapshot per direction:
 //   state()   written only by the haptic thread (HapticState), read by the render thread;
@@ -10,6 +10,7 @@
 
 #include <atomic>
 #include <cstdint>
+#include <optional>
 #include <string>
 #include <thread>
 #include <vector>
@@ -22,6 +23,7 @@
 #include "haptics/force_model.h"
 #include "haptics/kalman.h"
 #include "haptics/loop_stats.h"
+#include "world/god_object.h"
 
 namespace ps {
 
@@ -49,6 +51,8 @@ struct HapticState {
   glm::dvec3 proxy_mm{0.0};          // what the renderer shows
   glm::dvec3 force_n{0.0};
   double penetration_mm = 0.0;
+  int contact_surface = -1;          // haptic scene: surface touched (Scene::surfaces index)
+  std::uint32_t local_facets = 0;    // haptic scene: mesh triangles examined this tick
   std::uint32_t buttons = 0;
   bool have_sample = false, in_contact = false;
   double rate_hz = 0.0;              // over the last second
@@ -58,7 +62,11 @@ struct HapticState {
 
 class HapticLoop {
  public:
-  HapticLoop(Device& device, Clock& clock, const HapticLoopParams& params);
+  // With a haptic scene (not owned; it must outlive the loop) the proxy is a god-object in it
+  // (docs/haptics.md, "Haptic geometry"); without one it collides with surface(), the plane
+  // the render thread publishes (kept for callers with no scene: the plane-model tests).
+  HapticLoop(Device& device, Clock& clock, const HapticLoopParams& params,
+             const world::HapticScene* scene = nullptr);
   ~HapticLoop();
   HapticLoop(const HapticLoop&) = delete;
   HapticLoop& operator=(const HapticLoop&) = delete;
@@ -92,6 +100,7 @@ class HapticLoop {
   bool started_ = false;
   DeviceSanitizer sanitizer_;
   Kalman3 kalman_;
+  std::optional<world::GodObject> god_;  // set when a haptic scene is given
   HapticState local_;        // haptic thread's working copy
   SampleRecorder* recorder_ = nullptr;
   BoundedLog periods_us_;         // every period, for period_stats()

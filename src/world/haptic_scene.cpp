@@ -1,0 +1,122 @@
+#include "world/haptic_scene.h"
+
+#include <cassert>
+#include <cmath>
+#include <limits>
+#include <string>
+
+#include <glm/gtc/matrix_transform.hpp>
+
+#include "scene/mesh.h"
+#include "world/shapes.h"
+
+namespace ps::world {
+
+glm::dmat3 euler_xyz_deg(const glm::dvec3& rotation_deg) {
+  const glm::dvec3 r = glm::radians(rotation_deg);
+  glm::dmat4 m(1.0);
+  m = glm::rotate(m, r.z, glm::dvec3(0, 0, 1));
+  m = glm::rotate(m, r.y, glm::dvec3(0, 1, 0));
+  m = glm::rotate(m, r.x, glm::dvec3(1, 0, 0));
+  return glm::dmat3(m);
+}
+
+Result<HapticScene> HapticScene::build(const Scene& scene) {
+  HapticScene out;
+  out.probe_radius_mm_ = scene.probe.radius_mm;
+  for (std::size_t i = 0; i < scene.surfaces.size(); ++i) {
+    const Surface& s = scene.surfaces[i];
+    const int index = static_cast<int>(i);
+    const std::size_t m = static_cast<std::size_t>(s.material_index);
+    out.materials_.push_back(m < scene.materials.size() ? scene.materials[m].haptic : HapticMaterial{});
+    if (!s.touchable) continue;  // seen only
+    // A penetrable material (water, thick fluid) lets the proxy through: it acts by its
+    // viscosity inside (material forces), not as a constraint.
+    if (out.materials_.back().penetrable) continue;
+    Shape shape{s.type, index, euler_xyz_deg(s.rotation_deg), s.center, glm::dvec3(0.0), 0.0};
+    switch (s.type) {
+      case SurfaceType::kPlane:
+        shape.size = {s.size_mm.x, s.size_mm.y, 0.0};
+        shape.bound_mm = 0.5 * glm::length(s.size_mm);
+        break;
+      case SurfaceType::kSphere:
+        shape.size = {s.radius_mm, 0.0, 0.0};
+        shape.bound_mm = s.radius_mm;
+        break;
+      case SurfaceType::kBox:
+        shape.size = s.box_size_mm;
+        shape.bound_mm = 0.5 * glm::length(s.box_size_mm);
+        break;
+      case SurfaceType::kTorus:
+        shape.size = {s.radius_mm, s.minor_radius_mm, 0.0};
+        shape.bound_mm = s.radius_mm + s.minor_radius_mm;
+        break;
+      case SurfaceType::kHeightField:  // the rendered triangles: an image has no closed form
+      case SurfaceType::kMesh: {
+        Result<Mesh> mesh = build_surface_mesh(s);
+        const std::string where = scene.path + ":" + std::to_string(s.line) + ": ";
+        if (!mesh) return make_error(where + mesh.error().message);
+        if (Status st = out.meshes_.add_mesh(mesh.value()); !st) return make_error(where + st.error().message);
+        out.mesh_surface_.push_back(index);
+        continue;
+      }
+    }
+    out.shapes_.push_back(shape);
+  }
+  if (Status st = out.meshes_.commit(); !st) return st.error();
+  return out;
+}
+
+Contact HapticScene::closest_analytic(const Shape& s, const glm::dvec3& p) const {
+  const glm::dvec3 local = glm::transpose(s.rotation) * (p - s.center);
+  SurfacePoint sp;
+  switch (s.type) {
+    case SurfaceType::kPlane: sp = closest_on_plane(local, {s.size.x, s.size.y}); break;
+    case SurfaceType::kSphere: sp = closest_on_sphere(local, s.size.x); break;
+    case SurfaceType::kBox: sp = closest_on_box(local, s.size); break;
+    case SurfaceType::kTorus: sp = closest_on_torus(local, s.size.x, s.size.y); break;
+    case SurfaceType::kHeightField:
+    case SurfaceType::kMesh: assert(false && "HapticScene::closest_analytic: meshes live in the BVH"); break;
+  }
+  Contact c;
+  c.hit = true;
+  c.surface = s.surface;
+  c.point = s.rotation * sp.point + s.center;
+  c.normal = c.shaded_normal = s.rotation * sp.normal;
+  c.distance_mm = glm::length(p - c.point);
+  return c;
+}
+
+Contact HapticScene::closest(const glm::dvec3& p, double max_distance_mm, const Contact* hint) const {
+  Contact best;
+  double limit = max_distance_mm;
+  for (const Shape& s : shapes_) {
+    // Whole shape farther than the best so far: skip it without the exact query.
+    if (glm::length(p - s.center) - s.bound_mm > limit) continue;
+    const Contact c = closest_analytic(s, p);
+    if (c.distance_mm <= limit) {
+      best = c;
+      limit = c.distance_mm;
+    }
+  }
+  const MeshHit h = meshes_.closest(p, limit, hint != nullptr ? &hint->mesh_hit : nullptr);
+  best.facets_visited = h.visited;
+  if (h.hit) best.mesh_hit = h;
+  if (h.hit && h.distance_mm <= limit) {
+    best.hit = true;
+    best.surface = mesh_surface_[h.mesh];
+    best.point = h.point;
+    best.normal = h.face_normal;
+    best.shaded_normal = h.shaded_normal;
+    best.distance_mm = h.distance_mm;
+  }
+  return best;
+}
+
+const HapticMaterial& HapticScene::material(int surface) const {
+  assert(surface >= 0 && static_cast<std::size_t>(surface) < materials_.size() &&
+         "HapticScene::material: surface index out of range (a Contact with hit = false?)");
+  return materials_[static_cast<std::size_t>(surface)];
+}
+
+}  // namespace ps::world

@@ -1,0 +1,70 @@
+// The haptic scene: what the proxy collides with, built once from a parsed Scene and owned by
+// the haptic side (CPU memory only; queried at 1 kHz without GL and without waiting for a
+// frame). Planes, spheres, boxes and tori are analytic (closest point in closed form in the
+// shape's local frame); meshes and height fields are the triangles the renderer draws
+// (scene/mesh.h: build_surface_mesh) in an Embree BVH (world/mesh_bvh.h). Surfaces with
+// `touchable = false` are left out, and so are penetrable materials (the proxy passes through
+// them); invisible ones are in (a hidden object is felt).
+// closest() is const, thread-safe and allocation-free. docs/haptics.md, "Haptic geometry".
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include <glm/glm.hpp>
+
+#include "core/result.h"
+#include "scene/scene.h"
+#include "world/mesh_bvh.h"
+
+namespace ps::world {
+
+struct Contact {
+  bool hit = false;
+  int surface = -1;                // index into Scene::surfaces
+  glm::dvec3 point{0.0};           // closest surface point, mm
+  glm::dvec3 normal{0.0, 0.0, 1.0};         // geometric outward normal there
+  glm::dvec3 shaded_normal{0.0, 0.0, 1.0};  // force-shading normal (== normal on analytic shapes)
+  double distance_mm = 0.0;
+  std::uint32_t facets_visited = 0;  // mesh triangles examined by this query (local model)
+  MeshHit mesh_hit;                  // the mesh hit (a hint for the next query nearby)
+};
+
+// The same XYZ Euler convention as scene/mesh.cpp (R = Rz Ry Rx, degrees), so an analytic
+// shape sits exactly where its render mesh is drawn (tests/world checks both agree).
+glm::dmat3 euler_xyz_deg(const glm::dvec3& rotation_deg);
+
+class HapticScene {
+ public:
+  // Errors: a mesh or height field that cannot be loaded ("<scene>:<line>: ..."), Embree failures.
+  static Result<HapticScene> build(const Scene& scene);
+
+  // Closest point on any touchable surface within max_distance_mm of p (hit = false if none).
+  // `hint`: an earlier Contact near p (MeshBvh::closest); same result, fewer facets examined.
+  Contact closest(const glm::dvec3& p, double max_distance_mm, const Contact* hint = nullptr) const;
+
+  const HapticMaterial& material(int surface) const;  // that surface's feel
+  double probe_radius_mm() const { return probe_radius_mm_; }
+  std::size_t analytic_count() const { return shapes_.size(); }
+  std::size_t triangle_count() const { return meshes_.triangle_count(); }  // overall model
+  const MeshBvh& meshes() const { return meshes_; }
+
+ private:
+  struct Shape {
+    SurfaceType type;
+    int surface;
+    glm::dmat3 rotation;   // local -> world
+    glm::dvec3 center;     // mm
+    glm::dvec3 size;       // plane: (x, y, -); box: edges; sphere: (r, -, -); torus: (R, r, -)
+    double bound_mm;       // radius of a bounding sphere around center
+  };
+  Contact closest_analytic(const Shape& s, const glm::dvec3& p) const;
+
+  std::vector<Shape> shapes_;
+  MeshBvh meshes_;
+  std::vector<int> mesh_surface_;        // MeshBvh mesh index -> surface index
+  std::vector<HapticMaterial> materials_;  // per surface index
+  double probe_radius_mm_ = 0.0;
+};
+
+}  // namespace ps::world

@@ -1,0 +1,219 @@
+// The god-object proxy driven along scripted device trajectories into and along analytic
+// shapes and meshes (checked against closed-form signed distances and brute-force mesh
+// distances), force shading across mesh edges, hidden and untouchable surfaces, and the haptic
+// loop on a haptic scene.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <functional>
+
+#include "devices/sample_log.h"
+#include "haptics/haptic_loop.h"
+#include "scene/mesh.h"
+#include "world/god_object.h"
+#include "world_test_util.h"
+
+namespace ps::world {
+namespace {
+
+constexpr double kPi = 3.14159265358979323846;
+// The proxy may end a move up to contact_epsilon_mm (1e-3) inside the R-offset surface (a
+// pushed-out slide is accepted down to that gap); twice that covers double rounding.
+constexpr double kBehindTolMm = 2e-3;
+
+// Down from above onto the top (z = top) to `depth` below it, then along X and back along Y.
+std::vector<glm::dvec3> press_and_slide(double top, double depth, double half_span, double step) {
+  std::vector<glm::dvec3> path;
+  for (double z = top + 15.0; z > top - depth; z -= step) path.push_back({0.0, 0.0, z});
+  const double z = top - depth;
+  for (double x = 0.0; x < half_span; x += step) path.push_back({x, 0.0, z});
+  for (double x = half_span; x > -half_span; x -= step) path.push_back({x, 0.0, z});
+  for (double y = 0.0; y < half_span; y += step) path.push_back({-half_span, y, z});
+  return path;
+}
+
+// Drives the proxy along `path`; `clearance` is the proxy centre's signed distance to the
+// surface by an independent formula. Returns the largest |proxy - device| seen.
+double drive(const HapticScene& scene, const std::vector<glm::dvec3>& path,
+             const std::function<double(const glm::dvec3&)>& clearance, const char* what) {
+  GodObject god(scene);
+  const double r = scene.probe_radius_mm();
+  double max_offset = 0.0;
+  glm::dvec3 last = path.front();
+  god.reset(last);
+  for (const glm::dvec3& x : path) {
+    const ProxyStep s = god.move(x);
+    const double c = clearance(s.proxy_mm);
+    EXPECT_GE(c, r - kBehindTolMm) << what << ": proxy behind the surface, device at " << x.x << "," << x.y << "," << x.z;
+    // Between two samples the centre moves in a straight line; both ends at >= r - tol from
+    // the surface and a move shorter than that means the segment did not cross it either.
+    EXPECT_LT(glm::length(s.proxy_mm - last), 2.0 * (r - kBehindTolMm)) << what;
+    if (c < r - kBehindTolMm) return max_offset;  // one failure is enough output
+    last = s.proxy_mm;
+    max_offset = std::max(max_offset, glm::length(s.proxy_mm - x));
+  }
+  return max_offset;
+}
+
+TEST(GodObjectTest, NeverPassesThroughASphere) {
+  Surface s = test::analytic(SurfaceType::kSphere, {3.0, -2.0, 0.0});
+  s.radius_mm = 30.0;
+  auto scene = HapticScene::build(test::scene_with(8.0, {s}));
+  ASSERT_TRUE(scene);
+  const double max_offset = drive(*scene, press_and_slide(30.0 + 8.0, 6.0, 45.0, 0.2),
+                                  [](const glm::dvec3& p) { return glm::length(p - glm::dvec3(3, -2, 0)) - 30.0; },
+                                  "sphere");
+  EXPECT_GT(max_offset, 5.0);  // it was pressed (6 mm behind the proxy at the top)
+}
+
+TEST(GodObjectTest, NeverPassesThroughABoxAndRestsOnItsFace) {
+  Surface s = test::analytic(SurfaceType::kBox, {0.0, 0.0, -20.0}, {0.0, 0.0, 30.0});
+  s.box_size_mm = {60.0, 50.0, 40.0};
+  auto scene = HapticScene::build(test::scene_with(8.0, {s}));
+  ASSERT_TRUE(scene);
+  const glm::dmat3 rot = euler_xyz_deg(s.rotation_deg);
+  auto box_clearance = [&](const glm::dvec3& p) {  // signed distance to a box (closed form)
+    const glm::dvec3 q = glm::abs(glm::transpose(rot) * (p - s.center)) - 0.5 * s.box_size_mm;
+    return glm::length(glm::max(q, 0.0)) + std::min(std::max({q.x, q.y, q.z}), 0.0);
+  };
+  drive(*scene, press_and_slide(8.0, 4.0, 50.0, 0.2), box_clearance, "box");
+  // Frictionless, pressed 3 mm into the middle of the top face: the proxy is straight above.
+  GodObject god(*scene);
+  god.reset({5.0, 4.0, 20.0});
+  const glm::dvec3 device{5.0, 4.0, 8.0 - 3.0};
+  ProxyStep st = god.move(device);
+  EXPECT_TRUE(st.in_contact);
+  // 2e-3 mm: the contact epsilon (see kBehindTolMm).
+  EXPECT_NEAR(glm::length(st.proxy_mm - (device + glm::dvec3(0, 0, 3.0))), 0.0, kBehindTolMm);
+  EXPECT_NEAR(st.contact_normal.z, 1.0, 1e-6);
+}
+
+// Brute-force clearance of a mesh surface (every triangle), independent of the BVH.
+std::function<double(const glm::dvec3&)> mesh_clearance(const HapticScene& scene) {
+  return [&scene](const glm::dvec3& p) { return scene.meshes().closest_brute_force(p).distance_mm; };
+}
+
+TEST(GodObjectTest, NeverPassesThroughACoarseMeshSphere) {
+  const std::string obj = test::write_sphere_obj("god_sphere", 30.0, 12);
+  auto scene = HapticScene::build(test::scene_with(8.0, {test::mesh_surface(obj)}));
+  ASSERT_TRUE(scene) << scene.error().message;
+  drive(*scene, press_and_slide(30.0 + 8.0, 6.0, 45.0, 0.25), mesh_clearance(*scene), "mesh sphere");
+}
+
+TEST(GodObjectTest, NeverPassesThroughSuzanne) {
+  if (!std::filesystem::exists(test::kSuzanne)) GTEST_SKIP() << "assimp-testmodels not installed";
+  auto scene = HapticScene::build(test::scene_with(4.0, {test::mesh_surface(test::kSuzanne, glm::dvec3(0.0), 22.0)}));
+  ASSERT_TRUE(scene) << scene.error().message;
+  const MeshHit top = scene->meshes().closest_brute_force({0.0, 0.0, 100.0});
+  drive(*scene, press_and_slide(top.point.z + 4.0, 5.0, 35.0, 0.25), mesh_clearance(*scene), "Suzanne");
+}
+
+// An open octagonal tube along Y (8 flat sides, 45 degrees between neighbours), as an OBJ.
+std::string write_octagon_tube(double circumradius) {
+  const std::string path = std::string(PS_BINARY_DIR) + "/tests/world/octagon_tube.obj";
+  std::filesystem::create_directories(std::filesystem::path(path).parent_path());
+  std::ofstream out(path);
+  for (double y : {-50.0, 50.0})
+    for (int i = 0; i < 8; ++i) {
+      const double a = 2.0 * kPi * i / 8;
+      out << "v " << circumradius * std::cos(a) << ' ' << y << ' ' << circumradius * std::sin(a) << '\n';
+    }
+  for (int i = 0; i < 8; ++i) {  // quad i: ring 0 (y=-50) and ring 1 (y=+50); outward winding
+    const int a0 = 1 + i, a1 = 1 + (i + 1) % 8, b0 = 9 + i, b1 = 9 + (i + 1) % 8;
+    out << "f " << a0 << ' ' << b0 << ' ' << b1 << "\nf " << a0 << ' ' << b1 << ' ' << a1 << '\n';
+  }
+  return path;
+}
+
+// Largest angle (degrees) between the force directions of adjacent samples while the device
+// circles the tube's axis at a constant radius, 0.5 mm inside the flat sides' middles.
+double max_force_turn_deg(bool shading) {
+  const double a = 20.0, probe_r = 1.0;
+  auto scene = HapticScene::build(test::scene_with(probe_r, {test::mesh_surface(write_octagon_tube(a))}));
+  EXPECT_TRUE(scene) << scene.error().message;
+  GodObject god(*scene);
+  HapticsParams p;
+  p.force_shading = shading;
+  const double rho = a * std::cos(kPi / 8) + probe_r - 0.5;
+  glm::dvec3 last_dir(0.0);
+  double worst = 0.0;
+  god.reset({2.0 * rho * std::cos(kPi / 18), 0.0, 2.0 * rho * std::sin(kPi / 18)});  // outside, at 10 degrees
+  for (double deg = 10.0; deg <= 170.0; deg += 0.5) {  // crosses the edges at 45, 90, 135
+    const double t = deg * kPi / 180.0;
+    const glm::dvec3 x{rho * std::cos(t), 0.0, rho * std::sin(t)};
+    const ForceResult f = compute_proxy_force(p, god, x, glm::dvec3(0.0), 0.0);
+    EXPECT_TRUE(f.in_contact) << deg;
+    const glm::dvec3 dir = glm::normalize(f.force_n);
+    if (last_dir != glm::dvec3(0.0))
+      worst = std::max(worst, std::acos(std::clamp(glm::dot(dir, last_dir), -1.0, 1.0)) * 180.0 / kPi);
+    last_dir = dir;
+  }
+  return worst;
+}
+
+TEST(ForceShadingTest, ForceDirectionIsContinuousAcrossEdgesOnlyWithShading) {
+  // Sides span 45 degrees and are 2 a sin(22.5) = 15.3 mm wide. Shaded, the force turns with
+  // the contact point: 45 degrees per 15.3 mm. The contact moves ~0.17 mm per 0.5-degree step,
+  // except where the device passes under an edge: there it is 2.1 mm deep, more than R = 1 mm,
+  // so the god-object itself moves to the next side, by < 2 mm: at most 45 x 2 / 15.3 = 5.9
+  // degrees in one sample. Bound: 6 degrees.
+  const double shaded = max_force_turn_deg(true);
+  EXPECT_LT(shaded, 6.0);
+  // Without shading the force follows the side's normal and turns by the full 45 degrees in
+  // that one sample at each edge (as the proxy changes side): more than half of it, and more
+  // than three times the shaded bound.
+  const double flat = max_force_turn_deg(false);
+  EXPECT_GT(flat, 22.5);
+  EXPECT_GT(flat, 3.0 * shaded) << "shaded " << shaded << " deg, flat " << flat << " deg";
+}
+
+TEST(GodObjectTest, HiddenObjectDeflectsTheProxyUntouchableDoesNot) {
+  Surface s = test::analytic(SurfaceType::kSphere);
+  s.radius_mm = 20.0;
+  s.visible = false;  // felt, not seen
+  std::vector<glm::dvec3> through;
+  for (double x = -40.0; x <= 40.0; x += 0.5) through.push_back({x, 0.0, 5.0});
+  auto hidden = HapticScene::build(test::scene_with(5.0, {s}));
+  ASSERT_TRUE(hidden);
+  const double deflection = drive(*hidden, through, [](const glm::dvec3& p) { return glm::length(p) - 20.0; }, "hidden");
+  EXPECT_GT(deflection, 10.0);  // the device passes the centre; the proxy goes around (>= 25 mm away)
+  s.visible = true;
+  s.touchable = false;  // seen, not felt
+  auto ghost = HapticScene::build(test::scene_with(5.0, {s}));
+  ASSERT_TRUE(ghost);
+  GodObject god(*ghost);
+  for (const glm::dvec3& x : through) {
+    const ProxyStep st = god.move(x);
+    EXPECT_FALSE(st.in_contact);
+    EXPECT_EQ(st.proxy_mm, x);
+  }
+}
+
+TEST(HapticLoopSceneTest, LoopOnAPlaneSceneHoldsTheProxyAndPushesBackWithTheMaterialsStiffness) {
+  Surface plane = test::analytic(SurfaceType::kPlane);
+  plane.size_mm = {200.0, 200.0};
+  Scene sc = test::scene_with(8.0, {plane});
+  sc.materials[0].haptic.stiffness_n_per_mm = 0.8;
+  auto scene = HapticScene::build(sc);
+  ASSERT_TRUE(scene);
+  // Down from 20 mm to 4 mm (4 mm below the proxy's resting height R = 8), then held.
+  LogDevice device({{0.0, {0, 0, 20}, 0, true}, {0.5, {0, 0, 4}, 0, true}, {2.0, {0, 0, 4}, 0, true}}, true, "press");
+  FakeClock clock;
+  HapticLoopParams params;
+  params.keep_periods = 4000;
+  HapticLoop loop(device, clock, params, &scene.value());
+  loop.run_ticks(1999);
+  const HapticState st = loop.state().read();
+  EXPECT_TRUE(st.in_contact);
+  EXPECT_EQ(st.contact_surface, 0);
+  EXPECT_NEAR(st.proxy_mm.z, 8.0, kBehindTolMm);
+  // At rest 4 mm in: F = stiffness x penetration = 0.8 x 4 = 3.2 N up (1e-2 N: the Kalman
+  // estimate settles to within ~0.01 mm of a held position after 1.5 s).
+  EXPECT_NEAR(st.force_n.z, 3.2, 1e-2);
+  EXPECT_NEAR(st.force_n.x, 0.0, 1e-6);
+}
+
+}  // namespace
+}  // namespace ps::world
