@@ -42,7 +42,6 @@ class TileBaker {
   double bake_ms() const { return bake_ms_; }  // wall time spent baking, program build included
   void set_params(const TileBakeParams& p) { params_ = p; }
   const TileBakeParams& params() const { return params_; }
-  int next_slice_rows() const { return slice_rows_; }
 
  private:
   struct Job {
