@@ -160,7 +160,12 @@ Status open_session(const RunArgs& a, Scene scene, Session& s) {
   auto ctx = gl::create_context(desc);
   if (!ctx) return ctx.error();
   s.ctx = std::move(ctx.value());
-  auto tune = TuneSession::open({a.scene.path, a.scene.lines(), {}}, std::move(scene));
+  // The Gabor tile bakes between frames, a band of ~40 ms each (about one 512^2 frame with the
+  // per-pixel sum on llvmpipe: frames come at half rate and the tile is ready in about twice
+  // its whole bake), so the first frame comes at once; until then the per-pixel sum is drawn.
+  RendererOptions options;
+  options.bake_slice_ms = 40.0;
+  auto tune = TuneSession::open({a.scene.path, a.scene.lines(), options}, std::move(scene));
   if (!tune) return tune.error();
   s.tune = std::move(tune.value());
   s.axes = pointer_plane(s.tune->renderer());  // fixed at start so the mapping stays put

@@ -17,9 +17,13 @@ Status GaborBakePass::init(const std::string& glsl_root) {
 }
 
 Result<gl::Texture> GaborBakePass::run(const GaborBlock& block, const GaborBakePlan& plan) {
-  assert(ready() && "GaborBakePass::run: init() first");
-  assert(plan.ok && block.tile.z == static_cast<float>(plan.texels) &&
-         "GaborBakePass::run: block.tile must come from the same (ok) plan");
+  gl::Texture tile = make_tile(plan);
+  if (Status s = run_rows(tile, block, plan, 0, plan.texels); !s) return s.error();
+  return tile;
+}
+
+gl::Texture GaborBakePass::make_tile(const GaborBakePlan& plan) {
+  assert(plan.ok && "GaborBakePass::make_tile: the plan must be ok");
   // Hermite: (f, f_u h, f_v h, f_uv h^2) per texel, fetched exactly. Bilinear: f alone (the
   // shader's vec4 keeps .x), filtered and wrapped by the sampler, in half precision: half the
   // memory traffic made the lookup ~10 % faster in the bench (Gabor evaluation 12.5x -> 14.3x
@@ -30,6 +34,16 @@ Result<gl::Texture> GaborBakePass::run(const GaborBlock& block, const GaborBakeP
   glTextureParameteri(tile.id(), GL_TEXTURE_MAG_FILTER, filter);
   glTextureParameteri(tile.id(), GL_TEXTURE_WRAP_S, GL_REPEAT);
   glTextureParameteri(tile.id(), GL_TEXTURE_WRAP_T, GL_REPEAT);
+  return tile;
+}
+
+Status GaborBakePass::run_rows(const gl::Texture& tile, const GaborBlock& block, const GaborBakePlan& plan,
+                               int row_begin, int row_end) {
+  assert(ready() && "GaborBakePass::run_rows: init() first");
+  assert(plan.ok && block.tile.z == static_cast<float>(plan.texels) &&
+         "GaborBakePass::run_rows: block.tile must come from the same (ok) plan");
+  assert(0 <= row_begin && row_begin < row_end && row_end <= plan.texels &&
+         "GaborBakePass::run_rows: rows must be a non-empty band inside the tile");
   glNamedFramebufferTexture(fbo_.id(), GL_COLOR_ATTACHMENT0, tile.id(), 0);
   glNamedFramebufferDrawBuffer(fbo_.id(), GL_COLOR_ATTACHMENT0);
   if (glCheckNamedFramebufferStatus(fbo_.id(), GL_FRAMEBUFFER) != GL_FRAMEBUFFER_COMPLETE)
@@ -38,22 +52,25 @@ Result<gl::Texture> GaborBakePass::run(const GaborBlock& block, const GaborBakeP
   const GaborBakeBlock uniforms{block};
   glNamedBufferSubData(ubo_.id(), 0, sizeof(uniforms), &uniforms);
 
-  // All state this pass depends on is set here.
+  // All state this pass depends on is set here. The viewport spans the whole tile (texel (i, j)
+  // is gl_FragCoord (i, j) whichever band is drawn); the scissor keeps the band.
   glBindFramebuffer(GL_FRAMEBUFFER, fbo_.id());
   glViewport(0, 0, plan.texels, plan.texels);
+  glEnable(GL_SCISSOR_TEST);
+  glScissor(0, row_begin, plan.texels, row_end - row_begin);
   glDisable(GL_DEPTH_TEST);
   glDisable(GL_BLEND);
-  glDisable(GL_SCISSOR_TEST);
   glDisable(GL_CULL_FACE);
   glBindBufferBase(GL_UNIFORM_BUFFER, 0, ubo_.id());
   glUseProgram(program_.id());
   glBindVertexArray(empty_vao_.id());
   glDrawArrays(GL_TRIANGLES, 0, 3);
   glBindVertexArray(0);
+  glDisable(GL_SCISSOR_TEST);  // the other passes set their own state, but leave none behind
   glBindFramebuffer(GL_FRAMEBUFFER, 0);
   // Detached so the FBO never keeps a texture alive that the renderer has let go.
   glNamedFramebufferTexture(fbo_.id(), GL_COLOR_ATTACHMENT0, 0, 0);
-  return tile;
+  return ok_status();
 }
 
 }  // namespace ps

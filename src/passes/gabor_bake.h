@@ -10,7 +10,9 @@
 // Both sample (-period/2 + i h, -period/2 + j h) and repeat (GL_REPEAT) with the period.
 //   inputs : the material's GaborBlock (make_gabor_block with its plan) and GaborBakePlan
 //   output : a new tile texture, plan.texels^2, in the plan's form
-// The program is built once, in init(); run() once per tile.
+// The program is built once, in init(); run() once per tile, or make_tile() then run_rows()
+// over consecutive row bands (the window bakes one band between frames so frames keep coming;
+// a texel's value does not depend on the band it was drawn in, so the tile is the same).
 // Shaders: glsl/gabor_bake.{vert,frag}; uniform contract glsl/lib/gabor_bake_block.glsl.
 #pragma once
 
@@ -34,6 +36,11 @@ struct GaborBakePass {
   bool ready() const { return static_cast<bool>(program_); }
   // block.tile must describe `plan` (make_gabor_block(..., plan, ...)); plan.ok must be true.
   Result<gl::Texture> run(const GaborBlock& block, const GaborBakePlan& plan);
+  // The tile texture for `plan`, sampler state set, contents undefined until every row is baked.
+  static gl::Texture make_tile(const GaborBakePlan& plan);
+  // Bakes rows [row_begin, row_end) of `tile` (from make_tile(plan)), all columns.
+  Status run_rows(const gl::Texture& tile, const GaborBlock& block, const GaborBakePlan& plan,
+                  int row_begin, int row_end);
 
  private:
   gl::Program program_;

@@ -95,6 +95,7 @@ class PassTimer {
 
 Result<std::unique_ptr<Renderer>> Renderer::create(const Scene& scene, const RendererOptions& options) {
   std::unique_ptr<Renderer> r(new Renderer());
+  r->created_at_ = std::chrono::steady_clock::now();
   r->scene_ = scene;
   r->options_ = options;
   if (r->options_.glsl_root.empty()) r->options_.glsl_root = gl::default_glsl_root();
@@ -166,25 +167,40 @@ Status Renderer::init_passes() {
   return probe_view_.init(options_.glsl_root, surface_);
 }
 
-// Strategy "baked": one tile per material, baked here, i.e. again only when the material
-// changes (every edit builds a new Renderer; reuse_tiles_from keeps the unchanged ones).
+// Strategy "baked": one tile per material, baked here (or queued for render_frame when
+// sliced), i.e. again only when the material changes (every edit builds a new Renderer;
+// reuse_tiles_from keeps the unchanged, finished ones).
 Status Renderer::bake_gabor_tiles() {
+  tiles_.set_params({options_.bake_slice_ms});
   for (size_t i = 0; i < materials_.size(); ++i) {
     MaterialState& ms = materials_[i];
     if (!ms.bake_plan.ok) continue;
     ms.gabor_tile = reusable_tile(scene_.materials[i], ms.bake_plan);
-    if (ms.gabor_tile) continue;
-    const auto t0 = std::chrono::steady_clock::now();
-    if (!gabor_bake_.ready()) {
-      if (Status s = gabor_bake_.init(options_.glsl_root); !s) return s;
-    }
-    auto baked = gabor_bake_.run(ms.gabor_block, ms.bake_plan);
-    if (!baked) return baked.error();
-    ms.gabor_tile = std::make_shared<gl::Texture>(std::move(baked.value()));
-    glFinish();
-    stats_.bake_ms += std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
+    if (!ms.gabor_tile) tiles_.add(i, ms.gabor_block, ms.bake_plan);
   }
+  if (options_.bake_slice_ms <= 0.0)
+    if (Status s = tiles_.bake_all(options_.glsl_root); !s) return s;
+  collect_tiles();
   return ok_status();
+}
+
+Status Renderer::advance_bake() {
+  if (tiles_.done()) return ok_status();
+  if (Status s = tiles_.bake_slice(options_.glsl_root); !s) return s;
+  collect_tiles();
+  return ok_status();
+}
+
+// A finished tile replaces its material's per-pixel sum from the next draw on.
+void Renderer::collect_tiles() {
+  for (TileBaker::Finished& f : tiles_.take_finished()) materials_[f.material].gabor_tile = std::move(f.tile);
+  stats_.bake_ms = tiles_.bake_ms();
+  stats_.bake_progress = tiles_.progress();
+  if (tiles_.done() && stats_.tiles_ready_ms < 0.0) stats_.tiles_ready_ms = ms_since_creation();
+}
+
+double Renderer::ms_since_creation() const {
+  return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - created_at_).count();
 }
 
 // A tile of options_.reuse_tiles_from made from the same Gabor parameters, seed and plan.
@@ -298,6 +314,7 @@ void Renderer::apply_reductions(const ReductionResult& r, const FramePlan& plan)
 
 Status Renderer::render_frame() {
   stats_.timings_ms.clear();
+  if (Status s = advance_bake(); !s) return s;  // before the timer: a band is not the frame's work
   PassTimer timer(options_.time_passes, stats_);
   const BoundingSphere probe = current_probe_bounds();
   const FramePlan plan = make_plan(scene_, geometry_.surface_bounds, probe, frame_,
@@ -324,6 +341,11 @@ Status Renderer::render_frame() {
   if (show_probe_) {
     run_probe_view();
     timer.lap("probe_view");
+  }
+  if (!tiles_.done()) ++stats_.frames_before_tiles;
+  if (stats_.first_frame_ms < 0.0) {
+    glFinish();  // the frame is drawn, not only queued
+    stats_.first_frame_ms = ms_since_creation();
   }
   return ok_status();
 }

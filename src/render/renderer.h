@@ -3,6 +3,7 @@
 // Lives on the render thread; owns every GL object it uses. Needs a current GL context.
 #pragma once
 
+#include <chrono>
 #include <memory>
 #include <string>
 #include <utility>
@@ -20,6 +21,7 @@
 #include "passes/surface.h"
 #include "render/aov.h"
 #include "render/plan.h"
+#include "render/tile_bake.h"
 #include "scene/scene.h"
 
 namespace ps {
@@ -37,6 +39,11 @@ struct RendererOptions {
   // seed are unchanged (a tuning edit of another value does not re-bake). Must stay alive
   // during create(); never set it across shader reloads (the bake shader may have changed).
   const class Renderer* reuse_tiles_from = nullptr;
+  // 0: bake every Gabor tile whole in create(), so every frame reads it (render, replay, tests).
+  // > 0 (the window): create() bakes nothing; each render_frame() first bakes one band of the
+  // tiles, of about this many ms, and materials with an unfinished tile draw with the per-pixel
+  // sum meanwhile: the first frame comes at once, never a black window (render/tile_bake.h).
+  double bake_slice_ms = 0.0;
 };
 
 struct FrameStats {
@@ -48,7 +55,13 @@ struct FrameStats {
   std::uint32_t shadow_pixels = 0, penetrating_pixels = 0;
   std::vector<std::pair<std::string, double>> timings_ms;
   std::vector<std::string> skipped;
-  double bake_ms = 0.0;  // baking the Gabor tiles at creation, with the bake program's one build
+  // The Gabor tile bake, cumulative over the renderer's life. Times count from the start of
+  // Renderer::create, in ms.
+  double bake_ms = 0.0;          // spent baking tiles, the bake program's one build included
+  double bake_progress = 1.0;    // share of the tiles' texels baked; 1: all ready (or none to bake)
+  int frames_before_tiles = 0;   // frames drawn with the per-pixel sum while a tile was unfinished
+  double first_frame_ms = -1.0;  // until the first frame was drawn; -1: none yet
+  double tiles_ready_ms = -1.0;  // until the last tile was ready (create's time if none); -1: not yet
 };
 
 
@@ -101,7 +114,10 @@ class Renderer {
   Status load_probe_mesh();
   Status load_materials();        // albedo textures, Gabor setup and strategy
   Status init_passes();
-  Status bake_gabor_tiles();      // tiles of the materials whose strategy chose one
+  Status bake_gabor_tiles();      // tiles of the materials whose strategy chose one (or queue them)
+  Status advance_bake();          // per frame: one band of the queued tiles, then the stats
+  void collect_tiles();           // finished tiles to their materials; the bake's stats
+  double ms_since_creation() const;
   Status prime_reference_plane();
   std::shared_ptr<gl::Texture> reusable_tile(const Material& m, const GaborBakePlan& plan) const;
   // Per frame.
@@ -119,7 +135,8 @@ class Renderer {
   FrameStats stats_;
   Geometry geometry_;
   std::vector<MaterialState> materials_;
-  GaborBakePass gabor_bake_;  // initialised on the first tile to bake
+  TileBaker tiles_;           // the tiles still to bake (all of them at once unless sliced)
+  std::chrono::steady_clock::time_point created_at_;  // start of create(): the stats' time origin
   ProbeDepthPass probe_depth_;
   SurfacePass surface_;
   ReductionsPass reductions_;

@@ -6,6 +6,7 @@ namespace ps {
 
 namespace {
 nlohmann::json vec(const glm::dvec3& v) { return nlohmann::json::array({v.x, v.y, v.z}); }
+nlohmann::json ms_or_null(double ms) { return ms < 0.0 ? nlohmann::json(nullptr) : nlohmann::json(ms); }
 }  // namespace
 
 std::string stats_json(const FrameStats& s, const std::string& backend,
@@ -30,7 +31,13 @@ std::string stats_json(const FrameStats& s, const std::string& backend,
   t["frame"] = total;
   j["timings_ms"] = t;
   j["skipped"] = s.skipped;
+  // The bake against the first frame (ms from the start of renderer creation): a window draws
+  // its first frame before the tiles are ready, a headless render after (docs/architecture.md).
   j["gabor_bake_ms"] = s.bake_ms;
+  j["gabor_bake_progress"] = s.bake_progress;
+  j["gabor_tiles_ready_ms"] = ms_or_null(s.tiles_ready_ms);
+  j["first_frame_ms"] = ms_or_null(s.first_frame_ms);
+  j["frames_before_tiles"] = s.frames_before_tiles;
   j["units"] = {{"length", "mm"}, {"speed", "mm/s"}, {"time", "ms"}};
   return j.dump(2) + "\n";
 }

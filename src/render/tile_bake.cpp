@@ -1,0 +1,70 @@
+#include "render/tile_bake.h"
+
+#include <algorithm>
+#include <cassert>
+#include <cmath>
+
+namespace ps {
+
+namespace {
+// A band is never thinner than this, so a tile of n rows is done within n / 8 frames however
+// slow the machine (a 1596^2 tile: 200 frames at most).
+constexpr int kMinSliceRows = 8;
+}  // namespace
+
+void TileBaker::add(size_t material, const GaborBlock& block, const GaborBakePlan& plan) {
+  assert(plan.ok && "TileBaker::add: only ok plans are baked");
+  jobs_.push_back({material, block, plan, {}, 0});
+  total_texels_ += static_cast<long long>(plan.texels) * plan.texels;
+}
+
+double TileBaker::progress() const {
+  return total_texels_ == 0 ? 1.0 : static_cast<double>(baked_texels_) / static_cast<double>(total_texels_);
+}
+
+std::vector<TileBaker::Finished> TileBaker::take_finished() {
+  std::vector<Finished> out;
+  out.swap(finished_);
+  return out;
+}
+
+Status TileBaker::bake_all(const std::string& glsl_root) {
+  while (!jobs_.empty())
+    if (Status s = bake_rows(glsl_root, jobs_.front(), jobs_.front().plan.texels); !s) return s;
+  return ok_status();
+}
+
+Status TileBaker::bake_slice(const std::string& glsl_root) {
+  assert(params_.slice_ms > 0.0 && "TileBaker::bake_slice: slices need params.slice_ms > 0");
+  if (jobs_.empty()) return ok_status();
+  const auto t0 = std::chrono::steady_clock::now();
+  const int rows = std::min(slice_rows_, jobs_.front().plan.texels - jobs_.front().rows_done);
+  if (Status s = bake_rows(glsl_root, jobs_.front(), rows); !s) return s;
+  // Fit the next band to the budget from this one's time (bake_rows finished the GPU work):
+  // the time per row is about constant within a tile, so rows scale with budget / time.
+  const double ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
+  const double fitted = rows * params_.slice_ms / std::max(ms, 1e-3);
+  slice_rows_ = std::clamp(static_cast<int>(std::lround(fitted)), kMinSliceRows, 1 << 16);
+  return ok_status();
+}
+
+Status TileBaker::bake_rows(const std::string& glsl_root, Job& job, int rows) {
+  const auto t0 = std::chrono::steady_clock::now();
+  if (!pass_.ready()) {  // only renderers with a tile to bake build the bake program
+    if (Status s = pass_.init(glsl_root); !s) return s;
+  }
+  if (job.rows_done == 0) job.tile = GaborBakePass::make_tile(job.plan);
+  const int end = std::min(job.plan.texels, job.rows_done + rows);
+  if (Status s = pass_.run_rows(job.tile, job.block, job.plan, job.rows_done, end); !s) return s;
+  glFinish();  // llvmpipe draws on flush: finishing makes the wall time the band's time
+  baked_texels_ += static_cast<long long>(end - job.rows_done) * job.plan.texels;
+  job.rows_done = end;
+  bake_ms_ += std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
+  if (job.rows_done == job.plan.texels) {
+    finished_.push_back({job.material, std::make_shared<gl::Texture>(std::move(job.tile))});
+    jobs_.erase(jobs_.begin());  // job is jobs_.front(): callers bake the first job only
+  }
+  return ok_status();
+}
+
+}  // namespace ps

@@ -1,0 +1,138 @@
+// The Gabor tile baked in bands between frames (RendererOptions::bake_slice_ms, the window)
+// against the tile baked whole at creation (headless): the first frame comes before the bake
+// ends and is textured, frames keep coming, and once the tile is done the frames are the
+// headless ones, byte for byte. Counted in frames, never timed.
+#include <cmath>
+
+#include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
+
+#include "pipeline/scenes.h"
+#include "render/renderer.h"
+#include "support/gl_test.h"
+
+namespace ps {
+namespace {
+
+class TileBakeGLTest : public test::GlTest {};
+
+// flat_plane_scene with a textured, baked material touched by a big probe (a wide textured
+// footprint). 16 samples per lambda_min: the tile is within 1 % sigma RMS of the per-pixel sum
+// (GaborGLTest.BakedTextureMatchesItsCpuTwinAndTheNaiveTexture).
+Scene baked_scene() {
+  Scene s = test::flat_plane_scene(14.5);
+  s.probe.radius_mm = 15.0;
+  Material& m = s.materials[0];
+  m.gabor.lambda_min_mm = 0.8;
+  m.gabor.lambda_max_mm = 2.0;
+  m.gabor.theta_max_rad = 1.0;
+  m.gabor.strategy = GaborParams::Strategy::kBaked;
+  m.gabor.bake_samples_per_lambda = 16;
+  m.onset_distance_mm = 100.0;  // texture everywhere under the probe
+  return s;
+}
+
+// One frame at the scene's probe state (the previous frame's push-out undone, so every frame
+// draws the same view).
+void frame(Renderer& r, const Scene& s) {
+  r.set_probe_state(s.probe.position, s.probe.velocity);
+  ASSERT_TRUE(r.render_frame().ok());
+}
+
+// RMS difference of the texture AOV (sigmas) over the pixels both frames shadow.
+double texture_rms(const Renderer& a, const Renderer& b, int* pixels) {
+  const Image ta = a.read_aov("texture").value(), tb = b.read_aov("texture").value();
+  const Image ia = a.read_aov("intensity").value();
+  double sum2 = 0.0;
+  *pixels = 0;
+  for (int y = 0; y < ta.height; ++y)
+    for (int x = 0; x < ta.width; ++x) {
+      if (ia.at(x, y, 0) <= 0.0f) continue;
+      const double d = ta.at(x, y, 0) - tb.at(x, y, 0);
+      sum2 += d * d;
+      ++*pixels;
+    }
+  return std::sqrt(sum2 / std::max(*pixels, 1));
+}
+
+TEST_P(TileBakeGLTest, HeadlessRenderBakesTheWholeTileBeforeItsFirstFrame) {
+  const Scene s = baked_scene();
+  auto made = Renderer::create(s, {});
+  ASSERT_TRUE(made.ok()) << made.error().message;
+  Renderer& r = *made.value();
+  EXPECT_EQ(r.stats().bake_progress, 1.0);
+  EXPECT_GE(r.stats().tiles_ready_ms, 0.0);
+  EXPECT_GT(r.stats().bake_ms, 0.0);
+  frame(r, s);
+  EXPECT_EQ(r.stats().frames_before_tiles, 0);
+  EXPECT_GT(r.stats().first_frame_ms, r.stats().tiles_ready_ms);
+}
+
+TEST_P(TileBakeGLTest, SlicedBakeDrawsFramesBeforeTheTileThenTheHeadlessFrame) {
+  const Scene s = baked_scene();
+  RendererOptions sliced;
+  // Far below any band's time: after the first band (16 rows) every band has the minimum
+  // height (8 rows), so the count of frames is fixed by the tile's size, not by the clock.
+  sliced.bake_slice_ms = 1e-6;
+  auto made = Renderer::create(s, sliced);
+  ASSERT_TRUE(made.ok()) << made.error().message;
+  Renderer& r = *made.value();
+  const int texels = r.gabor_bake_plan(0).texels;
+  ASSERT_TRUE(r.gabor_bake_plan(0).ok);
+  EXPECT_EQ(r.stats().bake_progress, 0.0) << "create() must not bake when sliced";
+  EXPECT_EQ(r.stats().tiles_ready_ms, -1.0);
+
+  frame(r, s);
+  const FrameStats first = r.stats();
+  EXPECT_EQ(first.frames_before_tiles, 1);
+  EXPECT_GT(first.bake_progress, 0.0);
+  EXPECT_LT(first.bake_progress, 1.0);
+  EXPECT_GE(first.first_frame_ms, 0.0);
+  EXPECT_EQ(first.tiles_ready_ms, -1.0);
+  // Not black: the shadow is there, and textured like the tile will be.
+  EXPECT_GT(first.shadow_pixels, 5000u);
+  auto whole = Renderer::create(s, {});
+  ASSERT_TRUE(whole.ok()) << whole.error().message;
+  frame(*whole.value(), s);
+  int pixels = 0;
+  const double rms = texture_rms(r, *whole.value(), &pixels);
+  EXPECT_GT(pixels, 5000);
+  // Per-pixel sum against the 16-samples tile: the tile's error, < 1 % sigma RMS (above).
+  EXPECT_LT(rms, 0.01) << "the interim texture must be the tile's texture";
+  EXPECT_GT(rms, 0.0) << "the first frame must draw the per-pixel sum, not the tile";
+
+  // The stats the --stats JSON carries say the same.
+  const auto json = nlohmann::json::parse(stats_json(first, "test", "test", 1));
+  EXPECT_TRUE(json["gabor_tiles_ready_ms"].is_null());
+  EXPECT_EQ(json["frames_before_tiles"], 1);
+  EXPECT_DOUBLE_EQ(json["gabor_bake_progress"].get<double>(), first.bake_progress);
+
+  // 16 rows, then 8 per frame: ceil((texels - 16) / 8) more frames finish the tile.
+  const int expected_frames = 1 + (texels - 16 + 7) / 8;
+  int frames = 1;
+  double progress = first.bake_progress;
+  while (r.stats().bake_progress < 1.0 && frames < 2 * expected_frames) {
+    frame(r, s);
+    ++frames;
+    EXPECT_GT(r.stats().bake_progress, progress);
+    progress = r.stats().bake_progress;
+  }
+  EXPECT_EQ(frames, expected_frames);
+  EXPECT_EQ(r.stats().bake_progress, 1.0);
+  // Every frame but the one that baked the last band drew with the sum; that one, the tile.
+  EXPECT_EQ(r.stats().frames_before_tiles, expected_frames - 1);
+  EXPECT_GT(r.stats().tiles_ready_ms, r.stats().first_frame_ms);
+  const auto done = nlohmann::json::parse(stats_json(r.stats(), "test", "test", frames));
+  EXPECT_LT(done["first_frame_ms"].get<double>(), done["gabor_tiles_ready_ms"].get<double>());
+
+  // From here on the tile: the same frame as the headless renderer's, byte for byte.
+  frame(r, s);
+  frame(*whole.value(), s);
+  EXPECT_EQ(r.read_color().pixels, whole.value()->read_color().pixels);
+  EXPECT_EQ(r.read_aov("texture").value().pixels, whole.value()->read_aov("texture").value().pixels);
+}
+
+PS_INSTANTIATE_HEADLESS_BACKENDS(TileBakeGLTest);
+
+}  // namespace
+}  // namespace ps
