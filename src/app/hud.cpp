@@ -86,6 +86,8 @@ std::vector<std::string> hud_lines(const HudReadouts& r) {
       line("haptic", "%.0f Hz", r.haptic_hz),
       line("jitter p99", "%.0f us", r.jitter_p99_us),
   };
+  // The texture is the per-pixel sum until its tile is baked: say the picture will not change.
+  if (r.bake_progress < 1.0) out.push_back(line("texture", "baking %.0f %%", 100.0 * r.bake_progress));
   if (!r.error.empty()) out.push_back(line("reload", "FAILED (F1)"));
   return out;
 }

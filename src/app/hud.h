@@ -35,6 +35,7 @@ struct HudReadouts {
   double penetration_mm = 0.0;
   bool contact = false;
   double force_n = 0.0;
+  double bake_progress = 1.0;            // Gabor tile bake, 0..1 (< 1: the per-pixel sum is drawn)
   std::string error;                     // a failed reload's message; empty: none
 };
 

@@ -220,6 +220,7 @@ HudReadouts readouts(const Session& s, const HapticState& st, const ShadowMeasur
   r.penetration_mm = s.tune->renderer().stats().max_penetration_mm;
   r.contact = st.in_contact || r.penetration_mm > 0.0;
   r.force_n = glm::length(st.force_n);
+  r.bake_progress = s.tune->renderer().stats().bake_progress;
   r.error = s.tune->last_error();
   return r;
 }

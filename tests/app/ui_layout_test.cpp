@@ -206,6 +206,15 @@ TEST(HudTest, ReadoutsNameEveryQuantityWithItsUnit) {
                            "contact     no", "force       0.50 N", "speed       250 mm/s", "frame       16.7 ms",
                            "haptic      998 Hz", "jitter p99  45 us"})
     EXPECT_NE(all.find(want), std::string::npos) << "missing '" << want << "' in\n" << all;
+  EXPECT_EQ(all.find("baking"), std::string::npos) << "a finished bake shows no line:\n" << all;
+}
+
+TEST(HudTest, BakeProgressShowsUntilTheTileIsReady) {
+  HudReadouts r;
+  r.bake_progress = 0.4;
+  std::string all;
+  for (const std::string& l : hud_lines(r)) all += l + "\n";
+  EXPECT_NE(all.find("texture     baking 40 %"), std::string::npos) << all;
 }
 
 TEST(RunKeysTest, EveryKeyOfTheWindowIsInTheTableOnce) {
