@@ -1,10 +1,10 @@
 #!/usr/bin/env bash
 # The window as a new user first sees it, under Xvfb (no window manager), driven by xdotool:
-# `pseudoshadow run` on the default scene with a scripted probe hovering and sliding over the
-# plank, three screenshots of the whole window (overlays included):
-#   window_start.png     at start: the help overlay and the readouts, beside the shadow
-#   window_readouts.png  after a key press has hidden the help: the readouts alone
-#   window_panel.png     with the parameter panel (F1) docked beside the shadow
+# `pseudoshadow run` on the default scene with the mouse moved by xdotool, three screenshots of the whole window (overlays included):
+#   window_start.png     at start: the help overlay and the readouts, the shadow under the pointer
+#   window_readouts.png  pressed 1 mm into the plank (PageDown 4 times, which also hides the help),
+#                        stroking at ~400 px/s: the texture shows, the readouts say "touching"
+#   window_panel.png     the same stroke with the parameter panel (F1) docked beside the shadow
 # then checks, on every frame of the session's `--ui-report`, that no overlay rectangle
 # intersects the shadow's bounding box (measured on the frame's pixels). Screenshots are X
 # window dumps (xwd) converted to PNG by the few lines of Python below (standard library only:
@@ -71,12 +71,6 @@ if mode == "black":
 write_png(rows, w, h, sys.argv[7])
 PY
 
-# The probe comes down to 1.5 mm above the plank (the default scene's sphere has an 8 mm
-# radius) and slides +-6 mm along x at 60 mm/s, so the shadow is dark and moves a little.
-awk 'BEGIN { print "0.0 0 0 14 0"; print "0.5 0 0 9.5 0";
-             for (i = 1; i <= 120; ++i) printf "%.2f %d 0 9.5 0\n", 0.5 + i * 0.2, (i % 2 ? 6 : -6) }' \
-  > hover.traj
-
 display=":$(( 90 + RANDOM % 100 ))"
 Xvfb "${display}" -screen 0 1024x768x24 >/dev/null 2>&1 &
 xvfb_pid=$!
@@ -84,8 +78,8 @@ trap 'kill ${xvfb_pid} 2>/dev/null || true' EXIT
 export DISPLAY="${display}"
 sleep 1
 
-"${exe}" run --scene "${scene}" --no-watch --device trajectory:hover.traj --ui-report ui_report.json \
-  --quit-after 60 > run.log 2>&1 &
+# The mouse itself (the default device), moved by xdotool as a person would.
+"${exe}" run --scene "${scene}" --no-watch --ui-report ui_report.json --quit-after 90 > run.log 2>&1 &
 run_pid=$!
 win="$(xdotool search --sync --name '^pseudoshadow' | head -n 1)"
 eval "$(xdotool getwindowgeometry --shell "${win}")"  # X, Y, WIDTH, HEIGHT
@@ -97,14 +91,31 @@ for _ in $(seq 120); do
   python3 xwd.py black first.xwd "${X}" "${Y}" "${WIDTH}" "${HEIGHT}" || break
   sleep 0.5
 done
-sleep 2
+# The pointer rests a little left of the window's centre: the shadow (1 mm above the plank at
+# start) sits under it, with the help and the readouts beside it.
+cx=$(( WIDTH * 2 / 5 )); cy=$(( HEIGHT / 2 ))
+xdotool mousemove $(( X + cx )) $(( Y + cy ))
+sleep 3
 shot window_start
-xdotool key --window "${win}" Right   # any key but H/? hides the help (Right does nothing else)
-sleep 1.5
+# Four PageDown presses lower the probe 4 x 0.5 mm, from 1 mm above the plank to 1 mm into it
+# (any key but H/? also hides the help); then strokes along x at about 400 px/s (8 px every 20 ms), the speed the shipped
+# scenes' texture peaks at, run in the background while the screenshots are taken.
+for _ in 1 2 3 4; do xdotool key --window "${win}" Next; sleep 0.3; done
+stroke() {
+  while :; do
+    for x in $(seq $(( cx - 60 )) 8 $(( cx + 60 ))) $(seq $(( cx + 60 )) -8 $(( cx - 60 ))); do
+      xdotool mousemove $(( X + x )) $(( Y + cy )); sleep 0.02
+    done
+  done
+}
+stroke &
+stroke_pid=$!
+sleep 6
 shot window_readouts
 xdotool key --window "${win}" F1
-sleep 2
+sleep 6
 shot window_panel
+kill "${stroke_pid}" 2>/dev/null || true
 xdotool key --window "${win}" q
 wait "${run_pid}" || { cat run.log; echo "window_check: run failed" >&2; exit 1; }
 cat run.log

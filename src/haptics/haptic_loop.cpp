@@ -86,7 +86,14 @@ void HapticLoop::tick(Clock::Ns now) {
   const DeviceSample raw = device_.read(t);
   if (recorder_ != nullptr) recorder_->append(raw);
   if (auto s = sanitizer_.filter(raw)) {
-    kalman_.step(dt, s->position_mm);
+    // A device polled slower than 1 kHz (the mouse: once per rendered frame) repeats its last
+    // sample until the next poll. A repeat is no new measurement: feeding it would pull the
+    // velocity to zero between polls and jerk it up at each one; predict instead.
+    const bool repeat = have_fed_ && s->time_s == last_fed_.time_s && s->position_mm == last_fed_.position_mm;
+    if (repeat) kalman_.predict(dt);
+    else kalman_.step(dt, s->position_mm);
+    last_fed_ = *s;
+    have_fed_ = true;
     local_.device_mm = s->position_mm;
     local_.buttons = s->buttons;
     local_.sample_clock_ns = now.count();

@@ -100,6 +100,8 @@ class HapticLoop {
   bool started_ = false;
   DeviceSanitizer sanitizer_;
   Kalman3 kalman_;
+  DeviceSample last_fed_;  // the last sample given to the filter (repeats are predicted over)
+  bool have_fed_ = false;
   std::optional<world::GodObject> god_;  // set when a haptic scene is given
   HapticState local_;        // haptic thread's working copy
   SampleRecorder* recorder_ = nullptr;

@@ -10,6 +10,16 @@ void AxisKalman::reset(double position_mm, const KalmanParams& params) {
   p11_ = params.initial_velocity_sd_mm_s * params.initial_velocity_sd_mm_s;
 }
 
+void AxisKalman::predict(double dt_s, const KalmanParams& params) {
+  const double t = dt_s, q = params.accel_sd_mm_s2 * params.accel_sd_mm_s2;
+  p_ += t * v_;
+  const double a00 = p00_ + 2.0 * t * p01_ + t * t * p11_ + q * t * t * t * t / 4.0;
+  const double a01 = p01_ + t * p11_ + q * t * t * t / 2.0;
+  p11_ += q * t * t;
+  p00_ = a00;
+  p01_ = a01;
+}
+
 void AxisKalman::step(double dt_s, double measured_mm, const KalmanParams& params) {
   const double t = dt_s, q = params.accel_sd_mm_s2 * params.accel_sd_mm_s2;
   const double r = params.measurement_sd_mm * params.measurement_sd_mm;
@@ -39,6 +49,11 @@ void Kalman3::step(double dt_s, const glm::dvec3& measured_mm) {
     else a.step(dt_s, measured_mm[i], params_);
   }
   initialized_ = true;
+}
+
+void Kalman3::predict(double dt_s) {
+  if (!initialized_) return;
+  for (AxisKalman& a : axes_) a.predict(dt_s, params_);
 }
 
 glm::dvec3 Kalman3::position() const {

@@ -25,6 +25,8 @@ class AxisKalman {
  public:
   void reset(double position_mm, const KalmanParams& params);
   void step(double dt_s, double measured_mm, const KalmanParams& params);
+  // Predict only (no measurement this tick): x = A x, P = A P A^T + S_w.
+  void predict(double dt_s, const KalmanParams& params);
   double position() const { return p_; }
   double velocity() const { return v_; }
   // Covariance [[p00, p01], [p01, p11]] (mm^2, mm^2/s, mm^2/s^2).
@@ -42,6 +44,9 @@ class Kalman3 {
   explicit Kalman3(const KalmanParams& params = {}) : params_(params) {}
   // First call only initialises the state at the measurement (velocity 0).
   void step(double dt_s, const glm::dvec3& measured_mm);
+  // A tick without a new measurement (the device repeats its last sample): the state moves on
+  // at its velocity and the covariance grows, so the next real sample gets its full weight.
+  void predict(double dt_s);
   bool initialized() const { return initialized_; }
   glm::dvec3 position() const;
   glm::dvec3 velocity() const;

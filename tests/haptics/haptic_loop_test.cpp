@@ -45,6 +45,30 @@ TEST(HapticLoopTest, FakeClockGivesDeterministicTicks) {
   EXPECT_NEAR(last.velocity_mm_s.x, 100.0, 2.0);  // Kalman velocity of a 100 mm/s ramp
 }
 
+// A mouse is polled once per rendered frame and the haptic thread holds that sample for the
+// ~50 ticks until the next one. A stroke at a steady 34 mm/s (400 px/s on the default camera)
+// seen at 20 Hz must read as 34 mm/s between polls too, or the texture amplitude, which
+// follows this speed, collapses between frames. Bounds: +-25 %, the gain of the shipped speed
+// curves stays above 0.5 within +-0.3 x the peak speed (docs/scene-format.md), so +-25 % keeps
+// the texture up; the filter's own ripple at 20 Hz samples is a few percent.
+TEST(HapticLoopTest, HeldSamplesKeepTheStrokeSpeedBetweenPolls) {
+  std::vector<DeviceSample> polls;
+  for (int i = 0; i <= 40; ++i) polls.push_back({0.05 * i, {34.0 * 0.05 * i, 0, 20}, 0, true});
+  LogDevice device(polls, false, "mouse at 20 Hz");  // sample-and-hold, like the mouse device
+  FakeClock clock;
+  HapticLoop loop(device, clock, HapticLoopParams{});
+  loop.run_ticks(1000);  // settle over 20 polls
+  double lo = 1e9, hi = 0.0;
+  for (int i = 0; i < 500; ++i) {
+    loop.run_ticks(1);
+    const double v = loop.state().read().velocity_mm_s.x;
+    lo = std::min(lo, v);
+    hi = std::max(hi, v);
+  }
+  EXPECT_GT(lo, 0.75 * 34.0);
+  EXPECT_LT(hi, 1.25 * 34.0);
+}
+
 // The loop's logs are allocated at construction: logging past the old 100 k reservation, and a
 // stall whose missed ticks run back to back inside one HUD window, must not grow either (a
 // reallocation on the 1 kHz thread copies megabytes mid-tick).
