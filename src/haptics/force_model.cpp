@@ -127,6 +127,18 @@ glm::dvec3 contact_force_n(const HapticsParams& q, const HapticMaterial& m, cons
   return (damped + texture) * n + stickiness_force_n(m, c);
 }
 
+// -b v of the penetrable volume (water, thick fluid) holding the probe centre p; `medium` is
+// its surface index, -1 (and no force) outside every volume.
+glm::dvec3 medium_drag_n(const world::HapticScene& scene, const glm::dvec3& p_mm, const glm::dvec3& v_mm_s,
+                         int& medium) {
+  medium = scene.medium_at(p_mm);
+  if (medium < 0) return glm::dvec3(0.0);
+  MaterialContact inside;
+  inside.distance_mm = -scene.probe_radius_mm();  // centre inside: at least R deep
+  inside.velocity_mm_s = v_mm_s;
+  return viscosity_force_n(scene.material(medium), inside);
+}
+
 }  // namespace
 
 ForceResult compute_proxy_force(const HapticsParams& p, world::GodObject& god, const glm::dvec3& x_mm,
@@ -137,6 +149,7 @@ ForceResult compute_proxy_force(const HapticsParams& p, world::GodObject& god, c
   const world::ProxyStep step = god.move(x_mm);
   out.proxy_mm = step.proxy_mm;
   out.facets_visited = step.facets_visited;
+  f += medium_drag_n(god.scene(), step.proxy_mm, v_mm_s, out.medium);
   const double r = glm::length(step.proxy_mm - x_mm);
   if (step.in_contact && r > 0.0) {
     const HapticMaterial& m = god.scene().material(step.surface);
