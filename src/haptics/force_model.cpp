@@ -1,7 +1,9 @@
 #include "haptics/force_model.h"
 
+#include <algorithm>
 #include <cmath>
 
+#include "haptics/material_forces.h"
 #include "world/god_object.h"
 
 namespace ps {
@@ -76,6 +78,69 @@ HapticsParams with_material(const HapticsParams& p, const HapticMaterial& m) {
   return q;
 }
 
+namespace {
+
+// A contact as the material laws see it. A surface carries no parametrisation here, so the
+// texture frame is built from the normal alone: u = world X projected onto the tangent plane
+// (world Y when n lies within ~25 degrees of X, where that projection gets short), v = n x u,
+// and the texture coordinates are the contact point's components along u and v. On a face
+// with normal +Z this is (x, y) in mm, on any flat face a fixed frame; on curved surfaces the
+// frame turns with n (docs/haptics.md, "Haptic geometry").
+MaterialContact material_contact(const glm::dvec3& n, const glm::dvec3& point_mm, double distance_mm,
+                                 const glm::dvec3& v_mm_s) {
+  MaterialContact c;
+  c.distance_mm = distance_mm;
+  c.normal = n;
+  const glm::dvec3 ref = std::abs(n.x) < 0.9 ? glm::dvec3(1.0, 0.0, 0.0) : glm::dvec3(0.0, 1.0, 0.0);
+  c.tangent_u = glm::normalize(ref - glm::dot(ref, n) * n);
+  c.tangent_v = glm::cross(n, c.tangent_u);
+  c.surface_mm = {glm::dot(point_mm, c.tangent_u), glm::dot(point_mm, c.tangent_v)};
+  c.velocity_mm_s = v_mm_s;
+  return c;
+}
+
+// Magnetic pull toward the nearest surface within R + the largest magnetic range: one
+// radius-limited query, none at all when no material is magnetic. Only the nearest surface
+// pulls (a magnet behind a nearer plain surface is screened by it).
+glm::dvec3 magnetic_pull_n(const world::HapticScene& scene, const glm::dvec3& p_mm, const glm::dvec3& v_mm_s) {
+  const double reach = scene.max_magnetic_range_mm();
+  if (!(reach > 0.0)) return glm::dvec3(0.0);
+  const double r = scene.probe_radius_mm();
+  const world::Contact c = scene.closest(p_mm, r + reach);
+  if (!c.hit || !(c.distance_mm > 0.0)) return glm::dvec3(0.0);
+  // Normal from the closest point to the centre: the pull aims at the nearest point, also
+  // past a mesh edge where the face normal would not.
+  const glm::dvec3 n = (p_mm - c.point) / c.distance_mm;
+  return magnetic_force_n(scene.material(c.surface), material_contact(n, c.point, c.distance_mm - r, v_mm_s));
+}
+
+// In contact with material m along n (spring fn already known): the spring, damping, texture
+// and stickiness forces; `push_n` returns the normal force friction works against.
+glm::dvec3 contact_force_n(const HapticsParams& q, const HapticMaterial& m, const MaterialContact& c,
+                           double fn, double& push_n) {
+  const glm::dvec3& n = c.normal;
+  const double damped = fn - q.damping_n_s_per_mm * glm::dot(n, c.velocity_mm_s);
+  // The texture rides on the push and may at most cancel it: a surface never pulls (pulling
+  // is stickiness's job). Without texture this is the plain spring-damper.
+  const double texture = std::max(texture_value_n(m, c.surface_mm), -std::max(damped, 0.0));
+  push_n = std::max(fn + texture, 0.0);
+  return (damped + texture) * n + stickiness_force_n(m, c);
+}
+
+// -b v of the penetrable volume (water, thick fluid) holding the probe centre p; `medium` is
+// its surface index, -1 (and no force) outside every volume.
+glm::dvec3 medium_drag_n(const world::HapticScene& scene, const glm::dvec3& p_mm, const glm::dvec3& v_mm_s,
+                         int& medium) {
+  medium = scene.medium_at(p_mm);
+  if (medium < 0) return glm::dvec3(0.0);
+  MaterialContact inside;
+  inside.distance_mm = -scene.probe_radius_mm();  // centre inside: at least R deep
+  inside.velocity_mm_s = v_mm_s;
+  return viscosity_force_n(scene.material(medium), inside);
+}
+
+}  // namespace
+
 ForceResult compute_proxy_force(const HapticsParams& p, world::GodObject& god, const glm::dvec3& x_mm,
                                 const glm::dvec3& v_mm_s, double time_s) {
   ForceResult out;
@@ -84,23 +149,27 @@ ForceResult compute_proxy_force(const HapticsParams& p, world::GodObject& god, c
   const world::ProxyStep step = god.move(x_mm);
   out.proxy_mm = step.proxy_mm;
   out.facets_visited = step.facets_visited;
+  f += medium_drag_n(god.scene(), step.proxy_mm, v_mm_s, out.medium);
   const double r = glm::length(step.proxy_mm - x_mm);
   if (step.in_contact && r > 0.0) {
-    const HapticsParams q = with_material(p, god.scene().material(step.surface));
+    const HapticMaterial& m = god.scene().material(step.surface);
+    const HapticsParams q = with_material(p, m);
     out.in_contact = true;
     out.surface = step.surface;
     out.penetration_mm = r;
     const glm::dvec3 n = q.force_shading ? step.shaded_normal : (step.proxy_mm - x_mm) / r;
-    const double fn = spring_magnitude_n(q, r);
-    f += fn * n;
-    f -= q.damping_n_s_per_mm * glm::dot(n, v_mm_s) * n;
+    double push_n = 0.0;
+    f += contact_force_n(q, m, material_contact(n, step.contact_point, -r, v_mm_s),
+                         spring_magnitude_n(q, r), push_n);
     glm::dvec3 held = stick_point;
-    f += friction(q, step.contact_normal, fn, step.proxy_mm, held, out.sticking);
+    f += friction(q, step.contact_normal, push_n, step.proxy_mm, held, out.sticking);
     if (held != step.proxy_mm) {
       const world::ProxyStep back = god.move(held);  // constrained: stops at any surface
       out.proxy_mm = back.proxy_mm;
       out.facets_visited += back.facets_visited;
     }
+  } else if (!step.in_contact) {
+    f += magnetic_pull_n(god.scene(), step.proxy_mm, v_mm_s);
   }
   const double len = glm::length(f);
   if (len > p.max_force_n && len > 0.0) f *= p.max_force_n / len;

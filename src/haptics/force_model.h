@@ -59,6 +59,7 @@ struct ForceResult {
   bool in_contact = false;
   bool sticking = false;
   int surface = -1;                 // haptic scene: the surface touched (Scene::surfaces index)
+  int medium = -1;                  // haptic scene: the penetrable volume holding the proxy centre
   std::uint32_t facets_visited = 0; // haptic scene: mesh triangles examined this tick
 };
 
@@ -78,6 +79,9 @@ ForceResult compute_force(const HapticsParams& p, const SurfaceModel& m, const g
 // along n, and the stick/slide friction above acts on the proxy's contact plane: the stick
 // point is the previous proxy, the frictionless god-object position plays x_surface, and the
 // proxy is moved (never through a surface) to where friction leaves it.
+// The touched material's texture (along n, at most cancelling the push) and stickiness act at
+// the contact; out of contact a magnetic surface within its range pulls (material_forces.h),
+// and with the proxy centre inside a penetrable volume (HapticScene::medium_at) its -b v acts.
 ForceResult compute_proxy_force(const HapticsParams& p, world::GodObject& god, const glm::dvec3& x_mm,
                                 const glm::dvec3& v_mm_s, double time_s);
 

@@ -1,5 +1,6 @@
 #include "world/haptic_scene.h"
 
+#include <algorithm>
 #include <cassert>
 #include <cmath>
 #include <limits>
@@ -21,6 +22,39 @@ glm::dmat3 euler_xyz_deg(const glm::dvec3& rotation_deg) {
   return glm::dmat3(m);
 }
 
+namespace {
+
+bool is_magnetic(const HapticMaterial& m) {
+  return !m.penetrable && m.magnetic_force_n > 0.0 && m.magnetic_range_mm > 0.0;
+}
+
+}  // namespace
+
+HapticScene::Shape HapticScene::make_shape(const Surface& s, int index) {
+  Shape shape{s.type, index, euler_xyz_deg(s.rotation_deg), s.center, glm::dvec3(0.0), 0.0};
+  switch (s.type) {
+    case SurfaceType::kPlane:
+      shape.size = {s.size_mm.x, s.size_mm.y, 0.0};
+      shape.bound_mm = 0.5 * glm::length(s.size_mm);
+      break;
+    case SurfaceType::kSphere:
+      shape.size = {s.radius_mm, 0.0, 0.0};
+      shape.bound_mm = s.radius_mm;
+      break;
+    case SurfaceType::kBox:
+      shape.size = s.box_size_mm;
+      shape.bound_mm = 0.5 * glm::length(s.box_size_mm);
+      break;
+    case SurfaceType::kTorus:
+      shape.size = {s.radius_mm, s.minor_radius_mm, 0.0};
+      shape.bound_mm = s.radius_mm + s.minor_radius_mm;
+      break;
+    case SurfaceType::kHeightField:
+    case SurfaceType::kMesh: break;
+  }
+  return shape;
+}
+
 Result<HapticScene> HapticScene::build(const Scene& scene) {
   HapticScene out;
   out.probe_radius_mm_ = scene.probe.radius_mm;
@@ -29,42 +63,57 @@ Result<HapticScene> HapticScene::build(const Scene& scene) {
     const int index = static_cast<int>(i);
     const std::size_t m = static_cast<std::size_t>(s.material_index);
     out.materials_.push_back(m < scene.materials.size() ? scene.materials[m].haptic : HapticMaterial{});
+    const HapticMaterial& feel = out.materials_.back();
     if (!s.touchable) continue;  // seen only
-    // A penetrable material (water, thick fluid) lets the proxy through: it acts by its
-    // viscosity inside (material forces), not as a constraint.
-    if (out.materials_.back().penetrable) continue;
-    Shape shape{s.type, index, euler_xyz_deg(s.rotation_deg), s.center, glm::dvec3(0.0), 0.0};
-    switch (s.type) {
-      case SurfaceType::kPlane:
-        shape.size = {s.size_mm.x, s.size_mm.y, 0.0};
-        shape.bound_mm = 0.5 * glm::length(s.size_mm);
-        break;
-      case SurfaceType::kSphere:
-        shape.size = {s.radius_mm, 0.0, 0.0};
-        shape.bound_mm = s.radius_mm;
-        break;
-      case SurfaceType::kBox:
-        shape.size = s.box_size_mm;
-        shape.bound_mm = 0.5 * glm::length(s.box_size_mm);
-        break;
-      case SurfaceType::kTorus:
-        shape.size = {s.radius_mm, s.minor_radius_mm, 0.0};
-        shape.bound_mm = s.radius_mm + s.minor_radius_mm;
-        break;
-      case SurfaceType::kHeightField:  // the rendered triangles: an image has no closed form
-      case SurfaceType::kMesh: {
-        Result<Mesh> mesh = build_surface_mesh(s);
-        const std::string where = scene.path + ":" + std::to_string(s.line) + ": ";
-        if (!mesh) return make_error(where + mesh.error().message);
-        if (Status st = out.meshes_.add_mesh(mesh.value()); !st) return make_error(where + st.error().message);
-        out.mesh_surface_.push_back(index);
-        continue;
-      }
+    const bool analytic = s.type != SurfaceType::kMesh && s.type != SurfaceType::kHeightField;
+    if (feel.penetrable) {
+      // A penetrable material (water, thick fluid) lets the proxy through: it acts by its
+      // viscosity inside (medium_at), not as a constraint. A plane has no inside; a mesh would
+      // need a ray-parity test per tick and is left out (docs/haptics.md, limitation).
+      if (analytic && s.type != SurfaceType::kPlane) out.volumes_.push_back(make_shape(s, index));
+      continue;
     }
-    out.shapes_.push_back(shape);
+    if (is_magnetic(feel)) out.max_magnetic_range_mm_ = std::max(out.max_magnetic_range_mm_, feel.magnetic_range_mm);
+    if (analytic) {
+      out.shapes_.push_back(make_shape(s, index));
+      continue;
+    }
+    // Height field: the rendered triangles, an image has no closed form. Mesh: the triangles.
+    Result<Mesh> mesh = build_surface_mesh(s);
+    const std::string where = scene.path + ":" + std::to_string(s.line) + ": ";
+    if (!mesh) return make_error(where + mesh.error().message);
+    if (Status st = out.meshes_.add_mesh(mesh.value()); !st) return make_error(where + st.error().message);
+    out.mesh_surface_.push_back(index);
   }
   if (Status st = out.meshes_.commit(); !st) return st.error();
   return out;
+}
+
+bool HapticScene::inside(const Shape& s, const glm::dvec3& p) {
+  const glm::dvec3 q = glm::transpose(s.rotation) * (p - s.center);  // shape's local frame
+  switch (s.type) {
+    case SurfaceType::kSphere: return glm::dot(q, q) < s.size.x * s.size.x;
+    case SurfaceType::kBox: {
+      const glm::dvec3 a = glm::abs(q) - 0.5 * s.size;
+      return a.x < 0.0 && a.y < 0.0 && a.z < 0.0;
+    }
+    case SurfaceType::kTorus: {  // distance from the ring circle below the tube radius
+      const double ring = std::sqrt(q.x * q.x + q.y * q.y) - s.size.x;
+      return ring * ring + q.z * q.z < s.size.y * s.size.y;
+    }
+    case SurfaceType::kPlane:
+    case SurfaceType::kHeightField:
+    case SurfaceType::kMesh: break;
+  }
+  assert(false && "HapticScene::inside: only spheres, boxes and tori are kept as volumes");
+  return false;
+}
+
+int HapticScene::medium_at(const glm::dvec3& p) const {
+  for (const Shape& v : volumes_) {
+    if (glm::length(p - v.center) < v.bound_mm && inside(v, p)) return v.surface;
+  }
+  return -1;
 }
 
 Contact HapticScene::closest_analytic(const Shape& s, const glm::dvec3& p) const {

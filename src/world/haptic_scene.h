@@ -4,8 +4,11 @@
 // shape's local frame); meshes and height fields are the triangles the renderer draws
 // (scene/mesh.h: build_surface_mesh) in an Embree BVH (world/mesh_bvh.h). Surfaces with
 // `touchable = false` are left out, and so are penetrable materials (the proxy passes through
-// them); invisible ones are in (a hidden object is felt).
-// closest() is const, thread-safe and allocation-free. docs/haptics.md, "Haptic geometry".
+// them); invisible ones are in (a hidden object is felt). Touchable penetrable spheres, boxes
+// and tori are kept apart as volumes (medium_at: closed-form inside tests); penetrable planes
+// (no inside), meshes and height fields are not felt at all (docs/haptics.md says why).
+// closest() and medium_at() are const, thread-safe and allocation-free. docs/haptics.md,
+// "Haptic geometry".
 #pragma once
 
 #include <cstdint>
@@ -43,6 +46,13 @@ class HapticScene {
   // `hint`: an earlier Contact near p (MeshBvh::closest); same result, fewer facets examined.
   Contact closest(const glm::dvec3& p, double max_distance_mm, const Contact* hint = nullptr) const;
 
+  // The penetrable volume (water, thick fluid) whose inside holds p, as a surface index; -1 if
+  // none. Overlapping volumes: the first in scene order.
+  int medium_at(const glm::dvec3& p) const;
+  // Largest magnetic_range_mm over the touchable magnetic materials (magnetic_force_n > 0);
+  // 0 when none is magnetic, and the loop skips its magnetic query.
+  double max_magnetic_range_mm() const { return max_magnetic_range_mm_; }
+
   const HapticMaterial& material(int surface) const;  // that surface's feel
   double probe_radius_mm() const { return probe_radius_mm_; }
   std::size_t analytic_count() const { return shapes_.size(); }
@@ -58,13 +68,18 @@ class HapticScene {
     glm::dvec3 size;       // plane: (x, y, -); box: edges; sphere: (r, -, -); torus: (R, r, -)
     double bound_mm;       // radius of a bounding sphere around center
   };
+  // Frame, size and bounding radius of an analytic shape (sphere, box, torus, plane).
+  static Shape make_shape(const Surface& s, int index);
   Contact closest_analytic(const Shape& s, const glm::dvec3& p) const;
+  static bool inside(const Shape& s, const glm::dvec3& p);
 
   std::vector<Shape> shapes_;
+  std::vector<Shape> volumes_;  // penetrable spheres, boxes, tori: felt by medium_at()
   MeshBvh meshes_;
   std::vector<int> mesh_surface_;        // MeshBvh mesh index -> surface index
   std::vector<HapticMaterial> materials_;  // per surface index
   double probe_radius_mm_ = 0.0;
+  double max_magnetic_range_mm_ = 0.0;
 };
 
 }  // namespace ps::world

@@ -43,5 +43,42 @@ TEST(HapticAllocTest, TicksAgainstAMeshSceneDoNotAllocate) {
   EXPECT_TRUE(loop.state().read().in_contact);
 }
 
+// Every material law the tick applies: a magnetic box (one extra radius-limited query per
+// free-space tick), a water sphere (the inside test), a textured sticky plane.
+TEST(HapticAllocTest, TicksWithMaterialLawsDoNotAllocate) {
+  Scene sc = test::scene_with(5.0, {});
+  Material plain = sc.materials.front();
+  Material magnet = plain, water = plain, rough = plain;
+  magnet.haptic.magnetic_force_n = 2.0;
+  magnet.haptic.magnetic_range_mm = 10.0;
+  water.haptic.penetrable = true;
+  water.haptic.viscosity_n_s_per_mm = 0.01;
+  rough.haptic.stickiness_n = 0.5;
+  rough.haptic.texture.push_back({HapticWave::Shape::kSquare, 0.2, 3.0, {0.6, 0.8}});
+  sc.materials = {magnet, water, rough};
+  Surface box = test::analytic(SurfaceType::kBox, {0, 0, 10});
+  Surface ball = test::analytic(SurfaceType::kSphere, {40, 0, 20});
+  ball.radius_mm = 15.0;
+  ball.material_index = 1;
+  Surface floor = test::analytic(SurfaceType::kPlane);
+  floor.material_index = 2;
+  sc.surfaces = {box, ball, floor};
+  auto scene = HapticScene::build(sc);
+  ASSERT_TRUE(scene) << scene.error().message;
+  // Near the box's top, through the water, down onto the floor and along it.
+  LogDevice device({{0.0, {0, 0, 32}, 0, true}, {0.2, {40, 0, 20}, 0, true}, {0.5, {40, 0, 3}, 0, true},
+                    {1.0, {-20, 10, 3}, 0, true}},
+                   true, "materials");
+  FakeClock clock;
+  HapticLoopParams params;
+  params.keep_periods = 2000;
+  HapticLoop loop(device, clock, params, &scene.value());
+  loop.run_ticks(1);
+  const long before = g_allocations.load();
+  loop.run_ticks(999);
+  EXPECT_EQ(g_allocations.load() - before, 0);
+  EXPECT_TRUE(loop.state().read().in_contact);
+}
+
 }  // namespace
 }  // namespace ps::world
