@@ -9,16 +9,6 @@ namespace ps {
 
 namespace {
 
-// XYZ Euler: rotate about X first, then Y, then Z (R = Rz * Ry * Rx), angles in degrees.
-glm::dmat3 euler_xyz(const glm::dvec3& rotation_deg) {
-  const glm::dvec3 r = glm::radians(rotation_deg);
-  glm::dmat4 m(1.0);
-  m = glm::rotate(m, r.z, glm::dvec3(0, 0, 1));
-  m = glm::rotate(m, r.y, glm::dvec3(0, 1, 0));
-  m = glm::rotate(m, r.x, glm::dvec3(1, 0, 0));
-  return glm::dmat3(m);
-}
-
 Result<Mesh> local_mesh(const Surface& s) {
   switch (s.type) {
     case SurfaceType::kPlane: return mesh_detail::make_plane(s.size_mm, s.resolution);
@@ -35,6 +25,15 @@ Result<Mesh> local_mesh(const Surface& s) {
 
 }  // namespace
 
+glm::dmat3 euler_xyz_deg(const glm::dvec3& rotation_deg) {
+  const glm::dvec3 r = glm::radians(rotation_deg);
+  glm::dmat4 m(1.0);
+  m = glm::rotate(m, r.z, glm::dvec3(0, 0, 1));
+  m = glm::rotate(m, r.y, glm::dvec3(0, 1, 0));
+  m = glm::rotate(m, r.x, glm::dvec3(1, 0, 0));
+  return glm::dmat3(m);
+}
+
 Result<Mesh> build_surface_mesh(const Surface& surface) {
   Result<Mesh> mesh = local_mesh(surface);
   if (!mesh) return mesh;
@@ -46,7 +45,7 @@ Result<Mesh> build_surface_mesh(const Surface& surface) {
 
 void transform_mesh(Mesh& mesh, double scale, const glm::dvec3& rotation_deg,
                     const glm::dvec3& translation) {
-  const glm::dmat3 rotation = euler_xyz(rotation_deg);
+  const glm::dmat3 rotation = euler_xyz_deg(rotation_deg);
   for (glm::vec3& p : mesh.positions) {
     p = glm::vec3(rotation * (scale * glm::dvec3(p)) + translation);
   }

@@ -24,6 +24,10 @@ inline constexpr std::size_t kMaxMeshTriangles = 4'000'000;
 // Mesh files larger than this are refused before assimp reads them.
 inline constexpr std::uintmax_t kMaxMeshFileBytes = 256u << 20;
 
+// A surface's rotation: XYZ Euler in degrees, rotate about X first, then Y, then Z
+// (R = Rz * Ry * Rx). The renderer's meshes and the haptic geometry both use this one.
+glm::dmat3 euler_xyz_deg(const glm::dvec3& rotation_deg);
+
 // World-space mesh of a scene surface (procedural shapes tessellated at surface.resolution;
 // height fields from the grey image; meshes through assimp, transformed by centre/rotation/scale).
 Result<Mesh> build_surface_mesh(const Surface& surface);

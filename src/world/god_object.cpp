@@ -4,16 +4,9 @@
 #include <cmath>
 #include <limits>
 
+#include "world/shapes.h"
+
 namespace ps::world {
-
-namespace {
-
-glm::dvec3 unit_or(const glm::dvec3& v, const glm::dvec3& fallback) {
-  const double len = glm::length(v);
-  return len > 1e-12 ? v / len : fallback;
-}
-
-}  // namespace
 
 GodObject::GodObject(const HapticScene& scene, const GodObjectParams& params)
     : scene_(scene), params_(params), radius_(scene.probe_radius_mm()) {}

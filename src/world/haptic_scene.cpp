@@ -13,14 +13,6 @@
 
 namespace ps::world {
 
-glm::dmat3 euler_xyz_deg(const glm::dvec3& rotation_deg) {
-  const glm::dvec3 r = glm::radians(rotation_deg);
-  glm::dmat4 m(1.0);
-  m = glm::rotate(m, r.z, glm::dvec3(0, 0, 1));
-  m = glm::rotate(m, r.y, glm::dvec3(0, 1, 0));
-  m = glm::rotate(m, r.x, glm::dvec3(1, 0, 0));
-  return glm::dmat3(m);
-}
 
 namespace {
 

@@ -17,6 +17,7 @@
 #include <glm/glm.hpp>
 
 #include "core/result.h"
+#include "scene/mesh.h"
 #include "scene/scene.h"
 #include "world/mesh_bvh.h"
 
@@ -33,9 +34,9 @@ struct Contact {
   MeshHit mesh_hit;                  // the mesh hit (a hint for the next query nearby)
 };
 
-// The same XYZ Euler convention as scene/mesh.cpp (R = Rz Ry Rx, degrees), so an analytic
-// shape sits exactly where its render mesh is drawn (tests/world checks both agree).
-glm::dmat3 euler_xyz_deg(const glm::dvec3& rotation_deg);
+// Shapes are rotated with scene/mesh.h's euler_xyz_deg, the renderer's own convention, so an
+// analytic shape sits exactly where its render mesh is drawn (tests/world checks both agree).
+using ps::euler_xyz_deg;
 
 class HapticScene {
  public:

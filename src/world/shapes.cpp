@@ -5,16 +5,10 @@
 
 namespace ps::world {
 
-namespace {
-
-// Unit vector along v, or `fallback` when v is (numerically) zero: the query point sits on a
-// symmetry centre where every direction is equally close.
 glm::dvec3 unit_or(const glm::dvec3& v, const glm::dvec3& fallback) {
   const double len = glm::length(v);
   return len > 1e-12 ? v / len : fallback;
 }
-
-}  // namespace
 
 SurfacePoint closest_on_plane(const glm::dvec3& p, const glm::dvec2& size_mm) {
   const glm::dvec2 h = 0.5 * size_mm;

@@ -10,6 +10,10 @@
 
 namespace ps::world {
 
+// Unit vector along v, or `fallback` when v is (numerically) zero: a query point on a symmetry
+// centre (every direction equally close) or a proxy exactly on a surface.
+glm::dvec3 unit_or(const glm::dvec3& v, const glm::dvec3& fallback);
+
 struct SurfacePoint {
   glm::dvec3 point{0.0};
   glm::dvec3 normal{0.0, 0.0, 1.0};
