@@ -146,7 +146,7 @@ Status apply_override(toml::table& root, const std::string& text, ParseContext& 
                       "scene file's 'include' instead");
   }
   if (section == Section::kRoot) return unknown_key(label, parts[0], known_keys(Section::kRoot));
-  if (section == Section::kMaterial && parts.size() >= 2) {
+  if (section == Section::kMaterial) {  // also a bare "materials": it names no table
     Result<Section> leaf_section = material_leaf_section(parts, label);
     if (!leaf_section) return leaf_section.error();
     section = *leaf_section;

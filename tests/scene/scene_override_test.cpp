@@ -99,6 +99,10 @@ TEST(SceneOverrideTest, MalformedOverrides) {
   EXPECT_EQ(error_of(kScene, {"materials.lambda_min=3"}),
             "--set materials.lambda_min: expected materials.NAME.KEY=VALUE (or "
             "materials.NAME.haptic.KEY, materials.NAME.haptic.texture.N.KEY)");
+  // A bare section name (found by the scene fuzzer: it read past the path's one part).
+  EXPECT_EQ(error_of(kScene, {"materials=3"}),
+            "--set materials: expected materials.NAME.KEY=VALUE (or "
+            "materials.NAME.haptic.KEY, materials.NAME.haptic.texture.N.KEY)");
 }
 
 }  // namespace
