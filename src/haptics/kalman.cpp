@@ -21,13 +21,9 @@ void AxisKalman::predict(double dt_s, const KalmanParams& params) {
 }
 
 void AxisKalman::step(double dt_s, double measured_mm, const KalmanParams& params) {
-  const double t = dt_s, q = params.accel_sd_mm_s2 * params.accel_sd_mm_s2;
   const double r = params.measurement_sd_mm * params.measurement_sd_mm;
-  // Predict: x = A x, P = A P A^T + S_w.
-  p_ += t * v_;
-  const double a00 = p00_ + 2.0 * t * p01_ + t * t * p11_ + q * t * t * t * t / 4.0;
-  const double a01 = p01_ + t * p11_ + q * t * t * t / 2.0;
-  const double a11 = p11_ + q * t * t;
+  predict(dt_s, params);  // x = A x, P = A P A^T + S_w
+  const double a00 = p00_, a01 = p01_, a11 = p11_;
   // Update with y: K = P C^T / (C P C^T + S_z).
   const double s = a00 + r;
   const double k0 = a00 / s, k1 = a01 / s;
