@@ -26,12 +26,7 @@ rm -f "${work}/scenes/wood.overrides.toml" "${work}"/screenshot_*.png
 awk 'BEGIN { for (i = 0; i <= 600; ++i) printf "%.2f 0 %d 8.5 0\n", i * 0.25, (i % 2 ? 7 : -7) }' \
   > "${work}/stroke.traj"
 
-display=":$(( 90 + RANDOM % 100 ))"
-Xvfb "${display}" -screen 0 1024x768x24 >/dev/null 2>&1 &
-xvfb_pid=$!
-trap 'kill ${xvfb_pid} 2>/dev/null || true' EXIT
-export DISPLAY="${display}"
-sleep 1
+source "${repo}/tools/xvfb_display.sh"
 
 cd "${work}"
 "${exe}" run --scene scenes/wood.toml --panel --no-watch --device trajectory:stroke.traj \

@@ -71,12 +71,7 @@ if mode == "black":
 write_png(rows, w, h, sys.argv[7])
 PY
 
-display=":$(( 90 + RANDOM % 100 ))"
-Xvfb "${display}" -screen 0 1024x768x24 >/dev/null 2>&1 &
-xvfb_pid=$!
-trap 'kill ${xvfb_pid} 2>/dev/null || true' EXIT
-export DISPLAY="${display}"
-sleep 1
+source "${repo}/tools/xvfb_display.sh"
 
 # The mouse itself (the default device), moved by xdotool as a person would.
 "${exe}" run --scene "${scene}" --no-watch --ui-report ui_report.json --quit-after 90 > run.log 2>&1 &
