@@ -107,6 +107,21 @@ void HapticLoop::tick(Clock::Ns now) {
     const ForceResult f = god_ ? compute_proxy_force(params_.forces, *god_, local_.position_mm, local_.velocity_mm_s, t)
                                : compute_force(params_.forces, surface_.read(), local_.position_mm,
                                                local_.velocity_mm_s, local_.proxy_mm, t);
+    if (f.in_contact != local_.in_contact) {
+      HapticEvent e;
+      e.kind = f.in_contact ? EventKind::contact_start : EventKind::contact_end;
+      e.tick = local_.tick;
+      e.time_s = t;
+      e.surface = f.in_contact ? f.surface : local_.contact_surface;
+      e.position_mm = f.proxy_mm;
+      // Approach speed: the hand's speed against the force (the force points out of the
+      // surface); the whole speed when the first tick's force is still zero.
+      const double fn = glm::length(f.force_n);
+      e.value = fn > 0.0 ? std::max(0.0, -glm::dot(local_.velocity_mm_s, f.force_n / fn))
+                         : glm::length(local_.velocity_mm_s);
+      if (!f.in_contact) e.value = 0.0;
+      events_.push(e);
+    }
     local_.contact_surface = f.surface;
     local_.local_facets = f.facets_visited;
     local_.proxy_mm = f.proxy_mm;

@@ -20,6 +20,7 @@
 #include "devices/sample_log.h"
 #include "devices/sanitizer.h"
 #include "haptics/clock.h"
+#include "haptics/events.h"
 #include "haptics/force_model.h"
 #include "haptics/kalman.h"
 #include "haptics/loop_stats.h"
@@ -79,6 +80,9 @@ class HapticLoop {
   void run_ticks(std::uint64_t n);  // on the caller's thread (fake clock)
 
   const Snapshot<HapticState>& state() const { return state_; }
+  // Events the haptic thread raised (contact start/end, ...): drained by one consumer, the
+  // render thread or `replay` (haptics/events.h).
+  EventQueue& events() { return events_; }
   Snapshot<SurfaceModel>& surface() { return surface_; }
   // After stop() (or between run_ticks): measured periods in microseconds.
   const std::vector<double>& periods_us() const { return periods_us_.values(); }
@@ -109,6 +113,7 @@ class HapticLoop {
   BoundedLog window_jitter_us_;   // |period - nominal| of the current 1 s HUD window
   std::uint64_t window_ticks_ = 0;  // ticks in the HUD window (the jitter log may have dropped some)
   Snapshot<HapticState> state_;
+  EventQueue events_;
   Snapshot<SurfaceModel> surface_;
   std::string priority_ = "normal";
   std::atomic<bool> stop_{false};

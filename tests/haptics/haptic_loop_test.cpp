@@ -121,6 +121,74 @@ TEST(HapticLoopTest, ProxyStaysOnSurfacePublishedByRenderThread) {
   EXPECT_LE(glm::length(st.force_n), 8.0 + 1e-12); // clamped
 }
 
+// A press onto the floor and back up: exactly one contact_start and one contact_end, at the
+// ticks where in_contact flips, with the approach speed of the press (30 mm/s downward ramp;
+// the Kalman velocity has settled long before contact, so within 5 %).
+TEST(HapticLoopTest, ContactStartAndEndAreQueuedOnceAtTheFlip) {
+  std::vector<DeviceSample> s = {{0.0, {0, 0, 20}, 0, true}, {1.0, {0, 0, -10}, 0, true},
+                                 {2.0, {0, 0, 20}, 0, true}};
+  LogDevice device(s, true, "press and lift");
+  FakeClock clock;
+  HapticLoop loop(device, clock, HapticLoopParams{});
+  SurfaceModel floor;
+  floor.valid = true;
+  floor.probe_radius_mm = 8.0;
+  loop.surface().publish(floor);
+  std::vector<HapticEvent> events;
+  std::vector<std::uint64_t> flips;
+  bool was = false;
+  for (int i = 0; i < 2000; ++i) {
+    loop.run_ticks(1);
+    const HapticState st = loop.state().read();
+    if (st.in_contact != was) flips.push_back(st.tick - 1);
+    was = st.in_contact;
+    loop.events().drain([&](const HapticEvent& e) { events.push_back(e); });
+  }
+  ASSERT_EQ(flips.size(), 2u);
+  ASSERT_EQ(events.size(), 2u);
+  EXPECT_EQ(events[0].kind, EventKind::contact_start);
+  EXPECT_EQ(events[1].kind, EventKind::contact_end);
+  EXPECT_EQ(events[0].tick, flips[0]);
+  EXPECT_EQ(events[1].tick, flips[1]);
+  EXPECT_NEAR(events[0].time_s, 0.001 * static_cast<double>(flips[0]), 1e-12);
+  EXPECT_NEAR(events[0].value, 30.0, 1.5);
+  EXPECT_EQ(loop.events().dropped(), 0u);
+}
+
+TEST(EventQueueTest, KeepsOrderDropsWhenFullAndCounts) {
+  EventQueue q(4);
+  for (int i = 0; i < 6; ++i) {
+    HapticEvent e;
+    e.tick = static_cast<std::uint64_t>(i);
+    EXPECT_EQ(q.push(e), i < 4);
+  }
+  EXPECT_EQ(q.dropped(), 2u);
+  std::vector<std::uint64_t> ticks;
+  EXPECT_EQ(q.drain([&](const HapticEvent& e) { ticks.push_back(e.tick); }), 4u);
+  EXPECT_EQ(ticks, (std::vector<std::uint64_t>{0, 1, 2, 3}));
+  HapticEvent e;
+  e.tick = 9;
+  EXPECT_TRUE(q.push(e));  // room again after the drain
+  EXPECT_EQ(q.drain([&](const HapticEvent& x) { EXPECT_EQ(x.tick, 9u); }), 1u);
+}
+
+TEST(EventQueueTest, JsonLineHasFixedFieldsAndEscapes) {
+  HapticEvent e;
+  e.kind = EventKind::button_fired;
+  e.tick = 250;
+  e.time_s = 0.25;
+  e.surface = 2;
+  e.index = 1;
+  e.value = 0.5;
+  e.position_mm = {1.0, -2.0, 8.0};
+  e.set_label("scene \"b\".toml");
+  EXPECT_EQ(event_json(e),
+            "{\"t\":0.25,\"tick\":250,\"event\":\"button_fired\",\"surface\":2,\"index\":1,"
+            "\"value\":0.5,\"pos\":[1,-2,8],\"label\":\"scene \\\"b\\\".toml\"}");
+  e.set_label(std::string(100, 'x'));
+  EXPECT_EQ(e.label_view().size(), 47u);  // truncated to the fixed buffer, NUL kept
+}
+
 TEST(DeviceSanitizerTest, NanJumpsAndBackwardTimeNeverReachTheProxy) {
   const std::string log =
       "# bad data on purpose\n"
