@@ -74,7 +74,43 @@ void HapticLoop::update_rate(Clock::Ns now) {
   }
 }
 
+void HapticLoop::replace_scene(std::shared_ptr<const world::HapticScene> scene, std::string_view label) {
+  std::shared_ptr<const world::HapticScene> drop;
+  {
+    std::lock_guard<std::mutex> lock(swap_mutex_);
+    drop = std::move(retired_);  // released here, on the caller's thread
+    pending_ = std::move(scene);
+    pending_label_.assign(label);
+    swap_pending_.store(true, std::memory_order_release);
+  }
+}
+
+const world::HapticScene* HapticLoop::scene() const { return god_ ? &god_->scene() : nullptr; }
+
+void HapticLoop::adopt_pending_scene(Clock::Ns now) {
+  // try_lock: the caller holds the mutex only to swap two pointers; if it is in there now, the
+  // next tick adopts the scene instead of this one waiting.
+  std::unique_lock<std::mutex> lock(swap_mutex_, std::try_to_lock);
+  if (!lock.owns_lock()) return;
+  swap_pending_.store(false, std::memory_order_relaxed);
+  if (!pending_) return;
+  const bool had_proxy = god_ && god_->initialized();
+  const glm::dvec3 proxy = local_.proxy_mm;
+  god_.emplace(*pending_);  // GodObject holds no heap memory: nothing is freed on this thread
+  if (had_proxy) god_->reset(proxy);
+  retired_ = std::move(scene_owned_);
+  scene_owned_ = std::move(pending_);
+  HapticEvent e;
+  e.kind = EventKind::scene_switched;
+  e.tick = local_.tick;
+  e.time_s = static_cast<double>((now - start_).count()) * 1e-9;
+  e.position_mm = proxy;
+  e.set_label(pending_label_);
+  events_.push(e);
+}
+
 void HapticLoop::tick(Clock::Ns now) {
+  if (swap_pending_.load(std::memory_order_acquire)) adopt_pending_scene(now);
   // T of the filter = the measured tick period: after a preemption sleep_until() runs the
   // missed ticks back to back, and their samples are microseconds apart, not 1 ms. Clamped so
   // a stall (debugger, suspend) cannot blow up the prediction.

@@ -10,6 +10,8 @@
 
 #include <atomic>
 #include <cstdint>
+#include <memory>
+#include <mutex>
 #include <optional>
 #include <string>
 #include <thread>
@@ -73,6 +75,14 @@ class HapticLoop {
   HapticLoop& operator=(const HapticLoop&) = delete;
 
   void set_recorder(SampleRecorder* recorder) { recorder_ = recorder; }  // before start()
+  // Hands the loop a new haptic scene (a live reload, a button's scene switch): any thread, at
+  // any time; the haptic thread adopts it at the start of its next tick, keeps the proxy where it
+  // is (pushed out of anything it now sits in, GodObject::reset) and queues a scene_switched
+  // event labelled `label`. The loop shares ownership; the scene it drops is released by the
+  // next replace_scene() call, not on the haptic thread. Replaces a scene given at construction
+  // too (that one stays the caller's).
+  void replace_scene(std::shared_ptr<const world::HapticScene> scene, std::string_view label = {});
+  const world::HapticScene* scene() const;  // the one in use (haptic thread / between ticks)
   void start();        // spawns the thread
   // After start(): "SCHED_FIFO 80", "normal" or "normal (SCHED_FIFO refused: <why>)".
   const std::string& priority() const { return priority_; }
@@ -106,7 +116,13 @@ class HapticLoop {
   Kalman3 kalman_;
   DeviceSample last_fed_;  // the last sample given to the filter (repeats are predicted over)
   bool have_fed_ = false;
+  void adopt_pending_scene(Clock::Ns now);  // haptic thread, at a tick's start
   std::optional<world::GodObject> god_;  // set when a haptic scene is given
+  std::shared_ptr<const world::HapticScene> scene_owned_;  // after replace_scene()
+  std::mutex swap_mutex_;  // guards pending_, retired_
+  std::shared_ptr<const world::HapticScene> pending_, retired_;
+  std::string pending_label_;
+  std::atomic<bool> swap_pending_{false};
   HapticState local_;        // haptic thread's working copy
   SampleRecorder* recorder_ = nullptr;
   BoundedLog periods_us_;         // every period, for period_stats()

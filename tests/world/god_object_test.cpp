@@ -215,5 +215,47 @@ TEST(HapticLoopSceneTest, LoopOnAPlaneSceneHoldsTheProxyAndPushesBackWithTheMate
   EXPECT_NEAR(st.force_n.x, 0.0, 1e-6);
 }
 
+// A live reload or a button's scene switch: the floor rises from z = 0 to z = 5 while the hand
+// rests at z = 4 and the proxy centre at z = 8 (above the new floor, but within R of it; a
+// plane is two-sided, so the floor stays below the proxy). The loop adopts the new scene at the
+// next tick, queues one scene_switched event with that tick, pushes the proxy out onto the new
+// floor (resting height 5 + R) and pushes the hand back with the new floor's stiffness
+// (0.8 N/mm x 9 mm). Same tolerances as the test above.
+TEST(HapticLoopSceneTest, ReplacedSceneIsAdoptedAtTheNextTickWithAnEvent) {
+  Surface low = test::analytic(SurfaceType::kPlane);
+  low.size_mm = {200.0, 200.0};
+  Surface high = low;
+  high.center = {0.0, 0.0, 5.0};
+  Scene a = test::scene_with(8.0, {low});
+  Scene b = test::scene_with(8.0, {high});
+  b.materials[0].haptic.stiffness_n_per_mm = 0.8;
+  auto first = HapticScene::build(a);
+  auto second = HapticScene::build(b);
+  ASSERT_TRUE(first && second);
+  LogDevice device({{0.0, {0, 0, 20}, 0, true}, {0.5, {0, 0, 4}, 0, true}, {4.0, {0, 0, 4}, 0, true}}, true, "press");
+  FakeClock clock;
+  HapticLoopParams params;
+  params.keep_periods = 5000;
+  HapticLoop loop(device, clock, params, &first.value());
+  loop.run_ticks(1500);
+  EXPECT_NEAR(loop.state().read().proxy_mm.z, 8.0, kBehindTolMm);
+  loop.events().drain([](const HapticEvent&) {});
+  loop.replace_scene(std::make_shared<const HapticScene>(std::move(second.value())), "high.toml");
+  EXPECT_EQ(loop.scene(), &first.value());  // not before the haptic thread's next tick
+  loop.run_ticks(1);
+  EXPECT_NE(loop.scene(), &first.value());
+  std::vector<HapticEvent> events;
+  loop.events().drain([&](const HapticEvent& e) { events.push_back(e); });
+  ASSERT_FALSE(events.empty());
+  EXPECT_EQ(events[0].kind, EventKind::scene_switched);
+  EXPECT_EQ(events[0].tick, 1500u);
+  EXPECT_EQ(events[0].label_view(), "high.toml");
+  loop.run_ticks(1500);
+  const HapticState st = loop.state().read();
+  EXPECT_TRUE(st.in_contact);
+  EXPECT_NEAR(st.proxy_mm.z, 13.0, kBehindTolMm);
+  EXPECT_NEAR(st.force_n.z, 7.2, 1e-2);
+}
+
 }  // namespace
 }  // namespace ps::world
