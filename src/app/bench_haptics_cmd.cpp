@@ -77,6 +77,9 @@ struct BenchArgs {
   gl::Backend backend = gl::Backend::kAuto;
   double seconds = 5.0;
   int realtime = 0;
+  int timer_slack_ns = -1;  // -1: the loop's default
+  int wake_spin_us = -1;
+  int slice_us = -1;
 };
 
 void declare(cli::Command& cmd, BenchArgs& a) {
@@ -87,6 +90,12 @@ void declare(cli::Command& cmd, BenchArgs& a) {
   cli::add_gl_options(app, a.backend);
   cli::add_int(app, "--realtime", "PRIO", a.realtime, 1, 99,
                "run the haptic thread SCHED_FIFO at PRIO (1..99; needs CAP_SYS_NICE)");
+  cli::add_int(app, "--timer-slack-ns", "NS", a.timer_slack_ns, 0, 1'000'000,
+               "the haptic thread's timer slack (0 = the kernel's default, 50 us; default 1000)");
+  cli::add_int(app, "--wake-spin-us", "US", a.wake_spin_us, 0, 900,
+               "poll the clock for the last US microseconds before each tick (default 50)");
+  cli::add_int(app, "--slice-us", "US", a.slice_us, 0, 100'000,
+               "ask the scheduler for a US-microsecond slice for the haptic thread (0 = the kernel's; default 100)");
 }
 
 int bench(const cli::Command& cmd, const BenchArgs& a) {
@@ -102,13 +111,16 @@ int bench(const cli::Command& cmd, const BenchArgs& a) {
   SteadyClock clock;
   HapticLoopParams params;
   params.realtime_priority = a.realtime;
+  if (a.timer_slack_ns >= 0) params.timer_slack_ns = a.timer_slack_ns;
+  if (a.wake_spin_us >= 0) params.wake_spin_us = a.wake_spin_us;
+  if (a.slice_us >= 0) params.sched_slice_us = a.slice_us;
   HapticLoop loop(device, clock, params, &haptic_scene.value());
   std::vector<double> latency_ms, frame_ms, facets;
   const auto t0 = std::chrono::steady_clock::now();
   if (Status s = measure(*renderer.value(), loop, a.seconds, latency_ms, frame_ms, facets); !s) return cmd.fail(s.error());
   const double elapsed = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   std::printf("bench-haptics: %s, %dx%d, %s, haptic thread %s\n", scene->path.c_str(), scene->render.width,
-              scene->render.height, ctx.value()->renderer().c_str(), loop.priority().c_str());
+              scene->render.height, ctx.value()->renderer().c_str(), loop.scheduling().c_str());
   print_report(loop, elapsed, latency_ms, frame_ms, facets, haptic_scene.value());
   return cli::kExitOk;
 }

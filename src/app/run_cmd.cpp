@@ -364,7 +364,7 @@ int run(const cli::Command& cmd, const RunArgs& a) {
   // 1 ms; bounded, as a gamepad may have nothing to give yet).
   for (int i = 0; i < 100 && !s.loop->state().read().have_sample; ++i)
     std::this_thread::sleep_for(std::chrono::milliseconds(1));
-  if (a.realtime > 0 && !a.quiet) std::printf("haptic thread: %s\n", s.loop->priority().c_str());
+  if (!a.quiet) std::printf("haptic thread: %s\n", s.loop->scheduling().c_str());
   const Status looped = window_loop(a, s);
   s.loop->stop();  // join the haptic thread before touching what it wrote
   if (s.recorder)

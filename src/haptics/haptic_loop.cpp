@@ -2,8 +2,13 @@
 
 #include <pthread.h>
 #include <sched.h>
+#include <sys/prctl.h>
+#include <sys/resource.h>
+#include <sys/syscall.h>
+#include <unistd.h>
 
 #include <algorithm>
+#include <cerrno>
 #include <cmath>
 #include <cstring>
 
@@ -18,13 +23,43 @@ HapticLoop::HapticLoop(Device& device, Clock& clock, const HapticLoopParams& par
       // back inside one window, so room for 2 s (beyond that the HUD's p99 skips samples).
       window_jitter_us_(2 * static_cast<std::size_t>(std::ceil(params.rate_hz)) + 16) {
   if (scene != nullptr) god_.emplace(*scene);
+  clock_.set_wake_spin(std::chrono::microseconds(std::max<std::int64_t>(params.wake_spin_us, 0)));
 }
 
 HapticLoop::~HapticLoop() { stop(); }
 
+namespace {
+
+// sched_setattr(2) has no glibc wrapper; the struct is the kernel's (include/uapi/linux/sched/types.h).
+struct SchedAttr {
+  std::uint32_t size;
+  std::uint32_t sched_policy;
+  std::uint64_t sched_flags;
+  std::int32_t sched_nice;
+  std::uint32_t sched_priority;
+  std::uint64_t sched_runtime, sched_deadline, sched_period;
+  std::uint32_t sched_util_min, sched_util_max;
+};
+
+// Asks for a shorter EEVDF slice for the calling thread (SCHED_OTHER, nice unchanged). Returns
+// 0 or an errno; kernels before 6.12 accept it and ignore the runtime.
+int request_slice(std::int64_t slice_us) {
+  SchedAttr attr{};
+  attr.size = sizeof attr;
+  attr.sched_policy = SCHED_OTHER;
+  attr.sched_nice = getpriority(PRIO_PROCESS, 0);
+  attr.sched_runtime = static_cast<std::uint64_t>(slice_us) * 1000u;
+  return syscall(SYS_sched_setattr, 0, &attr, 0u) == 0 ? 0 : errno;
+}
+
+}  // namespace
+
 void HapticLoop::start() {
   stop_.store(false);
   thread_ = std::thread([this] {
+    pthread_setname_np(pthread_self(), "ps-haptic");  // shows in top -H, ps -L, /proc/<pid>/task/*/comm
+    if (params_.sched_slice_us > 0) slice_error_.store(request_slice(params_.sched_slice_us));
+    if (params_.timer_slack_ns > 0) prctl(PR_SET_TIMERSLACK, static_cast<unsigned long>(params_.timer_slack_ns), 0, 0, 0);
     while (!stop_.load(std::memory_order_relaxed)) scheduled_tick();
   });
   if (params_.realtime_priority > 0) {
@@ -34,6 +69,19 @@ void HapticLoop::start() {
     priority_ = err == 0 ? "SCHED_FIFO " + std::to_string(sp.sched_priority)
                          : std::string("normal (SCHED_FIFO refused: ") + std::strerror(err) + ")";
   }
+}
+
+std::string HapticLoop::scheduling() const {
+  std::string out = priority_;
+  if (params_.sched_slice_us > 0) {
+    const int err = slice_error_.load();
+    out += err == 0 ? ", slice " + std::to_string(params_.sched_slice_us) + " us"
+                    : std::string(", slice refused (") + std::strerror(err) + ")";
+  }
+  out += params_.timer_slack_ns > 0 ? ", timer slack " + std::to_string(params_.timer_slack_ns) + " ns"
+                                    : std::string(", timer slack: kernel default");
+  out += ", wake spin " + std::to_string(std::max<std::int64_t>(params_.wake_spin_us, 0)) + " us";
+  return out;
 }
 
 void HapticLoop::stop() {

@@ -42,6 +42,15 @@ struct HapticLoopParams {
   // (or an RLIMIT_RTPRIO); without it the loop runs at normal priority and says so. Opt-in:
   // the thread sleeps every tick, but a real-time thread is still a system-wide decision.
   int realtime_priority = 0;
+  // Keeping time at normal priority (docs/haptics.md, "Keeping time without privileges"):
+  // the haptic thread's timer slack (prctl PR_SET_TIMERSLACK; the kernel's default is 50 us,
+  // 0 = leave it) and how long before each tick it stops sleeping and polls the clock.
+  std::int64_t timer_slack_ns = 1'000;
+  std::int64_t wake_spin_us = 50;
+  // EEVDF (Linux >= 6.6) runs the current thread to the end of its slice (~1.5 ms on 2 CPUs)
+  // before a woken thread of equal weight; since 6.12 a thread may ask for a shorter slice
+  // (sched_setattr sched_runtime, no privilege needed) and then preempts on wake-up. 0 = leave.
+  std::int64_t sched_slice_us = 100;
 };
 
 struct HapticState {
@@ -86,6 +95,9 @@ class HapticLoop {
   void start();        // spawns the thread
   // After start(): "SCHED_FIFO 80", "normal" or "normal (SCHED_FIFO refused: <why>)".
   const std::string& priority() const { return priority_; }
+  // After the thread's first tick: the priority and the time-keeping settings in force, e.g.
+  // "normal, slice 100 us, timer slack 1000 ns, wake spin 50 us" (a refused slice says why).
+  std::string scheduling() const;
   void stop();         // joins it; idempotent
   void run_ticks(std::uint64_t n);  // on the caller's thread (fake clock)
 
@@ -133,6 +145,7 @@ class HapticLoop {
   Snapshot<SurfaceModel> surface_;
   std::string priority_ = "normal";
   std::atomic<bool> stop_{false};
+  std::atomic<int> slice_error_{0};  // errno of the slice request (0 = granted or not asked)
   std::thread thread_;
 };
 

@@ -3,6 +3,8 @@
 #include <gtest/gtest.h>
 
 #include <atomic>
+#include <chrono>
+#include <string>
 #include <thread>
 
 #include "core/snapshot.h"
@@ -62,6 +64,33 @@ TEST(SnapshotTest, HapticThreadAndRenderThreadExchange) {
   }
   loop.stop();
   EXPECT_GT(last_tick, 100u);  // ~200 at 1 kHz; generous for a loaded 2-core machine
+}
+
+// The time-keeping settings reach the real thread: the slice request is a raw syscall with the
+// kernel's struct layout, which a wrong size or field order makes fail (E2BIG / EINVAL); the
+// summary line names each setting. (How well it keeps time is measured in bench-haptics.)
+TEST(HapticLoopTimingTest, SliceSlackAndSpinAreAppliedOnTheHapticThread) {
+  LogDevice device({{0.0, {0, 0, 20}, 0, true}, {1.0, {50, 0, 0}, 0, true}}, true, "t");
+  SteadyClock clock;
+  HapticLoop loop(device, clock, HapticLoopParams{});
+  loop.start();
+  while (loop.state().read().tick < 5) std::this_thread::sleep_for(std::chrono::milliseconds(1));
+  loop.stop();
+  const std::string s = loop.scheduling();
+  EXPECT_NE(s.find("slice 100 us"), std::string::npos) << s;
+  EXPECT_NE(s.find("timer slack 1000 ns"), std::string::npos) << s;
+  EXPECT_NE(s.find("wake spin 50 us"), std::string::npos) << s;
+}
+
+// With a wake spin the clock still never returns early (the spin polls up to the deadline).
+TEST(HapticLoopTimingTest, SpinningClockNeverWakesEarly) {
+  SteadyClock clock;
+  clock.set_wake_spin(std::chrono::microseconds(200));
+  for (int i = 0; i < 50; ++i) {
+    const Clock::Ns when = clock.now() + std::chrono::microseconds(300 + 20 * i);
+    clock.sleep_until(when);
+    EXPECT_GE(clock.now(), when);
+  }
 }
 
 // The event queue between the haptic thread (producer) and the render thread (consumer): every
