@@ -124,7 +124,9 @@ int render(const cli::Command& cmd, const RenderArgs& a) {
   desc.backend = a.backend;
   auto ctx = gl::create_context(desc);
   if (!ctx) return cmd.fail(ctx.error());
-  auto renderer = Renderer::create(scene.value(), {});
+  RendererOptions options;
+  options.expected_frames = scene->render.frames;  // a short render skips a tile bake it would not repay
+  auto renderer = Renderer::create(scene.value(), options);
   if (!renderer) return cmd.fail(renderer.error());
   renderer.value()->set_show_probe(a.show_probe);
   const int frames = scene->render.frames;

@@ -1,5 +1,6 @@
 // `pseudoshadow replay`: renders a recorded or scripted device session headless at a fixed
 // frame rate, deterministically (fake clock, no threads), and writes the frames.
+#include <cmath>
 #include <cstdio>
 #include <unistd.h>
 
@@ -72,10 +73,12 @@ struct ReplayGl {  // context first: the renderer's GL objects die before it
   std::unique_ptr<Renderer> renderer;
 };
 
-Result<ReplayGl> open_renderer(const ReplayArgs& a, const Scene& scene) {
+Result<ReplayGl> open_renderer(const ReplayArgs& a, const Scene& scene, int frames) {
   auto ctx = gl::create_context({a.backend});
   if (!ctx) return ctx.error();
-  auto renderer = Renderer::create(scene, {});
+  RendererOptions options;
+  options.expected_frames = frames;  // a short replay skips a tile bake it would not repay
+  auto renderer = Renderer::create(scene, options);
   if (!renderer) return renderer.error();
   renderer.value()->set_show_probe(a.show_probe);
   return ReplayGl{std::move(ctx.value()), std::move(renderer.value())};
@@ -110,7 +113,9 @@ int replay(const cli::Command& cmd, const ReplayArgs& a) {
   if (!device) return fail(device.error());
   auto scene = cli::load_scene_or_default(a.scene);
   if (!scene) return cmd.fail(scene.error(), cli::scene_exit_code(scene.error()));
-  auto gl_state = open_renderer(a, scene.value());
+  // The frames the session will give (replay_session: one per 1/fps of the log, plus the first).
+  const int frames = static_cast<int>(std::floor(std::max(0.0, device->device->duration_s()) * a.fps + 1e-9)) + 1;
+  auto gl_state = open_renderer(a, scene.value(), frames);
   if (!gl_state) return fail(gl_state.error());
   auto haptic_scene = world::HapticScene::build(scene.value());  // what the proxy collides with
   if (!haptic_scene) return fail(haptic_scene.error());

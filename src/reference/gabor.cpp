@@ -226,6 +226,24 @@ double gabor_baked_rms_vs_naive(const GaborParams& g, const GaborSetup& s, const
   return std::sqrt(sum2 / (kN * kN));
 }
 
+namespace {
+// The tiles "auto" tries, in order (fastest lookup first).
+constexpr struct AutoTry { bool linear; int samples; } kAutoTries[] = {{true, 24}, {true, 32}, {false, 16}, {false, 32}};
+}  // namespace
+
+int smallest_auto_tile_texels(const GaborParams& g, const GaborSetup& s, double min_period_mm) {
+  if (g.strategy != GaborParams::Strategy::kAuto) return 0;
+  int smallest = 0;
+  for (const AutoTry& t : kAutoTries) {
+    GaborParams tried = g;
+    tried.bake_samples_per_lambda = t.samples;
+    const GaborBakePlan plan = make_gabor_bake_plan(tried, s);
+    if (!plan.ok || plan.period_mm < min_period_mm) continue;
+    if (smallest == 0 || plan.texels < smallest) smallest = plan.texels;
+  }
+  return smallest;
+}
+
 GaborStrategyChoice choose_gabor_tile(const GaborParams& g, const GaborSetup& s, std::uint32_t seed,
                                       double min_period_mm) {
   GaborStrategyChoice c;
@@ -235,8 +253,7 @@ GaborStrategyChoice choose_gabor_tile(const GaborParams& g, const GaborSetup& s,
     return c;
   }
   if (g.strategy != GaborParams::Strategy::kAuto) return c;
-  constexpr struct { bool linear; int samples; } kTries[] = {{true, 24}, {true, 32}, {false, 16}, {false, 32}};
-  for (const auto& t : kTries) {
+  for (const AutoTry& t : kAutoTries) {
     GaborParams tried = g;
     tried.bake_samples_per_lambda = t.samples;
     GaborBakePlan plan = make_gabor_bake_plan(tried, s);

@@ -81,6 +81,10 @@ struct GaborStrategyChoice {
   double rms_vs_naive = -1.0;  // measured when kAuto considered a tile (last one tried)
   double best_period_mm = 0.0; // kAuto: the longest period a tile could have had
 };
+// The side (texels) of the smallest tile "auto" could pick with a period >= min_period_mm,
+// without measuring any tile's error (cheap: plans only); 0 if it could pick none or the
+// strategy is not "auto". A lower bound on the bake a renderer would pay.
+int smallest_auto_tile_texels(const GaborParams& g, const GaborSetup& s, double min_period_mm);
 GaborStrategyChoice choose_gabor_tile(const GaborParams& g, const GaborSetup& s, std::uint32_t seed,
                                       double min_period_mm = 0.0);
 

@@ -150,13 +150,63 @@ Status Renderer::load_materials() {
     }
     ms.gabor_setup = make_gabor_setup(m.gabor);
     if (m.textured) {
-      const GaborStrategyChoice choice = choose_gabor_tile(m.gabor, ms.gabor_setup, seed, shadow_window_mm);
-      ms.bake_plan = choice.plan;
-      ms.strategy_note = strategy_note(m, choice, shadow_window_mm);
+      // Less work than even the smallest tile auto could pick: decided before auto measures
+      // its candidates' error (a CPU sum costing about as much as a small frame).
+      const int smallest = smallest_auto_tile_texels(m.gabor, ms.gabor_setup, shadow_window_mm);
+      if (naive_is_less_work(m, smallest)) {
+        ms.strategy_note = naive_note(m, smallest);
+      } else {
+        const GaborStrategyChoice choice = choose_gabor_tile(m.gabor, ms.gabor_setup, seed, shadow_window_mm);
+        ms.bake_plan = choice.plan;
+        ms.strategy_note = strategy_note(m, choice, shadow_window_mm);
+        if (choice.plan.ok && naive_is_less_work(m, choice.plan.texels)) {
+          ms.strategy_note = naive_note(m, choice.plan.texels);
+          ms.bake_plan = GaborBakePlan{};
+        }
+      }
     }
     ms.gabor_block = make_gabor_block(m.gabor, ms.gabor_setup, ms.bake_plan, seed);
   }
   return ok_status();
+}
+
+// "auto" picked a tile, but the frames this renderer will draw need less texture work than
+// the bake: the per-pixel sum evaluates at most width x height pixels a frame (every pixel in
+// the shadow), the bake evaluates texels^2 samples of the same sum once.
+bool Renderer::naive_is_less_work(const Material& m, int tile_texels) const {
+  if (m.gabor.strategy != GaborParams::Strategy::kAuto || tile_texels <= 0 || options_.expected_frames <= 0)
+    return false;
+  const double pixels = static_cast<double>(options_.expected_frames) * textured_pixels_per_frame();
+  return pixels <= static_cast<double>(tile_texels) * tile_texels;
+}
+
+// An upper bound on the pixels a frame textures: the pseudo-shadow's square window (as wide as
+// the probe's bounding diameter, plan.cpp) seen face-on at the probe's nearest distance to the
+// camera (foreshortening only shrinks it), capped by the image. The probe's position at
+// creation stands for the frames' (a replay that brings it much closer bakes less often than
+// it should; the images are right either way).
+double Renderer::textured_pixels_per_frame() const {
+  const double image = static_cast<double>(scene_.render.width) * scene_.render.height;
+  const BoundingSphere b = current_probe_bounds();
+  const Camera& c = scene_.camera;
+  double pixels_per_mm = 0.0;
+  if (c.projection == Projection::kOrthographic) {
+    pixels_per_mm = scene_.render.height / std::max(c.ortho_height_mm, 1e-9);
+  } else {
+    const double distance = glm::length(scene_.probe.position - c.position) - b.radius;
+    if (distance <= c.near_mm) return image;
+    pixels_per_mm = scene_.render.height / (2.0 * distance * std::tan(glm::radians(c.fov_y_deg) * 0.5));
+  }
+  const double side_px = 2.0 * b.radius * pixels_per_mm;
+  return std::min(image, side_px * side_px);
+}
+
+std::string Renderer::naive_note(const Material& m, int tile_texels) const {
+  char note[200];
+  std::snprintf(note, sizeof note, "material '%s': naive Gabor sum (%d frame%s of <= %.0f textured pixels "
+                "are less work than baking a %d^2 tile)", m.name.c_str(), options_.expected_frames,
+                options_.expected_frames == 1 ? "" : "s", textured_pixels_per_frame(), tile_texels);
+  return note;
 }
 
 Status Renderer::init_passes() {

@@ -44,6 +44,13 @@ struct RendererOptions {
   // tiles, of about this many ms, and materials with an unfinished tile draw with the per-pixel
   // sum meanwhile: the first frame comes at once, never a black window (render/tile_bake.h).
   double bake_slice_ms = 0.0;
+  // > 0: the frames this renderer will draw (render --frames, a tune cell, a replay). For a
+  // material whose "auto" strategy picked a tile, the tile is baked only if that is less work
+  // than the per-pixel sum over those frames: with frames x P <= texels^2 (P: an upper bound on
+  // the pixels a frame textures, the shadow window seen face-on at the probe, capped by the
+  // image) the naive sum is drawn instead and nothing is baked (docs/benchmarks.md, "Time to
+  // the first image"). 0 = unknown (the window): bake.
+  int expected_frames = 0;
 };
 
 struct FrameStats {
@@ -74,6 +81,9 @@ class Renderer {
   Result<Image> read_aov(Aov aov) const;
   Result<Image> read_aov(const std::string& name) const;  // unknown name: error listing aov_names()
 
+  // An upper bound on the pixels a frame textures (the probe's shadow window seen face-on at
+  // the probe, capped by the image): what RendererOptions::expected_frames is weighed with.
+  double textured_pixels_per_frame() const;
   const FrameStats& stats() const { return stats_; }
   // The baked tile material i is drawn with (ok == false: the per-pixel sum), as chosen at creation.
   const GaborBakePlan& gabor_bake_plan(size_t material) const { return materials_[material].bake_plan; }
@@ -120,6 +130,9 @@ class Renderer {
   double ms_since_creation() const;
   Status prime_reference_plane();
   std::shared_ptr<gl::Texture> reusable_tile(const Material& m, const GaborBakePlan& plan) const;
+  // expected_frames' per-pixel work is at most a tile_texels^2 bake (false when unknown).
+  bool naive_is_less_work(const Material& m, int tile_texels) const;
+  std::string naive_note(const Material& m, int tile_texels) const;
   // Per frame.
   BoundingSphere current_probe_bounds() const;
   ProbeInput probe_input() const;

@@ -61,7 +61,9 @@ Result<std::vector<SweepCell>> render_sweep(const SweepJob& job, const SweepProg
     cell.label = sweep_label(job.axes, cell.index);
     auto scene = load_cell(cell_input(job, cell.index));
     if (!scene) return as_sweep_error(scene.error());
-    auto renderer = Renderer::create(scene.value(), job.renderer);
+    RendererOptions options = job.renderer;
+    options.expected_frames = scene->render.frames;  // as `render` does, so a cell equals its render
+    auto renderer = Renderer::create(scene.value(), options);
     if (!renderer) return renderer.error();
     for (int f = 0; f < scene->render.frames; ++f)
       if (Status s = renderer.value()->render_frame(); !s) return s.error();

@@ -3,6 +3,8 @@
 // ends and is textured, frames keep coming, and once the tile is done the frames are the
 // headless ones, byte for byte. Counted in frames, never timed.
 #include <cmath>
+#include <cstdio>
+#include <string>
 
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
@@ -66,6 +68,50 @@ TEST_P(TileBakeGLTest, HeadlessRenderBakesTheWholeTileBeforeItsFirstFrame) {
   frame(r, s);
   EXPECT_EQ(r.stats().frames_before_tiles, 0);
   EXPECT_GT(r.stats().first_frame_ms, r.stats().tiles_ready_ms);
+}
+
+// "auto" with a known number of frames (render, tune cells, replay): the tile is baked only
+// when the frames' per-pixel work (frames x width x height, every pixel counted) exceeds the
+// tile's texels^2; at the boundary and below the frames draw the per-pixel sum and nothing is
+// baked. The tile's size is read from the note of a renderer that bakes it.
+TEST_P(TileBakeGLTest, AutoBakesOnlyWhenTheFramesNeedMoreWorkThanTheTile) {
+  Scene s = baked_scene();
+  s.materials[0].gabor.strategy = GaborParams::Strategy::kAuto;
+  s.render.width = s.render.height = 64;
+  s.camera.projection = Projection::kOrthographic;
+  s.camera.ortho_height_mm = 100.0;
+  auto note_of = [](const Renderer& r) {
+    for (const std::string& n : r.stats().skipped)
+      if (n.find("material") != std::string::npos) return n;
+    return std::string();
+  };
+  auto make = [&](int frames) {
+    RendererOptions o;
+    o.expected_frames = frames;
+    auto made = Renderer::create(s, o);
+    EXPECT_TRUE(made.ok()) << made.error().message;
+    frame(*made.value(), s);
+    return std::move(made.value());
+  };
+  const auto open_ended = make(0);
+  const std::string baked_note = note_of(*open_ended);
+  int texels = 0;
+  ASSERT_EQ(std::sscanf(baked_note.c_str() + baked_note.find("baked "), "baked %d^2", &texels), 1) << baked_note;
+  EXPECT_GT(open_ended->stats().bake_ms, 0.0);
+  // The textured-pixel bound, in closed form: the window is the probe's bounding diameter
+  // (sphere r = 15 mm: 30 mm) at 64 px / 100 mm, squared (1e-9: a product of doubles).
+  const double per_frame = (30.0 * 0.64) * (30.0 * 0.64);
+  EXPECT_NEAR(open_ended->textured_pixels_per_frame(), per_frame, 1e-9);
+  const int boundary = static_cast<int>(std::floor(static_cast<double>(texels) * texels / per_frame));
+  for (int frames : {1, boundary}) {
+    const auto r = make(frames);
+    EXPECT_EQ(r->stats().bake_ms, 0.0) << frames;
+    EXPECT_NE(note_of(*r).find("naive Gabor sum (" + std::to_string(frames) + " frame"), std::string::npos)
+        << note_of(*r);
+  }
+  const auto many = make(boundary + 1);
+  EXPECT_GT(many->stats().bake_ms, 0.0);
+  EXPECT_EQ(note_of(*many), baked_note);
 }
 
 TEST_P(TileBakeGLTest, SlicedBakeDrawsFramesBeforeTheTileThenTheHeadlessFrame) {

@@ -143,7 +143,9 @@ TEST_P(TuneGLTest, SweepCellsMatchSingleRenders) {
                                              job.axes[0].key + "=" + job.axes[0].values[cell.index[0]],
                                              "probe.velocity=" + job.axes[1].values[cell.index[1]]});
     ASSERT_TRUE(scene);
-    auto single = Renderer::create(scene.value(), {});
+    RendererOptions one_frame;  // what `render` passes for its one frame
+    one_frame.expected_frames = 1;
+    auto single = Renderer::create(scene.value(), one_frame);
     ASSERT_TRUE(single);
     ASSERT_TRUE(single.value()->render_frame());
     const Image ref = single.value()->read_color();
