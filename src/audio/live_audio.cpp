@@ -27,13 +27,13 @@ class QuietStderr {
     saved_ = dup(STDERR_FILENO);
     const int null_fd = ::open("/dev/null", O_WRONLY);
     if (saved_ >= 0 && null_fd >= 0) dup2(null_fd, STDERR_FILENO);
-    if (null_fd >= 0) close(null_fd);
+    if (null_fd >= 0) ::close(null_fd);
   }
   ~QuietStderr() {
     std::fflush(stderr);
     if (saved_ >= 0) {
       dup2(saved_, STDERR_FILENO);
-      close(saved_);
+      ::close(saved_);
     }
   }
   QuietStderr(const QuietStderr&) = delete;
@@ -84,7 +84,11 @@ struct LiveAudio::Impl {
     for (;;) {
       const std::uint32_t seen = wake.load(std::memory_order_acquire);
       queue.drain([&](const HapticEvent& e) { start_clip(e, started); });
-      if (stop.load(std::memory_order_acquire)) break;
+      if (stop.load(std::memory_order_acquire)) {
+        // What play() queued before close() is visible now (stop was stored after it): start it.
+        queue.drain([&](const HapticEvent& e) { start_clip(e, started); });
+        break;
+      }
       wake.wait(seen, std::memory_order_acquire);  // until play() or the destructor bumps it
     }
   }
@@ -146,7 +150,9 @@ std::unique_ptr<LiveAudio> LiveAudio::open(const LiveAudioDesc& desc) {
   return a;
 }
 
-LiveAudio::~LiveAudio() { impl_.reset(); }  // joins the audio thread before started_ goes
+LiveAudio::~LiveAudio() { close(); }  // joins the audio thread before started_ goes
+
+void LiveAudio::close() { impl_.reset(); }
 
 void LiveAudio::play(const HapticEvent& e) {
   if (!impl_) return;

@@ -36,6 +36,9 @@ class LiveAudio {
   const std::string& device_name() const { return device_name_; }
 
   void play(const HapticEvent& e);  // render thread; never blocks
+  // Starts what is queued, then stops the audio thread and closes the device (the destructor
+  // does it too). play() after close() does nothing.
+  void close();
   // The audio thread's counts (for tests and the summary).
   std::uint64_t started() const { return started_.load(std::memory_order_relaxed); }
   std::uint64_t dropped() const;

@@ -76,7 +76,7 @@ std::vector<float> event_sound(const HapticEvent& e, const SynthParams& p) {
       return render({{0.0, 0.04, e.value >= 0.5 ? 1760.0 : 880.0, e.value >= 0.5 ? 1760.0 : 880.0, 0.3, 0.02}}, r);
     case EventKind::sheet_crossing:
       if (e.value >= 0.0)  // in front: two quick bright blips
-        return render({{0.0, 0.02, 1320.0, 1320.0, 0.3, 0.01}, {0.03, 0.02, 1760.0, 1760.0, 0.3, 0.01}}, r);
+        return render({{0.0, 0.02, 1320.0, 1320.0, 0.3, 0.01}, {0.025, 0.02, 1760.0, 1760.0, 0.3, 0.01}}, r);
       return render({{0.0, 0.08, 330.0, 330.0, 0.3, 0.04}}, r);  // behind: one low, longer hum
   }
   return {};
