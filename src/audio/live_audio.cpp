@@ -114,7 +114,7 @@ struct LiveAudio::Impl {
 std::unique_ptr<LiveAudio> LiveAudio::open(const LiveAudioDesc& desc) {
   std::unique_ptr<LiveAudio> a(new LiveAudio);
   if (desc.mute) {
-    a->warning_ = "sound is off (--mute); the event log and everything else run as usual";
+    a->warning_ = "sound is off (--mute): the event log and everything else run as usual";
     return a;
   }
   auto impl = std::make_unique<Impl>(desc);
@@ -125,7 +125,7 @@ std::unique_ptr<LiveAudio> LiveAudio::open(const LiveAudioDesc& desc) {
   }
   const std::string which = desc.device.empty() ? "the default audio device" : "audio device '" + desc.device + "'";
   if (impl->device == nullptr || impl->context == nullptr) {
-    a->warning_ = "no audio device (OpenAL could not open " + which + "); sound is off, everything else runs";
+    a->warning_ = "no audio device (OpenAL could not open " + which + "): sound is off, everything else runs";
     return a;
   }
   alcMakeContextCurrent(impl->context);
@@ -137,7 +137,7 @@ std::unique_ptr<LiveAudio> LiveAudio::open(const LiveAudioDesc& desc) {
   if (alGetError() != AL_NO_ERROR) {
     impl->sources.clear();
     impl->buffers.clear();
-    a->warning_ = "OpenAL opened " + which + " but could not create sources; sound is off, everything else runs";
+    a->warning_ = "OpenAL opened " + which + " but could not create sources: sound is off, everything else runs";
     return a;
   }
   const ALCchar* name = alcGetString(impl->device, ALC_DEVICE_SPECIFIER);
