@@ -4,6 +4,7 @@
 
 #include <cerrno>
 #include <cstring>
+#include <filesystem>
 
 #include "core/file_io.h"
 
@@ -51,6 +52,18 @@ Status EventLog::close() {
   std::fclose(file_);
   file_ = nullptr;
   return rename_durable(partial_path(), path_);
+}
+
+}  // namespace ps
+
+namespace ps {
+
+void EventLog::discard() {
+  if (file_ == nullptr) return;
+  std::fclose(file_);
+  file_ = nullptr;
+  std::error_code ignored;  // best effort: the command is failing with its own message already
+  std::filesystem::remove(partial_path(), ignored);
 }
 
 }  // namespace ps

@@ -28,6 +28,8 @@ class EventLog {
   void append(const HapticEvent& e);  // a write error is kept and reported by flush()/close()
   Status flush();
   Status close();
+  // Closes and removes "<path>.partial": a command that fails leaves no log behind (`replay`).
+  void discard();
 
   const std::string& path() const { return path_; }
   std::string partial_path() const { return path_ + ".partial"; }

@@ -12,13 +12,21 @@ Result<std::unique_ptr<ReplayEvents>> ReplayEvents::open(const ReplayEventsDesc&
     if (!log) return log.error();
     r->log_ = std::move(log.value());
     EventLog* l = r->log_.get();
-    r->dispatcher_.subscribe("event log", [l](const HapticEvent& e) { l->append(e); });
+    // Flushed per event (they are few): a replay that crashes leaves them in the .partial file.
+    r->dispatcher_.subscribe("event log", [l](const HapticEvent& e) {
+      l->append(e);
+      (void)l->flush();  // a write error is kept and returned by close() in finish()
+    });
   }
   if (!desc.audio_path.empty()) {
     std::vector<HapticEvent>* events = &r->for_track_;
     r->dispatcher_.subscribe("sound track", [events](const HapticEvent& e) { events->push_back(e); });
   }
   return r;
+}
+
+ReplayEvents::~ReplayEvents() {
+  if (log_) log_->discard();  // no-op after close()
 }
 
 Status ReplayEvents::finish(OutputSet& out) {

@@ -25,6 +25,7 @@ struct ReplayEventsDesc {
 class ReplayEvents {
  public:
   static Result<std::unique_ptr<ReplayEvents>> open(const ReplayEventsDesc& desc);
+  ~ReplayEvents();  // without finish(): the log's .partial file is removed (the replay failed)
 
   EventDispatcher& dispatcher() { return dispatcher_; }
   // After the session: closes the log and stages the WAV in `out` (published with the frames).

@@ -10,6 +10,7 @@
 
 #include "app/event_dispatch.h"
 #include "app/event_log.h"
+#include "app/replay_events.h"
 #include "audio/live_audio.h"
 #include "audio/wav_reader.h"
 
@@ -73,6 +74,21 @@ TEST(EventLogTest, BadDirectoryIsAnErrorNamingThePath) {
   auto log = EventLog::open("/nonexistent-dir/sub/events.jsonl");
   ASSERT_FALSE(log.ok());
   EXPECT_NE(log.error().message.find("/nonexistent-dir/sub"), std::string::npos) << log.error().message;
+}
+
+TEST(EventLogTest, AFailedReplayLeavesNoLogBehind) {
+  const std::string path = testing::TempDir() + "ps_event_log_failed.jsonl";
+  {
+    ReplayEventsDesc desc;
+    desc.log_path = path;
+    auto ev = ReplayEvents::open(desc);
+    ASSERT_TRUE(ev.ok());
+    ev.value()->dispatcher().dispatch(make(EventKind::contact_start, 3, 1.0));
+    // Flushed per event: a crash here would leave the line in the .partial file.
+    EXPECT_EQ(lines_of(path + ".partial").size(), 1u);
+  }  // destroyed without finish(): the replay failed
+  EXPECT_FALSE(std::filesystem::exists(path + ".partial"));
+  EXPECT_FALSE(std::filesystem::exists(path));
 }
 
 TEST(EventDispatcherTest, PumpDrainsTheQueueOnceToEverySubscriberInOrder) {
