@@ -7,6 +7,7 @@
 #include "app/cli.h"
 #include "app/cli_groups.h"
 #include "app/commands.h"
+#include "app/replay_events.h"
 #include "app/session.h"
 #include "core/output_set.h"
 #include "devices/sample_log.h"
@@ -27,6 +28,7 @@ struct ReplayArgs {
   cli::SceneArgs scene;
   gl::Backend backend = gl::Backend::kAuto;
   std::string log, out_dir, sheet, record;
+  std::string events, audio;  // docs/sound.md
   long long every = 1;
   double fps = 30.0;
   bool quiet = false, show_probe = false;
@@ -50,6 +52,13 @@ void declare(cli::Command& cmd, ReplayArgs& a) {
       ->group(cli::kOutputGroup);
   app.add_option("--record", a.record, "record the device stream the loop read (a playback log)")
       ->type_name("FILE")
+      ->group(cli::kOutputGroup);
+  app.add_option("--events", a.events,
+                 "the JSON-lines event log (contact start/end, buttons, impacts, ...; default DIR/events.jsonl)")
+      ->type_name("FILE")
+      ->group(cli::kOutputGroup);
+  app.add_option("--audio", a.audio, "the events' sound track: WAV, 48 kHz mono 16-bit, as long as the replay")
+      ->type_name("FILE.wav")
       ->group(cli::kOutputGroup);
   app.add_flag("--show-probe", a.show_probe, "also draw the probe itself (the haptic proxy) in the frames");
   cli::add_quiet_option(app, a.quiet, "no progress");
@@ -99,7 +108,18 @@ Status add_outputs(const ReplayArgs& a, OutputSet& out) {
     if (Status s = out.add(a.sheet); !s) return s;
   if (!a.record.empty())
     if (Status s = prepare_output_dir(a.record); !s) return s;
+  if (!a.audio.empty())
+    if (Status s = out.add(a.audio); !s) return s;
   return ok_status();
+}
+
+// The event log goes next to the frames unless --events names it (docs/sound.md).
+ReplayEventsDesc events_desc(const ReplayArgs& a, double duration_s) {
+  ReplayEventsDesc d;
+  d.log_path = a.events.empty() ? a.out_dir + "/events.jsonl" : a.events;
+  d.audio_path = a.audio;
+  d.duration_s = duration_s;
+  return d;
 }
 
 int replay(const cli::Command& cmd, const ReplayArgs& a) {
@@ -127,6 +147,9 @@ int replay(const cli::Command& cmd, const ReplayArgs& a) {
   opt.record_path = a.record;
   opt.haptic_scene = &haptic_scene.value();
   opt.progress = !a.quiet && isatty(STDERR_FILENO);
+  auto events = ReplayEvents::open(events_desc(a, device->device->duration_s()));
+  if (!events) return fail(events.error());
+  opt.on_event = [&ev = *events.value()](const HapticEvent& e) { ev.dispatcher().dispatch(e); };
   std::vector<Image> thumbs;
   std::vector<std::string> labels;
   int written = 0;
@@ -145,13 +168,15 @@ int replay(const cli::Command& cmd, const ReplayArgs& a) {
   };
   auto result = replay_session(*renderer, *device->device, opt, sink);
   if (!result) return fail(result.error());
+  if (Status s = events.value()->finish(outputs); !s) return fail(s.error());
   if (!a.sheet.empty())
     if (Status s = stage_image(outputs, a.sheet, contact_sheet(thumbs, labels)); !s) return fail(s.error());
   if (Status s = outputs.publish(); !s) return fail(s.error());
   if (!a.quiet)
-    std::printf("replayed %d frames at %g fps, wrote %d images to %s; rejected device samples: %llu\n",
+    std::printf("replayed %d frames at %g fps, wrote %d images to %s; rejected device samples: %llu; "
+                "events: %zu\n",
                 result->frames, a.fps, written, a.out_dir.c_str(),
-                static_cast<unsigned long long>(result->rejected.total()));
+                static_cast<unsigned long long>(result->rejected.total()), events.value()->count());
   return cli::kExitOk;
 }
 

@@ -17,6 +17,7 @@
 #include "app/cli_groups.h"
 #include "app/commands.h"
 #include "app/hud.h"
+#include "app/run_events.h"
 #include "app/run_keys.h"
 #include "app/session.h"
 #include "app/window_input.h"
@@ -61,6 +62,7 @@ struct RunArgs {
   long long frames = 0, realtime = 0;
   double quit_after_s = 0.0;
   bool quiet = false, watch = true, show_probe = false, panel = false;
+  RunEventsDesc events;  // --events, --mute, --audio-device (docs/sound.md)
 };
 
 void check_device(const std::string& d) {
@@ -83,6 +85,12 @@ void declare(cli::Command& cmd, RunArgs& a) {
       ->type_name("FILE")
       ->group(cli::kOutputGroup);
   cli::add_stats_option(app, a.stats_path);
+  app.add_option("--events", a.events.log_path, "write every haptic event as a JSON line (docs/sound.md)")
+      ->type_name("FILE")
+      ->group(cli::kOutputGroup);
+  app.add_flag("--mute", a.events.audio.mute, "no event sounds");
+  app.add_option("--audio-device", a.events.audio.device, "OpenAL output device (default: the system's default)")
+      ->type_name("NAME");
   app.add_option("--ui-report", a.ui_report,
                  "at exit, write JSON with every frame's overlay, help and panel rectangles and the "
                  "pseudo-shadow's bounding box, in window pixels")
@@ -123,6 +131,7 @@ struct Session {  // everything the window loop touches, grouped by owner thread
   std::unique_ptr<world::HapticScene> haptic_scene;  // before the loop: it must outlive the haptic thread
   std::unique_ptr<HapticLoop> loop;
   std::unique_ptr<SampleRecorder> recorder;
+  std::unique_ptr<RunEvents> events;  // the one consumer of loop->events(): log, sound, ...
   WindowInput input;
   int screenshots_saved = 0;          // numbers the next screenshot_NNNN.png
   PlaneAxes axes;
@@ -319,6 +328,15 @@ Status draw_overlays(const RunArgs& a, Session& s, const HapticState& st, std::u
   return ok_status();
 }
 
+// The event consumers, before the haptic thread starts. No audio device is one warning line.
+Status open_events(const RunArgs& a, Session& s) {
+  auto events = RunEvents::open(a.events);
+  if (!events) return events.error();
+  s.events = std::move(events.value());
+  if (!s.events->warning().empty()) std::fprintf(stderr, "warning: %s\n", s.events->warning().c_str());
+  return ok_status();
+}
+
 Status window_loop(const RunArgs& a, Session& s) {
   GLFWwindow* win = s.ctx->window();
   const auto t0 = std::chrono::steady_clock::now();
@@ -336,6 +354,7 @@ Status window_loop(const RunArgs& a, Session& s) {
       poll_reload(s);
     }
     if (Status r = drive_frame(s.tune->renderer(), *s.loop, frame, st); !r) return r;
+    if (Status r = s.events->pump(s.loop->events()); !r) return r;
     int w = 0, h = 0;
     glfwGetFramebufferSize(win, &w, &h);
     present_to_default_framebuffer(s.tune->renderer(), w, h);
@@ -359,6 +378,7 @@ int run(const cli::Command& cmd, const RunArgs& a) {
   if (!scene) return cmd.fail(scene.error(), cli::scene_exit_code(scene.error()));
   Session s;
   if (Status st = open_session(a, std::move(scene.value()), s); !st) return cmd.fail(st.error());
+  if (Status st = open_events(a, s); !st) return cmd.fail(st.error());
   s.loop->start();
   // The first frame shows the device's probe, not the scene's: wait for the first tick (about
   // 1 ms; bounded, as a gamepad may have nothing to give yet).
@@ -369,6 +389,7 @@ int run(const cli::Command& cmd, const RunArgs& a) {
   s.loop->stop();  // join the haptic thread before touching what it wrote
   if (s.recorder)
     if (Status st = s.recorder->close(); !st) return cmd.fail(st.error());
+  if (Status st = s.events->close(s.loop->events()); !st) return cmd.fail(st.error());
   if (!looped) return cmd.fail(looped.error());
   if (!a.stats_path.empty()) {
     const Renderer& r = s.tune->renderer();

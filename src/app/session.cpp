@@ -79,6 +79,7 @@ Result<ReplayResult> replay_session(Renderer& renderer, Device& device, const Re
     const auto last_tick = static_cast<std::uint64_t>(std::floor(i / options.fps * options.haptics.rate_hz + 1e-9));
     loop.run_ticks(last_tick + 1 - ticks_done);
     ticks_done = last_tick + 1;
+    if (options.on_event) loop.events().drain(options.on_event);
     HapticState state;
     if (Status s = drive_frame(renderer, loop, static_cast<std::uint64_t>(i), state); !s) return s.error();
     if (Status s = sink(i, state.time_s, state, renderer); !s) return s.error();

@@ -41,6 +41,9 @@ struct ReplayOptions {
   std::string record_path;    // non-empty: record the device stream read by the loop
   const world::HapticScene* haptic_scene = nullptr;  // the proxy collides with it (null: the render plane)
   bool progress = false;      // "\rframe i/n" on stderr
+  // Each event of the loop's queue, in push (= time) order, drained after each frame's ticks
+  // (the one consumer of HapticLoop::events() in a replay; app/event_dispatch.h fans it out).
+  std::function<void(const HapticEvent&)> on_event;
 };
 
 struct ReplayResult {

@@ -1,0 +1,166 @@
+#include "audio/live_audio.h"
+
+#include <fcntl.h>
+#include <unistd.h>
+
+#include <cstdio>
+#include <thread>
+#include <vector>
+
+#include <AL/al.h>
+#include <AL/alc.h>
+
+#include "audio/track.h"
+
+namespace ps::audio {
+
+namespace {
+
+// libasound and OpenAL Soft print their own diagnostics to stderr when a device cannot be
+// opened (a dozen "ALSA lib ..." lines on a machine without a sound card). The promise is ONE
+// warning line, ours: stderr goes to /dev/null while the device opens. open() runs before the
+// haptic thread starts, so nothing else of ours writes to stderr meanwhile.
+class QuietStderr {
+ public:
+  QuietStderr() {
+    std::fflush(stderr);
+    saved_ = dup(STDERR_FILENO);
+    const int null_fd = ::open("/dev/null", O_WRONLY);
+    if (saved_ >= 0 && null_fd >= 0) dup2(null_fd, STDERR_FILENO);
+    if (null_fd >= 0) ::close(null_fd);
+  }
+  ~QuietStderr() {
+    std::fflush(stderr);
+    if (saved_ >= 0) {
+      dup2(saved_, STDERR_FILENO);
+      ::close(saved_);
+    }
+  }
+  QuietStderr(const QuietStderr&) = delete;
+  QuietStderr& operator=(const QuietStderr&) = delete;
+
+ private:
+  int saved_ = -1;
+};
+
+}  // namespace
+
+struct LiveAudio::Impl {
+  explicit Impl(const LiveAudioDesc& d) : desc(d), queue(d.queue_capacity) {}
+  LiveAudioDesc desc;
+  ALCdevice* device = nullptr;
+  ALCcontext* context = nullptr;
+  std::vector<ALuint> sources, buffers;  // one buffer per source
+  std::size_t next_voice = 0;            // round robin when every source is busy
+  EventQueue queue;                      // render thread -> audio thread
+  std::atomic<std::uint32_t> wake{0};
+  std::atomic<bool> stop{false};
+  std::thread thread;
+
+  void start_clip(const HapticEvent& e, std::atomic<std::uint64_t>& started) {
+    const std::vector<std::int16_t> pcm = to_pcm16(event_sound(e, desc.synth));
+    if (pcm.empty()) return;
+    std::size_t v = sources.size();
+    for (std::size_t i = 0; i < sources.size(); ++i) {
+      ALint state = AL_STOPPED;
+      alGetSourcei(sources[i], AL_SOURCE_STATE, &state);
+      if (state != AL_PLAYING) {
+        v = i;
+        break;
+      }
+    }
+    if (v == sources.size()) v = next_voice++ % sources.size();  // all busy: cut the oldest
+    alSourceStop(sources[v]);
+    alSourcei(sources[v], AL_BUFFER, 0);  // a buffer attached to a source cannot be refilled
+    alBufferData(buffers[v], AL_FORMAT_MONO16, pcm.data(), static_cast<ALsizei>(pcm.size() * 2),
+                 desc.synth.sample_rate_hz);
+    alSourcei(sources[v], AL_BUFFER, static_cast<ALint>(buffers[v]));
+    alSourcePlay(sources[v]);
+    if (alGetError() == AL_NO_ERROR) started.fetch_add(1, std::memory_order_relaxed);
+  }
+
+  void run(std::atomic<std::uint64_t>& started) {
+    alcMakeContextCurrent(context);
+    for (;;) {
+      const std::uint32_t seen = wake.load(std::memory_order_acquire);
+      queue.drain([&](const HapticEvent& e) { start_clip(e, started); });
+      if (stop.load(std::memory_order_acquire)) {
+        // What play() queued before close() is visible now (stop was stored after it): start it.
+        queue.drain([&](const HapticEvent& e) { start_clip(e, started); });
+        break;
+      }
+      wake.wait(seen, std::memory_order_acquire);  // until play() or the destructor bumps it
+    }
+  }
+
+  ~Impl() {
+    if (thread.joinable()) {
+      stop.store(true, std::memory_order_release);
+      wake.fetch_add(1, std::memory_order_release);
+      wake.notify_one();
+      thread.join();
+    }
+    if (context != nullptr) {
+      alcMakeContextCurrent(context);
+      if (!sources.empty()) alDeleteSources(static_cast<ALsizei>(sources.size()), sources.data());
+      if (!buffers.empty()) alDeleteBuffers(static_cast<ALsizei>(buffers.size()), buffers.data());
+      alcMakeContextCurrent(nullptr);
+      alcDestroyContext(context);
+    }
+    if (device != nullptr) alcCloseDevice(device);
+  }
+};
+
+std::unique_ptr<LiveAudio> LiveAudio::open(const LiveAudioDesc& desc) {
+  std::unique_ptr<LiveAudio> a(new LiveAudio);
+  if (desc.mute) {
+    a->warning_ = "sound is off (--mute): the event log and everything else run as usual";
+    return a;
+  }
+  auto impl = std::make_unique<Impl>(desc);
+  {
+    QuietStderr quiet;
+    impl->device = alcOpenDevice(desc.device.empty() ? nullptr : desc.device.c_str());
+    if (impl->device != nullptr) impl->context = alcCreateContext(impl->device, nullptr);
+  }
+  const std::string which = desc.device.empty() ? "the default audio device" : "audio device '" + desc.device + "'";
+  if (impl->device == nullptr || impl->context == nullptr) {
+    a->warning_ = "no audio device (OpenAL could not open " + which + "): sound is off, everything else runs";
+    return a;
+  }
+  alcMakeContextCurrent(impl->context);
+  const int voices = std::max(1, desc.voices);
+  impl->sources.resize(voices);
+  impl->buffers.resize(voices);
+  alGenSources(voices, impl->sources.data());
+  alGenBuffers(voices, impl->buffers.data());
+  if (alGetError() != AL_NO_ERROR) {
+    impl->sources.clear();
+    impl->buffers.clear();
+    a->warning_ = "OpenAL opened " + which + " but could not create sources: sound is off, everything else runs";
+    return a;
+  }
+  const ALCchar* name = alcGetString(impl->device, ALC_DEVICE_SPECIFIER);
+  a->device_name_ = name != nullptr ? name : "";
+  alcMakeContextCurrent(nullptr);  // the audio thread makes it current
+  Impl* raw = impl.get();
+  std::atomic<std::uint64_t>& started = a->started_;
+  impl->thread = std::thread([raw, &started] { raw->run(started); });
+  a->impl_ = std::move(impl);
+  return a;
+}
+
+LiveAudio::~LiveAudio() { close(); }  // joins the audio thread before started_ goes
+
+void LiveAudio::close() { impl_.reset(); }
+
+void LiveAudio::play(const HapticEvent& e) {
+  if (!impl_) return;
+  impl_->queue.push(e);  // full: dropped and counted
+  impl_->wake.fetch_add(1, std::memory_order_release);
+  impl_->wake.notify_one();
+}
+
+std::uint64_t LiveAudio::dropped() const { return impl_ ? impl_->queue.dropped() : 0; }
+
+}  // namespace ps::audio
