@@ -142,11 +142,14 @@ glm::dvec3 medium_drag_n(const world::HapticScene& scene, const glm::dvec3& p_mm
 }  // namespace
 
 ForceResult compute_proxy_force(const HapticsParams& p, world::GodObject& god, const glm::dvec3& x_mm,
-                                const glm::dvec3& v_mm_s, double time_s) {
+                                const glm::dvec3& v_mm_s, double time_s, const glm::dvec3& field_force_n) {
   ForceResult out;
   glm::dvec3 f = external_force_n(p, time_s) - p.viscosity_n_s_per_mm * v_mm_s;
   const glm::dvec3 stick_point = god.proxy();  // last tick's proxy: where friction holds it
-  const world::ProxyStep step = god.move(x_mm);
+  // The coupling spring's rest offset: the proxy settles where k_c (proxy - x) balances the
+  // field force (zero without fields: the goal is the device, as before).
+  const glm::dvec3 goal = x_mm + field_force_n / std::max(p.coupling_n_per_mm, 1e-9);
+  const world::ProxyStep step = god.move(goal);
   out.proxy_mm = step.proxy_mm;
   out.facets_visited = step.facets_visited;
   f += medium_drag_n(god.scene(), step.proxy_mm, v_mm_s, out.medium);
@@ -171,6 +174,11 @@ ForceResult compute_proxy_force(const HapticsParams& p, world::GodObject& god, c
   } else if (!step.in_contact) {
     f += magnetic_pull_n(god.scene(), step.proxy_mm, v_mm_s);
   }
+  // The field force reaches the hand through the coupling, except the part a touched surface
+  // holds: its component into the surface.
+  glm::dvec3 transmitted = field_force_n;
+  if (step.in_contact) transmitted -= std::min(0.0, glm::dot(transmitted, step.contact_normal)) * step.contact_normal;
+  f += transmitted;
   const double len = glm::length(f);
   if (len > p.max_force_n && len > 0.0) f *= p.max_force_n / len;
   out.force_n = f;

@@ -38,6 +38,10 @@ struct HapticsParams {
   // Haptic scene contacts: the normal force follows the interpolated vertex normal at the
   // contact (seed 002 §6) instead of the god-object's own direction (proxy - device).
   bool force_shading = true;
+  // Virtual coupling of device and proxy (docs/haptics.md, "Pseudo-haptic coupling"): a force
+  // F on the probe from the scene's fields and bodies moves the god-object's goal to
+  // device + F / coupling, so the drawn proxy lags, deflects and is pulled by what acts on it.
+  double coupling_n_per_mm = 0.5;
 };
 
 // The loop's values with the touched surface's feel (stiffness, exponent, damping, friction).
@@ -83,7 +87,8 @@ ForceResult compute_force(const HapticsParams& p, const SurfaceModel& m, const g
 // the contact; out of contact a magnetic surface within its range pulls (material_forces.h),
 // and with the proxy centre inside a penetrable volume (HapticScene::medium_at) its -b v acts.
 ForceResult compute_proxy_force(const HapticsParams& p, world::GodObject& god, const glm::dvec3& x_mm,
-                                const glm::dvec3& v_mm_s, double time_s);
+                                const glm::dvec3& v_mm_s, double time_s,
+                                const glm::dvec3& field_force_n = glm::dvec3(0.0));
 
 // Render-side update of the local model from one frame: probe_in_mm is the position given to
 // the renderer, max_penetration_mm and reference_normal come from its FrameStats; no shadow

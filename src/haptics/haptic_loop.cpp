@@ -22,7 +22,10 @@ HapticLoop::HapticLoop(Device& device, Clock& clock, const HapticLoopParams& par
       // A HUD window is 1 s of ticks; after a stall sleep_until() runs the missed ticks back to
       // back inside one window, so room for 2 s (beyond that the HUD's p99 skips samples).
       window_jitter_us_(2 * static_cast<std::size_t>(std::ceil(params.rate_hz)) + 16) {
-  if (scene != nullptr) god_.emplace(*scene);
+  if (scene != nullptr) {
+    god_.emplace(*scene);
+    bodies_ = world::BodySet(scene->bodies(), scene->fields().gravity_mm_s2());
+  }
   clock_.set_wake_spin(std::chrono::microseconds(std::max<std::int64_t>(params.wake_spin_us, 0)));
 }
 
@@ -146,6 +149,8 @@ void HapticLoop::adopt_pending_scene(Clock::Ns now) {
   const glm::dvec3 proxy = local_.proxy_mm;
   god_.emplace(*pending_);  // GodObject holds no heap memory: nothing is freed on this thread
   if (had_proxy) god_->reset(proxy);
+  // The new scene's bodies start afresh (a rare event: the vectors' old storage is freed here).
+  bodies_ = world::BodySet(pending_->bodies(), pending_->fields().gravity_mm_s2());
   retired_ = std::move(scene_owned_);
   scene_owned_ = std::move(pending_);
   HapticEvent e;
@@ -155,6 +160,30 @@ void HapticLoop::adopt_pending_scene(Clock::Ns now) {
   e.position_mm = proxy;
   e.set_label(pending_label_);
   events_.push(e);
+}
+
+// The scene's fields at the proxy (last tick's: the probe that is in the field) and the bodies'
+// springs, stepped one tick; floor impacts become events.
+glm::dvec3 HapticLoop::world_forces(double t, double dt) {
+  const world::HapticScene& scene = god_->scene();
+  const glm::dvec3 anchor = god_->initialized() ? god_->proxy() : local_.position_mm;
+  glm::dvec3 f = scene.fields().empty() ? glm::dvec3(0.0) : scene.fields().force_n(anchor, local_.velocity_mm_s, t);
+  local_.body_count = static_cast<int>(bodies_.size());
+  if (bodies_.size() == 0) return f;
+  const world::BodyStepResult r = bodies_.step(anchor, dt);
+  f += r.force_on_proxy_n;
+  for (std::size_t i = 0; i < bodies_.size(); ++i) local_.body_mm[i] = bodies_.position(i);
+  for (int k = 0; k < r.impact_count; ++k) {
+    HapticEvent e;
+    e.kind = EventKind::body_impact;
+    e.tick = local_.tick;
+    e.time_s = t;
+    e.index = r.impacts[k].body;
+    e.value = r.impacts[k].speed_mm_s;
+    e.position_mm = r.impacts[k].position_mm;
+    events_.push(e);
+  }
+  return f;
 }
 
 void HapticLoop::tick(Clock::Ns now) {
@@ -188,9 +217,13 @@ void HapticLoop::tick(Clock::Ns now) {
   if (local_.have_sample) {
     local_.position_mm = kalman_.position();
     local_.velocity_mm_s = kalman_.velocity();
-    const ForceResult f = god_ ? compute_proxy_force(params_.forces, *god_, local_.position_mm, local_.velocity_mm_s, t)
+    glm::dvec3 field_force(0.0);
+    if (god_) field_force = world_forces(t, dt);
+    const ForceResult f = god_ ? compute_proxy_force(params_.forces, *god_, local_.position_mm, local_.velocity_mm_s, t,
+                                                     field_force)
                                : compute_force(params_.forces, surface_.read(), local_.position_mm,
                                                local_.velocity_mm_s, local_.proxy_mm, t);
+    local_.field_force_n = field_force;
     if (f.in_contact != local_.in_contact) {
       HapticEvent e;
       e.kind = f.in_contact ? EventKind::contact_start : EventKind::contact_end;

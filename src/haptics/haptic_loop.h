@@ -8,6 +8,7 @@
 // (tests, `replay`), deterministically.
 #pragma once
 
+#include <array>
 #include <atomic>
 #include <cstdint>
 #include <memory>
@@ -26,6 +27,7 @@
 #include "haptics/force_model.h"
 #include "haptics/kalman.h"
 #include "haptics/loop_stats.h"
+#include "world/bodies.h"
 #include "world/god_object.h"
 
 namespace ps {
@@ -66,6 +68,9 @@ struct HapticState {
   int contact_surface = -1;          // haptic scene: surface touched (Scene::surfaces index)
   std::uint32_t local_facets = 0;    // haptic scene: mesh triangles examined this tick
   std::uint32_t buttons = 0;
+  glm::dvec3 field_force_n{0.0};     // haptic scene: fields + body springs on the probe this tick
+  std::array<glm::dvec3, world::kMaxBodies> body_mm{};  // haptic scene: the bodies' centres
+  int body_count = 0;
   bool have_sample = false, in_contact = false;
   double rate_hz = 0.0;              // over the last second
   double jitter_p99_us = 0.0;        // |period - nominal|, p99 over the last second
@@ -129,7 +134,9 @@ class HapticLoop {
   DeviceSample last_fed_;  // the last sample given to the filter (repeats are predicted over)
   bool have_fed_ = false;
   void adopt_pending_scene(Clock::Ns now);  // haptic thread, at a tick's start
+  glm::dvec3 world_forces(double t, double dt);  // fields + bodies on the probe (haptic scene)
   std::optional<world::GodObject> god_;  // set when a haptic scene is given
+  world::BodySet bodies_;                // the scene's bodies (reset with each scene)
   std::shared_ptr<const world::HapticScene> scene_owned_;  // after replace_scene()
   std::mutex swap_mutex_;  // guards pending_, retired_
   std::shared_ptr<const world::HapticScene> pending_, retired_;

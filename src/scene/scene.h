@@ -135,6 +135,53 @@ struct RenderSettings {
   std::uint32_t seed = 1;           // Gabor impulse seed
 };
 
+// [[fields]]: forces of the haptic world that are not surfaces (docs/haptics.md, "Fields").
+enum class FieldType { kGravity, kUniform, kViscous, kCharge };
+
+struct Field {
+  FieldType type = FieldType::kUniform;
+  // gravity: the acceleration of every body (mm/s^2)
+  glm::dvec3 acceleration_mm_s2{0.0, 0.0, -9810.0};
+  // uniform: F = force_n + fluctuation_n sin(2 pi frequency_hz t) on the probe (seed 003 room 5)
+  glm::dvec3 force_n{0.0};
+  glm::dvec3 fluctuation_n{0.0};
+  double frequency_hz = 1.0;
+  // viscous: F = -viscosity_n_s_per_mm v on the probe inside the region (seed 003 room 2)
+  double viscosity_n_s_per_mm = 0.0;
+  // uniform and viscous: a box region (centre, full edges, XYZ Euler rotation); uniform fields
+  // without size_mm act everywhere, viscous ones need it
+  bool bounded = false;
+  glm::dvec3 center{0.0};
+  glm::dvec3 size_mm{0.0};
+  glm::dvec3 rotation_deg{0.0};
+  // charge: a point charge at `position`; F = charge (p - c) / (|p - c|^2 + s^2)^(3/2), s =
+  // softening_mm (seed 002 §5: Coulomb's law, softened so it stays finite at the charge)
+  glm::dvec3 position{0.0};
+  double charge_n_mm2 = 0.0;  // > 0 pushes the probe away, < 0 pulls it in
+  double softening_mm = 2.0;
+  int line = 0;
+};
+
+inline constexpr int kMaxSceneBodies = 4;  // the haptic state carries this many positions
+
+// [[bodies]]: a mass hanging from the proxy on a spring (seed 002 §4; docs/haptics.md, "Bodies").
+struct Body {
+  double mass_g = 50.0;
+  double spring_n_per_mm = 0.1;        // spring between the proxy and the body
+  double rest_length_mm = 30.0;
+  double damping_n_s_per_mm = 0.0;     // along the spring
+  double radius_mm = 6.0;
+  std::string material;                // its look; empty: the first surface's material
+  int material_index = 0;
+  glm::dvec3 position{0.0, 0.0, -30.0};  // start, mm (absolute)
+  bool floor = true;                   // bounces on the plane z = floor_z_mm
+  double floor_z_mm = 0.0;
+  double restitution = 0.6;            // bounce speed / impact speed
+  double time_scale = 1.0;             // simulated seconds per real second (< 1: heavier, slower)
+  int substeps = 4;                    // integration steps per haptic tick
+  int line = 0;
+};
+
 struct Scene {
   std::string path;  // file the scene came from ("<embedded default>" for the built-in one)
   Camera camera;
@@ -143,6 +190,8 @@ struct Scene {
   RenderSettings render;
   std::vector<Material> materials;
   std::vector<Surface> surfaces;
+  std::vector<Field> fields;
+  std::vector<Body> bodies;
 };
 
 }  // namespace ps

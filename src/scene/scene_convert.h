@@ -24,6 +24,12 @@ Status read_haptic(const ParseContext& ctx, const toml::table* table, const std:
 Status read_surface(const ParseContext& ctx, const toml::table& table, int index,
                     const std::vector<std::string>& material_names, Surface& out);
 
+// [[fields]] #index and [[bodies]] #index (scene_world.cpp); a body's material resolves like a
+// surface's (empty: material 0).
+Status read_field(const ParseContext& ctx, const toml::table& table, int index, Field& out);
+Status read_body(const ParseContext& ctx, const toml::table& table, int index,
+                 const std::vector<std::string>& material_names, Body& out);
+
 // Reads the files named by the root's `include` (recursively) into ctx.included
 // (scene_include.cpp); errors carry the including line or the included file's own line.
 Status resolve_includes(toml::table& root, ParseContext& ctx);

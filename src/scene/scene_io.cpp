@@ -115,6 +115,58 @@ Status read_surfaces(const ParseContext& ctx, const toml::table& root, Scene& sc
   return ok_status();
 }
 
+// [[fields]] / [[bodies]]: optional arrays of tables.
+template <class T, class ReadOne>
+Status read_array(const ParseContext& ctx, const toml::table& root, const char* key, std::vector<T>& out,
+                  ReadOne read_one) {
+  const toml::node* node = root.get(key);
+  if (!node) return ok_status();
+  const toml::array* array = node->as_array();
+  if (!array || !array->is_array_of_tables())
+    return make_error(line_of(ctx, *node) + ": '" + key + "' must be an array of tables ([[" + key + "]])");
+  for (std::size_t i = 0; i < array->size(); ++i) {
+    T item;
+    if (Status s = read_one(*(*array)[i].as_table(), static_cast<int>(i), item); !s) return s;
+    out.push_back(std::move(item));
+  }
+  return ok_status();
+}
+
+// Two charges at one point would make the field there the sum of two singular laws; one charge
+// with their sum says the same thing.
+Status check_charges(const ParseContext& ctx, const Scene& scene) {
+  for (std::size_t i = 0; i < scene.fields.size(); ++i)
+    for (std::size_t j = 0; j < i; ++j) {
+      const Field &a = scene.fields[j], &b = scene.fields[i];
+      if (a.type == FieldType::kCharge && b.type == FieldType::kCharge && a.position == b.position)
+        return make_error(ctx.source_name + ":" + std::to_string(b.line) + ": [[fields]] #" + std::to_string(i) +
+                          ": a second charge at the position of [[fields]] #" + std::to_string(j) + " (line " +
+                          std::to_string(a.line) + "); merge them into one charge (their sum)");
+    }
+  return ok_status();
+}
+
+Status read_world(const ParseContext& ctx, const toml::table& root, Scene& scene) {
+  if (Status s = read_array(ctx, root, "fields", scene.fields,
+                            [&](const toml::table& t, int i, Field& f) { return scene_detail::read_field(ctx, t, i, f); });
+      !s)
+    return s;
+  if (Status s = check_charges(ctx, scene); !s) return s;
+  std::vector<std::string> names;
+  for (const Material& m : scene.materials) names.push_back(m.name);
+  if (Status s = read_array(ctx, root, "bodies", scene.bodies, [&](const toml::table& t, int i, Body& b) {
+        b.material_index = scene.surfaces[0].material_index;  // no material: the first surface's look
+        return scene_detail::read_body(ctx, t, i, names, b);
+      });
+      !s)
+    return s;
+  if (scene.bodies.size() > static_cast<std::size_t>(kMaxSceneBodies))
+    return make_error(ctx.source_name + ":" + std::to_string(scene.bodies[kMaxSceneBodies].line) + ": [[bodies]] #" +
+                      std::to_string(kMaxSceneBodies) + ": a scene has at most " + std::to_string(kMaxSceneBodies) +
+                      " bodies");
+  return ok_status();
+}
+
 Status read_sections(const ParseContext& ctx, const toml::table& root, Scene& scene) {
   scene_detail::TableReader top(ctx, &root, scene_detail::Section::kRoot, "", "the scene");
   top.check_unknown_keys();
@@ -131,7 +183,8 @@ Status read_sections(const ParseContext& ctx, const toml::table& root, Scene& sc
   if (Status s = scene_detail::read_probe(ctx, *probe, scene.probe); !s) return s;
   if (Status s = scene_detail::read_render(ctx, *render, scene.render); !s) return s;
   if (Status s = read_materials(ctx, root, scene); !s) return s;
-  return read_surfaces(ctx, root, scene);
+  if (Status s = read_surfaces(ctx, root, scene); !s) return s;
+  return read_world(ctx, root, scene);
 }
 
 }  // namespace

@@ -13,7 +13,8 @@ namespace {
 using std::string_view_literals::operator""sv;
 
 constexpr std::array kRootKeys = {"include"sv, "camera"sv,    "light"sv,   "probe"sv,
-                                  "render"sv,  "materials"sv, "surfaces"sv};
+                                  "render"sv,  "materials"sv, "surfaces"sv, "fields"sv,
+                                  "bodies"sv};
 constexpr std::array kCameraKeys = {"projection"sv, "position"sv,        "target"sv, "up"sv,
                                     "fov_y_deg"sv,  "ortho_height_mm"sv, "near_mm"sv, "far_mm"sv};
 constexpr std::array kLightKeys = {"direction"sv, "color"sv, "ambient"sv};
@@ -48,6 +49,15 @@ constexpr std::array kSurfaceKeys = {"type"sv,      "material"sv,        "center
                                      "mesh_file"sv, "scale"sv,           "resolution"sv,
                                      "visible"sv,   "touchable"sv};
 
+constexpr std::array kFieldKeys = {"type"sv,          "acceleration_mm_s2"sv, "force_n"sv,
+                                   "fluctuation_n"sv, "frequency_hz"sv,       "viscosity_n_s_per_mm"sv,
+                                   "center"sv,        "size_mm"sv,            "rotation_deg"sv,
+                                   "position"sv,      "charge_n_mm2"sv,       "softening_mm"sv};
+constexpr std::array kBodyKeys = {"mass_g"sv,      "spring_n_per_mm"sv, "rest_length_mm"sv,
+                                  "damping_n_s_per_mm"sv, "radius_mm"sv, "material"sv,
+                                  "position"sv,    "floor"sv,           "floor_z_mm"sv,
+                                  "restitution"sv, "time_scale"sv,      "substeps"sv};
+
 }  // namespace
 
 std::span<const std::string_view> known_keys(Section section) {
@@ -61,6 +71,8 @@ std::span<const std::string_view> known_keys(Section section) {
     case Section::kHaptic: return kHapticKeys;
     case Section::kHapticWave: return kHapticWaveKeys;
     case Section::kSurface: return kSurfaceKeys;
+    case Section::kField: return kFieldKeys;
+    case Section::kBody: return kBodyKeys;
   }
   assert(false && "known_keys: unhandled Section");
   return {};

@@ -47,6 +47,8 @@ Section section_of(std::string_view name) {
   if (name == "render") return Section::kRender;
   if (name == "materials") return Section::kMaterial;
   if (name == "surfaces") return Section::kSurface;
+  if (name == "fields") return Section::kField;
+  if (name == "bodies") return Section::kBody;
   return Section::kRoot;
 }
 
@@ -81,7 +83,8 @@ Result<toml::table*> element(toml::array* array, const std::string& index_text,
   const std::size_t count = array ? array->size() : 0;
   if (ec != std::errc() || end != s.data() + s.size() || index >= count) {
     return make_error(label + ": no " + what + " '" + s + "' (" + holder + " has " +
-                      std::to_string(count) + " " + what + "s, numbered from 0)");
+                      std::to_string(count) + " " + (what == "body" ? std::string("bodies") : what + "s") +
+                      ", numbered from 0)");
   }
   toml::table* t = (*array)[index].as_table();
   if (!t) return make_error(label + ": " + what + " " + s + " is not a table");
@@ -123,6 +126,11 @@ Result<toml::table*> target_table(toml::table& root, const std::vector<std::stri
   if (section == Section::kSurface) {
     if (parts.size() != 3) return make_error(label + ": expected surfaces.N.KEY=VALUE");
     return element(root["surfaces"].as_array(), parts[1], label, "surface", "the scene");
+  }
+  if (section == Section::kField || section == Section::kBody) {
+    const std::string what = section == Section::kField ? "field" : "body";
+    if (parts.size() != 3) return make_error(label + ": expected " + parts[0] + ".N.KEY=VALUE");
+    return element(root[parts[0]].as_array(), parts[1], label, what, "the scene");
   }
   if (parts.size() != 2) return make_error(label + ": expected " + parts[0] + ".KEY=VALUE");
   toml::table* t = child_table(root, parts[0]);

@@ -50,6 +50,8 @@ HapticScene::Shape HapticScene::make_shape(const Surface& s, int index) {
 Result<HapticScene> HapticScene::build(const Scene& scene) {
   HapticScene out;
   out.probe_radius_mm_ = scene.probe.radius_mm;
+  out.fields_ = FieldSet(scene.fields);
+  out.bodies_ = scene.bodies;
   for (std::size_t i = 0; i < scene.surfaces.size(); ++i) {
     const Surface& s = scene.surfaces[i];
     const int index = static_cast<int>(i);

@@ -19,6 +19,7 @@
 #include "core/result.h"
 #include "scene/mesh.h"
 #include "scene/scene.h"
+#include "world/fields.h"
 #include "world/mesh_bvh.h"
 
 namespace ps::world {
@@ -55,6 +56,8 @@ class HapticScene {
   double max_magnetic_range_mm() const { return max_magnetic_range_mm_; }
 
   const HapticMaterial& material(int surface) const;  // that surface's feel
+  const FieldSet& fields() const { return fields_; }       // [[fields]]
+  const std::vector<Body>& bodies() const { return bodies_; }  // [[bodies]], as specified
   double probe_radius_mm() const { return probe_radius_mm_; }
   std::size_t analytic_count() const { return shapes_.size(); }
   std::size_t triangle_count() const { return meshes_.triangle_count(); }  // overall model
@@ -81,6 +84,8 @@ class HapticScene {
   std::vector<HapticMaterial> materials_;  // per surface index
   double probe_radius_mm_ = 0.0;
   double max_magnetic_range_mm_ = 0.0;
+  FieldSet fields_;
+  std::vector<Body> bodies_;
 };
 
 }  // namespace ps::world

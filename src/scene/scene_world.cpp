@@ -1,0 +1,97 @@
+// [[fields]] and [[bodies]]: the haptic world's forces and masses beyond surfaces
+// (docs/scene-format.md has the keys, docs/haptics.md the laws).
+#include <algorithm>
+#include <array>
+#include <cmath>
+
+#include "scene/scene_convert.h"
+
+namespace ps::scene_detail {
+namespace {
+
+using std::string_view_literals::operator""sv;
+
+// Same order as FieldType.
+constexpr std::array kFieldTypes = {"gravity"sv, "uniform"sv, "viscous"sv, "charge"sv};
+constexpr double kMaxLengthMm = 1e5;
+constexpr double kMaxForceN = 100.0;  // as the haptic materials: a unit mix-up is caught
+const Range kCoordinate = Range::closed(-kMaxLengthMm, kMaxLengthMm);
+
+// Keys that only one kind of field reads: given to another kind they are an error, not ignored.
+void only_for(TableReader& r, FieldType type, std::initializer_list<std::string_view> keys,
+              std::initializer_list<FieldType> owners, std::string_view owner_names) {
+  for (FieldType o : owners)
+    if (o == type) return;
+  for (std::string_view k : keys)
+    if (r.has(k)) return r.fail(k, "applies only to type = " + std::string(owner_names));
+}
+
+}  // namespace
+
+Status read_field(const ParseContext& ctx, const toml::table& table, int index, Field& out) {
+  const std::string path = "fields." + std::to_string(index);
+  TableReader r(ctx, &table, Section::kField, path, "[[fields]] #" + std::to_string(index));
+  out.line = static_cast<int>(table.source().begin.line);
+  r.check_unknown_keys();
+  r.require(r.has("type"), "type", "is required: one of \"gravity\", \"uniform\", \"viscous\", \"charge\"");
+  int type = static_cast<int>(out.type);
+  r.choice("type", type, kFieldTypes);
+  out.type = static_cast<FieldType>(type);
+  r.vec3("acceleration_mm_s2", out.acceleration_mm_s2, Range::closed(-1e7, 1e7));
+  r.vec3("force_n", out.force_n, Range::closed(-kMaxForceN, kMaxForceN));
+  r.vec3("fluctuation_n", out.fluctuation_n, Range::closed(-kMaxForceN, kMaxForceN));
+  r.number("frequency_hz", out.frequency_hz, Range::closed(0.0, 500.0));
+  r.number("viscosity_n_s_per_mm", out.viscosity_n_s_per_mm, Range::closed(0.0, 1.0));
+  r.vec3("center", out.center, kCoordinate);
+  r.vec3("size_mm", out.size_mm, Range::positive(kMaxLengthMm));
+  r.vec3("rotation_deg", out.rotation_deg, Range::closed(-3600.0, 3600.0));
+  r.vec3("position", out.position, kCoordinate);
+  r.number("charge_n_mm2", out.charge_n_mm2, Range::closed(-1e6, 1e6));
+  r.number("softening_mm", out.softening_mm, Range::positive(kMaxLengthMm));
+  out.bounded = r.has("size_mm");
+  if (!r.ok()) return r.status();
+  only_for(r, out.type, {"acceleration_mm_s2"}, {FieldType::kGravity}, "\"gravity\"");
+  only_for(r, out.type, {"force_n", "fluctuation_n", "frequency_hz"}, {FieldType::kUniform}, "\"uniform\"");
+  only_for(r, out.type, {"viscosity_n_s_per_mm"}, {FieldType::kViscous}, "\"viscous\"");
+  only_for(r, out.type, {"center", "size_mm", "rotation_deg"}, {FieldType::kUniform, FieldType::kViscous},
+           "\"uniform\" or \"viscous\" (their region)");
+  only_for(r, out.type, {"position", "charge_n_mm2", "softening_mm"}, {FieldType::kCharge}, "\"charge\"");
+  r.require(out.type != FieldType::kViscous || out.bounded, "size_mm",
+            "is required for a viscous field: the box region where it acts (centre 'center')");
+  r.require(out.type != FieldType::kViscous || r.has("viscosity_n_s_per_mm"), "viscosity_n_s_per_mm",
+            "is required for a viscous field (b in F = -b v, N s/mm)");
+  r.require(out.type != FieldType::kCharge || out.charge_n_mm2 != 0.0, "charge_n_mm2",
+            "is required and non-zero for a charge (> 0 pushes the probe away, < 0 pulls it in)");
+  return r.status();
+}
+
+Status read_body(const ParseContext& ctx, const toml::table& table, int index,
+                 const std::vector<std::string>& material_names, Body& out) {
+  const std::string path = "bodies." + std::to_string(index);
+  TableReader r(ctx, &table, Section::kBody, path, "[[bodies]] #" + std::to_string(index));
+  out.line = static_cast<int>(table.source().begin.line);
+  r.check_unknown_keys();
+  r.number("mass_g", out.mass_g, Range::positive(1e5));
+  r.number("spring_n_per_mm", out.spring_n_per_mm, Range::positive(100.0));
+  r.number("rest_length_mm", out.rest_length_mm, Range::closed(0.0, kMaxLengthMm));
+  r.number("damping_n_s_per_mm", out.damping_n_s_per_mm, Range::closed(0.0, 1.0));
+  r.number("radius_mm", out.radius_mm, Range::positive(kMaxLengthMm));
+  r.string("material", out.material);
+  r.vec3("position", out.position, kCoordinate);
+  r.boolean("floor", out.floor);
+  r.number("floor_z_mm", out.floor_z_mm, kCoordinate);
+  r.number("restitution", out.restitution, Range::closed(0.0, 1.0));
+  r.number("time_scale", out.time_scale, Range::closed(0.01, 10.0));
+  r.integer("substeps", out.substeps, 1, 64);
+  if (!out.material.empty()) {
+    const auto it = std::find(material_names.begin(), material_names.end(), out.material);
+    if (r.ok() && it == material_names.end()) {
+      std::vector<std::string_view> names(material_names.begin(), material_names.end());
+      r.fail("material", "names unknown material '" + out.material + "'; defined materials: " + join(names));
+    }
+    out.material_index = static_cast<int>(it - material_names.begin());
+  }
+  return r.status();
+}
+
+}  // namespace ps::scene_detail

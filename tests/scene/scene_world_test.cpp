@@ -1,0 +1,129 @@
+// [[fields]] and [[bodies]]: values, exact "file:line: message" errors, --set reaching them.
+#include <gtest/gtest.h>
+
+#include "scene_test_util.h"
+
+namespace ps {
+namespace {
+
+using test::error_of;
+using test::parse;
+
+// kMinimalScene has 6 lines; appended text starts at line 7.
+std::string with(const std::string& extra) { return std::string(test::kMinimalScene) + extra; }
+
+TEST(SceneWorldTest, ReadsEveryFieldKindAndABody) {
+  Result<Scene> scene = parse(with(R"(
+[[fields]]
+type = "gravity"
+acceleration_mm_s2 = [0, 0, -5000]
+
+[[fields]]
+type = "uniform"
+force_n = [0.5, 0, 0]
+fluctuation_n = [0, 0.25, 0]
+frequency_hz = 2
+center = [0, 0, 10]
+size_mm = [40, 40, 20]
+
+[[fields]]
+type = "viscous"
+viscosity_n_s_per_mm = 0.01
+center = [30, 0, 10]
+size_mm = [20, 20, 20]
+rotation_deg = [0, 0, 45]
+
+[[fields]]
+type = "charge"
+position = [-20, 0, 10]
+charge_n_mm2 = -300
+softening_mm = 3
+
+[[bodies]]
+mass_g = 80
+spring_n_per_mm = 0.2
+rest_length_mm = 25
+radius_mm = 5
+material = "wood"
+position = [0, 0, -10]
+floor_z_mm = -40
+restitution = 0.5
+time_scale = 0.5
+substeps = 8
+)"));
+  ASSERT_TRUE(scene) << scene.error().message;
+  ASSERT_EQ(scene->fields.size(), 4u);
+  EXPECT_EQ(scene->fields[0].type, FieldType::kGravity);
+  EXPECT_EQ(scene->fields[0].acceleration_mm_s2, glm::dvec3(0, 0, -5000));
+  const Field& u = scene->fields[1];
+  EXPECT_EQ(u.type, FieldType::kUniform);
+  EXPECT_TRUE(u.bounded);
+  EXPECT_EQ(u.fluctuation_n, glm::dvec3(0, 0.25, 0));
+  EXPECT_EQ(u.frequency_hz, 2.0);
+  EXPECT_EQ(u.size_mm, glm::dvec3(40, 40, 20));
+  EXPECT_EQ(scene->fields[2].viscosity_n_s_per_mm, 0.01);
+  EXPECT_EQ(scene->fields[2].rotation_deg.z, 45.0);
+  EXPECT_EQ(scene->fields[3].charge_n_mm2, -300.0);
+  EXPECT_EQ(scene->fields[3].softening_mm, 3.0);
+  EXPECT_EQ(scene->fields[3].line, 27);
+  ASSERT_EQ(scene->bodies.size(), 1u);
+  const Body& b = scene->bodies[0];
+  EXPECT_EQ(b.mass_g, 80.0);
+  EXPECT_EQ(b.rest_length_mm, 25.0);
+  EXPECT_EQ(b.floor_z_mm, -40.0);
+  EXPECT_EQ(b.time_scale, 0.5);
+  EXPECT_EQ(b.substeps, 8);
+  EXPECT_EQ(b.line, 33);
+}
+
+TEST(SceneWorldTest, ASceneWithoutFieldsOrBodiesHasNone) {
+  Result<Scene> scene = parse(test::kMinimalScene);
+  ASSERT_TRUE(scene) << scene.error().message;
+  EXPECT_TRUE(scene->fields.empty());
+  EXPECT_TRUE(scene->bodies.empty());
+}
+
+TEST(SceneWorldTest, BadFieldsAndBodiesNameFileAndLine) {
+  EXPECT_EQ(error_of(with("[[fields]]\ntype = \"charge\"\nposition = [0, 0, 0]\ncharg_n_mm2 = 5\n")),
+            "s.toml:10: unknown key 'charg_n_mm2' in [[fields]] #0; did you mean 'charge_n_mm2'?");
+  EXPECT_EQ(error_of(with("[[fields]]\nforce_n = [1, 0, 0]\n")),
+            "s.toml:7: 'type' is required: one of \"gravity\", \"uniform\", \"viscous\", \"charge\"");
+  EXPECT_EQ(error_of(with("[[fields]]\ntype = \"viscous\"\nviscosity_n_s_per_mm = 0.01\n")),
+            "s.toml:7: 'size_mm' is required for a viscous field: the box region where it acts "
+            "(centre 'center')");
+  EXPECT_EQ(error_of(with("[[fields]]\ntype = \"viscous\"\nsize_mm = [1, 1, 1]\nviscosity_n_s_per_mm = -0.1\n")),
+            "s.toml:10: 'viscosity_n_s_per_mm' must be in [0, 1] (got -0.1)");
+  EXPECT_EQ(error_of(with("[[fields]]\ntype = \"gravity\"\nforce_n = [1, 0, 0]\n")),
+            "s.toml:9: 'force_n' applies only to type = \"uniform\"");
+  EXPECT_EQ(error_of(with("[[fields]]\ntype = \"charge\"\nposition = [1, 2, 3]\ncharge_n_mm2 = 5\n\n"
+                          "[[fields]]\ntype = \"charge\"\nposition = [1, 2, 3]\ncharge_n_mm2 = -2\n")),
+            "s.toml:12: [[fields]] #1: a second charge at the position of [[fields]] #0 (line 7); merge them "
+            "into one charge (their sum)");
+  EXPECT_EQ(error_of(with("[[bodies]]\nmass_g = -5\n")),
+            "s.toml:8: 'mass_g' must be in (0, 100000] (got -5)");
+  EXPECT_EQ(error_of(with("[[bodies]]\nspring_n_per_mm = 0\n")),
+            "s.toml:8: 'spring_n_per_mm' must be in (0, 100] (got 0)");
+  EXPECT_EQ(error_of(with("[[bodies]]\nrestitution = 1.5\n")),
+            "s.toml:8: 'restitution' must be in [0, 1] (got 1.5)");
+  EXPECT_EQ(error_of(with("[[bodies]]\nmaterial = \"steel\"\n")),
+            "s.toml:8: 'material' names unknown material 'steel'; defined materials: wood");
+  EXPECT_EQ(error_of("fields = 3\n" + std::string(test::kMinimalScene)),
+            "s.toml:1: 'fields' must be an array of tables ([[fields]])");
+  std::string five;
+  for (int i = 0; i < 5; ++i) five += "[[bodies]]\nmass_g = 10\n";
+  EXPECT_EQ(error_of(with(five)), "s.toml:15: [[bodies]] #4: a scene has at most 4 bodies");
+}
+
+TEST(SceneWorldTest, SetReachesFieldsAndBodies) {
+  const std::string text = with("[[fields]]\ntype = \"charge\"\nposition = [1, 2, 3]\ncharge_n_mm2 = 5\n"
+                                "[[bodies]]\nmass_g = 10\n");
+  Result<Scene> scene = parse(text, {"fields.0.charge_n_mm2=-7", "bodies.0.time_scale=0.25"});
+  ASSERT_TRUE(scene) << scene.error().message;
+  EXPECT_EQ(scene->fields[0].charge_n_mm2, -7.0);
+  EXPECT_EQ(scene->bodies[0].time_scale, 0.25);
+  EXPECT_EQ(error_of(text, {"bodies.3.mass_g=1"}),
+            "--set bodies.3.mass_g: no body '3' (the scene has 1 bodies, numbered from 0)");
+}
+
+}  // namespace
+}  // namespace ps
