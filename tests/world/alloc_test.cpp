@@ -45,6 +45,40 @@ TEST(HapticAllocTest, TicksAgainstAMeshSceneDoNotAllocate) {
 
 // Every material law the tick applies: a magnetic box (one extra radius-limited query per
 // free-space tick), a water sphere (the inside test), a textured sticky plane.
+// Fields (uniform, viscous, charges, gravity) and a bouncing body, evaluated every tick.
+TEST(HapticAllocTest, TicksWithFieldsAndBodiesDoNotAllocate) {
+  Scene sc = test::scene_with(8.0, {test::analytic(SurfaceType::kPlane)});
+  Field u, v, q, g;
+  u.type = FieldType::kUniform;
+  u.fluctuation_n = {0.2, 0, 0};
+  v.type = FieldType::kViscous;
+  v.viscosity_n_s_per_mm = 0.01;
+  v.bounded = true;
+  v.size_mm = {100, 100, 100};
+  q.type = FieldType::kCharge;
+  q.charge_n_mm2 = -100;
+  q.position = {10, 10, 20};
+  g.type = FieldType::kGravity;
+  sc.fields = {u, v, q, g};
+  Body b;
+  b.floor_z_mm = -20.0;
+  sc.bodies = {b};
+  auto scene = HapticScene::build(sc);
+  ASSERT_TRUE(scene) << scene.error().message;
+  LogDevice device({{0.0, {0, 0, 30}, 0, true}, {1.0, {30, 10, 4}, 0, true}}, true, "press");
+  FakeClock clock;
+  HapticLoopParams params;
+  params.keep_periods = 2000;
+  HapticLoop loop(device, clock, params, &scene.value());
+  loop.run_ticks(1);
+  const long before = g_allocations.load();
+  loop.run_ticks(999);
+  EXPECT_EQ(g_allocations.load() - before, 0);
+  std::size_t impacts = 0;
+  loop.events().drain([&](const HapticEvent& e) { impacts += e.kind == EventKind::body_impact; });
+  EXPECT_GT(impacts, 0u);  // the body did bounce during the counted ticks
+}
+
 TEST(HapticAllocTest, TicksWithMaterialLawsDoNotAllocate) {
   Scene sc = test::scene_with(5.0, {});
   Material plain = sc.materials.front();
