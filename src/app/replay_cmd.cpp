@@ -31,7 +31,7 @@ struct ReplayArgs {
   std::string events, audio;  // docs/sound.md
   long long every = 1;
   double fps = 30.0;
-  bool quiet = false, show_probe = false;
+  bool quiet = false, show_probe = false, show_device = false;
 };
 
 void declare(cli::Command& cmd, ReplayArgs& a) {
@@ -61,6 +61,8 @@ void declare(cli::Command& cmd, ReplayArgs& a) {
       ->type_name("FILE.wav")
       ->group(cli::kOutputGroup);
   app.add_flag("--show-probe", a.show_probe, "also draw the probe itself (the haptic proxy) in the frames");
+  app.add_flag("--show-device", a.show_device,
+               "also draw the device's own position faintly (the gap to the proxy is the pseudo-haptic feedback)");
   cli::add_quiet_option(app, a.quiet, "no progress");
   cmd.usage("pseudoshadow replay --log FILE --out DIR [options]");
 }
@@ -90,6 +92,7 @@ Result<ReplayGl> open_renderer(const ReplayArgs& a, const Scene& scene, int fram
   auto renderer = Renderer::create(scene, options);
   if (!renderer) return renderer.error();
   renderer.value()->set_show_probe(a.show_probe);
+  renderer.value()->set_show_device(a.show_device);
   return ReplayGl{std::move(ctx.value()), std::move(renderer.value())};
 }
 

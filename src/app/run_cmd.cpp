@@ -61,7 +61,7 @@ struct RunArgs {
   std::string device = "mouse", record, stats_path, ui_report;
   long long frames = 0, realtime = 0;
   double quit_after_s = 0.0;
-  bool quiet = false, watch = true, show_probe = false, panel = false;
+  bool quiet = false, watch = true, show_probe = false, show_device = false, panel = false;
   RunEventsDesc events;  // --events, --mute, --audio-device (docs/sound.md)
 };
 
@@ -105,6 +105,9 @@ void declare(cli::Command& cmd, RunArgs& a) {
       ->type_name("B")
       ->group(cli::kGlGroup);
   app.add_flag("--show-probe", a.show_probe, "start with the probe drawn (P toggles it)");
+  app.add_flag("--show-device", a.show_device,
+               "start with the device's own position drawn faintly (D toggles it): the gap to the drawn proxy "
+               "is the pseudo-haptic feedback of fields, viscosity and surfaces");
   app.add_flag("--panel", a.panel, "start with the parameter panel shown (F1 toggles it)");
   app.add_flag_callback("--no-watch", [&a] { a.watch = false; },
                         "do not reload the scene, its textures and glsl/ when they change");
@@ -197,6 +200,7 @@ Status open_session(const RunArgs& a, Scene scene, Session& s) {
   s.ui = std::make_unique<WindowUi>(s.ctx->window());  // after: chains to our callbacks
   if (a.panel) s.ui->panel().toggle();
   s.tune->renderer().set_show_probe(a.show_probe);
+  s.tune->renderer().set_show_device(a.show_device);
   return ok_status();
 }
 
@@ -269,6 +273,8 @@ Status handle_keys(Session& s, int w, int h) {
   in.key_presses = 0;
   if (in.toggle_probe) s.tune->renderer().set_show_probe(!s.tune->renderer().show_probe());
   in.toggle_probe = false;
+  if (in.toggle_device) s.tune->renderer().set_show_device(!s.tune->renderer().show_device());
+  in.toggle_device = false;
   Camera cam = s.tune->renderer().scene().camera;
   apply_orbit_zoom(in, cam);
   s.tune->renderer().set_camera(cam);

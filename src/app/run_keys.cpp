@@ -19,6 +19,7 @@ constexpr RunKey kRunKeys[] = {
     {"Shift+scroll", "zoom"},
     {"M", "capture mouse"},
     {"P", "show probe"},
+    {"D", "show device"},
     {"S", "screenshot"},
     {"F1", "panel"},
     {"H, ?", "this help"},

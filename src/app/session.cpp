@@ -10,6 +10,8 @@ Status drive_frame(Renderer& renderer, HapticLoop& loop, std::uint64_t frame, Ha
   const Probe& probe = renderer.scene().probe;
   const glm::dvec3 shown = state.have_sample ? state.proxy_mm : probe.position;
   if (state.have_sample) renderer.set_probe_state(state.proxy_mm, state.velocity_mm_s);
+  if (state.have_sample) renderer.set_device_position(state.device_mm);
+  renderer.set_body_positions(std::span<const glm::dvec3>(state.body_mm.data(), static_cast<std::size_t>(state.body_count)));
   if (Status s = renderer.render_frame(); !s) return s;
   const FrameStats& st = renderer.stats();
   // The render thread is the only writer of surface(), so reading back its own last value is safe.

@@ -58,6 +58,7 @@ void handle_key(WindowInput& in, int key, int action, int) {
   if (key == GLFW_KEY_S) ++in.screenshots;
   if (key == GLFW_KEY_M) in.toggle_capture = true;
   if (key == GLFW_KEY_P) in.toggle_probe = true;
+  if (key == GLFW_KEY_D) in.toggle_device = true;
   if (key == GLFW_KEY_ESCAPE || key == GLFW_KEY_Q) in.quit = true;
 }
 

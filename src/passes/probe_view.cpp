@@ -93,21 +93,31 @@ void ProbeViewPass::run(const Inputs& in) {
   block.model = glm::mat4(model);
   block.light_dir = glm::vec4(glm::dvec4(in.light->direction, in.light->ambient));
   block.light_color = glm::vec4(glm::dvec4(in.light->color, in.gamma));
-  block.probe_color = glm::vec4(glm::dvec4(kColor, 0.0));
+  block.probe_color = glm::vec4(glm::dvec4(in.color, in.alpha));
   glNamedBufferSubData(ubo_.id(), 0, sizeof(block), &block);
 
   // All state this pass depends on is set here.
   glBindFramebuffer(GL_FRAMEBUFFER, fbo_.id());
   glViewport(0, 0, surface_->width(), surface_->height());
   glDisable(GL_SCISSOR_TEST);
-  glDisable(GL_BLEND);
+  const bool translucent = in.alpha < 1.0;
+  if (translucent) {  // a ghost: blended, and it leaves the depth buffer to what is solid
+    glEnable(GL_BLEND);
+    glBlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
+  } else {
+    glDisable(GL_BLEND);
+  }
   glDisable(GL_CULL_FACE);  // mesh probes may be open
   glEnable(GL_DEPTH_TEST);
   glDepthFunc(GL_LESS);
-  glDepthMask(GL_TRUE);
+  glDepthMask(translucent ? GL_FALSE : GL_TRUE);
   glBindBufferBase(GL_UNIFORM_BUFFER, 0, ubo_.id());
   glUseProgram(program_.id());
   mesh->draw();
+  if (translucent) {
+    glDisable(GL_BLEND);
+    glDepthMask(GL_TRUE);
+  }
 }
 
 }  // namespace ps

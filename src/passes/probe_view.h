@@ -34,7 +34,7 @@ struct ProbeViewBlock {
   glm::mat4 model{1.0f};
   glm::vec4 light_dir;    // direction the light travels; w ambient
   glm::vec4 light_color;  // rgb; a output gamma
-  glm::vec4 probe_color;  // rgb linear
+  glm::vec4 probe_color;  // rgb linear; a opacity
 };
 static_assert(sizeof(ProbeViewBlock) == 2 * 64 + 3 * 16, "ProbeViewBlock must match std140 layout");
 
@@ -50,6 +50,8 @@ struct ProbeViewPass {
     const Light* light = nullptr;
     double gamma = 1.0 / 2.2;
     ProbeInput probe;  // after this frame's displacement
+    glm::dvec3 color = kColor;  // linear rgb
+    double alpha = 1.0;         // < 1: blended over the image (the faint device ghost)
   };
   void run(const Inputs& in);
 

@@ -392,6 +392,10 @@ Status Renderer::render_frame() {
     run_probe_view();
     timer.lap("probe_view");
   }
+  if (!body_positions_.empty() || show_device_) {
+    run_world_view();
+    timer.lap("world_view");
+  }
   if (!tiles_.done()) ++stats_.frames_before_tiles;
   if (stats_.first_frame_ms < 0.0) {
     glFinish();  // the frame is drawn, not only queued
@@ -410,6 +414,39 @@ void Renderer::run_probe_depth(const FramePlan& plan, const BoundingSphere& prob
   in.height_lo = hc - probe.radius - 1.0;
   in.height_hi = hc + probe.radius + 1.0;
   probe_depth_.run(in);
+}
+
+void Renderer::set_body_positions(std::span<const glm::dvec3> centres) {
+  body_positions_.assign(centres.begin(), centres.begin() + std::min(centres.size(), scene_.bodies.size()));
+}
+
+void Renderer::run_world_view() {
+  if (!world_view_ready_) {
+    if (!body_view_.init(options_.glsl_root, surface_) || !ghost_view_.init(options_.glsl_root, surface_)) return;
+    world_view_ready_ = true;
+  }
+  ProbeViewPass::Inputs in;
+  in.view_proj = view_projection(scene_.camera, static_cast<double>(scene_.render.width) / scene_.render.height);
+  in.light = &scene_.light;
+  for (std::size_t i = 0; i < body_positions_.size(); ++i) {
+    const Body& b = scene_.bodies[i];
+    const std::size_t m = static_cast<std::size_t>(b.material_index);
+    in.probe = ProbeInput{};
+    in.probe.capsule = CapsuleShape{body_positions_[i], body_positions_[i], b.radius_mm};
+    in.color = m < scene_.materials.size() ? scene_.materials[m].albedo : ProbeViewPass::kColor;
+    body_view_.run(in);
+  }
+  if (show_device_) {
+    // The probe's shape at the device, faint: where the hand is, against where the proxy is drawn.
+    in.probe = probe_input();
+    const glm::dvec3 shift = device_position_ - scene_.probe.position;
+    in.probe.capsule.a += shift;
+    in.probe.capsule.b += shift;
+    in.probe.model = glm::translate(glm::dmat4(1.0), shift) * in.probe.model;
+    in.color = glm::dvec3(0.35, 0.75, 1.0);
+    in.alpha = 0.25;
+    ghost_view_.run(in);
+  }
 }
 
 void Renderer::run_probe_view() {

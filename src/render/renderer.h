@@ -5,6 +5,7 @@
 
 #include <chrono>
 #include <memory>
+#include <span>
 #include <string>
 #include <utility>
 #include <vector>
@@ -95,6 +96,15 @@ class Renderer {
   // Changes the colour image only, never the AOVs, the reference plane or the displacement.
   void set_show_probe(bool show) { show_probe_ = show; }
   bool show_probe() const { return show_probe_; }
+  // The scene's bodies (Scene::bodies, in order) at these centres, drawn as spheres of their
+  // radius in their material's albedo after the pseudo-shadow (colour only, like the probe).
+  // Fewer centres than bodies: the rest are not drawn.
+  void set_body_positions(std::span<const glm::dvec3> centres);
+  // The device's own position, drawn as a faint ghost of the probe when shown, so the gap
+  // between hand and proxy (pseudo-haptic coupling) can be seen. Off by default.
+  void set_device_position(const glm::dvec3& position) { device_position_ = position; }
+  void set_show_device(bool show) { show_device_ = show; }
+  bool show_device() const { return show_device_; }
   // The frame's colour target (RGBA8, padded to a power of two; the image is the
   // width x height region at the origin, bottom row first): blitted to the window.
   const gl::Texture& color_texture() const { return surface_.color(); }
@@ -155,6 +165,12 @@ class Renderer {
   ReductionsPass reductions_;
   ProbeViewPass probe_view_;
   bool show_probe_ = false;
+  void run_world_view();           // bodies and the device ghost, over the colour image
+  ProbeViewPass body_view_, ghost_view_;  // initialised on first use (own mesh caches)
+  bool world_view_ready_ = false;
+  std::vector<glm::dvec3> body_positions_;
+  glm::dvec3 device_position_{0.0};
+  bool show_device_ = false;
 };
 
 // Stats as JSON (the CLI's --stats FILE): backend, renderer, reference_normal, displacement,

@@ -41,9 +41,11 @@ BodyStepResult BodySet::step(const glm::dvec3& proxy_mm, double dt_s) {
       const double floor_z = b.floor_z_mm + b.radius_mm;
       if (b.floor && s.x.z < floor_z) {
         s.x.z = floor_z;
-        if (s.v.z < 0.0) {
+        if (s.v.z < -kRestingSpeedMmS) {  // an impact: bounce, and say so
           if (out.impact_count < kMaxBodies) out.impacts[out.impact_count++] = {static_cast<int>(i), -s.v.z, s.x};
           s.v.z = -b.restitution * s.v.z;
+        } else if (s.v.z < 0.0) {  // resting on the floor: the contact absorbs the step's fall
+          s.v.z = 0.0;
         }
       }
     }

@@ -17,6 +17,11 @@ namespace ps::world {
 
 inline constexpr int kMaxBodies = kMaxSceneBodies;  // the scene parser's limit; HapticState carries this many
 
+// Slower than this into the floor is resting contact, not an impact (no bounce, no event): a
+// body lying on its floor gains g x substep = 2.5 mm/s of fall per 0.25 ms substep; 20 mm/s is
+// a drop of 0.02 mm.
+inline constexpr double kRestingSpeedMmS = 20.0;
+
 struct BodyImpact {
   int body = -1;
   double speed_mm_s = 0.0;  // normal speed into the floor just before the bounce
