@@ -298,8 +298,21 @@ Status handle_keys(Session& s, int w, int h) {
 // rebuild (shader compile and JIT, ~0.1-0.2 s on llvmpipe).
 constexpr double kWatchPeriodS = 0.2;
 
+// A reloaded scene may feel different too (surfaces, materials' haptic keys, fields, bodies):
+// the haptic thread gets a haptic scene built from it. A scene the renderer took but the
+// haptic side cannot build (a mesh that fails to load there) keeps the last good haptic world.
+void reload_haptic_scene(Session& s) {
+  auto built = world::HapticScene::build(s.tune->renderer().scene());
+  if (!built) {
+    std::fprintf(stderr, "haptic reload failed, keeping the last good haptic world: %s\n", built.error().message.c_str());
+    return;
+  }
+  s.loop->replace_scene(std::make_shared<const world::HapticScene>(std::move(built.value())), s.tune->scene_path());
+}
+
 void poll_reload(Session& s) {
   if (!s.tune->reload_if_changed()) return;
+  if (s.tune->last_error().empty()) reload_haptic_scene(s);
   const std::string& err = s.tune->last_error();
   if (err.empty()) std::printf("reloaded (%zu files watched)\n", s.tune->watch().files().size());
   else if (err != s.shown_error) std::fprintf(stderr, "reload failed, keeping the last good state: %s\n", err.c_str());

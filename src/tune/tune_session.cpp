@@ -49,6 +49,7 @@ Status TuneSession::rebuild(const std::map<std::string, std::string>& edits, boo
     fresh.value()->set_probe_state(renderer_->scene().probe.position, renderer_->scene().probe.velocity);
   if (renderer_ && keep_camera) fresh.value()->set_camera(renderer_->scene().camera);
   if (renderer_) fresh.value()->set_show_probe(renderer_->show_probe());
+  if (renderer_) fresh.value()->set_show_device(renderer_->show_device());
   renderer_ = std::move(fresh.value());
   edits_ = edits;
   last_error_.clear();
