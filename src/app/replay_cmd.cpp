@@ -39,9 +39,10 @@ void declare(cli::Command& cmd, ReplayArgs& a) {
   cli::add_scene_options(app, a.scene);
   cli::add_image_options(app, a.scene);
   app.add_option("--log", a.log,
-                 "device log, lines 'time_s x y z buttons'; KIND playback (default: sample-and-hold, "
-                 "exact) or trajectory (linear interpolation), or pointer: lines 'time_s x_px y_px "
-                 "height_mm buttons' mapped through the scene camera like run's mouse (required)")
+                 "device log, lines 'time_s x y z buttons'; KIND playback (sample-and-hold, exact; the "
+                 "default) or trajectory (linear interpolation; the default for a .traj file), or pointer: "
+                 "lines 'time_s x_px y_px height_mm buttons' mapped through the scene camera like run's "
+                 "mouse (required)")
       ->type_name("[KIND:]FILE");
   cli::add_int(app, "--every", "N", a.every, 1, 1'000'000, "write every N-th frame (default 1)");
   cli::add_positive(app, "--fps", "F", a.fps, 10000.0, "30", "frames per second of session time (default 30)");
@@ -131,7 +132,11 @@ int replay(const cli::Command& cmd, const ReplayArgs& a) {
   auto fail = [&cmd](const Error& e) { return cmd.fail(e); };
   OutputSet outputs;
   if (Status s = add_outputs(a, outputs); !s) return fail(s.error());
-  const std::string spec = a.log.find(':') == std::string::npos ? "playback:" + a.log : a.log;
+  // No KIND: a .traj file is a scripted trajectory (interpolated; read as a recording its
+  // keyframes would jump and be rejected), anything else a recording.
+  const std::string spec = a.log.find(':') != std::string::npos ? a.log
+                           : a.log.ends_with(".traj")              ? "trajectory:" + a.log
+                                                                   : "playback:" + a.log;
   auto device = open_device_log(spec);
   if (!device) return fail(device.error());
   auto scene = cli::load_scene_or_default(a.scene);
