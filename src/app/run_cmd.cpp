@@ -41,7 +41,9 @@ Scroll raises (up) or lowers (down) it 0.5 mm per notch; PageUp/Up and PageDown/
 into it. M captures the mouse (raw relative motion, 0.1 mm per count, where supported; M again
 puts the probe back under the pointer).
 The probe itself is hidden by default (P shows it): the pseudo-shadow is the display; when
-shown it is drawn where the haptic proxy is, after the push-out. S saves screenshot_NNNN.png
+shown it is drawn where the haptic proxy is, after the push-out. D draws the hand's own position
+(the device) as a faint ghost: the gap to the proxy is what fields, viscosity and surfaces do
+to it. C puts an attracting charge at the probe, Shift+C removes the nearest one. S saves screenshot_NNNN.png
 (without the overlays) and screenshot_NNNN.overrides.toml (panel edits, camera, probe: `render
 --scene FILE --overrides screenshot_NNNN.overrides.toml` draws the same image).
 Saved changes to the shaders, the scene or its textures are reloaded within 0.5 s; a broken
@@ -127,6 +129,7 @@ struct Session {  // everything the window loop touches, grouped by owner thread
   double readouts_s = -1.0;           // session time of their last refresh
   std::vector<UiFrameReport> ui_frames;  // --ui-report
   std::string shown_error;            // last reload error printed to the console
+  std::uint32_t last_charge_id = 0;   // live charges: ids are never reused
   std::unique_ptr<Device> device;
   GlfwInputDevice* glfw_device = nullptr;  // == device.get() for mouse/gamepad
   PointerLogDevice* pointer_device = nullptr;  // == device.get() for pointer:FILE
@@ -251,6 +254,8 @@ std::string screenshot_state(const TuneSession& tune) {
   return format_overrides(state, cli::scene_display_name(tune.scene_path()));
 }
 
+void edit_live_charges(Session& s, bool add);  // below, with the reload
+
 Status handle_keys(Session& s, int w, int h) {
   WindowInput& in = s.input;
   if (in.toggle_capture && s.glfw_device) s.glfw_device->toggle_capture();
@@ -275,6 +280,8 @@ Status handle_keys(Session& s, int w, int h) {
   in.toggle_probe = false;
   if (in.toggle_device) s.tune->renderer().set_show_device(!s.tune->renderer().show_device());
   in.toggle_device = false;
+  if (in.add_charge || in.remove_charge) edit_live_charges(s, in.add_charge);
+  in.add_charge = in.remove_charge = false;
   Camera cam = s.tune->renderer().scene().camera;
   apply_orbit_zoom(in, cam);
   s.tune->renderer().set_camera(cam);
@@ -297,6 +304,39 @@ Status handle_keys(Session& s, int w, int h) {
 // Files are polled 5 times a second, so a saved change is on screen within ~0.2 s plus one
 // rebuild (shader compile and JIT, ~0.1-0.2 s on llvmpipe).
 constexpr double kWatchPeriodS = 0.2;
+
+// A live charge: attracting, ~0.4 N at 12 mm (the demo scene's charge), 2 mm softening.
+constexpr double kLiveChargeNmm2 = -60.0;
+
+// C adds an attracting charge at the proxy (the probe is then pulled back toward where it was);
+// Shift+C removes the one nearest the proxy. The haptic thread adopts the set at its next tick
+// and raises charge_added / charge_removed (the event log and the sounds follow).
+void edit_live_charges(Session& s, bool add) {
+  LiveCharges c = s.loop->live_charges().read();  // the render thread is its only writer
+  const glm::dvec3 at = s.loop->state().read().proxy_mm;
+  if (add) {
+    if (c.count == LiveCharges::kMax) {
+      std::fprintf(stderr, "live charges: at most %d; remove one first (Shift+C)\n", LiveCharges::kMax);
+      return;
+    }
+    c.id[c.count] = ++s.last_charge_id;
+    c.position[c.count] = at;
+    c.charge_n_mm2[c.count] = kLiveChargeNmm2;
+    ++c.count;
+  } else {
+    if (c.count == 0) return;
+    int nearest = 0;
+    for (int i = 1; i < c.count; ++i)
+      if (glm::length(c.position[i] - at) < glm::length(c.position[nearest] - at)) nearest = i;
+    for (int i = nearest; i + 1 < c.count; ++i) {
+      c.id[i] = c.id[i + 1];
+      c.position[i] = c.position[i + 1];
+      c.charge_n_mm2[i] = c.charge_n_mm2[i + 1];
+    }
+    --c.count;
+  }
+  s.loop->live_charges().publish(c);
+}
 
 // A reloaded scene may feel different too (surfaces, materials' haptic keys, fields, bodies):
 // the haptic thread gets a haptic scene built from it. A scene the renderer took but the

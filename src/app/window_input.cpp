@@ -45,7 +45,7 @@ void on_cursor(GLFWwindow* w, double x, double y) {
 
 }  // namespace
 
-void handle_key(WindowInput& in, int key, int action, int) {
+void handle_key(WindowInput& in, int key, int action, int mods) {
   if (action != GLFW_PRESS && action != GLFW_REPEAT) return;
   if (action == GLFW_PRESS) ++in.key_presses;
   if (key == GLFW_KEY_F1 && action == GLFW_PRESS) in.toggle_panel = true;
@@ -59,6 +59,7 @@ void handle_key(WindowInput& in, int key, int action, int) {
   if (key == GLFW_KEY_M) in.toggle_capture = true;
   if (key == GLFW_KEY_P) in.toggle_probe = true;
   if (key == GLFW_KEY_D) in.toggle_device = true;
+  if (key == GLFW_KEY_C) ((mods & GLFW_MOD_SHIFT) ? in.remove_charge : in.add_charge) = true;
   if (key == GLFW_KEY_ESCAPE || key == GLFW_KEY_Q) in.quit = true;
 }
 

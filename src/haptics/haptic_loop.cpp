@@ -164,10 +164,40 @@ void HapticLoop::adopt_pending_scene(Clock::Ns now) {
 
 // The scene's fields at the proxy (last tick's: the probe that is in the field) and the bodies'
 // springs, stepped one tick; floor impacts become events.
+// Compares the published live charges with the adopted ones by id: one charge_added or
+// charge_removed event per difference, with this tick's time.
+void HapticLoop::adopt_live_charges(double t) {
+  const LiveCharges now = live_charges_.read();
+  auto has = [](const LiveCharges& set, std::uint32_t id) {
+    for (int i = 0; i < set.count; ++i)
+      if (set.id[i] == id) return i;
+    return -1;
+  };
+  auto raise = [&](EventKind kind, const LiveCharges& set, int i) {
+    HapticEvent e;
+    e.kind = kind;
+    e.tick = local_.tick;
+    e.time_s = t;
+    e.index = static_cast<int>(set.id[i]);
+    e.value = set.charge_n_mm2[i];
+    e.position_mm = set.position[i];
+    events_.push(e);
+  };
+  for (int i = 0; i < adopted_charges_.count; ++i)
+    if (has(now, adopted_charges_.id[i]) < 0) raise(EventKind::charge_removed, adopted_charges_, i);
+  for (int i = 0; i < now.count; ++i)
+    if (has(adopted_charges_, now.id[i]) < 0) raise(EventKind::charge_added, now, i);
+  adopted_charges_ = now;
+}
+
 glm::dvec3 HapticLoop::world_forces(double t, double dt) {
   const world::HapticScene& scene = god_->scene();
   const glm::dvec3 anchor = god_->initialized() ? god_->proxy() : local_.position_mm;
   glm::dvec3 f = scene.fields().empty() ? glm::dvec3(0.0) : scene.fields().force_n(anchor, local_.velocity_mm_s, t);
+  adopt_live_charges(t);
+  for (int i = 0; i < adopted_charges_.count; ++i)
+    f += world::FieldSet::charge_force_n(anchor, adopted_charges_.position[i], adopted_charges_.charge_n_mm2[i],
+                                         adopted_charges_.softening_mm);
   local_.body_count = static_cast<int>(bodies_.size());
   if (bodies_.size() == 0) return f;
   const world::BodyStepResult r = bodies_.step(anchor, dt);

@@ -55,6 +55,18 @@ struct HapticLoopParams {
   std::int64_t sched_slice_us = 100;
 };
 
+// Charges a person adds and removes while the loop runs (run's C / Shift+C), published by the
+// render thread (Snapshot<LiveCharges>) and added to the scene's fields. Each has an id that is
+// never reused, so the haptic thread can tell which ones came and went and say so in events.
+struct LiveCharges {
+  static constexpr int kMax = 16;
+  int count = 0;
+  std::array<std::uint32_t, kMax> id{};
+  std::array<glm::dvec3, kMax> position{};
+  std::array<double, kMax> charge_n_mm2{};
+  double softening_mm = 2.0;
+};
+
 struct HapticState {
   std::uint64_t tick = 0;
   double time_s = 0.0;               // session time of this tick
@@ -111,6 +123,8 @@ class HapticLoop {
   // render thread or `replay` (haptics/events.h).
   EventQueue& events() { return events_; }
   Snapshot<SurfaceModel>& surface() { return surface_; }
+  // Written by one thread (the render thread), read by the haptic thread every tick.
+  Snapshot<LiveCharges>& live_charges() { return live_charges_; }
   // After stop() (or between run_ticks): measured periods in microseconds.
   const std::vector<double>& periods_us() const { return periods_us_.values(); }
   Percentiles period_stats() const { return percentiles(periods_us_.values()); }
@@ -150,6 +164,9 @@ class HapticLoop {
   Snapshot<HapticState> state_;
   EventQueue events_;
   Snapshot<SurfaceModel> surface_;
+  Snapshot<LiveCharges> live_charges_;
+  LiveCharges adopted_charges_;  // haptic thread: the set in force, to diff the next one against
+  void adopt_live_charges(double t);
   std::string priority_ = "normal";
   std::atomic<bool> stop_{false};
   std::atomic<int> slice_error_{0};  // errno of the slice request (0 = granted or not asked)

@@ -236,6 +236,54 @@ TEST(FieldLoopTest, BodyImpactsBecomeEventsAndPositionsArePublished) {
   EXPECT_GE(st.body_mm[0].z, -55.0 - 1e-9);  // never below its floor
 }
 
+// Charges added and removed while the loop runs (run's C / Shift+C): the haptic thread adopts
+// the published set at its next tick, raises one charge_added / charge_removed per change with
+// that tick, and the probe feels the softened law of the live charge (the same closed form as
+// a scene charge, checked at the converged proxy as above).
+TEST(FieldLoopTest, LiveChargesAreAdoptedAtTheNextTickWithEvents) {
+  Scene sc = test::scene_with(8.0, {test::analytic(SurfaceType::kPlane)});
+  auto scene = HapticScene::build(sc);
+  ASSERT_TRUE(scene);
+  LogDevice device({{0.0, {0, 0, 30}, 0, true}, {2.0, {0, 0, 30}, 0, true}}, true, "hold");
+  FakeClock clock;
+  HapticLoop loop(device, clock, HapticLoopParams{}, &scene.value());
+  loop.run_ticks(100);
+  LiveCharges c;
+  c.count = 2;
+  c.id = {7, 9};
+  c.position[0] = {0, 20, 30};
+  c.position[1] = {0, -200, 30};
+  c.charge_n_mm2[0] = -200;
+  c.charge_n_mm2[1] = 50;
+  loop.live_charges().publish(c);
+  loop.run_ticks(1);
+  std::vector<HapticEvent> events;
+  loop.events().drain([&](const HapticEvent& e) { events.push_back(e); });
+  ASSERT_EQ(events.size(), 2u);
+  EXPECT_EQ(events[0].kind, EventKind::charge_added);
+  EXPECT_EQ(events[0].index, 7);
+  EXPECT_EQ(events[0].tick, 100u);
+  EXPECT_EQ(events[1].index, 9);
+  loop.run_ticks(600);
+  const HapticState st = loop.state().read();
+  const glm::dvec3 f = FieldSet::charge_force_n(st.proxy_mm, c.position[0], -200, 2) +
+                       FieldSet::charge_force_n(st.proxy_mm, c.position[1], 50, 2);
+  EXPECT_NEAR(st.force_n.y, f.y, 1e-6);
+  EXPECT_GT(st.proxy_mm.y, 0.1);
+  c.count = 1;  // the first one removed: id 9 moves to slot 0
+  c.id[0] = 9;
+  c.position[0] = c.position[1];
+  c.charge_n_mm2[0] = 50;
+  loop.live_charges().publish(c);
+  loop.run_ticks(1);
+  events.clear();
+  loop.events().drain([&](const HapticEvent& e) { events.push_back(e); });
+  ASSERT_EQ(events.size(), 1u);
+  EXPECT_EQ(events[0].kind, EventKind::charge_removed);
+  EXPECT_EQ(events[0].index, 7);
+  EXPECT_EQ(events[0].value, -200.0);
+}
+
 // No fields, no bodies: the field force is exactly zero and the proxy is today's.
 TEST(FieldLoopTest, PlainSceneHasNoFieldForce) {
   Scene sc = test::scene_with(8.0, {test::analytic(SurfaceType::kPlane)});
