@@ -25,6 +25,7 @@ HapticLoop::HapticLoop(Device& device, Clock& clock, const HapticLoopParams& par
   if (scene != nullptr) {
     god_.emplace(*scene);
     bodies_ = world::BodySet(scene->bodies(), scene->fields().gravity_mm_s2());
+    buttons_ = world::ButtonSet(scene->button_shapes(), scene->probe_radius_mm());
   }
   clock_.set_wake_spin(std::chrono::microseconds(std::max<std::int64_t>(params.wake_spin_us, 0)));
 }
@@ -151,6 +152,8 @@ void HapticLoop::adopt_pending_scene(Clock::Ns now) {
   if (had_proxy) god_->reset(proxy);
   // The new scene's bodies start afresh (a rare event: the vectors' old storage is freed here).
   bodies_ = world::BodySet(pending_->bodies(), pending_->fields().gravity_mm_s2());
+  buttons_ = world::ButtonSet(pending_->button_shapes(), pending_->probe_radius_mm());
+  local_.flags = 0;  // flags are the scene's: a new scene starts with all of them off
   retired_ = std::move(scene_owned_);
   scene_owned_ = std::move(pending_);
   HapticEvent e;
@@ -190,6 +193,38 @@ void HapticLoop::adopt_live_charges(double t) {
   adopted_charges_ = now;
 }
 
+// The buttons under the probe: their springs join the force on the probe; a button that gives
+// way raises button_fired (label: its action as written) and, for a flag action, toggles the
+// flag and raises flag_toggled. A scene action is carried out by the event's consumer.
+void HapticLoop::press_buttons(const glm::dvec3& anchor, double t, glm::dvec3& force) {
+  if (buttons_.size() == 0) return;
+  const world::HapticScene& scene = god_->scene();
+  const world::ButtonStepResult r = buttons_.step(anchor);
+  force += r.force_n;
+  local_.button_pressed = r.pressed;
+  local_.button_depth_mm = r.depth_mm;
+  for (int k = 0; k < r.fired_count; ++k) {
+    const std::size_t i = static_cast<std::size_t>(r.fired[static_cast<std::size_t>(k)]);
+    const Button& b = scene.buttons()[i];
+    HapticEvent e;
+    e.kind = EventKind::button_fired;
+    e.tick = local_.tick;
+    e.time_s = t;
+    e.surface = scene.button_shapes()[i].surface;
+    e.index = static_cast<int>(i);
+    e.value = b.travel_mm;
+    e.position_mm = anchor;
+    e.set_label(b.action);
+    events_.push(e);
+    if (b.action_kind != ButtonActionKind::kFlag || b.flag < 0) continue;
+    local_.flags ^= 1u << static_cast<unsigned>(b.flag);
+    e.kind = EventKind::flag_toggled;
+    e.value = (local_.flags >> static_cast<unsigned>(b.flag)) & 1u;
+    e.set_label(b.action_target);
+    events_.push(e);
+  }
+}
+
 glm::dvec3 HapticLoop::world_forces(double t, double dt) {
   const world::HapticScene& scene = god_->scene();
   const glm::dvec3 anchor = god_->initialized() ? god_->proxy() : local_.position_mm;
@@ -198,6 +233,7 @@ glm::dvec3 HapticLoop::world_forces(double t, double dt) {
   for (int i = 0; i < adopted_charges_.count; ++i)
     f += world::FieldSet::charge_force_n(anchor, adopted_charges_.position[i], adopted_charges_.charge_n_mm2[i],
                                          adopted_charges_.softening_mm);
+  press_buttons(anchor, t, f);
   local_.body_count = static_cast<int>(bodies_.size());
   if (bodies_.size() == 0) return f;
   const world::BodyStepResult r = bodies_.step(anchor, dt);

@@ -28,6 +28,7 @@
 #include "haptics/kalman.h"
 #include "haptics/loop_stats.h"
 #include "world/bodies.h"
+#include "world/buttons.h"
 #include "world/god_object.h"
 
 namespace ps {
@@ -83,6 +84,9 @@ struct HapticState {
   glm::dvec3 field_force_n{0.0};     // haptic scene: fields + body springs on the probe this tick
   std::array<glm::dvec3, world::kMaxBodies> body_mm{};  // haptic scene: the bodies' centres
   int body_count = 0;
+  int button_pressed = -1;           // haptic scene: the button the probe presses (-1: none)
+  double button_depth_mm = 0.0;      // and how far it is in
+  std::uint32_t flags = 0;           // haptic scene: bit i = Scene::flags[i], toggled by buttons
   bool have_sample = false, in_contact = false;
   double rate_hz = 0.0;              // over the last second
   double jitter_p99_us = 0.0;        // |period - nominal|, p99 over the last second
@@ -151,6 +155,8 @@ class HapticLoop {
   glm::dvec3 world_forces(double t, double dt);  // fields + bodies on the probe (haptic scene)
   std::optional<world::GodObject> god_;  // set when a haptic scene is given
   world::BodySet bodies_;                // the scene's bodies (reset with each scene)
+  world::ButtonSet buttons_;             // the scene's buttons (reset with each scene)
+  void press_buttons(const glm::dvec3& anchor, double t, glm::dvec3& force);
   std::shared_ptr<const world::HapticScene> scene_owned_;  // after replace_scene()
   std::mutex swap_mutex_;  // guards pending_, retired_
   std::shared_ptr<const world::HapticScene> pending_, retired_;

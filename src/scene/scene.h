@@ -107,6 +107,7 @@ struct Surface {
   int resolution = 64;       // tessellation of procedural shapes (segments)
   bool visible = true;       // false: felt but not drawn (a hidden object)
   bool touchable = true;     // false: drawn but not felt
+  int button = -1;           // >= 0: the plate the scene's [[buttons]] #button adds (not in the file)
   int line = 0;              // line in the scene file, for error messages
 };
 
@@ -182,6 +183,30 @@ struct Body {
   int line = 0;
 };
 
+inline constexpr int kMaxSceneButtons = 16;
+inline constexpr int kMaxSceneFlags = 32;  // HapticState::flags is a 32-bit mask
+
+// [[buttons]]: a flush button in a surface (seed 002 §2; docs/haptics.md, "Buttons"): a
+// rectangle of the face it sits in that gives way to the probe with its own spring, and past
+// `travel_mm` stops pushing and fires its action.
+enum class ButtonActionKind { kScene, kFlag };
+
+struct Button {
+  glm::dvec3 center{0.0};          // centre of its face, on the surface it sits in, mm
+  glm::dvec2 size_mm{30.0, 30.0};  // face extent along local X and Y
+  glm::dvec3 rotation_deg{0.0};    // XYZ Euler, as a plane's: local +Z is the outward normal
+  double stiffness_n_per_mm = 0.2; // its spring (softer than the wall around it)
+  double travel_mm = 3.0;          // press depth at which it fires and its force stops
+  std::string action;              // as written: "scene:FILE" or "flag:NAME"
+  ButtonActionKind action_kind = ButtonActionKind::kFlag;
+  std::string action_target;       // scene: the file's absolute path; flag: its name
+  int flag = -1;                   // flag: index into Scene::flags
+  std::string material;            // the plate's look and feel; empty: the first surface's
+  int material_index = 0;
+  bool visible = true;             // draw its plate
+  int line = 0;
+};
+
 struct Scene {
   std::string path;  // file the scene came from ("<embedded default>" for the built-in one)
   Camera camera;
@@ -192,6 +217,8 @@ struct Scene {
   std::vector<Surface> surfaces;
   std::vector<Field> fields;
   std::vector<Body> bodies;
+  std::vector<Button> buttons;
+  std::vector<std::string> flags;  // names toggled by the buttons' flag actions, first use first
 };
 
 }  // namespace ps

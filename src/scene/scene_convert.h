@@ -30,6 +30,11 @@ Status read_field(const ParseContext& ctx, const toml::table& table, int index, 
 Status read_body(const ParseContext& ctx, const toml::table& table, int index,
                  const std::vector<std::string>& material_names, Body& out);
 
+// [[buttons]] #index (scene_world.cpp): the action resolved ("scene:FILE" to an existing file's
+// absolute path), the size checked against the probe's diameter, the material like a body's.
+Status read_button(const ParseContext& ctx, const toml::table& table, int index,
+                   const std::vector<std::string>& material_names, double probe_radius_mm, Button& out);
+
 // Reads the files named by the root's `include` (recursively) into ctx.included
 // (scene_include.cpp); errors carry the including line or the included file's own line.
 Status resolve_includes(toml::table& root, ParseContext& ctx);

@@ -6,6 +6,7 @@
 #include <fstream>
 #include <sstream>
 
+#include "scene/mesh.h"
 #include "scene/scene_convert.h"
 
 namespace ps {
@@ -146,6 +147,53 @@ Status check_charges(const ParseContext& ctx, const Scene& scene) {
   return ok_status();
 }
 
+// The plate a button adds to the surfaces: a box 1 mm thick whose front face stands 0.25 mm
+// proud of the face the button sits in (drawn over it, never z-fighting), seen but not felt
+// (the button's feel is HapticScene's hole and the button spring, docs/haptics.md "Buttons").
+Surface button_plate(const Button& b, int index) {
+  constexpr double kThicknessMm = 1.0, kProudMm = 0.25;
+  Surface s;
+  s.type = SurfaceType::kBox;
+  s.material_index = b.material_index;
+  s.rotation_deg = b.rotation_deg;
+  s.center = b.center + euler_xyz_deg(b.rotation_deg) * glm::dvec3(0.0, 0.0, kProudMm - 0.5 * kThicknessMm);
+  s.box_size_mm = {b.size_mm.x, b.size_mm.y, kThicknessMm};
+  s.visible = b.visible;
+  s.touchable = false;
+  s.button = index;
+  s.line = b.line;
+  return s;
+}
+
+Status read_buttons(const ParseContext& ctx, const toml::table& root, const std::vector<std::string>& names,
+                    Scene& scene) {
+  if (Status s = read_array(ctx, root, "buttons", scene.buttons, [&](const toml::table& t, int i, Button& b) {
+        b.material_index = scene.surfaces[0].material_index;  // no material: the first surface's look
+        return scene_detail::read_button(ctx, t, i, names, scene.probe.radius_mm, b);
+      });
+      !s)
+    return s;
+  if (scene.buttons.size() > static_cast<std::size_t>(kMaxSceneButtons))
+    return make_error(ctx.source_name + ":" + std::to_string(scene.buttons[kMaxSceneButtons].line) +
+                      ": [[buttons]] #" + std::to_string(kMaxSceneButtons) + ": a scene has at most " +
+                      std::to_string(kMaxSceneButtons) + " buttons");
+  for (std::size_t i = 0; i < scene.buttons.size(); ++i) {
+    Button& b = scene.buttons[i];
+    if (b.action_kind == ButtonActionKind::kFlag) {
+      const auto it = std::find(scene.flags.begin(), scene.flags.end(), b.action_target);
+      b.flag = static_cast<int>(it - scene.flags.begin());
+      if (it == scene.flags.end()) {
+        if (scene.flags.size() == static_cast<std::size_t>(kMaxSceneFlags))
+          return make_error(ctx.source_name + ":" + std::to_string(b.line) + ": [[buttons]] #" + std::to_string(i) +
+                            ": a scene has at most " + std::to_string(kMaxSceneFlags) + " flags");
+        scene.flags.push_back(b.action_target);
+      }
+    }
+    scene.surfaces.push_back(button_plate(b, static_cast<int>(i)));
+  }
+  return ok_status();
+}
+
 Status read_world(const ParseContext& ctx, const toml::table& root, Scene& scene) {
   if (Status s = read_array(ctx, root, "fields", scene.fields,
                             [&](const toml::table& t, int i, Field& f) { return scene_detail::read_field(ctx, t, i, f); });
@@ -164,7 +212,7 @@ Status read_world(const ParseContext& ctx, const toml::table& root, Scene& scene
     return make_error(ctx.source_name + ":" + std::to_string(scene.bodies[kMaxSceneBodies].line) + ": [[bodies]] #" +
                       std::to_string(kMaxSceneBodies) + ": a scene has at most " + std::to_string(kMaxSceneBodies) +
                       " bodies");
-  return ok_status();
+  return read_buttons(ctx, root, names, scene);
 }
 
 Status read_sections(const ParseContext& ctx, const toml::table& root, Scene& scene) {

@@ -14,7 +14,7 @@ using std::string_view_literals::operator""sv;
 
 constexpr std::array kRootKeys = {"include"sv, "camera"sv,    "light"sv,   "probe"sv,
                                   "render"sv,  "materials"sv, "surfaces"sv, "fields"sv,
-                                  "bodies"sv};
+                                  "bodies"sv,  "buttons"sv};
 constexpr std::array kCameraKeys = {"projection"sv, "position"sv,        "target"sv, "up"sv,
                                     "fov_y_deg"sv,  "ortho_height_mm"sv, "near_mm"sv, "far_mm"sv};
 constexpr std::array kLightKeys = {"direction"sv, "color"sv, "ambient"sv};
@@ -57,6 +57,8 @@ constexpr std::array kBodyKeys = {"mass_g"sv,      "spring_n_per_mm"sv, "rest_le
                                   "damping_n_s_per_mm"sv, "radius_mm"sv, "material"sv,
                                   "position"sv,    "floor"sv,           "floor_z_mm"sv,
                                   "restitution"sv, "time_scale"sv,      "substeps"sv};
+constexpr std::array kButtonKeys = {"center"sv,   "size_mm"sv,  "rotation_deg"sv, "stiffness_n_per_mm"sv,
+                                    "travel_mm"sv, "action"sv,  "material"sv,     "visible"sv};
 
 }  // namespace
 
@@ -73,6 +75,7 @@ std::span<const std::string_view> known_keys(Section section) {
     case Section::kSurface: return kSurfaceKeys;
     case Section::kField: return kFieldKeys;
     case Section::kBody: return kBodyKeys;
+    case Section::kButton: return kButtonKeys;
   }
   assert(false && "known_keys: unhandled Section");
   return {};

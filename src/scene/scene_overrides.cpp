@@ -49,6 +49,7 @@ Section section_of(std::string_view name) {
   if (name == "surfaces") return Section::kSurface;
   if (name == "fields") return Section::kField;
   if (name == "bodies") return Section::kBody;
+  if (name == "buttons") return Section::kButton;
   return Section::kRoot;
 }
 
@@ -127,8 +128,8 @@ Result<toml::table*> target_table(toml::table& root, const std::vector<std::stri
     if (parts.size() != 3) return make_error(label + ": expected surfaces.N.KEY=VALUE");
     return element(root["surfaces"].as_array(), parts[1], label, "surface", "the scene");
   }
-  if (section == Section::kField || section == Section::kBody) {
-    const std::string what = section == Section::kField ? "field" : "body";
+  if (section == Section::kField || section == Section::kBody || section == Section::kButton) {
+    const std::string what = section == Section::kField ? "field" : section == Section::kBody ? "body" : "button";
     if (parts.size() != 3) return make_error(label + ": expected " + parts[0] + ".N.KEY=VALUE");
     return element(root[parts[0]].as_array(), parts[1], label, what, "the scene");
   }

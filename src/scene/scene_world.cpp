@@ -1,8 +1,9 @@
-// [[fields]] and [[bodies]]: the haptic world's forces and masses beyond surfaces
+// [[fields]], [[bodies]] and [[buttons]]: the haptic world beyond surfaces
 // (docs/scene-format.md has the keys, docs/haptics.md the laws).
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <filesystem>
 
 #include "scene/scene_convert.h"
 
@@ -83,6 +84,61 @@ Status read_body(const ParseContext& ctx, const toml::table& table, int index,
   r.number("restitution", out.restitution, Range::closed(0.0, 1.0));
   r.number("time_scale", out.time_scale, Range::closed(0.01, 10.0));
   r.integer("substeps", out.substeps, 1, 64);
+  if (!out.material.empty()) {
+    const auto it = std::find(material_names.begin(), material_names.end(), out.material);
+    if (r.ok() && it == material_names.end()) {
+      std::vector<std::string_view> names(material_names.begin(), material_names.end());
+      r.fail("material", "names unknown material '" + out.material + "'; defined materials: " + join(names));
+    }
+    out.material_index = static_cast<int>(it - material_names.begin());
+  }
+  return r.status();
+}
+
+Status read_button(const ParseContext& ctx, const toml::table& table, int index,
+                   const std::vector<std::string>& material_names, double probe_radius_mm, Button& out) {
+  const std::string path = "buttons." + std::to_string(index);
+  TableReader r(ctx, &table, Section::kButton, path, "[[buttons]] #" + std::to_string(index));
+  out.line = static_cast<int>(table.source().begin.line);
+  r.check_unknown_keys();
+  r.vec3("center", out.center, kCoordinate);
+  r.vec2("size_mm", out.size_mm, Range::positive(kMaxLengthMm));
+  r.vec3("rotation_deg", out.rotation_deg, Range::closed(-3600.0, 3600.0));
+  r.number("stiffness_n_per_mm", out.stiffness_n_per_mm, Range::positive(100.0));
+  r.number("travel_mm", out.travel_mm, Range::positive(1000.0));
+  r.string("action", out.action);
+  r.string("material", out.material);
+  r.boolean("visible", out.visible);
+  if (!r.ok()) return r.status();
+  r.require(r.has("action"), "action",
+            "is required: what the button does when pushed past its travel, \"scene:FILE\" (switch to that "
+            "scene) or \"flag:NAME\" (toggle a named flag)");
+  if (!r.ok()) return r.status();
+  const std::size_t colon = out.action.find(':');
+  const std::string kind = out.action.substr(0, colon);
+  const std::string target = colon == std::string::npos ? std::string() : out.action.substr(colon + 1);
+  if ((kind != "scene" && kind != "flag") || target.empty()) {
+    r.fail("action", "'" + out.action + "' is not \"scene:FILE\" or \"flag:NAME\"");
+    return r.status();
+  }
+  out.action_kind = kind == "scene" ? ButtonActionKind::kScene : ButtonActionKind::kFlag;
+  if (out.action_kind == ButtonActionKind::kScene) {
+    namespace fs = std::filesystem;
+    fs::path file(target);
+    if (file.is_relative()) file = fs::path(ctx.base_dir) / file;
+    file = file.lexically_normal();
+    std::error_code ec;
+    if (!fs::is_regular_file(file, ec)) r.fail("action", "scene file not found: " + file.string());
+    out.action_target = file.string();
+  } else {
+    out.action_target = target;
+  }
+  // The probe (a sphere of radius R) must fit in the button to push it in: a narrower one
+  // would hold it on its rim.
+  const double narrowest = std::min(out.size_mm.x, out.size_mm.y);
+  if (r.ok() && narrowest < 2.0 * probe_radius_mm)
+    r.fail("size_mm", "is narrower than the probe (" + std::to_string(2.0 * probe_radius_mm) +
+                          " mm across): the probe could not push it in; make it at least that wide");
   if (!out.material.empty()) {
     const auto it = std::find(material_names.begin(), material_names.end(), out.material);
     if (r.ok() && it == material_names.end()) {

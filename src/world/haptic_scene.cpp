@@ -52,6 +52,12 @@ Result<HapticScene> HapticScene::build(const Scene& scene) {
   out.probe_radius_mm_ = scene.probe.radius_mm;
   out.fields_ = FieldSet(scene.fields);
   out.bodies_ = scene.bodies;
+  out.buttons_ = scene.buttons;
+  out.flags_ = scene.flags;
+  for (std::size_t i = 0; i < scene.surfaces.size(); ++i) {
+    const int b = scene.surfaces[i].button;
+    if (b >= 0) out.button_shapes_.push_back(ButtonShape::make(scene.buttons[static_cast<std::size_t>(b)], static_cast<int>(i)));
+  }
   for (std::size_t i = 0; i < scene.surfaces.size(); ++i) {
     const Surface& s = scene.surfaces[i];
     const int index = static_cast<int>(i);
@@ -133,11 +139,33 @@ Contact HapticScene::closest_analytic(const Shape& s, const glm::dvec3& p) const
 Contact HapticScene::closest(const glm::dvec3& p, double max_distance_mm, const Contact* hint) const {
   Contact best;
   double limit = max_distance_mm;
+  // Over a button (buttons do not overlap: the first one p is over), the face's points in its
+  // rectangle are the hole; the pocket behind it stands in for them.
+  const ButtonShape* button = nullptr;
+  for (const ButtonShape& b : button_shapes_)
+    if (b.over(b.to_local(p))) {
+      button = &b;
+      break;
+    }
+  auto in_hole = [button](const glm::dvec3& point) { return button != nullptr && button->in_hole(button->to_local(point)); };
+  if (button != nullptr) {
+    const SurfacePoint sp = button->pocket_closest(button->to_local(p));
+    const glm::dvec3 point = button->rotation * sp.point + button->center;
+    const double d = glm::length(p - point);
+    if (d <= limit) {
+      best.hit = true;
+      best.surface = button->surface;
+      best.point = point;
+      best.normal = best.shaded_normal = button->rotation * sp.normal;
+      best.distance_mm = d;
+      limit = d;
+    }
+  }
   for (const Shape& s : shapes_) {
     // Whole shape farther than the best so far: skip it without the exact query.
     if (glm::length(p - s.center) - s.bound_mm > limit) continue;
     const Contact c = closest_analytic(s, p);
-    if (c.distance_mm <= limit) {
+    if (c.distance_mm <= limit && !in_hole(c.point)) {
       best = c;
       limit = c.distance_mm;
     }
@@ -145,7 +173,7 @@ Contact HapticScene::closest(const glm::dvec3& p, double max_distance_mm, const 
   const MeshHit h = meshes_.closest(p, limit, hint != nullptr ? &hint->mesh_hit : nullptr);
   best.facets_visited = h.visited;
   if (h.hit) best.mesh_hit = h;
-  if (h.hit && h.distance_mm <= limit) {
+  if (h.hit && h.distance_mm <= limit && !in_hole(h.point)) {
     best.hit = true;
     best.surface = mesh_surface_[h.mesh];
     best.point = h.point;

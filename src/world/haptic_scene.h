@@ -8,7 +8,9 @@
 // and tori are kept apart as volumes (medium_at: closed-form inside tests); penetrable planes
 // (no inside), meshes and height fields are not felt at all (docs/haptics.md says why).
 // closest() and medium_at() are const, thread-safe and allocation-free. docs/haptics.md,
-// "Haptic geometry".
+// "Haptic geometry". A button (world/buttons.h) is a hole in the face it sits in: closest()
+// drops that face's points inside the button's rectangle for a query point over the button and
+// offers the pocket behind it instead.
 #pragma once
 
 #include <cstdint>
@@ -19,6 +21,7 @@
 #include "core/result.h"
 #include "scene/mesh.h"
 #include "scene/scene.h"
+#include "world/buttons.h"
 #include "world/fields.h"
 #include "world/mesh_bvh.h"
 
@@ -58,6 +61,11 @@ class HapticScene {
   const HapticMaterial& material(int surface) const;  // that surface's feel
   const FieldSet& fields() const { return fields_; }       // [[fields]]
   const std::vector<Body>& bodies() const { return bodies_; }  // [[bodies]], as specified
+  // [[buttons]]: their geometry (the hole and pocket closest() sees), their actions as written
+  // and resolved (Scene::buttons), and the names their flag actions toggle (Scene::flags).
+  const std::vector<ButtonShape>& button_shapes() const { return button_shapes_; }
+  const std::vector<Button>& buttons() const { return buttons_; }
+  const std::vector<std::string>& flags() const { return flags_; }
   double probe_radius_mm() const { return probe_radius_mm_; }
   std::size_t analytic_count() const { return shapes_.size(); }
   std::size_t triangle_count() const { return meshes_.triangle_count(); }  // overall model
@@ -86,6 +94,9 @@ class HapticScene {
   double max_magnetic_range_mm_ = 0.0;
   FieldSet fields_;
   std::vector<Body> bodies_;
+  std::vector<ButtonShape> button_shapes_;
+  std::vector<Button> buttons_;
+  std::vector<std::string> flags_;
 };
 
 }  // namespace ps::world

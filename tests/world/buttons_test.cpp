@@ -1,0 +1,193 @@
+// [[buttons]] on the haptic side (seed 002 §2): the button's spring and its firing against the
+// closed form, the hole and pocket it makes in its face for the god-object, and through the
+// haptic loop (the drawn proxy resists by the coupling, flags toggle, events). No GL.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <vector>
+
+#include "devices/sample_log.h"
+#include "haptics/haptic_loop.h"
+#include "world/buttons.h"
+#include "world/god_object.h"
+#include "world/haptic_scene.h"
+#include "world_test_util.h"
+
+namespace ps::world {
+namespace {
+
+constexpr double kR = 8.0;  // probe radius
+
+Button flush_button(glm::dvec3 center = glm::dvec3(0.0), std::string action = "flag:light") {
+  Button b;
+  b.center = center;
+  b.size_mm = {30.0, 20.0};
+  b.stiffness_n_per_mm = 0.2;
+  b.travel_mm = 3.0;
+  b.action = action;
+  b.action_kind = action.starts_with("scene:") ? ButtonActionKind::kScene : ButtonActionKind::kFlag;
+  b.action_target = action.substr(action.find(':') + 1);
+  return b;
+}
+
+// A floor plane (z = 0) with one button in it, as the scene parser lays it out: the button's
+// plate appended to the surfaces, seen but not felt.
+Scene floor_with_button(const Button& b) {
+  Scene sc = test::scene_with(kR, {test::analytic(SurfaceType::kPlane)});
+  sc.buttons = {b};
+  if (b.action_kind == ButtonActionKind::kFlag) {
+    sc.flags = {b.action_target};
+    sc.buttons[0].flag = 0;
+  }
+  Surface plate = test::analytic(SurfaceType::kBox, b.center - glm::dvec3(0, 0, 0.25));
+  plate.box_size_mm = {b.size_mm.x, b.size_mm.y, 1.0};
+  plate.touchable = false;
+  plate.button = 0;
+  sc.surfaces.push_back(plate);
+  return sc;
+}
+
+// Pressing straight down: below the travel the force is k depth along the normal and nothing
+// fires; at the travel it fires once and the force stops; it fires again only after the probe
+// has left the button. Pushing to just under the travel, any number of times, never fires.
+TEST(ButtonSetTest, SpringUntilTheTravelThenFiresExactlyOnce) {
+  const ButtonShape shape = ButtonShape::make(flush_button(), 5);
+  ButtonSet set({shape}, kR);
+  auto press_to = [&](double depth_mm, int steps) {
+    int fired = 0;
+    for (int i = 0; i <= steps; ++i) {  // down, then back up to 2 mm above the face
+      const double d = depth_mm * std::sin(M_PI * i / steps) - (i == steps ? 2.0 : 0.0);
+      const ButtonStepResult r = set.step({3.0, -2.0, kR - d});
+      fired += r.fired_count;
+      const bool pressed_armed = d > 0.0 && d < 3.0 && set.armed(0);
+      if (r.fired_count == 0 && pressed_armed) {
+        EXPECT_NEAR(r.force_n.z, 0.2 * d, 1e-12) << i;
+        EXPECT_EQ(r.pressed, 0);
+        EXPECT_NEAR(r.depth_mm, d, 1e-12);
+      } else if (d >= 3.0 || !set.armed(0)) {
+        EXPECT_EQ(r.force_n, glm::dvec3(0.0)) << "no force once it gave way, step " << i;
+      }
+    }
+    return fired;
+  };
+  for (int k = 0; k < 5; ++k) EXPECT_EQ(press_to(2.999, 200), 0) << "below the travel, press " << k;
+  EXPECT_EQ(press_to(4.0, 200), 1);
+  EXPECT_TRUE(set.armed(0));  // back out: re-armed
+  EXPECT_EQ(press_to(4.0, 200), 1);
+  // Beside the button nothing happens, however deep.
+  const ButtonStepResult beside = set.step({20.0, 0.0, kR - 4.0});
+  EXPECT_EQ(beside.fired_count, 0);
+  EXPECT_EQ(beside.force_n, glm::dvec3(0.0));
+}
+
+// The button is a hole in its face: over it the god-object goes below the face, down to the
+// pocket's bottom (travel x 1.5 below the face) and no further; beside it the face holds the
+// proxy at R. Sliding sideways inside the pocket, the proxy stays within the rectangle.
+TEST(ButtonGeometryTest, TheFaceGivesWayOnlyOverTheButtonDownToThePocket) {
+  const Button b = flush_button();
+  auto scene = HapticScene::build(floor_with_button(b));
+  ASSERT_TRUE(scene);
+  const double bottom = -kPocketDepthPerTravel * b.travel_mm;  // -4.5
+  GodObject over(scene.value());
+  over.reset({0, 0, 20});
+  for (int i = 0; i <= 100; ++i) over.move({0, 0, 20 - 0.4 * i});  // the hand to z = -20
+  EXPECT_NEAR(over.proxy().z, bottom + kR, 2e-3);  // resting on the pocket's bottom
+  GodObject beside(scene.value());
+  beside.reset({40, 0, 20});
+  for (int i = 0; i <= 100; ++i) beside.move({40, 0, 20 - 0.4 * i});
+  EXPECT_NEAR(beside.proxy().z, kR, 2e-3);
+  // In the pocket, the hand sweeps sideways and down, far past the button's edge (x half 15,
+  // y half 10). The proxy's sphere never cuts the holed face, measured on its own closed form:
+  // over the button, the walls below the face (distance e to the rectangle's edge), the rim
+  // above it (sqrt(e^2 + z^2)) and the bottom; beside it, the face itself (z). Tolerance: the
+  // god-object's 0.002 mm, as for the other shapes. The pocket is shallower than the probe's
+  // radius, so pushed sideways the ball rolls up over the rim and out, as a real one would.
+  bool climbed_out = false;
+  for (int i = 0; i <= 200; ++i) {
+    over.move({0.5 * i, 0.25 * i, -1.0});
+    const glm::dvec3 p = over.proxy();
+    const bool is_over = std::abs(p.x) < 15.0 && std::abs(p.y) < 10.0;
+    const double e = std::min(15.0 - std::abs(p.x), 10.0 - std::abs(p.y));
+    const double clearance = is_over ? std::min(p.z > 0.0 ? std::hypot(e, p.z) : e, p.z - bottom) : p.z;
+    ASSERT_GE(clearance, kR - 2e-3) << i;
+    climbed_out = climbed_out || !is_over;
+  }
+  EXPECT_TRUE(climbed_out);
+  // Closest point: from inside the pocket, the nearest wall or the bottom, with its normal
+  // facing into the pocket; never the face's own points in the hole.
+  const Contact c = scene->closest({13.0, 0.0, -1.0}, 100.0);
+  ASSERT_TRUE(c.hit);
+  EXPECT_NEAR(c.distance_mm, 2.0, 1e-12);
+  EXPECT_NEAR(c.point.x, 15.0, 1e-12);
+  EXPECT_NEAR(c.normal.x, -1.0, 1e-12);
+  EXPECT_EQ(c.surface, 1);  // the plate: the button's material
+  // Over the hole: the bottom (3 + 4.5 mm) when low, the rim (sqrt(10^2 + 10^2) < 10 + 4.5) high up.
+  EXPECT_NEAR(scene->closest({0.0, 0.0, 3.0}, 100.0).distance_mm, 7.5, 1e-12);
+  EXPECT_NEAR(scene->closest({0.0, 0.0, 10.0}, 100.0).distance_mm, std::sqrt(200.0), 1e-12);
+  const Contact outside = scene->closest({40.0, 0.0, 3.0}, 100.0);
+  EXPECT_NEAR(outside.distance_mm, 3.0, 1e-12);
+  EXPECT_EQ(outside.surface, 0);
+}
+
+// Through the loop, a hand pressing the button with a mouse's coupling: the drawn proxy goes in
+// by depth x k_c / (k_c + k_b) (the button resists); pressed to 2 mm of hand depth it never
+// fires; pressed deeper it fires once (button_fired, then flag_toggled to 1), and a second press
+// toggles the flag back. The replayed log of events is the same every run.
+std::vector<HapticEvent> press_twice(double hand_depth_mm, HapticState* last, std::vector<double>* lag) {
+  auto scene = HapticScene::build(floor_with_button(flush_button()));
+  EXPECT_TRUE(scene);
+  const double down = kR - hand_depth_mm;
+  LogDevice device({{0.0, {2, 1, 20}, 0, true}, {1.0, {2, 1, down}, 0, true}, {2.0, {2, 1, down}, 0, true},
+                    {3.0, {2, 1, 20}, 0, true}, {4.0, {2, 1, down}, 0, true}, {5.0, {2, 1, down}, 0, true},
+                    {6.0, {2, 1, 20}, 0, true}},
+                   true, "press");
+  FakeClock clock;
+  HapticLoop loop(device, clock, HapticLoopParams{}, &scene.value());
+  std::vector<HapticEvent> events;
+  for (int i = 0; i < 60; ++i) {
+    loop.run_ticks(100);
+    loop.events().drain([&](const HapticEvent& e) { events.push_back(e); });
+    if (lag != nullptr && i == 15) {  // t = 1.6 s: the hand held 2 mm in
+      const HapticState st = loop.state().read();
+      lag->push_back(kR - st.proxy_mm.z);
+    }
+  }
+  *last = loop.state().read();
+  return events;
+}
+
+TEST(ButtonLoopTest, ResistsThroughTheCouplingThenFiresOncePerPress) {
+  HapticState st;
+  std::vector<double> lag;
+  const std::vector<HapticEvent> shallow = press_twice(2.0, &st, &lag);
+  for (const HapticEvent& e : shallow) EXPECT_NE(e.kind, EventKind::button_fired);
+  ASSERT_EQ(lag.size(), 1u);
+  // Fixed point of the coupling: p = x - k_b p / k_c, p = 2 x 0.5 / 0.7 (1e-6: converged).
+  EXPECT_NEAR(lag[0], 2.0 * 0.5 / 0.7, 1e-6);
+  EXPECT_EQ(st.flags, 0u);
+
+  const std::vector<HapticEvent> deep = press_twice(6.0, &st, nullptr);
+  std::vector<HapticEvent> fired, toggled;
+  for (const HapticEvent& e : deep) {
+    if (e.kind == EventKind::button_fired) fired.push_back(e);
+    if (e.kind == EventKind::flag_toggled) toggled.push_back(e);
+  }
+  ASSERT_EQ(fired.size(), 2u);
+  ASSERT_EQ(toggled.size(), 2u);
+  EXPECT_EQ(fired[0].label_view(), "flag:light");
+  EXPECT_EQ(toggled[0].label_view(), "light");
+  EXPECT_EQ(toggled[0].value, 1.0);
+  EXPECT_EQ(toggled[1].value, 0.0);
+  EXPECT_EQ(toggled[0].tick, fired[0].tick);
+  EXPECT_EQ(st.flags, 0u);
+  // It fires when the proxy (not the hand) reaches the travel: the proxy is 3 mm in.
+  EXPECT_NEAR(kR - fired[0].position_mm.z, 3.0, 0.05);
+  // Deterministic: the same ticks every run.
+  HapticState again;
+  const std::vector<HapticEvent> repeat = press_twice(6.0, &again, nullptr);
+  ASSERT_EQ(repeat.size(), deep.size());
+  for (std::size_t i = 0; i < deep.size(); ++i) EXPECT_EQ(event_json(repeat[i]), event_json(deep[i])) << i;
+}
+
+}  // namespace
+}  // namespace ps::world
