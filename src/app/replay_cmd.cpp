@@ -80,21 +80,44 @@ Image thumbnail(const Image& im, int width) {
   return t;
 }
 
-struct ReplayGl {  // context first: the renderer's GL objects die before it
+struct ReplayGl {  // context first: the renderers' GL objects die before it
   std::unique_ptr<gl::Context> ctx;
   std::unique_ptr<Renderer> renderer;
+  std::vector<std::unique_ptr<Renderer>> switched;  // scenes a button switched to, in order
 };
 
-Result<ReplayGl> open_renderer(const ReplayArgs& a, const Scene& scene, int frames) {
-  auto ctx = gl::create_context({a.backend});
-  if (!ctx) return ctx.error();
+Result<std::unique_ptr<Renderer>> make_renderer(const ReplayArgs& a, const Scene& scene, int frames) {
   RendererOptions options;
   options.expected_frames = frames;  // a short replay skips a tile bake it would not repay
   auto renderer = Renderer::create(scene, options);
   if (!renderer) return renderer.error();
   renderer.value()->set_show_probe(a.show_probe);
   renderer.value()->set_show_device(a.show_device);
-  return ReplayGl{std::move(ctx.value()), std::move(renderer.value())};
+  return std::move(renderer.value());
+}
+
+Result<ReplayGl> open_renderer(const ReplayArgs& a, const Scene& scene, int frames) {
+  auto ctx = gl::create_context({a.backend});
+  if (!ctx) return ctx.error();
+  auto renderer = make_renderer(a, scene, frames);
+  if (!renderer) return renderer.error();
+  return ReplayGl{std::move(ctx.value()), std::move(renderer.value()), {}};
+}
+
+// A button's scene action: the file loaded as a scene (the replay's --set options do not
+// apply to it), a renderer for it in the replay's context and its haptic scene.
+Result<SceneSwitch> switch_scene(const ReplayArgs& a, ReplayGl& gl_state, int frames, PointerLogDevice* pointer,
+                                 const std::string& path) {
+  auto scene = load_scene(path);
+  if (!scene) return make_error("button action: " + scene.error().message);
+  auto renderer = make_renderer(a, scene.value(), frames);
+  if (!renderer) return renderer.error();
+  auto haptic = world::HapticScene::build(scene.value());
+  if (!haptic) return haptic.error();
+  gl_state.switched.push_back(std::move(renderer.value()));
+  Renderer* r = gl_state.switched.back().get();
+  if (pointer != nullptr) pointer->set_view(pointer_view(*r, pointer_plane(*r)));
+  return SceneSwitch{r, std::make_shared<const world::HapticScene>(std::move(haptic.value()))};
 }
 
 std::string frame_path(const ReplayArgs& a, int i) {
@@ -158,6 +181,7 @@ int replay(const cli::Command& cmd, const ReplayArgs& a) {
   auto events = ReplayEvents::open(events_desc(a, device->device->duration_s()));
   if (!events) return fail(events.error());
   opt.on_event = [&ev = *events.value()](const HapticEvent& e) { ev.dispatcher().dispatch(e); };
+  opt.switch_scene = [&](const std::string& path) { return switch_scene(a, gl_state.value(), frames, device->pointer, path); };
   std::vector<Image> thumbs;
   std::vector<std::string> labels;
   int written = 0;

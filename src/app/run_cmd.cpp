@@ -12,6 +12,7 @@
 #include <map>
 #include <memory>
 #include <thread>
+#include <utility>
 
 #include "app/cli.h"
 #include "app/cli_groups.h"
@@ -142,6 +143,7 @@ struct Session {  // everything the window loop touches, grouped by owner thread
   int screenshots_saved = 0;          // numbers the next screenshot_NNNN.png
   PlaneAxes axes;
   std::vector<double> latency_ms, frame_ms;
+  std::string pending_scene;          // a button's scene action, carried out after this frame
 };
 
 Status open_device(const RunArgs& a, Session& s) {
@@ -393,7 +395,41 @@ Status open_events(const RunArgs& a, Session& s) {
   if (!events) return events.error();
   s.events = std::move(events.value());
   if (!s.events->warning().empty()) std::fprintf(stderr, "warning: %s\n", s.events->warning().c_str());
+  s.events->dispatcher().subscribe("buttons", [&s](const HapticEvent& e) {
+    if (s.pending_scene.empty()) s.pending_scene = scene_action_of(s.tune->renderer().scene(), e);
+  });
   return ok_status();
+}
+
+// A button's "scene:FILE" action: the window now shows that scene (its own camera and look, in
+// the window's size), the haptic thread adopts its haptic scene at its next tick; a file that
+// fails to load keeps the current scene and says why.
+void switch_scene(const RunArgs& a, Session& s) {
+  const std::string path = std::exchange(s.pending_scene, std::string());
+  auto scene = load_scene(path);
+  auto haptic = scene ? world::HapticScene::build(scene.value()) : Result<world::HapticScene>(scene.error());
+  if (!scene || !haptic) {
+    std::fprintf(stderr, "button: cannot switch to %s, staying: %s\n", path.c_str(),
+                 (scene ? haptic.error() : scene.error()).message.c_str());
+    return;
+  }
+  const Scene& current = s.tune->renderer().scene();
+  scene->render.width = current.render.width;  // the window keeps its size
+  scene->render.height = current.render.height;
+  RendererOptions options;
+  options.bake_slice_ms = 40.0;
+  auto tune = TuneSession::open({path, {}, options}, std::move(scene.value()));
+  if (!tune) {
+    std::fprintf(stderr, "button: cannot switch to %s, staying: %s\n", path.c_str(), tune.error().message.c_str());
+    return;
+  }
+  s.tune = std::move(tune.value());
+  s.tune->renderer().set_show_probe(a.show_probe);
+  s.tune->renderer().set_show_device(a.show_device);
+  s.axes = pointer_plane(s.tune->renderer());
+  s.loop->replace_scene(std::make_shared<const world::HapticScene>(std::move(haptic.value())),
+                       std::filesystem::path(path).filename().string());
+  if (!a.quiet) std::printf("button: switched to %s\n", path.c_str());
 }
 
 Status window_loop(const RunArgs& a, Session& s) {
@@ -414,6 +450,7 @@ Status window_loop(const RunArgs& a, Session& s) {
     }
     if (Status r = drive_frame(s.tune->renderer(), *s.loop, frame, st); !r) return r;
     if (Status r = s.events->pump(s.loop->events()); !r) return r;
+    if (!s.pending_scene.empty()) switch_scene(a, s);
     int w = 0, h = 0;
     glfwGetFramebufferSize(win, &w, &h);
     present_to_default_framebuffer(s.tune->renderer(), w, h);

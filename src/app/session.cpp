@@ -2,6 +2,7 @@
 
 #include <cmath>
 #include <cstdio>
+#include <filesystem>
 
 namespace ps {
 
@@ -65,8 +66,16 @@ SurfaceModel initial_surface_model(const PlaneAxes& plane, double probe_radius_m
   return m;
 }
 
-Result<ReplayResult> replay_session(Renderer& renderer, Device& device, const ReplayOptions& options,
+std::string scene_action_of(const Scene& scene, const HapticEvent& e) {
+  if (e.kind != EventKind::button_fired || e.index < 0 || static_cast<std::size_t>(e.index) >= scene.buttons.size())
+    return {};
+  const Button& b = scene.buttons[static_cast<std::size_t>(e.index)];
+  return b.action_kind == ButtonActionKind::kScene ? b.action_target : std::string();
+}
+
+Result<ReplayResult> replay_session(Renderer& first_renderer, Device& device, const ReplayOptions& options,
                                     const FrameSink& sink) {
+  Renderer* renderer = &first_renderer;
   if (!(options.fps > 0.0)) return make_error("replay: fps must be > 0");
   const double duration = std::max(0.0, device.duration_s());
   const int frames = static_cast<int>(std::floor(duration * options.fps + 1e-9)) + 1;
@@ -81,10 +90,20 @@ Result<ReplayResult> replay_session(Renderer& renderer, Device& device, const Re
     const auto last_tick = static_cast<std::uint64_t>(std::floor(i / options.fps * options.haptics.rate_hz + 1e-9));
     loop.run_ticks(last_tick + 1 - ticks_done);
     ticks_done = last_tick + 1;
-    if (options.on_event) loop.events().drain(options.on_event);
+    std::string switch_to;
+    loop.events().drain([&](const HapticEvent& e) {
+      if (options.on_event) options.on_event(e);
+      if (switch_to.empty()) switch_to = scene_action_of(renderer->scene(), e);
+    });
+    if (!switch_to.empty() && options.switch_scene) {
+      auto next = options.switch_scene(switch_to);
+      if (!next) return next.error();
+      renderer = next->renderer;
+      loop.replace_scene(next->haptic, std::filesystem::path(switch_to).filename().string());
+    }
     HapticState state;
-    if (Status s = drive_frame(renderer, loop, static_cast<std::uint64_t>(i), state); !s) return s.error();
-    if (Status s = sink(i, state.time_s, state, renderer); !s) return s.error();
+    if (Status s = drive_frame(*renderer, loop, static_cast<std::uint64_t>(i), state); !s) return s.error();
+    if (Status s = sink(i, state.time_s, state, *renderer); !s) return s.error();
     if (!options.record_path.empty() && (i + 1) % std::max(1, static_cast<int>(options.fps)) == 0)
       if (Status s = recorder.flush(); !s) return s.error();  // once per second of session time
     if (options.progress) std::fprintf(stderr, "\rframe %d/%d  t=%.3f s", i + 1, frames, state.time_s);

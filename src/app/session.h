@@ -3,6 +3,7 @@
 #pragma once
 
 #include <functional>
+#include <memory>
 #include <string>
 
 #include "core/result.h"
@@ -10,6 +11,7 @@
 #include "devices/sample_log.h"
 #include "haptics/haptic_loop.h"
 #include "render/renderer.h"
+#include "world/haptic_scene.h"
 
 namespace ps {
 
@@ -35,6 +37,18 @@ Result<LogDeviceSpec> open_device_log(const std::string& spec);
 // are known before the first contact (later frames keep or replace it, update_surface_model).
 SurfaceModel initial_surface_model(const PlaneAxes& plane, double probe_radius_mm);
 
+// What a button's "scene:FILE" action switches to: the renderer that draws from the next frame
+// on (owned by the caller, alive until the replay ends) and the haptic scene the loop adopts.
+struct SceneSwitch {
+  Renderer* renderer = nullptr;
+  std::shared_ptr<const world::HapticScene> haptic;
+};
+
+// The scene file of a button_fired event's "scene:FILE" action, its button looked up in `scene`
+// (the one the render side draws, which the haptic thread's follows); empty for any other event
+// or a flag action.
+std::string scene_action_of(const Scene& scene, const HapticEvent& e);
+
 struct ReplayOptions {
   double fps = 30.0;          // frames per second of session time
   HapticLoopParams haptics;   // the loop runs at haptics.rate_hz on a fake clock
@@ -44,6 +58,11 @@ struct ReplayOptions {
   // Each event of the loop's queue, in push (= time) order, drained after each frame's ticks
   // (the one consumer of HapticLoop::events() in a replay; app/event_dispatch.h fans it out).
   std::function<void(const HapticEvent&)> on_event;
+  // A button's scene action, drained with the frame's events (the first one per frame): opens
+  // the file; the loop adopts the new haptic scene at its next tick and the next frame is drawn
+  // by the new renderer, so a replay switches at the same tick every run. Null: actions are
+  // only logged.
+  std::function<Result<SceneSwitch>(const std::string& scene_path)> switch_scene;
 };
 
 struct ReplayResult {

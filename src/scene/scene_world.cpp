@@ -4,6 +4,7 @@
 #include <array>
 #include <cmath>
 #include <filesystem>
+#include <sstream>
 
 #include "scene/scene_convert.h"
 
@@ -137,7 +138,7 @@ Status read_button(const ParseContext& ctx, const toml::table& table, int index,
   // would hold it on its rim.
   const double narrowest = std::min(out.size_mm.x, out.size_mm.y);
   if (r.ok() && narrowest < 2.0 * probe_radius_mm)
-    r.fail("size_mm", "is narrower than the probe (" + std::to_string(2.0 * probe_radius_mm) +
+    r.fail("size_mm", "is narrower than the probe (" + (std::ostringstream() << 2.0 * probe_radius_mm).str() +
                           " mm across): the probe could not push it in; make it at least that wide");
   if (!out.material.empty()) {
     const auto it = std::find(material_names.begin(), material_names.end(), out.material);

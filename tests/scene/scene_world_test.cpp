@@ -1,4 +1,4 @@
-// [[fields]] and [[bodies]]: values, exact "file:line: message" errors, --set reaching them.
+// [[fields]], [[bodies]] and [[buttons]]: values, exact "file:line: message" errors, --set reaching them.
 #include <gtest/gtest.h>
 
 #include "scene_test_util.h"
@@ -123,6 +123,73 @@ TEST(SceneWorldTest, SetReachesFieldsAndBodies) {
   EXPECT_EQ(scene->bodies[0].time_scale, 0.25);
   EXPECT_EQ(error_of(text, {"bodies.3.mass_g=1"}),
             "--set bodies.3.mass_g: no body '3' (the scene has 1 bodies, numbered from 0)");
+}
+
+// A button: its keys, its action resolved (a scene file relative to the scene's directory, a
+// flag numbered in order of first use), and the plate it adds to the surfaces (seen, not felt).
+TEST(SceneWorldTest, ReadsButtonsAndAddsTheirPlates) {
+  Result<Scene> scene = parse(with(R"(
+[[buttons]]
+center = [10, 0, 0]
+size_mm = [30, 20]
+stiffness_n_per_mm = 0.3
+travel_mm = 2
+action = "scene:default.toml"
+
+[[buttons]]
+center = [-30, 0, 0]
+action = "flag:light"
+visible = false
+
+[[buttons]]
+center = [-70, 0, 0]
+action = "flag:light"
+)"));
+  ASSERT_TRUE(scene) << scene.error().message;
+  ASSERT_EQ(scene->buttons.size(), 3u);
+  const Button& b = scene->buttons[0];
+  EXPECT_EQ(b.size_mm, glm::dvec2(30, 20));
+  EXPECT_EQ(b.stiffness_n_per_mm, 0.3);
+  EXPECT_EQ(b.travel_mm, 2.0);
+  EXPECT_EQ(b.action_kind, ButtonActionKind::kScene);
+  EXPECT_EQ(b.action_target, test::scenes_dir() + "/default.toml");
+  EXPECT_EQ(b.line, 8);
+  EXPECT_EQ(scene->buttons[1].action_kind, ButtonActionKind::kFlag);
+  EXPECT_EQ(scene->buttons[1].flag, 0);
+  EXPECT_EQ(scene->buttons[2].flag, 0);  // the same flag
+  EXPECT_EQ(scene->flags, std::vector<std::string>{"light"});
+  ASSERT_EQ(scene->surfaces.size(), 4u);  // the file's plane and three plates
+  const Surface& plate = scene->surfaces[1];
+  EXPECT_EQ(plate.button, 0);
+  EXPECT_EQ(plate.type, SurfaceType::kBox);
+  EXPECT_FALSE(plate.touchable);
+  EXPECT_TRUE(plate.visible);
+  EXPECT_EQ(plate.box_size_mm, glm::dvec3(30, 20, 1));
+  EXPECT_NEAR(plate.center.z + 0.5 * plate.box_size_mm.z, 0.25, 1e-12);  // 0.25 mm proud of the face
+  EXPECT_FALSE(scene->surfaces[2].visible);
+  EXPECT_EQ(scene->surfaces[0].button, -1);
+}
+
+TEST(SceneWorldTest, BadButtonsNameFileAndLine) {
+  EXPECT_EQ(error_of(with("[[buttons]]\ncenter = [0, 0, 0]\n")),
+            "s.toml:7: 'action' is required: what the button does when pushed past its travel, \"scene:FILE\" "
+            "(switch to that scene) or \"flag:NAME\" (toggle a named flag)");
+  EXPECT_EQ(error_of(with("[[buttons]]\naction = \"open:door\"\n")),
+            "s.toml:8: 'action' 'open:door' is not \"scene:FILE\" or \"flag:NAME\"");
+  EXPECT_EQ(error_of(with("[[buttons]]\naction = \"scene:no_such_world.toml\"\n")),
+            "s.toml:8: 'action' scene file not found: " + test::scenes_dir() + "/no_such_world.toml");
+  EXPECT_EQ(error_of(with("[[buttons]]\naction = \"flag:x\"\nsize_mm = [10, 40]\n")),
+            "s.toml:9: 'size_mm' is narrower than the probe (16 mm across): the probe could not push it "
+            "in; make it at least that wide");
+  EXPECT_EQ(error_of(with("[[buttons]]\naction = \"flag:x\"\nstiffness_n_per_mm = -1\n")),
+            "s.toml:9: 'stiffness_n_per_mm' must be in (0, 100] (got -1)");
+  EXPECT_EQ(error_of(with("[[buttons]]\naction = \"flag:x\"\ntravel = 2\n")),
+            "s.toml:9: unknown key 'travel' in [[buttons]] #0; did you mean 'travel_mm'?");
+  EXPECT_EQ(error_of(with("[[buttons]]\naction = \"flag:x\"\nmaterial = \"brass\"\n")),
+            "s.toml:9: 'material' names unknown material 'brass'; defined materials: wood");
+  std::string many;
+  for (int i = 0; i < 17; ++i) many += "[[buttons]]\naction = \"flag:f\"\n";
+  EXPECT_EQ(error_of(with(many)), "s.toml:39: [[buttons]] #16: a scene has at most 16 buttons");
 }
 
 }  // namespace
