@@ -28,6 +28,21 @@ void only_for(TableReader& r, FieldType type, std::initializer_list<std::string_
     if (r.has(k)) return r.fail(k, "applies only to type = " + std::string(owner_names));
 }
 
+// A body's or button's `material`: empty keeps the index the caller set (the first surface's).
+void resolve_material(TableReader& r, const std::vector<std::string>& material_names, const std::string& name,
+                      int& index) {
+  if (name.empty()) return;
+  const auto it = std::find(material_names.begin(), material_names.end(), name);
+  if (it == material_names.end()) {
+    if (r.ok()) {
+      std::vector<std::string_view> names(material_names.begin(), material_names.end());
+      r.fail("material", "names unknown material '" + name + "'; defined materials: " + join(names));
+    }
+    return;
+  }
+  index = static_cast<int>(it - material_names.begin());
+}
+
 }  // namespace
 
 Status read_field(const ParseContext& ctx, const toml::table& table, int index, Field& out) {
@@ -85,14 +100,7 @@ Status read_body(const ParseContext& ctx, const toml::table& table, int index,
   r.number("restitution", out.restitution, Range::closed(0.0, 1.0));
   r.number("time_scale", out.time_scale, Range::closed(0.01, 10.0));
   r.integer("substeps", out.substeps, 1, 64);
-  if (!out.material.empty()) {
-    const auto it = std::find(material_names.begin(), material_names.end(), out.material);
-    if (r.ok() && it == material_names.end()) {
-      std::vector<std::string_view> names(material_names.begin(), material_names.end());
-      r.fail("material", "names unknown material '" + out.material + "'; defined materials: " + join(names));
-    }
-    out.material_index = static_cast<int>(it - material_names.begin());
-  }
+  resolve_material(r, material_names, out.material, out.material_index);
   return r.status();
 }
 
@@ -140,14 +148,7 @@ Status read_button(const ParseContext& ctx, const toml::table& table, int index,
   if (r.ok() && narrowest < 2.0 * probe_radius_mm)
     r.fail("size_mm", "is narrower than the probe (" + (std::ostringstream() << 2.0 * probe_radius_mm).str() +
                           " mm across): the probe could not push it in; make it at least that wide");
-  if (!out.material.empty()) {
-    const auto it = std::find(material_names.begin(), material_names.end(), out.material);
-    if (r.ok() && it == material_names.end()) {
-      std::vector<std::string_view> names(material_names.begin(), material_names.end());
-      r.fail("material", "names unknown material '" + out.material + "'; defined materials: " + join(names));
-    }
-    out.material_index = static_cast<int>(it - material_names.begin());
-  }
+  resolve_material(r, material_names, out.material, out.material_index);
   return r.status();
 }
 
