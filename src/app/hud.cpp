@@ -88,6 +88,9 @@ std::vector<std::string> hud_lines(const HudReadouts& r) {
   };
   // The texture is the per-pixel sum until its tile is baked: say the picture will not change.
   if (r.bake_progress < 1.0) out.push_back(line("texture", "baking %.0f %%", 100.0 * r.bake_progress));
+  if (r.button >= 0)
+    out.push_back(line("button", "#%d in %.1f of %.1f mm", r.button, r.button_depth_mm, r.button_travel_mm));
+  if (r.flags) out.push_back(line("flags on", "%s", r.flags->empty() ? "none" : r.flags->c_str()));
   if (!r.error.empty()) out.push_back(line("reload", "FAILED (F1)"));
   return out;
 }

@@ -37,6 +37,9 @@ struct HudReadouts {
   double force_n = 0.0;
   double bake_progress = 1.0;            // Gabor tile bake, 0..1 (< 1: the per-pixel sum is drawn)
   std::string error;                     // a failed reload's message; empty: none
+  int button = -1;                       // the button pressed (-1: none), how far, and its travel
+  double button_depth_mm = 0.0, button_travel_mm = 0.0;
+  std::optional<std::string> flags;      // the scene's flags that are on ("" none); none: no flags
 };
 
 // The readouts as "name  value" lines (the box draws them in this order).

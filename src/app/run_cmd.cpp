@@ -240,6 +240,18 @@ HudReadouts readouts(const Session& s, const HapticState& st, const ShadowMeasur
   r.force_n = glm::length(st.force_n);
   r.bake_progress = s.tune->renderer().stats().bake_progress;
   r.error = s.tune->last_error();
+  const Scene& sc = s.tune->renderer().scene();
+  if (st.button_pressed >= 0 && static_cast<std::size_t>(st.button_pressed) < sc.buttons.size()) {
+    r.button = st.button_pressed;
+    r.button_depth_mm = st.button_depth_mm;
+    r.button_travel_mm = sc.buttons[static_cast<std::size_t>(st.button_pressed)].travel_mm;
+  }
+  if (!sc.flags.empty()) {
+    std::string on;
+    for (std::size_t i = 0; i < sc.flags.size(); ++i)
+      if ((st.flags >> i) & 1u) on += (on.empty() ? "" : ", ") + sc.flags[i];
+    r.flags = on;
+  }
   return r;
 }
 

@@ -217,6 +217,27 @@ TEST(HudTest, BakeProgressShowsUntilTheTileIsReady) {
   EXPECT_NE(all.find("texture     baking 40 %"), std::string::npos) << all;
 }
 
+// A pressed button and the scene's flags show only when there are such things.
+TEST(HudTest, ButtonAndFlagsShowWhenTheSceneHasThem) {
+  HudReadouts r;
+  std::string all;
+  for (const std::string& l : hud_lines(r)) all += l + "\n";
+  EXPECT_EQ(all.find("button"), std::string::npos) << all;
+  EXPECT_EQ(all.find("flags"), std::string::npos) << all;
+  r.button = 1;
+  r.button_depth_mm = 2.14;
+  r.button_travel_mm = 3.0;
+  r.flags = "";
+  all.clear();
+  for (const std::string& l : hud_lines(r)) all += l + "\n";
+  EXPECT_NE(all.find("button      #1 in 2.1 of 3.0 mm"), std::string::npos) << all;
+  EXPECT_NE(all.find("flags on    none"), std::string::npos) << all;
+  r.flags = "light, door";
+  all.clear();
+  for (const std::string& l : hud_lines(r)) all += l + "\n";
+  EXPECT_NE(all.find("flags on    light, door"), std::string::npos) << all;
+}
+
 TEST(RunKeysTest, EveryKeyOfTheWindowIsInTheTableOnce) {
   // The bindings of app/window_input.cpp and the mouse device, by the words the table uses.
   for (const char* keys : {"mouse", "Shift+scroll", "PgUp / PgDn", "right drag", "scroll", "M", "P", "S", "F1",
