@@ -38,11 +38,19 @@ std::vector<std::size_t> sweep_cell(const std::vector<SweepAxis>& axes, std::siz
 // "lambda_min=0.4 n_max=30" (the last component of each key; scene files by stem).
 std::string sweep_label(const std::vector<SweepAxis>& axes, const std::vector<std::size_t>& cell);
 
+// Shard `index` of `count` (from 1) of a sweep's cells: cells index-1, index-1+count, ...
+// (round robin, so every shard gets a share of every axis). tune/sweep_shard.h.
+struct ShardSpec {
+  std::size_t index = 1, count = 1;
+  bool contains(std::size_t cell) const { return cell % count == index - 1; }
+};
+
 struct SweepJob {
   std::string scene_path;                // empty: built-in default scene (unless a scene axis)
   std::vector<std::string> overrides;    // applied to every cell before the cell's values
   std::vector<SweepAxis> axes;
   RendererOptions renderer;
+  ShardSpec shard;                       // render only this shard's cells (default: all)
 };
 
 struct SweepCell {
@@ -59,8 +67,9 @@ Status validate_sweep(const SweepJob& job);
 
 using SweepProgress = std::function<void(std::size_t done, std::size_t total, const std::string& label)>;
 
-// Renders every cell (needs a current GL context); each cell: load_scene with the overrides,
-// Renderer::create, render.frames frames, read_color. `progress` after each cell.
+// Renders every cell of job.shard (needs a current GL context); each cell: load_scene with the
+// overrides, Renderer::create, render.frames frames, read_color. `progress` after each cell
+// (done and total count the shard's cells).
 Result<std::vector<SweepCell>> render_sweep(const SweepJob& job, const SweepProgress& progress);
 
 // Contact sheet with one column per value of the last axis; cells at their rendered size.

@@ -55,7 +55,10 @@ Result<std::vector<SweepCell>> render_sweep(const SweepJob& job, const SweepProg
   auto count = sweep_cell_count(job.axes);
   if (!count) return count.error();
   std::vector<SweepCell> cells;
+  std::size_t mine = 0;
+  for (std::size_t i = 0; i < count.value(); ++i) mine += job.shard.contains(i);
   for (std::size_t i = 0; i < count.value(); ++i) {
+    if (!job.shard.contains(i)) continue;
     SweepCell cell;
     cell.index = sweep_cell(job.axes, i);
     cell.label = sweep_label(job.axes, cell.index);
@@ -71,7 +74,7 @@ Result<std::vector<SweepCell>> render_sweep(const SweepJob& job, const SweepProg
     cell.stats = renderer.value()->stats();
     for (const auto& [name, ms] : cell.stats.timings_ms) cell.frame_ms += ms;
     cells.push_back(std::move(cell));
-    if (progress) progress(i + 1, count.value(), cells.back().label);
+    if (progress) progress(cells.size(), mine, cells.back().label);
   }
   return cells;
 }

@@ -4,6 +4,7 @@
 #include "core/file_io.h"
 #include "tune/overrides_file.h"
 #include "tune/sweep.h"
+#include "tune/sweep_shard.h"
 
 namespace ps {
 namespace {
@@ -75,4 +76,28 @@ TEST(OverridesFileTest, MalformedLineNamesFileAndLine) {
 }
 
 }  // namespace
+// --shard I/N: the N shards partition the cells, each cell in exactly one, round robin (so a
+// shard of a 2-axis sweep holds values of every axis); bad specs name the problem.
+TEST(ShardTest, ShardsPartitionTheCellsRoundRobin) {
+  for (std::size_t n : {1u, 2u, 3u, 7u, 12u}) {
+    std::vector<int> owners(12, 0);
+    for (std::size_t i = 1; i <= n; ++i) {
+      auto s = parse_shard(std::to_string(i) + "/" + std::to_string(n));
+      ASSERT_TRUE(s) << s.error().message;
+      for (std::size_t c = 0; c < owners.size(); ++c) owners[c] += s->contains(c);
+    }
+    for (std::size_t c = 0; c < owners.size(); ++c) EXPECT_EQ(owners[c], 1) << "cell " << c << " of " << n << " shards";
+  }
+  auto two = parse_shard("2/3");
+  ASSERT_TRUE(two);
+  EXPECT_TRUE(two->contains(1));
+  EXPECT_TRUE(two->contains(4));
+  EXPECT_FALSE(two->contains(2));
+  EXPECT_EQ(parse_shard("0/3").error().message, "--shard 0/3: I must be in [1, N]");
+  EXPECT_EQ(parse_shard("4/3").error().message, "--shard 4/3: I must be in [1, N]");
+  EXPECT_EQ(parse_shard("1/0").error().message, "--shard 1/0: N must be in [1, 256]");
+  EXPECT_EQ(parse_shard("2").error().message, "--shard 2: expected I/N, shard I of N (e.g. 2/8)");
+  EXPECT_EQ(parse_shard("a/b").error().message, "--shard a/b: expected I/N, shard I of N (e.g. 2/8)");
+}
+
 }  // namespace ps

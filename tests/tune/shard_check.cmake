@@ -1,0 +1,58 @@
+# cmake -DCMD=<pseudoshadow> -DDIR=<work dir> [-DPARALLEL=<parallel>] -P shard_check.cmake
+# A sweep rendered whole, and as 3 shards (through GNU parallel -j2 when PARALLEL is given, as
+# docs/tuning.md shows; else one after another) merged: the two sheets are byte for byte the
+# same, and so are the CSVs but for the frame_ms column (a wall time). A merge that misses a
+# shard, or gives one twice, fails with exit 1 and names the cell.
+file(REMOVE_RECURSE "${DIR}")
+file(MAKE_DIRECTORY "${DIR}")
+set(sweep --sweep materials.wood.lambda_min=0.5:1.5:3 --sweep probe.velocity=[0,0,0],[300,0,0] --size 48x48 -q)
+execute_process(COMMAND ${CMD} tune ${sweep} --out ${DIR}/whole.png --csv ${DIR}/whole.csv RESULT_VARIABLE rc)
+if(NOT rc EQUAL 0)
+  message(FATAL_ERROR "the whole sweep failed (${rc})")
+endif()
+if(PARALLEL)
+  execute_process(COMMAND ${PARALLEL} --will-cite -j2 ${CMD} tune ${sweep} --shard {}/3 --out-dir ${DIR}/shard{}
+                          ::: 1 2 3 RESULT_VARIABLE rc)
+else()
+  foreach(i 1 2 3)
+    execute_process(COMMAND ${CMD} tune ${sweep} --shard ${i}/3 --out-dir ${DIR}/shard${i} RESULT_VARIABLE rc)
+  endforeach()
+endif()
+if(NOT rc EQUAL 0)
+  message(FATAL_ERROR "a shard failed (${rc})")
+endif()
+execute_process(COMMAND ${CMD} tune --merge ${DIR}/shard1 ${DIR}/shard2 ${DIR}/shard3 --out ${DIR}/merged.png
+                        --csv ${DIR}/merged.csv -q RESULT_VARIABLE rc)
+if(NOT rc EQUAL 0)
+  message(FATAL_ERROR "the merge failed (${rc})")
+endif()
+file(SHA256 ${DIR}/whole.png whole)
+file(SHA256 ${DIR}/merged.png merged)
+if(NOT whole STREQUAL merged)
+  message(FATAL_ERROR "the merged sheet differs from the whole sweep's")
+endif()
+foreach(name whole merged)
+  file(STRINGS ${DIR}/${name}.csv lines)
+  set(${name}_rows "")
+  foreach(line IN LISTS lines)
+    string(REGEX REPLACE ",[^,]*$" "" line "${line}")  # drop frame_ms
+    list(APPEND ${name}_rows "${line}")
+  endforeach()
+endforeach()
+list(LENGTH whole_rows n)
+if(NOT n EQUAL 7 OR NOT "${whole_rows}" STREQUAL "${merged_rows}")
+  message(FATAL_ERROR "CSVs differ (or not 6 cells):\n${whole_rows}\n${merged_rows}")
+endif()
+execute_process(COMMAND ${CMD} tune --merge ${DIR}/shard1 ${DIR}/shard3 --out ${DIR}/bad.png
+                RESULT_VARIABLE rc ERROR_VARIABLE err)
+if(NOT rc EQUAL 1 OR NOT err MATCHES "cell 1 \\(.*\\) is in no shard given \\(1/3, 3/3\\)")
+  message(FATAL_ERROR "a missing shard: expected exit 1 naming cell 1, got ${rc}: ${err}")
+endif()
+execute_process(COMMAND ${CMD} tune --merge ${DIR}/shard1 ${DIR}/shard2 ${DIR}/shard2 ${DIR}/shard3 --out ${DIR}/bad.png
+                RESULT_VARIABLE rc ERROR_VARIABLE err)
+if(NOT rc EQUAL 1 OR NOT err MATCHES "is also in")
+  message(FATAL_ERROR "a shard given twice: expected exit 1, got ${rc}: ${err}")
+endif()
+if(EXISTS ${DIR}/bad.png)
+  message(FATAL_ERROR "a failed merge left bad.png behind")
+endif()
