@@ -7,6 +7,7 @@
 #include <string>
 #include <unistd.h>
 
+#include "app/bench_first_image.h"
 #include "app/bench_plot.h"
 #include "app/bench_report.h"
 #include "app/bench_sweep.h"
@@ -15,6 +16,7 @@
 #include "app/commands.h"
 #include "core/output_set.h"
 #include "gl/context.h"
+#include "scene/scene_io.h"
 
 namespace ps {
 
@@ -33,6 +35,8 @@ struct BenchArgs {
   gl::Backend backend = gl::Backend::kAuto;
   bool quiet = false;
   bool plot_only = false;  // draw the plots from --out-dir's bench.csv; no sweep, no GL
+  bool first_image = false;  // time to the first image only (bench_first_image.h)
+  int reps = 3;
 };
 
 void declare(cli::Command& cmd, BenchArgs& a) {
@@ -61,6 +65,12 @@ void declare(cli::Command& cmd, BenchArgs& a) {
                "only draw bench.png and bench_ratios.png again from the bench.csv already in --out-dir "
                "(no sweep; needs gnuplot)")
       ->group(cli::kOutputGroup);
+  app.add_flag("--first-image", a.first_image,
+               "only time the first image as a user meets it: every shipped scene's one-frame `render` process "
+               "and a 301-frame `replay`, under auto, naive and baked (CPU seconds, ratios; --out-dir gets "
+               "first_image.md; about 10 minutes on 2 cores)");
+  cli::add_int(app, "--reps", "N", a.reps, 1, 99,
+               "--first-image: alternating runs per scene and strategy, the median is reported (default 3)");
   cli::add_quiet_option(app, a.quiet);
 }
 
@@ -123,8 +133,29 @@ Status plot_only(const BenchArgs& a) {
   return ok_status();
 }
 
+Status first_image(const BenchArgs& a) {
+  OutputSet outputs;
+  const std::string md_path = a.out_dir + "/first_image.md";
+  if (Status s = outputs.add(md_path); !s) return s;
+  bench::FirstImageOptions o;
+  o.scenes_dir = default_scene_base_dir();
+  o.work_dir = a.out_dir + "/first_image_work";
+  o.backend = gl::backend_name(a.backend);
+  o.reps = a.reps;
+  if (!a.quiet) o.progress = [](const std::string& line) { std::fprintf(stderr, "%s\n", line.c_str()); };
+  auto rows = bench::run_first_image(o);
+  std::error_code ec;
+  std::filesystem::remove_all(o.work_dir, ec);
+  if (!rows) return rows.error();
+  const std::string md = bench::first_image_markdown(rows.value(), a.reps);
+  if (Status s = outputs.stage_text(md_path, md); !s) return s;
+  if (Status s = outputs.publish(); !s) return s;
+  if (!a.quiet) std::fputs(md.c_str(), stdout);
+  return ok_status();
+}
+
 int run_and_report(const cli::Command& cmd, const BenchArgs& a) {
-  const Status s = a.plot_only ? plot_only(a) : run(a);
+  const Status s = a.plot_only ? plot_only(a) : a.first_image ? first_image(a) : run(a);
   return s ? cli::kExitOk : cmd.fail(s.error());
 }
 
