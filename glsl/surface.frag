@@ -41,7 +41,7 @@ float no_probe_distance() { return uintBitsToFloat(0x7fc00000u); }
 
 vec3 shade_surface(vec3 n) {
   vec3 albedo = u_albedo.rgb;
-  if (u_albedo.a > 0.5) albedo *= texture(u_albedo_tex, v_world.xy / u_albedo_scale.x).rgb;
+  if (u_albedo.a > 0.5) albedo *= texture(u_albedo_tex, (v_world.xy - u_albedo_scale.yz) / u_albedo_scale.x).rgb;
   float lambert = max(dot(n, -u_light_dir.xyz), 0.0);
   return albedo * u_light_color.rgb * (u_light_dir.w + (1.0 - u_light_dir.w) * lambert);
 }

@@ -13,7 +13,7 @@ layout(std140, binding = 0) uniform SurfaceBlock {
   vec4 u_ref_b;          // reference plane bitangent (v axis)
   vec4 u_window;         // xy: depth-map window centre (u, v) mm; z: half size mm; w: depth map texels
   vec4 u_albedo;         // rgb albedo; a: 1 when an albedo texture is bound
-  vec4 u_albedo_scale;   // x: world size of one albedo texture repeat, mm; yzw: unused
+  vec4 u_albedo_scale;   // x: world size of one albedo texture repeat, mm; yz: world (x, y) of a repeat's corner; w: unused
   vec4 u_intensity;      // x floor, y scale, z offset mm, w influence distance mm
   vec4 u_modulation;     // x speed gain [0,1], y onset distance mm, z resistance, w contrast (sigmas)
   GaborBlock u_gabor;    // the material's texture (lib/gabor_block.glsl)

@@ -25,7 +25,7 @@ SurfaceBlock make_surface_block(const SurfaceFrame& fr, const Material& m, const
   b.ref_b = v4(fr.plane.b);
   b.window = v4(fr.window_center_uv.x, fr.window_center_uv.y, fr.window_half_mm, fr.depth_map_size);
   b.albedo = v4(m.albedo, has_albedo_tex ? 1.0 : 0.0);
-  b.albedo_scale = v4(m.albedo_texture_scale_mm, 0.0, 0.0, 0.0);
+  b.albedo_scale = v4(m.albedo_texture_scale_mm, m.albedo_texture_offset_mm.x, m.albedo_texture_offset_mm.y, 0.0);
   b.intensity = v4(m.intensity_floor, m.intensity_scale, m.intensity_offset_mm, m.influence_distance_mm);
   b.modulation = v4(speed_gain, m.onset_distance_mm, m.resistance, fr.contrast_sigmas);
   b.gabor = gabor;

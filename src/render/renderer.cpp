@@ -1,5 +1,7 @@
 #include "render/renderer.h"
 
+#include "render/button_pictures.h"
+
 #include <algorithm>
 #include <chrono>
 #include <cmath>
@@ -98,6 +100,8 @@ Result<std::unique_ptr<Renderer>> Renderer::create(const Scene& scene, const Ren
   r->created_at_ = std::chrono::steady_clock::now();
   r->scene_ = scene;
   r->options_ = options;
+  if (options.button_pictures)
+    if (Status s = make_button_pictures(r->scene_); !s) return s.error();
   if (r->options_.glsl_root.empty()) r->options_.glsl_root = gl::default_glsl_root();
   r->frame_ = make_plane_frame(toward_viewer(scene.camera));
   for (Status (Renderer::*step)() : {&Renderer::upload_surfaces, &Renderer::load_probe_mesh,

@@ -52,6 +52,9 @@ struct RendererOptions {
   // image) the naive sum is drawn instead and nothing is baked (docs/benchmarks.md, "Time to
   // the first image"). 0 = unknown (the window): bake.
   int expected_frames = 0;
+  // Picture buttons get their pictures (render/button_pictures.h) before anything is built;
+  // false for the pictures' own renders.
+  bool button_pictures = true;
 };
 
 struct FrameStats {

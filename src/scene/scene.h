@@ -67,6 +67,7 @@ struct Material {
   glm::dvec3 albedo{0.8, 0.8, 0.8};
   std::string albedo_texture;  // absolute path after loading, empty = none
   double albedo_texture_scale_mm = 50.0;  // world size of one texture repeat
+  glm::dvec2 albedo_texture_offset_mm{0.0};  // world (x, y) where a repeat starts
   bool textured = true;        // false: no Gabor texture (compiled out of the shader)
   GaborParams gabor;
   double onset_distance_mm = 5.0;      // texture shows where probe-surface distance < onset
@@ -204,6 +205,12 @@ struct Button {
   std::string material;            // the plate's look and feel; empty: the first surface's
   int material_index = 0;
   bool visible = true;             // draw its plate
+  // Its plate shows a picture of the scene its scene action leads to (rendered headless by the
+  // renderer, cached until that scene file changes: render/button_pictures.h). The plate gets
+  // its own material, `picture_material` (a copy of `material`, white, the picture as albedo
+  // texture mapped along world X/Y onto the plate: a panel facing +Z).
+  bool picture = false;
+  int picture_material = -1;
   int line = 0;
 };
 

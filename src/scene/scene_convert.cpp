@@ -153,6 +153,7 @@ Status read_material(const ParseContext& ctx, const toml::table& table, const st
   r.vec3("albedo", out.albedo, kUnit);
   r.file("albedo_texture", out.albedo_texture);
   r.number("albedo_texture_scale_mm", out.albedo_texture_scale_mm, kLength);
+  r.vec2("albedo_texture_offset_mm", out.albedo_texture_offset_mm, Range::closed(-kMaxLengthMm, kMaxLengthMm));
   r.boolean("textured", out.textured);
   read_gabor(r, out.gabor);
   r.number("onset_distance_mm", out.onset_distance_mm, Range::closed(0.0, kMaxLengthMm));

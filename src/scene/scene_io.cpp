@@ -154,7 +154,7 @@ Surface button_plate(const Button& b, int index) {
   constexpr double kThicknessMm = 1.0, kProudMm = 0.25;
   Surface s;
   s.type = SurfaceType::kBox;
-  s.material_index = b.material_index;
+  s.material_index = b.picture_material >= 0 ? b.picture_material : b.material_index;
   s.rotation_deg = b.rotation_deg;
   s.center = b.center + euler_xyz_deg(b.rotation_deg) * glm::dvec3(0.0, 0.0, kProudMm - 0.5 * kThicknessMm);
   s.box_size_mm = {b.size_mm.x, b.size_mm.y, kThicknessMm};
@@ -188,6 +188,13 @@ Status read_buttons(const ParseContext& ctx, const toml::table& root, const std:
                             ": a scene has at most " + std::to_string(kMaxSceneFlags) + " flags");
         scene.flags.push_back(b.action_target);
       }
+    }
+    if (b.picture) {  // its own material: the picture goes in as its albedo texture
+      Material m = scene.materials[static_cast<std::size_t>(b.material_index)];
+      m.name += "@button" + std::to_string(i);
+      m.albedo = glm::dvec3(1.0);
+      b.picture_material = static_cast<int>(scene.materials.size());
+      scene.materials.push_back(std::move(m));
     }
     scene.surfaces.push_back(button_plate(b, static_cast<int>(i)));
   }

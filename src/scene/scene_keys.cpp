@@ -25,7 +25,7 @@ constexpr std::array kRenderKeys = {"size"sv,         "frames"sv,          "dept
                                     "background"sv,   "displacement"sv,    "weight_exponent"sv,
                                     "seed"sv};
 constexpr std::array kMaterialKeys = {
-    "albedo"sv,          "albedo_texture"sv,        "albedo_texture_scale_mm"sv,
+    "albedo"sv,          "albedo_texture"sv,        "albedo_texture_scale_mm"sv, "albedo_texture_offset_mm"sv,
     "textured"sv,        "a_min"sv,                 "a_max"sv,
     "lambda_min"sv,      "lambda_max"sv,            "theta_min"sv,
     "theta_max"sv,       "n_min"sv,                 "n_max"sv,
@@ -58,7 +58,8 @@ constexpr std::array kBodyKeys = {"mass_g"sv,      "spring_n_per_mm"sv, "rest_le
                                   "position"sv,    "floor"sv,           "floor_z_mm"sv,
                                   "restitution"sv, "time_scale"sv,      "substeps"sv};
 constexpr std::array kButtonKeys = {"center"sv,   "size_mm"sv,  "rotation_deg"sv, "stiffness_n_per_mm"sv,
-                                    "travel_mm"sv, "action"sv,  "material"sv,     "visible"sv};
+                                    "travel_mm"sv, "action"sv,  "material"sv,     "visible"sv,
+                                    "picture"sv};
 
 }  // namespace
 

@@ -118,6 +118,7 @@ Status read_button(const ParseContext& ctx, const toml::table& table, int index,
   r.string("action", out.action);
   r.string("material", out.material);
   r.boolean("visible", out.visible);
+  r.boolean("picture", out.picture);
   if (!r.ok()) return r.status();
   r.require(r.has("action"), "action",
             "is required: what the button does when pushed past its travel, \"scene:FILE\" (switch to that "
@@ -141,6 +142,7 @@ Status read_button(const ParseContext& ctx, const toml::table& table, int index,
     out.action_target = file.string();
   } else {
     out.action_target = target;
+    if (out.picture) r.fail("picture", "needs a \"scene:FILE\" action: the picture is of the scene the button leads to");
   }
   // The probe (a sphere of radius R) must fit in the button to push it in: a narrower one
   // would hold it on its rim.

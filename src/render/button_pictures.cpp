@@ -1,0 +1,86 @@
+#include "render/button_pictures.h"
+
+#include <cstdint>
+#include <cstdio>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <iterator>
+
+#include "image/image.h"
+#include "render/renderer.h"
+#include "scene/scene_io.h"
+
+namespace ps {
+
+namespace {
+
+// FNV-1a, 64 bits: a name for the picture, not a security measure.
+std::uint64_t fnv1a(const std::string& bytes, std::uint64_t h = 14695981039346656037ull) {
+  for (unsigned char c : bytes) {
+    h ^= c;
+    h *= 1099511628211ull;
+  }
+  return h;
+}
+
+Result<std::string> picture_path(const std::string& scene_file) {
+  std::ifstream in(scene_file, std::ios::binary);
+  if (!in) return make_error(scene_file + ": cannot read");
+  const std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  char name[64];
+  std::snprintf(name, sizeof name, "/%016llx_%d.png",
+                static_cast<unsigned long long>(fnv1a(bytes + "|picture v1|" + std::to_string(kPictureSize))),
+                kPictureSize);
+  return picture_cache_dir() + name;
+}
+
+bool usable(const std::string& path) {
+  std::error_code ec;
+  if (!std::filesystem::is_regular_file(path, ec)) return false;
+  auto img = read_image(path);
+  return img && img->width == kPictureSize && img->height == kPictureSize;
+}
+
+Status render_picture(const std::string& scene_file, const std::string& path) {
+  auto scene = load_scene(scene_file);
+  if (!scene) return scene.error();
+  scene->render.width = scene->render.height = kPictureSize;
+  RendererOptions options;
+  options.button_pictures = false;  // a panel and its worlds may lead to each other
+  options.expected_frames = 1;
+  auto r = Renderer::create(scene.value(), options);
+  if (!r) return r.error();
+  if (Status s = r.value()->render_frame(); !s) return s;
+  std::error_code ec;
+  std::filesystem::create_directories(picture_cache_dir(), ec);
+  if (ec) return make_error(picture_cache_dir() + ": cannot create the picture cache: " + ec.message());
+  return write_image(path, r.value()->read_color());
+}
+
+}  // namespace
+
+std::string picture_cache_dir() {
+  if (const char* d = std::getenv("PSEUDOSHADOW_CACHE_DIR"); d != nullptr && *d != '\0') return std::string(d) + "/pictures";
+  if (const char* d = std::getenv("XDG_CACHE_HOME"); d != nullptr && *d != '\0') return std::string(d) + "/pseudoshadow/pictures";
+  const char* home = std::getenv("HOME");
+  return std::string(home != nullptr && *home != '\0' ? home : "/tmp") + "/.cache/pseudoshadow/pictures";
+}
+
+Status make_button_pictures(Scene& scene) {
+  for (const Button& b : scene.buttons) {
+    if (!b.picture || b.picture_material < 0) continue;
+    const std::string where = scene.path + ":" + std::to_string(b.line) + ": picture of " + b.action_target + ": ";
+    auto path = picture_path(b.action_target);
+    if (!path) return make_error(where + path.error().message);
+    if (!usable(path.value()))
+      if (Status s = render_picture(b.action_target, path.value()); !s) return make_error(where + s.error().message);
+    Material& m = scene.materials[static_cast<std::size_t>(b.picture_material)];
+    m.albedo_texture = path.value();
+    m.albedo_texture_scale_mm = b.size_mm.x;  // square pictures, as wide as the button
+    m.albedo_texture_offset_mm = glm::dvec2(b.center.x, b.center.y) - 0.5 * b.size_mm;
+  }
+  return ok_status();
+}
+
+}  // namespace ps

@@ -1,0 +1,32 @@
+// Pictures on buttons (issue "The Virtual Universe", seed 002 §2: "a virtual wall with four
+// buttons each containing a picture of the world to which it leads"). A [[buttons]] entry with
+// `picture = true` and a "scene:FILE" action gets a picture of FILE, rendered by this renderer
+// headless (kPictureSize square, one frame, the scene's own camera, no pictures of its own: a
+// panel and its worlds may lead to each other), as its plate's albedo texture, mapped along
+// world X/Y onto the plate (a panel facing +Z).
+// The pictures are cached as PNG files in the user's cache directory
+// ($PSEUDOSHADOW_CACHE_DIR, else $XDG_CACHE_HOME/pseudoshadow, else ~/.cache/pseudoshadow;
+// subdirectory pictures/), named by a hash of the scene file's bytes and the picture's size:
+// a picture is made again when that file changes, and only then. Written atomically (several
+// processes may share the cache; the last writer's identical picture wins); a cached file that
+// does not read back as a kPictureSize PNG is never trusted, but made again.
+#pragma once
+
+#include <string>
+
+#include "core/result.h"
+#include "scene/scene.h"
+
+namespace ps {
+
+inline constexpr int kPictureSize = 128;
+
+// The cache directory's pictures/ (not created here).
+std::string picture_cache_dir();
+
+// For every picture button of `scene`: its picture's file (cached or rendered now, which needs
+// a current GL context) set as the albedo texture of the button's picture material. A target
+// scene that cannot be loaded or rendered is an error naming the button's line.
+Status make_button_pictures(Scene& scene);
+
+}  // namespace ps
