@@ -43,6 +43,14 @@ bool sunk_below(const BoundingSphere& probe, const Aabb& box, const PlaneFrame& 
 
 }  // namespace
 
+std::vector<SphereCaster> bodies_in_reach(std::span<const SphereCaster> bodies, const Aabb& bounds,
+                                          double influence_mm) {
+  std::vector<SphereCaster> out;
+  for (const SphereCaster& b : bodies)
+    if (distance_sphere_aabb({b.centre, b.radius_mm}, bounds) < influence_mm) out.push_back(b);
+  return out;
+}
+
 FramePlan make_plan(const Scene& scene, const std::vector<Aabb>& bounds,
                     const BoundingSphere& probe, const PlaneFrame& frame, int depth_map_size) {
   FramePlan plan;
