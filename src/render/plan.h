@@ -39,7 +39,8 @@ double distance_sphere_aabb(const BoundingSphere& s, const Aabb& box);
 
 // The bodies whose pseudo-shadow can fall on a surface with these bounds: those nearer than
 // the influence distance to the box (a shadowed point lies within that distance of the sphere
-// along the normal, so at most that far from it), in order. The rest cost the surface nothing.
+// along the normal, so at most that far from it), in order; bodies at non-finite positions are
+// left out. The rest cost the surface nothing.
 std::vector<SphereCaster> bodies_in_reach(std::span<const SphereCaster> bodies, const Aabb& bounds,
                                           double influence_mm);
 
