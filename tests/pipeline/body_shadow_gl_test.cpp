@@ -32,6 +32,7 @@ constexpr double kBallRadius = 6.0;
 constexpr double kDisplayGamma = 2.2;  // the surface pass encodes with 1 / 2.2
 constexpr double kBallMarginPx = 2.0;  // the drawn (tessellated, unfiltered) ball's silhouette
 const glm::dvec2 kFoot{3.0, 1.5};      // the ball's foot on the plane, mm
+constexpr double kSecondRadius = 2.5;  // ImageMatchesItsCpuTwin's second ball
 
 // flat_plane_scene at `size`², its material untextured (every change of the colour image is a
 // shadow), the probe out of reach unless `probe_z` is given, one body, and a camera that sees
@@ -73,12 +74,12 @@ Ray pixel_ray(const Scene& s, int px, int py) {
 glm::dvec3 hit_plane(const Ray& r) { return r.origin - r.origin.z / r.dir.z * r.dir; }
 
 // True where the drawn ball may cover the pixel: the ray passes within the margin of it.
-bool ball_may_cover(const Scene& s, int px, int py, const glm::dvec3& centre) {
+bool ball_may_cover(const Scene& s, int px, int py, const glm::dvec3& centre, double radius_mm = kBallRadius) {
   const Ray r = pixel_ray(s, px, py);
   const glm::dvec3 q = centre - r.origin;
   const double miss = glm::length(q - glm::dot(q, r.dir) * r.dir);
   const double pixel_mm = glm::length(hit_plane(pixel_ray(s, px + 1, py)) - hit_plane(r));
-  return miss < kBallRadius + kBallMarginPx * pixel_mm;
+  return miss < radius_mm + kBallMarginPx * pixel_mm;
 }
 
 // The pixel's largest extent on the plane: what the shader's dFdx/dFdy of the world position
@@ -129,16 +130,25 @@ TEST_P(BodyShadowGLTest, ImageMatchesItsCpuTwin) {
     const char* name;
     double gap_mm;       // the ball's lowest point above the plane (< 0: through it)
     bool probe;          // the probe's shadow overlaps
+    bool second = false;  // a second, smaller ball 12 mm up in front: its shadow overlaps the first's
   };
   const Case cases[] = {{"gap 4 mm", 4.0, false},       {"gap 1 mm", 1.0, false},
                         {"gap 0.2 mm", 0.2, false},     {"resting on it", 0.0, false},
                         {"sunk 2 mm", -2.0, false},     {"wholly below", -12.5, false},
-                        {"gap 1 mm + probe", 1.0, true}};
+                        {"gap 1 mm + probe", 1.0, true},  {"gap 1 mm + a second ball", 1.0, false, true}};
   for (const Case& k : cases) {
-    const Scene s = body_scene(128, false, k.probe ? 8.0 + 1.5 : 1000.0);
+    Scene s = body_scene(128, false, k.probe ? 8.0 + 1.5 : 1000.0);
     const Material& m = s.materials[0];
     const glm::dvec3 ball = ball_at_gap(k.gap_mm);
-    const std::optional<Frame> f = render(s, {ball});
+    std::vector<SphereCaster> casters{{ball, kBallRadius}};
+    if (k.second) {
+      s.bodies.push_back(s.bodies[0]);
+      s.bodies[1].radius_mm = kSecondRadius;
+      casters.push_back({{3.0, -3.0, kSecondRadius + 12.0}, kSecondRadius});
+    }
+    std::vector<glm::dvec3> centres;
+    for (const SphereCaster& c : casters) centres.push_back(c.centre);
+    const std::optional<Frame> f = render(s, centres);
     ASSERT_TRUE(f);
     if (!k.probe) {
       EXPECT_NE(std::find(f->stats.skipped.begin(), f->stats.skipped.end(),
@@ -146,16 +156,21 @@ TEST_P(BodyShadowGLTest, ImageMatchesItsCpuTwin) {
                 f->stats.skipped.end())
           << k.name << ": the probe must be out of reach (PS_SHADOW=0)";
     }
-    const SphereCaster caster{ball, kBallRadius};
     const double lit = receiver_linear(s);
     double worst = 0.0;
     int compared = 0, shadowed = 0, both = 0;
     for (int y = 0; y < s.render.height; ++y)
       for (int x = 0; x < s.render.width; ++x) {
-        if (ball_may_cover(s, x, y, ball)) continue;
+        if (std::any_of(casters.begin(), casters.end(),
+                        [&](const SphereCaster& c) { return ball_may_cover(s, x, y, c.centre, c.radius_mm); }))
+          continue;
         const glm::dvec3 p = hit_plane(pixel_ray(s, x, y));
-        double dark = body_shadow_darkening(m, caster, p, {0.0, 0.0, 1.0}, pixel_extent_mm(s, x, y));
+        const double edge = pixel_extent_mm(s, x, y);
+        double dark = body_shadows_darkening(m, casters, p, {0.0, 0.0, 1.0}, edge);
         if (dark > 0.0) ++shadowed;
+        if (k.second && body_shadow_darkening(m, casters[0], p, {0.0, 0.0, 1.0}, edge) > 0.0 &&
+            body_shadow_darkening(m, casters[1], p, {0.0, 0.0, 1.0}, edge) > 0.0)
+          ++both;
         const double i = f->intensity.at(x, y, 0);
         if (i > 0.0) {  // the probe's shadow, from its AOVs (coverage = intensity / curve)
           const double d = f->distance.at(x, y, 0);
@@ -166,9 +181,9 @@ TEST_P(BodyShadowGLTest, ImageMatchesItsCpuTwin) {
         worst = std::max(worst, std::abs(want - 255.0 * f->color.at(x, y, 0)));
         ++compared;
       }
-    std::printf("[body twin] %s: %d px compared, %d in the body's shadow (%d also in the probe's), "
+    std::printf("[body twin] %s: %d px compared, %d in a body's shadow (%d also in the probe's or the other's), "
                 "worst %.3f levels\n", k.name, compared, shadowed, both, worst);
-    if (k.probe) {
+    if (k.probe || k.second) {
       EXPECT_GT(both, 40) << k.name << ": the two shadows must overlap";
     }
     EXPECT_GT(compared, 128 * 128 / 2) << k.name;
