@@ -131,13 +131,17 @@ TEST_P(BodyShadowGLTest, ImageMatchesItsCpuTwin) {
     double gap_mm;       // the ball's lowest point above the plane (< 0: through it)
     bool probe;          // the probe's shadow overlaps
     bool second = false;  // a second, smaller ball 12 mm up in front: its shadow overlaps the first's
+    double influence_mm = 50.0;  // the receiver's (the default)
   };
   const Case cases[] = {{"gap 4 mm", 4.0, false},       {"gap 1 mm", 1.0, false},
                         {"gap 0.2 mm", 0.2, false},     {"resting on it", 0.0, false},
                         {"sunk 2 mm", -2.0, false},     {"wholly below", -12.5, false},
-                        {"gap 1 mm + probe", 1.0, true},  {"gap 1 mm + a second ball", 1.0, false, true}};
+                        {"gap 1 mm + probe", 1.0, true},  {"gap 1 mm + a second ball", 1.0, false, true},
+                        // the disc ends inside the footprint: radius sqrt(6^2 - (10 - 6)^2) = 4.5 mm
+                        {"gap 4 mm, influence 6 mm", 4.0, false, false, 6.0}};
   for (const Case& k : cases) {
     Scene s = body_scene(128, false, k.probe ? 8.0 + 1.5 : 1000.0);
+    s.materials[0].influence_distance_mm = k.influence_mm;
     const Material& m = s.materials[0];
     const glm::dvec3 ball = ball_at_gap(k.gap_mm);
     std::vector<SphereCaster> casters{{ball, kBallRadius}};
@@ -326,6 +330,10 @@ TEST_P(BodyShadowGLTest, NothingBeyondTheInfluenceDistance) {
     ASSERT_TRUE(none && beyond && inside);
     EXPECT_EQ(beyond->color.pixels, none->color.pixels) << "influence " << influence;
     EXPECT_LT(inside->color.at(64, 64, 0), none->color.at(64, 64, 0)) << "influence " << influence;
+    // Only the tiny disc (and its one-pixel rim) darkens, not the ball's whole footprint.
+    int darker = 0;
+    for (size_t i = 0; i < none->color.pixels.size(); ++i) darker += inside->color.pixels[i] < none->color.pixels[i];
+    EXPECT_LE(darker, 3 * 9) << "influence " << influence << ": pixels darker, channels counted";
   }
 }
 
