@@ -42,6 +42,7 @@ float pixel_extent_on_plane(vec3 x, vec3 n) {
 // scene without bodies keeps its bytes). Multiplied onto the probe's composite, the shadows
 // combine as 1 - (1 - D_probe) prod(1 - D_i): each caster only darkens.
 float body_shadow_light(IntensityCurve c, vec3 x, vec3 n) {
+  if (u_body_count.x == 0u) return 1.0;  // a uniform branch: the derivatives below stay defined
   float edge_mm = pixel_extent_on_plane(x, n);
   float light = 1.0;
   for (int i = 0; i < int(u_body_count.x); ++i)
