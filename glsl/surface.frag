@@ -9,8 +9,11 @@
 // Variants: PS_SHADOW (0: probe beyond this surface's influence, pseudo-shadow compiled out),
 //           PS_TEXTURED (0: untextured material, Gabor compiled out), PS_GABOR_STRATIFIED,
 //           PS_GABOR_BAKED (the texture read from the material's baked tile).
+// The bodies' pseudo-shadows (lib/body_shadow.glsl) darken the colour target only, in every
+// variant; the AOVs and the normal stay the probe's.
 #include "lib/surface_block.glsl"
 #include "lib/pseudo_shadow.glsl"
+#include "lib/body_shadow.glsl"
 
 #ifndef PS_SHADOW
 #define PS_SHADOW 1
@@ -98,6 +101,9 @@ void main() {
   float darkening = pseudo_shadow_darkening(curve, d, hc.y, u_modulation.y, u_modulation.x, s);
   rgb = composite_pseudo_shadow(rgb, darkening);
 #endif
+  // The bodies' pseudo-shadows, in every variant (also with the probe out of reach); colour only.
+  rgb *= body_shadow_light(IntensityCurve(u_intensity.x, u_intensity.y, u_intensity.z, u_intensity.w),
+                           v_world, u_ref_n.xyz);
   o_color = vec4(pow(clamp(rgb, 0.0, 1.0), vec3(u_light_color.a)), 1.0);
   o_normal = vec4(n, 1.0);
   o_aov = vec4(intensity, d >= kFar ? no_probe_distance() : d, tex_sigmas, u_modulation.z);

@@ -4,6 +4,8 @@
 
 #include "gabor_block.glsl"
 
+const int kMaxBodyCasters = 4;  // SurfaceBlock::body_spheres (= kMaxSceneBodies)
+
 layout(std140, binding = 0) uniform SurfaceBlock {
   mat4 u_view_proj;
   vec4 u_light_dir;      // xyz: direction the light travels (unit); w: ambient
@@ -17,4 +19,6 @@ layout(std140, binding = 0) uniform SurfaceBlock {
   vec4 u_intensity;      // x floor, y scale, z offset mm, w influence distance mm
   vec4 u_modulation;     // x speed gain [0,1], y onset distance mm, z resistance, w contrast (sigmas)
   GaborBlock u_gabor;    // the material's texture (lib/gabor_block.glsl)
+  vec4 u_body_spheres[kMaxBodyCasters];  // bodies casting on this surface: centre mm, radius mm
+  uvec4 u_body_count;    // x: how many of u_body_spheres are set (lib/body_shadow.glsl)
 };

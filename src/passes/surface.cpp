@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <bit>
+#include <cassert>
 
 #include "gl/shader.h"
 
@@ -15,7 +16,10 @@ glm::vec4 v4(double x, double y, double z, double w) { return glm::vec4(glm::dve
 int next_pow2(int v) { return static_cast<int>(std::bit_ceil(static_cast<unsigned>(std::max(v, 1)))); }
 
 SurfaceBlock make_surface_block(const SurfaceFrame& fr, const Material& m, const GaborBlock& gabor,
-                                double speed_gain, bool has_albedo_tex) {
+                                double speed_gain, bool has_albedo_tex,
+                                std::span<const SphereCaster> bodies) {
+  assert(bodies.size() <= static_cast<size_t>(kMaxSceneBodies) &&
+         "make_surface_block: more body casters than SurfaceBlock::body_spheres holds");
   SurfaceBlock b;
   b.view_proj = glm::mat4(fr.view_proj);
   b.light_dir = v4(glm::normalize(fr.light->direction), fr.light->ambient);
@@ -29,6 +33,9 @@ SurfaceBlock make_surface_block(const SurfaceFrame& fr, const Material& m, const
   b.intensity = v4(m.intensity_floor, m.intensity_scale, m.intensity_offset_mm, m.influence_distance_mm);
   b.modulation = v4(speed_gain, m.onset_distance_mm, m.resistance, fr.contrast_sigmas);
   b.gabor = gabor;
+  const size_t n = std::min(bodies.size(), static_cast<size_t>(kMaxSceneBodies));
+  for (size_t i = 0; i < n; ++i) b.body_spheres[i] = v4(bodies[i].centre, bodies[i].radius_mm);
+  b.body_count = glm::uvec4(static_cast<unsigned>(n), 0u, 0u, 0u);
   return b;
 }
 

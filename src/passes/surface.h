@@ -1,6 +1,8 @@
 // Surface pass (thesis Table 4.2 step 3): draws every surface once into an MRT framebuffer.
 // Variants: PS_SHADOW, PS_TEXTURED, PS_GABOR_STRATIFIED (textured only).
-//   inputs : surfaces (GpuMesh + material uniforms), probe depth map (R32F), albedo textures
+//   inputs : surfaces (GpuMesh + material uniforms), probe depth map (R32F), albedo textures,
+//            up to kMaxSceneBodies sphere casters per surface (their analytic pseudo-shadows
+//            darken the colour target only)
 //   outputs: color()  RGBA8    lit surface with the pseudo-shadow (gamma-encoded)
 //            normal() RGBA32F  (front-facing normal, 1) per covered pixel, full mip chain
 //            aov()    RGBA32F  (intensity, distance d mm, texture in sigmas, resistance);
@@ -15,6 +17,7 @@
 
 #include <limits>
 #include <map>
+#include <span>
 #include <tuple>
 #include <string>
 #include <utility>
@@ -27,6 +30,7 @@
 #include "passes/gabor_block.h"
 #include "passes/gpu_mesh.h"
 #include "reference/basis.h"
+#include "reference/body_shadow.h"
 #include "reference/gabor.h"
 #include "scene/scene.h"
 
@@ -38,8 +42,10 @@ struct SurfaceBlock {
   glm::vec4 light_dir, light_color, ref_n, ref_t, ref_b, window, albedo, albedo_scale, intensity;
   glm::vec4 modulation;
   GaborBlock gabor;
+  glm::vec4 body_spheres[kMaxSceneBodies]{};  // bodies casting on this surface: centre, radius (mm)
+  glm::uvec4 body_count{0u};                  // x: how many body_spheres are set
 };
-static_assert(sizeof(SurfaceBlock) == 64 + 10 * 16 + sizeof(GaborBlock),
+static_assert(sizeof(SurfaceBlock) == 64 + 10 * 16 + sizeof(GaborBlock) + (kMaxSceneBodies + 1) * 16,
               "SurfaceBlock must match std140 layout");
 
 // The distance AOV's value (aov().y) wherever no probe is above the pixel: outside the probe's
@@ -61,8 +67,11 @@ struct SurfaceFrame {
 };
 
 // `gabor`: the material's texture as make_gabor_block() packed it (with its baked tile, if any).
+// `bodies`: the bodies whose pseudo-shadow may fall on this surface (at most kMaxSceneBodies;
+// lib/body_shadow.glsl), none by default.
 SurfaceBlock make_surface_block(const SurfaceFrame& frame, const Material& m, const GaborBlock& gabor,
-                                double speed_gain, bool has_albedo_tex);
+                                double speed_gain, bool has_albedo_tex,
+                                std::span<const SphereCaster> bodies = {});
 
 struct SurfaceDraw {
   const GpuMesh* mesh = nullptr;

@@ -43,6 +43,18 @@ bool sunk_below(const BoundingSphere& probe, const Aabb& box, const PlaneFrame& 
 
 }  // namespace
 
+std::vector<SphereCaster> bodies_in_reach(std::span<const SphereCaster> bodies, const Aabb& bounds,
+                                          double influence_mm) {
+  std::vector<SphereCaster> out;
+  for (const SphereCaster& b : bodies) {
+    // A non-finite centre would reach the shader as NaN (distance_sphere_aabb reads it as 0).
+    const bool finite = std::isfinite(b.centre.x) && std::isfinite(b.centre.y) && std::isfinite(b.centre.z) &&
+                        std::isfinite(b.radius_mm);
+    if (finite && distance_sphere_aabb({b.centre, b.radius_mm}, bounds) < influence_mm) out.push_back(b);
+  }
+  return out;
+}
+
 FramePlan make_plan(const Scene& scene, const std::vector<Aabb>& bounds,
                     const BoundingSphere& probe, const PlaneFrame& frame, int depth_map_size) {
   FramePlan plan;

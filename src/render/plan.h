@@ -8,6 +8,7 @@
 //     footprint's pixel count rather than the screen size.
 #pragma once
 
+#include <span>
 #include <string>
 #include <vector>
 
@@ -15,6 +16,7 @@
 
 #include "passes/probe_depth.h"
 #include "reference/basis.h"
+#include "reference/body_shadow.h"
 #include "reference/probe_geometry.h"
 #include "scene/scene.h"
 
@@ -34,6 +36,13 @@ struct FramePlan {
 };
 
 double distance_sphere_aabb(const BoundingSphere& s, const Aabb& box);
+
+// The bodies whose pseudo-shadow can fall on a surface with these bounds: those nearer than
+// the influence distance to the box (a shadowed point lies within that distance of the sphere
+// along the normal, so at most that far from it), in order; bodies at non-finite positions are
+// left out. The rest cost the surface nothing.
+std::vector<SphereCaster> bodies_in_reach(std::span<const SphereCaster> bodies, const Aabb& bounds,
+                                          double influence_mm);
 
 // `depth_map_size` sets the margin: the window is the probe's bounding disc plus one texel.
 FramePlan make_plan(const Scene& scene, const std::vector<Aabb>& surface_bounds,

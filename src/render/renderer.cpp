@@ -312,6 +312,7 @@ std::vector<SurfaceDraw> Renderer::surface_draws(const FramePlan& plan) {
   fr.depth_map_size = scene_.render.depth_map_size;
   fr.light = &scene_.light;
   fr.contrast_sigmas = options_.contrast_sigmas;
+  const std::vector<SphereCaster> bodies = body_casters();
   std::vector<SurfaceDraw> draws;
   bool gain_recorded = false;
   for (size_t i = 0; i < scene_.surfaces.size(); ++i) {
@@ -326,7 +327,8 @@ std::vector<SurfaceDraw> Renderer::surface_draws(const FramePlan& plan) {
     }
     SurfaceDraw d;
     d.mesh = &geometry_.surface_meshes[i];
-    d.block = make_surface_block(fr, m, ms.gabor_block, gain, static_cast<bool>(ms.albedo));
+    d.block = make_surface_block(fr, m, ms.gabor_block, gain, static_cast<bool>(ms.albedo),
+                                 bodies_in_reach(bodies, geometry_.surface_bounds[i], m.influence_distance_mm));
     d.shadow = plan.surface_shadow[i];
     d.textured = plan.surface_textured[i];
     d.stratified = ms.gabor_setup.stratified_count > 0;
@@ -422,6 +424,14 @@ void Renderer::run_probe_depth(const FramePlan& plan, const BoundingSphere& prob
 
 void Renderer::set_body_positions(std::span<const glm::dvec3> centres) {
   body_positions_.assign(centres.begin(), centres.begin() + std::min(centres.size(), scene_.bodies.size()));
+}
+
+// The bodies drawn this frame as shadow casters (spheres of their radius), in scene order.
+std::vector<SphereCaster> Renderer::body_casters() const {
+  std::vector<SphereCaster> out;
+  for (std::size_t i = 0; i < body_positions_.size(); ++i)
+    out.push_back({body_positions_[i], scene_.bodies[i].radius_mm});
+  return out;
 }
 
 void Renderer::run_world_view() {

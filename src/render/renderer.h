@@ -100,8 +100,10 @@ class Renderer {
   void set_show_probe(bool show) { show_probe_ = show; }
   bool show_probe() const { return show_probe_; }
   // The scene's bodies (Scene::bodies, in order) at these centres, drawn as spheres of their
-  // radius in their material's albedo after the pseudo-shadow (colour only, like the probe).
-  // Fewer centres than bodies: the rest are not drawn.
+  // radius in their material's albedo after the pseudo-shadow (colour only, like the probe),
+  // each casting its own analytic pseudo-shadow on the surfaces within the receiving material's
+  // influence distance (colour only: the AOVs, reductions and displacement stay the probe's;
+  // reference/body_shadow.h). Fewer centres than bodies: the rest are neither drawn nor cast.
   void set_body_positions(std::span<const glm::dvec3> centres);
   // The device's own position, drawn as a faint ghost of the probe when shown, so the gap
   // between hand and proxy (pseudo-haptic coupling) can be seen. Off by default.
@@ -151,6 +153,7 @@ class Renderer {
   ProbeInput probe_input() const;
   void run_probe_depth(const FramePlan& plan, const BoundingSphere& probe);
   std::vector<SurfaceDraw> surface_draws(const FramePlan& plan);
+  std::vector<SphereCaster> body_casters() const;  // the positioned bodies, for their shadows
   void update_reference_plane(const ReductionResult& r);
   void apply_reductions(const ReductionResult& r, const FramePlan& plan);
   void run_probe_view();

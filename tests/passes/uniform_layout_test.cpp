@@ -97,6 +97,23 @@ TEST(UniformLayoutTest, SurfaceBlockMatches) {
   EXPECT_MEMBER(o, "u_intensity", SurfaceBlock, intensity);
   EXPECT_MEMBER(o, "u_modulation", SurfaceBlock, modulation);
   EXPECT_GABOR_BLOCK(o, "u_gabor", SurfaceBlock, gabor);
+  EXPECT_MEMBER(o, "u_body_spheres", SurfaceBlock, body_spheres);
+  EXPECT_MEMBER(o, "u_body_count", SurfaceBlock, body_count);
+}
+
+// The bodies' casters are read in every variant, also with the probe's shadow compiled out
+// (a body casts its pseudo-shadow when the probe is out of reach), and the array's std140
+// stride is one vec4, as in C++.
+TEST(UniformLayoutTest, BodyCastersMatchInEveryVariant) {
+  for (const gl::Defines& variant : {gl::Defines{{"PS_SHADOW", "0"}, {"PS_TEXTURED", "0"}},
+                                     gl::Defines{{"PS_SHADOW", "1"}, {"PS_TEXTURED", "0"}},
+                                     gl::Defines{{"PS_SHADOW", "1"}, {"PS_TEXTURED", "1"}}}) {
+    const auto o = block_offsets("surface.frag", EShLangFragment, variant);
+    ASSERT_FALSE(o.empty());
+    EXPECT_MEMBER(o, "u_body_spheres", SurfaceBlock, body_spheres);
+    EXPECT_MEMBER(o, "u_body_count", SurfaceBlock, body_count);
+  }
+  static_assert(sizeof(SurfaceBlock::body_spheres) == kMaxSceneBodies * 16, "one vec4 per body");
 }
 
 // The Gabor parameters' one contract (lib/gabor_block.glsl) as each pass that reads it sees it:

@@ -1,4 +1,7 @@
 // The per-frame plan (CPU, no GL): what is skipped when.
+#include <cmath>
+#include <vector>
+
 #include <gtest/gtest.h>
 
 #include "pipeline/scenes.h"
@@ -97,6 +100,27 @@ TEST(PlanTest, SunkProbeBesideTheEdgeUsesTheInfluenceDistance) {
   // Footprint disc edge to the plane's edge (x = 100): x - 100 - r.
   EXPECT_TRUE(plan_at(100.0 + r + influence - 0.01).surface_shadow[0]);
   EXPECT_FALSE(plan_at(100.0 + r + influence + 0.01).surface_shadow[0]);
+}
+
+// A body casts on a surface only when nearer than the receiving material's influence distance
+// to its box: 0.01 mm either side, above the plane and beside its edge; order kept, NaN dropped.
+TEST(PlanTest, BodiesInReachUseTheInfluenceDistance) {
+  const Aabb plane = plane_bounds()[0];
+  const double r = 3.0;
+  const std::vector<SphereCaster> bodies{{{0, 0, r + 49.99}, r}, {{0, 0, r + 50.01}, r},
+                                         {{100.0 + r + 9.99, 0, 0}, r}, {{100.0 + r + 10.01, 0, 0}, r},
+                                         {{0, 0, std::nan("")}, r}, {{5, 5, r}, r}};
+  const std::vector<SphereCaster> far = bodies_in_reach(bodies, plane, 50.0);
+  ASSERT_EQ(far.size(), 4u);
+  EXPECT_EQ(far[0].centre, bodies[0].centre);
+  EXPECT_EQ(far[1].centre, bodies[2].centre);
+  EXPECT_EQ(far[2].centre, bodies[3].centre);
+  EXPECT_EQ(far[3].centre, bodies[5].centre);
+  const std::vector<SphereCaster> near = bodies_in_reach(bodies, plane, 10.0);
+  ASSERT_EQ(near.size(), 2u);
+  EXPECT_EQ(near[0].centre, bodies[2].centre);
+  EXPECT_EQ(near[1].centre, bodies[5].centre);
+  EXPECT_TRUE(bodies_in_reach({}, plane, 50.0).empty());
 }
 
 TEST(PlanTest, SphereAabbDistance) {
