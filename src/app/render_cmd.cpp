@@ -129,6 +129,7 @@ int render(const cli::Command& cmd, const RenderArgs& a) {
   auto renderer = Renderer::create(scene.value(), options);
   if (!renderer) return cmd.fail(renderer.error());
   renderer.value()->set_show_probe(a.show_probe);
+  show_world_at_start(*renderer.value());
   const int frames = scene->render.frames;
   const bool progress = !a.quiet && frames > 1 && isatty(STDERR_FILENO);
   if (Status s = run_frames(*renderer.value(), frames, progress); !s) return cmd.fail(s.error());

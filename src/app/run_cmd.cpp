@@ -144,6 +144,8 @@ struct Session {  // everything the window loop touches, grouped by owner thread
   PlaneAxes axes;
   std::vector<double> latency_ms, frame_ms;
   std::string pending_scene;          // a button's scene action, carried out after this frame
+  std::vector<std::string> came_from; // scenes a button switched away from (Backspace goes back)
+  bool going_back = false;            // the pending switch is a Backspace: do not remember it
 };
 
 Status open_device(const RunArgs& a, Session& s) {
@@ -295,6 +297,10 @@ Status handle_keys(Session& s, int w, int h) {
   if (in.toggle_device) s.tune->renderer().set_show_device(!s.tune->renderer().show_device());
   in.toggle_device = false;
   if (in.add_charge || in.remove_charge) edit_live_charges(s, in.add_charge);
+  if (std::exchange(in.back, false) && !s.came_from.empty() && !s.came_from.back().empty() && s.pending_scene.empty()) {
+    s.pending_scene = s.came_from.back();
+    s.going_back = true;
+  }
   in.add_charge = in.remove_charge = false;
   Camera cam = s.tune->renderer().scene().camera;
   apply_orbit_zoom(in, cam);
@@ -418,6 +424,7 @@ Status open_events(const RunArgs& a, Session& s) {
 // fails to load keeps the current scene and says why.
 void switch_scene(const RunArgs& a, Session& s) {
   const std::string path = std::exchange(s.pending_scene, std::string());
+  const bool back = std::exchange(s.going_back, false);
   auto scene = load_scene(path);
   auto haptic = scene ? world::HapticScene::build(scene.value()) : Result<world::HapticScene>(scene.error());
   if (!scene || !haptic) {
@@ -435,6 +442,8 @@ void switch_scene(const RunArgs& a, Session& s) {
     std::fprintf(stderr, "button: cannot switch to %s, staying: %s\n", path.c_str(), tune.error().message.c_str());
     return;
   }
+  if (back) s.came_from.pop_back();
+  else s.came_from.push_back(s.tune->scene_path());
   s.tune = std::move(tune.value());
   s.tune->renderer().set_show_probe(a.show_probe);
   s.tune->renderer().set_show_device(a.show_device);

@@ -12,7 +12,12 @@ Status drive_frame(Renderer& renderer, HapticLoop& loop, std::uint64_t frame, Ha
   const glm::dvec3 shown = state.have_sample ? state.proxy_mm : probe.position;
   if (state.have_sample) renderer.set_probe_state(state.proxy_mm, state.velocity_mm_s);
   if (state.have_sample) renderer.set_device_position(state.device_mm);
-  renderer.set_body_positions(std::span<const glm::dvec3>(state.body_mm.data(), static_cast<std::size_t>(state.body_count)));
+  const std::span<const glm::dvec3> bodies(state.body_mm.data(), static_cast<std::size_t>(state.body_count));
+  renderer.set_body_positions(bodies);
+  const LiveCharges live = loop.live_charges().read();
+  std::vector<ChargeMarker> charges;
+  for (int i = 0; i < live.count; ++i) charges.push_back({live.position[i], live.charge_n_mm2[i]});
+  renderer.set_markers(world_markers(renderer.scene(), shown, bodies, charges, state.field_force_n));
   if (Status s = renderer.render_frame(); !s) return s;
   const FrameStats& st = renderer.stats();
   // The render thread is the only writer of surface(), so reading back its own last value is safe.

@@ -51,6 +51,7 @@ Status render_picture(const std::string& scene_file, const std::string& path) {
   options.expected_frames = 1;
   auto r = Renderer::create(scene.value(), options);
   if (!r) return r.error();
+  show_world_at_start(*r.value());
   if (Status s = r.value()->render_frame(); !s) return s;
   std::error_code ec;
   std::filesystem::create_directories(picture_cache_dir(), ec);

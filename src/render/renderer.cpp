@@ -398,7 +398,7 @@ Status Renderer::render_frame() {
     run_probe_view();
     timer.lap("probe_view");
   }
-  if (!body_positions_.empty() || show_device_) {
+  if (!body_positions_.empty() || !markers_.empty() || show_device_) {
     run_world_view();
     timer.lap("world_view");
   }
@@ -434,6 +434,13 @@ std::vector<SphereCaster> Renderer::body_casters() const {
   return out;
 }
 
+void show_world_at_start(Renderer& renderer) {
+  const Scene& sc = renderer.scene();
+  const std::vector<glm::dvec3> bodies = start_positions(sc);
+  renderer.set_body_positions(bodies);
+  renderer.set_markers(world_markers(sc, sc.probe.position, bodies));
+}
+
 void Renderer::run_world_view() {
   if (!world_view_ready_) {
     if (!body_view_.init(options_.glsl_root, surface_) || !ghost_view_.init(options_.glsl_root, surface_)) return;
@@ -448,6 +455,12 @@ void Renderer::run_world_view() {
     in.probe = ProbeInput{};
     in.probe.capsule = CapsuleShape{body_positions_[i], body_positions_[i], b.radius_mm};
     in.color = m < scene_.materials.size() ? scene_.materials[m].albedo : ProbeViewPass::kColor;
+    body_view_.run(in);
+  }
+  for (const WorldMarker& m : markers_) {
+    in.probe = ProbeInput{};
+    in.probe.capsule = CapsuleShape{m.a, m.b, m.radius_mm};
+    in.color = m.color;
     body_view_.run(in);
   }
   if (show_device_) {

@@ -23,6 +23,7 @@
 #include "render/aov.h"
 #include "render/plan.h"
 #include "render/tile_bake.h"
+#include "render/world_markers.h"
 #include "scene/scene.h"
 
 namespace ps {
@@ -105,6 +106,9 @@ class Renderer {
   // influence distance (colour only: the AOVs, reductions and displacement stay the probe's;
   // reference/body_shadow.h). Fewer centres than bodies: the rest are neither drawn nor cast.
   void set_body_positions(std::span<const glm::dvec3> centres);
+  // Charges, bands and the force arrow (render/world_markers.h), drawn like the bodies after the
+  // pseudo-shadow (colour only). Empty: none.
+  void set_markers(std::vector<WorldMarker> markers) { markers_ = std::move(markers); }
   // The device's own position, drawn as a faint ghost of the probe when shown, so the gap
   // between hand and proxy (pseudo-haptic coupling) can be seen. Off by default.
   void set_device_position(const glm::dvec3& position) { device_position_ = position; }
@@ -175,9 +179,14 @@ class Renderer {
   ProbeViewPass body_view_, ghost_view_;  // initialised on first use (own mesh caches)
   bool world_view_ready_ = false;
   std::vector<glm::dvec3> body_positions_;
+  std::vector<WorldMarker> markers_;
   glm::dvec3 device_position_{0.0};
   bool show_device_ = false;
 };
+
+// The scene's bodies at their start positions and its markers (charges, bands) with the
+// scene's probe: how a scene looks before any haptic tick (`render`, button pictures).
+void show_world_at_start(Renderer& renderer);
 
 // Stats as JSON (the CLI's --stats FILE): backend, renderer, reference_normal, displacement,
 // max_penetration, probe_position, timings_ms, skipped, ...

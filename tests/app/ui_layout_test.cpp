@@ -240,8 +240,8 @@ TEST(HudTest, ButtonAndFlagsShowWhenTheSceneHasThem) {
 
 TEST(RunKeysTest, EveryKeyOfTheWindowIsInTheTableOnce) {
   // The bindings of app/window_input.cpp and the mouse device, by the words the table uses.
-  for (const char* keys : {"mouse", "Shift+scroll", "PgUp / PgDn", "right drag", "scroll", "M", "P", "S", "F1",
-                           "H, ?", "Esc, Q"}) {
+  for (const char* keys : {"mouse", "Shift+scroll", "PgUp / PgDn", "right drag", "scroll", "C, Shift+C", "Bksp",
+                           "M", "P / D", "S", "F1", "H, ?", "Esc, Q"}) {
     int found = 0;
     for (const RunKey& k : run_keys()) found += std::strcmp(k.keys, keys) == 0;
     EXPECT_EQ(found, 1) << keys;
