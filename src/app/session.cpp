@@ -9,8 +9,9 @@ namespace ps {
 Status drive_frame(Renderer& renderer, HapticLoop& loop, std::uint64_t frame, HapticState& state) {
   state = loop.state().read();
   const Probe& probe = renderer.scene().probe;
-  const glm::dvec3 shown = state.have_sample ? state.proxy_mm : probe.position;
-  if (state.have_sample) renderer.set_probe_state(state.proxy_mm, state.velocity_mm_s);
+  // The proxy as drawn: stretched near an Illusion object (visual_position; identity elsewhere).
+  const glm::dvec3 shown = state.have_sample ? visual_position(renderer.scene(), state.proxy_mm) : probe.position;
+  if (state.have_sample) renderer.set_probe_state(shown, state.velocity_mm_s);
   if (state.have_sample) renderer.set_device_position(state.device_mm);
   const std::span<const glm::dvec3> bodies(state.body_mm.data(), static_cast<std::size_t>(state.body_count));
   renderer.set_body_positions(bodies);

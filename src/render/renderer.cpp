@@ -3,6 +3,7 @@
 #include "render/button_pictures.h"
 
 #include <algorithm>
+#include <limits>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -19,6 +20,26 @@ namespace ps {
 namespace {
 
 Aabb mesh_bounds(const Mesh& m) { return {m.bounds_min, m.bounds_max}; }
+
+// Surface::visual_stretch: positions scaled along the surface's local axes about its centre,
+// normals by the inverse (the normal transform of a scaling), bounds recomputed.
+void stretch_mesh(Mesh& m, const Surface& s) {
+  const glm::dmat3 rot = euler_xyz_deg(s.rotation_deg);
+  const glm::dmat3 scale(glm::dvec3(s.visual_stretch.x, 0, 0), glm::dvec3(0, s.visual_stretch.y, 0),
+                         glm::dvec3(0, 0, s.visual_stretch.z));
+  const glm::dmat3 inverse_scale(glm::dvec3(1.0 / s.visual_stretch.x, 0, 0), glm::dvec3(0, 1.0 / s.visual_stretch.y, 0),
+                                 glm::dvec3(0, 0, 1.0 / s.visual_stretch.z));
+  const glm::dmat3 to = rot * scale * glm::transpose(rot), to_n = rot * inverse_scale * glm::transpose(rot);
+  m.bounds_min = glm::dvec3(std::numeric_limits<double>::infinity());
+  m.bounds_max = -m.bounds_min;
+  for (glm::vec3& p : m.positions) {
+    const glm::dvec3 q = s.center + to * (glm::dvec3(p) - s.center);
+    p = glm::vec3(q);
+    m.bounds_min = glm::min(m.bounds_min, q);
+    m.bounds_max = glm::max(m.bounds_max, q);
+  }
+  for (glm::vec3& n : m.normals) n = glm::vec3(glm::normalize(to_n * glm::dvec3(n)));
+}
 
 Result<gl::Texture> upload_albedo(const std::string& path) {
   auto img = read_image(path);
@@ -121,6 +142,7 @@ Status Renderer::upload_surfaces() {
   for (const Surface& s : scene_.surfaces) {
     auto mesh = build_surface_mesh(s);
     if (!mesh) return mesh.error();
+    if (s.visual_stretch != glm::dvec3(1.0)) stretch_mesh(mesh.value(), s);
     geometry_.surface_bounds.push_back(mesh_bounds(mesh.value()));
     geometry_.surface_meshes.push_back(GpuMesh::upload(mesh.value()));
   }

@@ -1,5 +1,10 @@
 #include "render/world_markers.h"
 
+#include <algorithm>
+#include <cmath>
+
+#include "scene/mesh.h"
+
 namespace ps {
 
 std::vector<WorldMarker> world_markers(const Scene& scene, const glm::dvec3& probe_mm,
@@ -25,6 +30,36 @@ std::vector<WorldMarker> world_markers(const Scene& scene, const glm::dvec3& pro
     out.push_back({tip, tip, 1.8, glm::dvec3(0.95, 0.85, 0.2)});  // the head
   }
   return out;
+}
+
+namespace {
+
+// A bounding radius of the felt shape about its centre.
+double felt_radius(const Surface& s) {
+  switch (s.type) {
+    case SurfaceType::kSphere: return s.radius_mm;
+    case SurfaceType::kTorus: return s.radius_mm + s.minor_radius_mm;
+    case SurfaceType::kBox: return 0.5 * glm::length(s.box_size_mm);
+    case SurfaceType::kPlane:
+    case SurfaceType::kHeightField: return 0.5 * glm::length(s.size_mm) + std::abs(s.height_mm);
+    case SurfaceType::kMesh: return 100.0 * s.scale;  // unknown without loading it: generous
+  }
+  return 0.0;
+}
+
+}  // namespace
+
+glm::dvec3 visual_position(const Scene& scene, const glm::dvec3& felt_mm) {
+  for (const Surface& s : scene.surfaces) {
+    if (s.visual_stretch == glm::dvec3(1.0)) continue;
+    const glm::dmat3 rot = euler_xyz_deg(s.rotation_deg);
+    const glm::dvec3 q = glm::transpose(rot) * (felt_mm - s.center);
+    const double reach = felt_radius(s) + scene.probe.radius_mm + kStretchReachMarginMm;
+    const double w = std::clamp(1.0 - (glm::length(q) - reach) / kStretchFadeMm, 0.0, 1.0);
+    if (w <= 0.0) continue;
+    return s.center + rot * (q * (glm::dvec3(1.0) + w * (s.visual_stretch - glm::dvec3(1.0))));
+  }
+  return felt_mm;
 }
 
 std::vector<glm::dvec3> start_positions(const Scene& scene) {

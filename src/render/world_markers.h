@@ -37,6 +37,15 @@ std::vector<WorldMarker> world_markers(const Scene& scene, const glm::dvec3& pro
                                        std::span<const ChargeMarker> extra_charges = {},
                                        const glm::dvec3& force_n = glm::dvec3(0.0));
 
+// Where the probe is drawn when it is felt at `felt_mm` (seed 002 §3, "Illusion"): near a surface
+// with a visual_stretch (within its felt bounding radius + the probe's radius + 10 mm) the
+// position is stretched like the surface, about its centre along its local axes, so the drawn
+// probe travels the drawn (stretched) shape while the hand travels the felt one; the stretch
+// fades out linearly over the next 20 mm. The first stretched surface near the probe counts.
+// No stretched surface: `felt_mm` unchanged.
+glm::dvec3 visual_position(const Scene& scene, const glm::dvec3& felt_mm);
+inline constexpr double kStretchReachMarginMm = 10.0, kStretchFadeMm = 20.0;
+
 // The bodies where the scene starts them (Body::position): what `render` shows.
 std::vector<glm::dvec3> start_positions(const Scene& scene);
 

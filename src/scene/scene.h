@@ -108,6 +108,10 @@ struct Surface {
   int resolution = 64;       // tessellation of procedural shapes (segments)
   bool visible = true;       // false: felt but not drawn (a hidden object)
   bool touchable = true;     // false: drawn but not felt
+  // Drawn stretched by these factors along its local axes, about `center`, while it is felt
+  // unstretched (seed 002 §3, "Illusion"); the drawn probe is stretched alike near it
+  // (visual_position). [1, 1, 1]: as felt.
+  glm::dvec3 visual_stretch{1.0};
   int button = -1;           // >= 0: the plate the scene's [[buttons]] #button adds (not in the file)
   int line = 0;              // line in the scene file, for error messages
 };

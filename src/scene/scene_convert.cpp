@@ -194,6 +194,7 @@ Status read_surface(const ParseContext& ctx, const toml::table& table, int index
   r.integer("resolution", out.resolution, 3, kMaxResolution);
   r.boolean("visible", out.visible);
   r.boolean("touchable", out.touchable);
+  r.vec3("visual_stretch", out.visual_stretch, Range::closed(0.1, 10.0));
   r.require(out.type != SurfaceType::kTorus || out.minor_radius_mm < out.radius_mm,
             "minor_radius_mm", "must be < 'radius_mm' for a torus (a ring torus)");
   r.require(out.type != SurfaceType::kHeightField || !out.heightmap.empty(), "heightmap",

@@ -19,9 +19,12 @@ struct Wide {  // every field equal: a torn copy mixes two writes and shows up a
 
 TEST(SnapshotTest, ReaderNeverSeesTornWrites) {
   Snapshot<Wide> snap;
-  std::atomic<bool> done{false};
+  std::atomic<bool> done{false}, reading{false};
   std::uint64_t torn = 0, reads = 0, last = 0, backwards = 0;
   std::thread writer([&] {
+    // Start writing once the reader reads: on a loaded machine the writer could otherwise finish
+    // all its writes before the reader's first look (no read at all, nothing tested).
+    while (!reading.load()) std::this_thread::yield();
     for (std::uint64_t i = 1; i <= 300'000; ++i) {
       Wide w;
       for (auto& x : w.a) x = i;
@@ -29,13 +32,14 @@ TEST(SnapshotTest, ReaderNeverSeesTornWrites) {
     }
     done.store(true);
   });
-  while (!done.load()) {
+  do {
     const Wide w = snap.read();
+    reading.store(true);
     for (auto x : w.a) torn += x != w.a[0];
     backwards += w.a[0] < last;
     last = w.a[0];
     ++reads;
-  }
+  } while (!done.load());
   writer.join();
   EXPECT_EQ(torn, 0u);
   EXPECT_EQ(backwards, 0u);

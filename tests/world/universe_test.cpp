@@ -1,0 +1,150 @@
+// The Virtual Universe's worlds (scenes/universe) as the haptic side sees them, against closed
+// forms: Field's force is the softened Coulomb sum of its charges and has a findable weak spot;
+// Weight's ball bounces back with its restitution; every world has a button back to the panel,
+// and the panel's four buttons lead to the four worlds. No GL.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <filesystem>
+#include <limits>
+
+#include "devices/sample_log.h"
+#include "haptics/haptic_loop.h"
+#include "render/world_markers.h"
+#include "scene/scene_io.h"
+#include "world/haptic_scene.h"
+
+namespace ps::world {
+namespace {
+
+std::string universe(const std::string& name) { return std::string(PS_SOURCE_DIR) + "/scenes/universe/" + name; }
+
+// The force at three points equals the sum over the file's charges of q d / (|d|^2 + s^2)^1.5
+// (1e-12 relative: the same double arithmetic in another order); a grid search (0.25 mm, at the
+// charges' height, away from the charges themselves where the softened law is 0 by symmetry)
+// finds a point where the pushes and the pull cancel to under 1 % of the force nearby.
+TEST(UniverseTest, FieldIsTheCoulombSumWithAWeakSpot) {
+  auto scene = load_scene(universe("field.toml"));
+  ASSERT_TRUE(scene) << scene.error().message;
+  auto hs = HapticScene::build(scene.value());
+  ASSERT_TRUE(hs) << hs.error().message;
+  auto expect = [&](const glm::dvec3& p) {
+    glm::dvec3 f(0.0);
+    for (const Field& c : scene->fields) {
+      const glm::dvec3 d = p - c.position;
+      f += c.charge_n_mm2 * d / std::pow(glm::dot(d, d) + c.softening_mm * c.softening_mm, 1.5);
+    }
+    return f;
+  };
+  for (const glm::dvec3 p : {glm::dvec3(0, -30, 20), glm::dvec3(-20, 10, 25), glm::dvec3(45, 30, 15)}) {
+    const glm::dvec3 got = hs->fields().force_n(p, glm::dvec3(0.0), 0.0), want = expect(p);
+    EXPECT_GT(glm::length(want), 0.01);
+    for (int i = 0; i < 3; ++i) EXPECT_NEAR(got[i], want[i], 1e-12 * glm::length(want)) << i;
+  }
+  double weakest = std::numeric_limits<double>::infinity();
+  glm::dvec3 at(0.0);
+  for (double x = -60.0; x <= 60.0; x += 0.25)
+    for (double y = -40.0; y <= 60.0; y += 0.25) {
+      const glm::dvec3 p(x, y, 20.0);
+      bool near_charge = false;
+      for (const Field& c : scene->fields) near_charge = near_charge || glm::length(p - c.position) < 8.0;
+      if (near_charge) continue;
+      const double f = glm::length(hs->fields().force_n(p, glm::dvec3(0.0), 0.0));
+      if (f < weakest) weakest = f;
+      if (f == weakest) at = p;
+    }
+  const double nearby = glm::length(hs->fields().force_n(at + glm::dvec3(10, 0, 0), glm::dvec3(0.0), 0.0));
+  EXPECT_LT(weakest, 0.01 * nearby) << "weak spot at " << at.x << ", " << at.y;
+}
+
+// Weight, through the loop: the hand lowered so the ball reaches the floor. Just after its first
+// impact the ball rises at e x the impact speed (e: the file's restitution), measured from its
+// published positions one tick apart (5 %: that tick's gravity and band pull, 1 ms of ~20 m/s^2
+// against ~400 mm/s). (The second impact need not be slower: the band stores and gives back
+// energy between bounces.)
+TEST(UniverseTest, WeightsBallBouncesWithItsRestitution) {
+  auto scene = load_scene(universe("weight.toml"));
+  ASSERT_TRUE(scene) << scene.error().message;
+  auto hs = HapticScene::build(scene.value());
+  ASSERT_TRUE(hs) << hs.error().message;
+  ASSERT_EQ(hs->bodies().size(), 1u);
+  const double e = hs->bodies()[0].restitution;
+  LogDevice device({{0.0, {0, 0, 70}, 0, true}, {0.3, {0, 0, 45}, 0, true}, {3.0, {0, 0, 45}, 0, true}}, true, "lower");
+  FakeClock clock;
+  HapticLoop loop(device, clock, HapticLoopParams{}, &hs.value());
+  std::vector<HapticEvent> impacts;
+  double rebound_mm_s = 0.0;
+  for (int i = 0; i < 2500 && impacts.empty(); ++i) {
+    loop.run_ticks(1);
+    const std::size_t before = impacts.size();
+    loop.events().drain([&](const HapticEvent& ev) {
+      if (ev.kind == EventKind::body_impact) impacts.push_back(ev);
+    });
+    if (before == 0 && impacts.size() == 1) {
+      const double z0 = loop.state().read().body_mm[0].z;
+      loop.run_ticks(1);
+      rebound_mm_s = (loop.state().read().body_mm[0].z - z0) / 1e-3;
+    }
+  }
+  ASSERT_GE(impacts.size(), 1u) << "the ball should reach the floor within 2.5 s";
+  EXPECT_GT(impacts[0].value, 100.0);  // a real fall, not resting contact
+  EXPECT_NEAR(rebound_mm_s, e * impacts[0].value, 0.05 * e * impacts[0].value);
+}
+
+// Illusion: a path over the felt sphere's top along x is drawn as a path over the ellipsoid
+// that is longer by the stretch factor (1e-9 relative: the map is linear there); far from the
+// object the drawn probe is where it is felt.
+TEST(UniverseTest, IllusionDrawsTheProbeStretchedNearTheObject) {
+  auto scene = load_scene(universe("illusion.toml"));
+  ASSERT_TRUE(scene) << scene.error().message;
+  const Surface& sphere = scene->surfaces[0];
+  ASSERT_EQ(sphere.type, SurfaceType::kSphere);
+  const double s = sphere.visual_stretch.x, r = sphere.radius_mm + scene->probe.radius_mm;
+  ASSERT_GT(s, 1.0);
+  double felt = 0.0, drawn = 0.0;
+  glm::dvec3 last_f(0.0), last_d(0.0);
+  for (int i = 0; i <= 180; ++i) {  // over the top, in the x-z plane, the probe on the sphere
+    const double a = M_PI * i / 180.0;
+    const glm::dvec3 f = sphere.center + r * glm::dvec3(std::cos(a), 0.0, std::sin(a));
+    const glm::dvec3 d = visual_position(scene.value(), f);
+    if (i > 0) {
+      felt += glm::length(f - last_f);
+      drawn += glm::length(d - last_d);
+    }
+    EXPECT_NEAR(d.x - sphere.center.x, s * (f.x - sphere.center.x), 1e-9);
+    last_f = f;
+    last_d = d;
+  }
+  // Along x the drawn path covers s times the felt one; over the top, the arc of the ellipsoid.
+  EXPECT_NEAR(glm::length(last_d - visual_position(scene.value(), sphere.center + glm::dvec3(r, 0, 0))),
+              s * 2.0 * r, 1e-9);
+  EXPECT_GT(drawn, felt * 1.2);
+  const glm::dvec3 far = sphere.center + glm::dvec3(0, -200, 0);
+  EXPECT_EQ(visual_position(scene.value(), far), far);
+}
+
+// The panel's four buttons lead to the four worlds, with pictures; every world has a button
+// back to the panel.
+TEST(UniverseTest, PanelLeadsToEveryWorldAndEachWorldBack) {
+  auto panel = load_scene(universe("panel.toml"));
+  ASSERT_TRUE(panel) << panel.error().message;
+  ASSERT_EQ(panel->buttons.size(), 4u);
+  std::vector<std::string> worlds;
+  for (const Button& b : panel->buttons) {
+    EXPECT_TRUE(b.picture);
+    EXPECT_EQ(b.action_kind, ButtonActionKind::kScene);
+    worlds.push_back(std::filesystem::path(b.action_target).filename().string());
+  }
+  EXPECT_EQ(worlds, (std::vector<std::string>{"illusion.toml", "weight.toml", "field.toml", "poly.toml"}));
+  for (const std::string& w : worlds) {
+    auto world = load_scene(universe(w));
+    ASSERT_TRUE(world) << world.error().message;
+    bool back = false;
+    for (const Button& b : world->buttons)
+      back = back || std::filesystem::path(b.action_target).filename() == "panel.toml";
+    EXPECT_TRUE(back) << w << " has no button back to the panel";
+  }
+}
+
+}  // namespace
+}  // namespace ps::world
