@@ -1,6 +1,7 @@
 #include "render/renderer.h"
 
 #include "render/button_pictures.h"
+#include "render/field_map.h"
 
 #include <algorithm>
 #include <limits>
@@ -123,6 +124,7 @@ Result<std::unique_ptr<Renderer>> Renderer::create(const Scene& scene, const Ren
   r->options_ = options;
   if (options.button_pictures)
     if (Status s = make_button_pictures(r->scene_); !s) return s.error();
+  if (Status s = make_field_maps(r->scene_); !s) return s.error();
   if (r->options_.glsl_root.empty()) r->options_.glsl_root = gl::default_glsl_root();
   r->frame_ = make_plane_frame(toward_viewer(scene.camera));
   for (Status (Renderer::*step)() : {&Renderer::upload_surfaces, &Renderer::load_probe_mesh,

@@ -112,6 +112,11 @@ struct Surface {
   // unstretched (seed 002 §3, "Illusion"); the drawn probe is stretched alike near it
   // (visual_position). [1, 1, 1]: as felt.
   glm::dvec3 visual_stretch{1.0};
+  // Field map (seed 002 §5): the surface shows |F| of the scene's charges as a colour map
+  // (render/field_map.h).
+  // It gets its own material, `field_map_material` (a white copy of `material`).
+  bool field_map = false;
+  int field_map_material = -1;
   int button = -1;           // >= 0: the plate the scene's [[buttons]] #button adds (not in the file)
   int line = 0;              // line in the scene file, for error messages
 };

@@ -195,6 +195,9 @@ Status read_surface(const ParseContext& ctx, const toml::table& table, int index
   r.boolean("visible", out.visible);
   r.boolean("touchable", out.touchable);
   r.vec3("visual_stretch", out.visual_stretch, Range::closed(0.1, 10.0));
+  r.boolean("field_map", out.field_map);
+  r.require(!out.field_map || out.type == SurfaceType::kPlane || out.type == SurfaceType::kBox, "field_map",
+            "needs a plane or a box (the map lies on its top, along world X and Y)");
   r.require(out.type != SurfaceType::kTorus || out.minor_radius_mm < out.radius_mm,
             "minor_radius_mm", "must be < 'radius_mm' for a torus (a ring torus)");
   r.require(out.type != SurfaceType::kHeightField || !out.heightmap.empty(), "heightmap",

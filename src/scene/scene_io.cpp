@@ -201,6 +201,19 @@ Status read_buttons(const ParseContext& ctx, const toml::table& root, const std:
   return ok_status();
 }
 
+// A field-map surface gets a white copy of its material: the map is its albedo texture.
+void add_field_map_materials(Scene& scene) {
+  for (std::size_t i = 0; i < scene.surfaces.size(); ++i) {
+    Surface& s = scene.surfaces[i];
+    if (!s.field_map) continue;
+    Material m = scene.materials[static_cast<std::size_t>(s.material_index)];
+    m.name += "@field_map" + std::to_string(i);
+    m.albedo = glm::dvec3(1.0);
+    s.field_map_material = s.material_index = static_cast<int>(scene.materials.size());
+    scene.materials.push_back(std::move(m));
+  }
+}
+
 Status read_world(const ParseContext& ctx, const toml::table& root, Scene& scene) {
   if (Status s = read_array(ctx, root, "fields", scene.fields,
                             [&](const toml::table& t, int i, Field& f) { return scene_detail::read_field(ctx, t, i, f); });
@@ -219,7 +232,9 @@ Status read_world(const ParseContext& ctx, const toml::table& root, Scene& scene
     return make_error(ctx.source_name + ":" + std::to_string(scene.bodies[kMaxSceneBodies].line) + ": [[bodies]] #" +
                       std::to_string(kMaxSceneBodies) + ": a scene has at most " + std::to_string(kMaxSceneBodies) +
                       " bodies");
-  return read_buttons(ctx, root, names, scene);
+  if (Status s = read_buttons(ctx, root, names, scene); !s) return s;
+  add_field_map_materials(scene);
+  return ok_status();
 }
 
 Status read_sections(const ParseContext& ctx, const toml::table& root, Scene& scene) {

@@ -47,7 +47,8 @@ constexpr std::array kSurfaceKeys = {"type"sv,      "material"sv,        "center
                                      "rotation_deg"sv, "size_mm"sv,      "radius_mm"sv,
                                      "minor_radius_mm"sv, "heightmap"sv, "height_mm"sv,
                                      "mesh_file"sv, "scale"sv,           "resolution"sv,
-                                     "visible"sv,   "touchable"sv,       "visual_stretch"sv};
+                                     "visible"sv,   "touchable"sv,       "visual_stretch"sv,
+                                     "field_map"sv};
 
 constexpr std::array kFieldKeys = {"type"sv,          "acceleration_mm_s2"sv, "force_n"sv,
                                    "fluctuation_n"sv, "frequency_hz"sv,       "viscosity_n_s_per_mm"sv,
