@@ -84,15 +84,15 @@ std::string shadow_cost_table(const std::vector<ShadowCost>& costs) {
   o << "| default scene | plain frame ms | pseudo-shadow frame ms | ratio |";
   if (!costs.empty())
     for (const auto& [pass, ms] : costs.front().shadow_pass_ms) o << " " << pass << " ms |";
-  o << " shadow pixels |\n| --- | --- | --- | --- |";
+  o << " shadow pixels | ratio of CPU time |\n| --- | --- | --- | --- |";
   if (!costs.empty())
     for (size_t i = 0; i < costs.front().shadow_pass_ms.size(); ++i) o << " --- |";
-  o << " --- |\n";
+  o << " --- | --- |\n";
   for (const ShadowCost& c : costs) {
     o << "| " << c.size << "x" << c.size << " | " << g(c.plain_frame_ms) << " | " << g(c.shadow_frame_ms) << " | "
       << g(c.ratio) << "x |";
     for (const auto& [pass, ms] : c.shadow_pass_ms) o << " " << g(ms) << " |";
-    o << " " << c.shadow_pixels << " |\n";
+    o << " " << c.shadow_pixels << " | " << g(c.cpu_ratio) << "x |\n";
   }
   return o.str();
 }

@@ -65,6 +65,7 @@ Result<std::vector<BenchRow>> run_sweep(const BenchOptions& o);
 struct ShadowCost {
   int size = 0;
   double shadow_frame_ms = 0.0, plain_frame_ms = 0.0, ratio = 0.0;  // medians; ratio of them
+  double cpu_ratio = 0.0;  // the same for the process's CPU time per frame (all threads)
   std::vector<std::pair<std::string, double>> shadow_pass_ms;  // probe_depth, surface, reductions
   double plain_surface_ms = 0.0;
   unsigned shadow_pixels = 0;  // pixels inside the pseudo-shadow
