@@ -272,7 +272,8 @@ Status Renderer::prime_reference_plane() {
   plan.surface_shadow.assign(plan.surface_shadow.size(), false);
   plan.surface_textured.assign(plan.surface_textured.size(), false);
   if (Status s = surface_.run(surface_draws(plan), nullptr, scene_.render.background, PixelRect{}); !s) return s;
-  update_reference_plane(reductions_.mean_normal(surface_));
+  bool reduced = false;
+  update_reference_plane(mean_visible_normal(reduced));
   return ok_status();
 }
 
@@ -334,6 +335,20 @@ std::vector<SurfaceDraw> Renderer::surface_draws(const FramePlan& plan) {
   return draws;
 }
 
+namespace {
+bool same_camera(const Camera& a, const Camera& b) {
+  return a.projection == b.projection && a.position == b.position && a.target == b.target && a.up == b.up &&
+         a.fov_y_deg == b.fov_y_deg && a.ortho_height_mm == b.ortho_height_mm && a.near_mm == b.near_mm &&
+         a.far_mm == b.far_mm;
+}
+}  // namespace
+
+ReductionResult Renderer::mean_visible_normal(bool& reduced) {
+  reduced = !normal_mean_.valid || !same_camera(normal_mean_.camera, scene_.camera);
+  if (reduced) normal_mean_ = {true, scene_.camera, reductions_.mean_normal(surface_)};
+  return normal_mean_.result;
+}
+
 // Mean of the visible normals becomes the next frame's reference normal (thesis §4.5.2).
 // A mean of (nearly) zero length - a sheet seen edge-on, a sphere seen from inside - has no
 // direction: keep the previous plane rather than normalising noise.
@@ -385,8 +400,10 @@ Status Renderer::render_frame() {
   if (plan.shadow_active) {
     ReductionResult r = reductions_.run(surface_, {scene_.render.weight_exponent,
                                                    scene_.render.displacement == DisplacementMethod::kWeightedAverage});
-    const ReductionResult n = reductions_.mean_normal(surface_);
     timer.lap("reductions");
+    bool reduced = false;
+    const ReductionResult n = mean_visible_normal(reduced);
+    if (reduced) timer.lap("reference_normal");
     r.normal_sum = n.normal_sum;
     r.normal_coverage = n.normal_coverage;
     apply_reductions(r, plan);

@@ -149,6 +149,10 @@ class Renderer {
   void run_probe_depth(const FramePlan& plan, const BoundingSphere& probe);
   std::vector<SurfaceDraw> surface_draws(const FramePlan& plan);
   void update_reference_plane(const ReductionResult& r);
+  // The mean visible normal of this frame's normal target: reduced when the camera changed
+  // since the last reduction, else that reduction's result (see normal_mean_). `reduced`: set
+  // when the reduction ran.
+  ReductionResult mean_visible_normal(bool& reduced);
   void apply_reductions(const ReductionResult& r, const FramePlan& plan);
   void run_probe_view();
 
@@ -160,6 +164,16 @@ class Renderer {
   std::vector<MaterialState> materials_;
   TileBaker tiles_;           // the tiles still to bake (all of them at once unless sliced)
   std::chrono::steady_clock::time_point created_at_;  // start of create(): the stats' time origin
+  // The last mean visible normal and the camera it was reduced for. The normal target holds
+  // the visible surfaces' normals, which depend on the camera alone (the surfaces are fixed for a
+  // renderer's life; neither the probe, the reference plane nor the shader variant changes a
+  // normal's bits), so while the camera stays, a new reduction would give these bits again.
+  struct NormalMean {
+    bool valid = false;
+    Camera camera;
+    ReductionResult result;  // normal_sum and normal_coverage
+  };
+  NormalMean normal_mean_;
   ProbeDepthPass probe_depth_;
   SurfacePass surface_;
   ReductionsPass reductions_;
