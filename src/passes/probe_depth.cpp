@@ -60,14 +60,14 @@ void ProbeDepthPass::run(const Inputs& in) {
   const float far_height[4] = {kFar, 0.0f, 0.0f, 0.0f};
   const float one = 1.0f;
   glClearNamedFramebufferfv(fbo_.id(), GL_COLOR, 0, far_height);
-  glClearNamedFramebufferfv(fbo_.id(), GL_DEPTH, 0, &one);
   glBindBufferBase(GL_UNIFORM_BUFFER, 0, ubo_.id());
-  if (!in.probe.mesh) {
+  if (!in.probe.mesh) {  // analytic: no depth test, so no depth clear
     glDisable(GL_DEPTH_TEST);
     glUseProgram(analytic_.id());
     glBindVertexArray(empty_vao_.id());
     glDrawArrays(GL_TRIANGLES, 0, 3);
   } else {
+    glClearNamedFramebufferfv(fbo_.id(), GL_DEPTH, 0, &one);
     glEnable(GL_DEPTH_TEST);
     glDepthFunc(GL_LESS);
     glUseProgram(mesh_.id());
