@@ -47,7 +47,7 @@ ReductionResult ReductionsPass::run(const SurfacePass& surface, const Params& pa
   const glm::ivec2 p = surface.padded_size();
   const PixelRect& rect = surface.shadow_rect();
   const ReduceBlock block{{surface.width(), surface.height(), p.x, p.y},
-                          {static_cast<float>(params.weight_exponent), 0, 0, 0},
+                          {static_cast<float>(params.weight_exponent), params.penetrating_box ? 1.0f : 0.0f, 0, 0},
                           {rect.x0, rect.y0, rect.x1, rect.y1}};
   glNamedBufferSubData(ubo_.id(), 0, sizeof(block), &block);
   const MaxBlock zero{};

@@ -27,7 +27,7 @@ namespace ps {
 // std140 mirror of ReduceBlock in glsl/lib/reduce_block.glsl.
 struct ReduceBlock {
   glm::ivec4 size;    // image w, h; padded w, h
-  glm::vec4 params;   // x: weight exponent c
+  glm::vec4 params;   // x: weight exponent c; y: 1 = row sums over the penetrating box only
   glm::ivec4 rect;    // x0, y0, x1, y1: the surface pass's shadow_rect(), the pixels reduced
 };
 static_assert(sizeof(ReduceBlock) == 48, "ReduceBlock must match std140 layout");
@@ -58,6 +58,9 @@ struct ReductionsPass {
   struct Params {
     double weight_exponent = 20.0;  // c
     bool weighted = true;           // false: no weighted displacement (exact-max frames)
+    // Sum the rows over the box of penetrating pixels only (the same bits: the other terms are
+    // zero). false: whole rows of the shadow rectangle, the reference the tests compare with.
+    bool penetrating_box = true;
   };
 
   Status init(const std::string& glsl_root, const SurfacePass& surface);

@@ -393,13 +393,14 @@ Status Renderer::render_frame() {
     timer.lap("probe_depth");
   }
   if (Status s = surface_.run(surface_draws(plan), plan.shadow_active ? &probe_depth_.depth() : nullptr,
-                              scene_.render.background, plan.shadow_active ? plan.shadow_rect : PixelRect{});
+                              scene_.render.background, shadow_rect(plan));
       !s)
     return s;
   timer.lap("surface");
   if (plan.shadow_active) {
     ReductionResult r = reductions_.run(surface_, {scene_.render.weight_exponent,
-                                                   scene_.render.displacement == DisplacementMethod::kWeightedAverage});
+                                                   scene_.render.displacement == DisplacementMethod::kWeightedAverage,
+                                                   options_.footprint_rect});
     timer.lap("reductions");
     bool reduced = false;
     const ReductionResult n = mean_visible_normal(reduced);
@@ -424,6 +425,11 @@ Status Renderer::render_frame() {
     stats_.first_frame_ms = ms_since_creation();
   }
   return ok_status();
+}
+
+PixelRect Renderer::shadow_rect(const FramePlan& plan) const {
+  if (!plan.shadow_active) return {};
+  return options_.footprint_rect ? plan.shadow_rect : PixelRect::whole(scene_.render.width, scene_.render.height);
 }
 
 void Renderer::run_probe_depth(const FramePlan& plan, const BoundingSphere& probe) {

@@ -52,6 +52,11 @@ struct RendererOptions {
   // image) the naive sum is drawn instead and nothing is baked (docs/benchmarks.md, "Time to
   // the first image"). 0 = unknown (the window): bake.
   int expected_frames = 0;
+  // true: the pseudo-shadow variants, the AOV target and the shadow's reductions cover only the
+  // footprint's screen rectangle (FramePlan::shadow_rect), the weighted row sums only the box of
+  // penetrating pixels. false: the whole image and whole rows, as before; the results are the
+  // same bits (tests compare the two).
+  bool footprint_rect = true;
 };
 
 struct FrameStats {
@@ -147,6 +152,7 @@ class Renderer {
   BoundingSphere current_probe_bounds() const;
   ProbeInput probe_input() const;
   void run_probe_depth(const FramePlan& plan, const BoundingSphere& probe);
+  PixelRect shadow_rect(const FramePlan& plan) const;  // the surface pass's (options_.footprint_rect)
   std::vector<SurfaceDraw> surface_draws(const FramePlan& plan);
   void update_reference_plane(const ReductionResult& r);
   // The mean visible normal of this frame's normal target: reduced when the camera changed
