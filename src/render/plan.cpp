@@ -66,7 +66,7 @@ PixelRect footprint_screen_rect(const Camera& camera, int width, int height, con
                                 const DepthWindow& window, int depth_map_size, double height_lo,
                                 double height_hi) {
   const PixelRect image = PixelRect::whole(width, height);
-  if (!(height_lo <= height_hi)) return {};
+  if (!(height_lo <= height_hi) || !std::isfinite(height_lo) || !std::isfinite(height_hi)) return image;
   // The shader reads texels within half a texel outside the window; one texel of margin covers
   // that. Heights get 1e-3 mm + 1e-6 relative for the float vertex positions.
   const double half = window.half_size_mm * (1.0 + 2.0 / std::max(depth_map_size, 2));
@@ -82,6 +82,7 @@ PixelRect footprint_screen_rect(const Camera& camera, int width, int height, con
     // of the corners' projections. 1e-6: w of a corner on the eye plane.
     if (!(clip.w > 1e-6)) return image;
     const double x = (clip.x / clip.w * 0.5 + 0.5) * width, y = (clip.y / clip.w * 0.5 + 0.5) * height;
+    if (!std::isfinite(x) || !std::isfinite(y)) return image;  // a NaN or huge probe: no bound
     x_lo = std::min(x_lo, x), x_hi = std::max(x_hi, x), y_lo = std::min(y_lo, y), y_hi = std::max(y_hi, y);
   }
   // Pixel (i, j) is drawn when its centre (i + 0.5, j + 0.5) is inside a triangle; two pixels of
