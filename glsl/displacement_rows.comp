@@ -17,10 +17,16 @@ layout(std430, binding = 1) writeonly buffer RowBlock {
 };
 
 void main() {
-  int y = int(gl_GlobalInvocationID.x);
-  if (y >= u_size.y) return;
+  // Rows and columns of u_rect only: outside it no pixel is in the shadow.
+  int y = u_rect.y + int(gl_GlobalInvocationID.x);
+  if (y >= u_rect.w) return;
   float max_pen = uintBitsToFloat(max_penetration_bits);
+  // Only the box of the penetrating pixels (found by max_penetration.comp) has non-zero terms;
+  // a zero term leaves a float sum's bits unchanged, so the row sums are those of whole rows.
+  // (u_params.y == 0: whole rows of u_rect, the reference the tests compare this with.)
+  ivec4 box = u_params.y != 0.0 ? penetrating_box : ivec4(u_rect.xy, u_rect.zw - 1);
   vec4 sum = vec4(0.0);
-  for (int x = 0; x < u_size.x; ++x) sum += weighted_displacement(u_aov, u_normal, ivec2(x, y), max_pen);
+  if (y >= box.y && y <= box.w)
+    for (int x = box.x; x <= box.z; ++x) sum += weighted_displacement(u_aov, u_normal, ivec2(x, y), max_pen);
   row_sums[y] = sum;
 }

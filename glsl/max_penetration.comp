@@ -9,11 +9,13 @@ layout(local_size_x = 64) in;
 layout(binding = 0) uniform sampler2D u_aov;  // (intensity, d, texture, resistance)
 
 void main() {
-  int y = int(gl_GlobalInvocationID.x);
-  if (y >= u_size.y) return;
+  // Rows and columns of u_rect only: outside it no pixel is in the shadow.
+  int y = u_rect.y + int(gl_GlobalInvocationID.x);
+  if (y >= u_rect.w) return;
   float pen = 0.0, res = 0.0;
   uint n_pen = 0u, n_cov = 0u;
-  for (int x = 0; x < u_size.x; ++x) {
+  int x_lo = u_rect.z, x_hi = u_rect.x - 1;  // the row's penetrating pixels
+  for (int x = u_rect.x; x < u_rect.z; ++x) {
     vec4 aov = texelFetch(u_aov, ivec2(x, y), 0);
     if (!(aov.x > 0.0)) continue;
     ++n_cov;
@@ -22,6 +24,8 @@ void main() {
       pen = max(pen, -aov.y);
       res = max(res, -aov.y * max(aov.w, 0.0));
       ++n_pen;
+      x_lo = min(x_lo, x);
+      x_hi = x;
     }
   }
   if (n_cov == 0u) return;
@@ -30,4 +34,8 @@ void main() {
   atomicAdd(penetrating_fragments, n_pen);
   atomicMax(max_penetration_bits, floatBitsToUint(pen));
   atomicMax(max_resisted_penetration_bits, floatBitsToUint(res));
+  atomicMin(penetrating_box.x, x_lo);
+  atomicMin(penetrating_box.y, y);
+  atomicMax(penetrating_box.z, x_hi);
+  atomicMax(penetrating_box.w, y);
 }

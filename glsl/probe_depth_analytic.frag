@@ -3,7 +3,13 @@
 // reference plane, the lowest height of the probe above that point (thesis Table 4.2 step 2),
 // by ray-casting along +n. Output R32F; kFar where the ray misses.
 // CPU twin: capsule_lowest_height() in src/reference/probe_geometry.cpp.
+// Variant PS_PROBE_SPHERE=1: a sphere probe (a capsule of length 0), its one end cap alone:
+// the same bits as the capsule code, whose other terms are a miss and the same cap again.
 #include "lib/probe_depth_block.glsl"
+
+#ifndef PS_PROBE_SPHERE
+#define PS_PROBE_SPHERE 0
+#endif
 
 layout(location = 0) out float o_height;
 
@@ -24,6 +30,9 @@ void main() {
   float r = u_cap_a.w;
   float h0 = min(0.0, pb.z) - 2.0 * r - 1.0;
   vec3 ro = vec3(uv - u_cap_a.xy, h0);
+#if PS_PROBE_SPHERE
+  float best = hit_sphere(ro, pa, r);
+#else
   vec3 ba = pb - pa, oa = ro - pa;
   float baba = dot(ba, ba), bard = ba.z, baoa = dot(ba, oa), rdoa = oa.z, oaoa = dot(oa, oa);
   float best = kFar;
@@ -39,5 +48,6 @@ void main() {
     }
   }
   best = min(best, min(hit_sphere(ro, pa, r), hit_sphere(ro, pb, r)));
+#endif
   o_height = best >= kFar ? kFar : u_cap_a.z + h0 + best;
 }

@@ -3,7 +3,8 @@
 
 layout(std140, binding = 0) uniform ReduceBlock {
   ivec4 u_size;     // xy: image size; zw: power-of-two reduction target size
-  vec4 u_params;    // x: weight exponent c (thesis 20)
+  vec4 u_params;    // x: weight exponent c (thesis 20); y: 1 = row sums over the penetrating box only
+  ivec4 u_rect;     // x0, y0, x1, y1 (exclusive): the pixels that can hold a pseudo-shadow
 };
 
 // Maxima as float bits: for non-negative floats the uint order equals the float order, so
@@ -13,4 +14,5 @@ layout(std430, binding = 0) buffer MaxBlock {
   uint max_resisted_penetration_bits;   // max of resistance * (-d)
   uint penetrating_fragments;
   uint covered_fragments;               // fragments inside the pseudo-shadow
+  ivec4 penetrating_box;                // x0, y0, x1, y1 (inclusive) of the penetrating pixels
 };

@@ -37,6 +37,7 @@ struct BenchArgs {
   bool plot_only = false;  // draw the plots from --out-dir's bench.csv; no sweep, no GL
   bool first_image = false;  // time to the first image only (bench_first_image.h)
   int reps = 3;
+  bool shadow_cost = false;  // only the pseudo-shadow's cost over plain shading; prints, writes nothing
 };
 
 void declare(cli::Command& cmd, BenchArgs& a) {
@@ -71,6 +72,9 @@ void declare(cli::Command& cmd, BenchArgs& a) {
                "first_image.md; about 10 minutes on 2 cores)");
   cli::add_int(app, "--reps", "N", a.reps, 1, 99,
                "--first-image: alternating runs per scene and strategy, the median is reported (default 3)");
+  app.add_flag("--shadow-cost", a.shadow_cost,
+               "only measure the pseudo-shadow frame of the default scene against the plain shading of the "
+               "same view (probe out of reach) at 512x512 and 1024x1024, and print the table; writes no files");
   cli::add_quiet_option(app, a.quiet);
 }
 
@@ -119,6 +123,26 @@ Status run(const BenchArgs& a) {
   return ok_status();
 }
 
+// --shadow-cost: one measurement of the full bench, printed (about 20 s).
+Status shadow_cost_only(const BenchArgs& a) {
+  gl::ContextDesc desc;
+  desc.backend = a.backend;
+  auto ctx = gl::create_context(desc);
+  if (!ctx) return ctx.error();
+  bench::BenchOptions o;
+  o.timed_frames = a.frames;
+  std::vector<bench::ShadowCost> costs;
+  for (int size : {512, 1024}) {
+    if (!a.quiet) std::fprintf(stderr, "pseudo-shadow cost at %d^2 ...\n", size);
+    auto c = bench::run_shadow_cost(o, size);
+    if (!c) return c.error();
+    costs.push_back(c.value());
+  }
+  std::printf("| skip check | measured | target |\n| --- | --- | --- |\n%s\n%s",
+              bench::shadow_cost_rows(costs).c_str(), bench::shadow_cost_table(costs).c_str());
+  return ok_status();
+}
+
 // --plot-only: the plots are the whole job here, so a missing gnuplot is an error, not a warning.
 Status plot_only(const BenchArgs& a) {
   const std::string csv = a.out_dir + "/bench.csv";
@@ -155,7 +179,10 @@ Status first_image(const BenchArgs& a) {
 }
 
 int run_and_report(const cli::Command& cmd, const BenchArgs& a) {
-  const Status s = a.plot_only ? plot_only(a) : a.first_image ? first_image(a) : run(a);
+  const Status s = a.plot_only     ? plot_only(a)
+                   : a.first_image ? first_image(a)
+                   : a.shadow_cost ? shadow_cost_only(a)
+                                   : run(a);
   return s ? cli::kExitOk : cmd.fail(s.error());
 }
 

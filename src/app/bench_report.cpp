@@ -64,8 +64,36 @@ std::string summary_markdown(const std::vector<BenchRow>& rows, const SkipRatios
   o << "| untextured (PS_TEXTURED=0) / textured with no Gabor pixel | " << g(skip.untextured) << "x | <= 1.05x |\n";
   o << "| surface pass slope vs textured footprint | " << g(skip.ms_per_kpx_footprint) << " ms per 1000 px | - |\n";
   o << "| surface pass slope vs screen size, fixed footprint | " << g(skip.ms_per_kpx_screen) << " ms per 1000 px | much smaller |\n";
+  o << shadow_cost_rows(skip.shadow_cost);
+  if (!skip.shadow_cost.empty()) o << "\n" << shadow_cost_table(skip.shadow_cost);
   o << "\n| peak RSS of `pseudoshadow render` | 512x512 | 2048x2048 |\n| --- | --- | --- |\n";
   o << "| MiB | " << g(rss.kib_512 / 1024.0) << " | " << g(rss.kib_2048 / 1024.0) << " |\n";
+  return o.str();
+}
+
+std::string shadow_cost_rows(const std::vector<ShadowCost>& costs) {
+  std::ostringstream o;
+  for (const ShadowCost& c : costs)
+    o << "| pseudo-shadow frame / plain shading of the same view (default scene, " << c.size << "x" << c.size
+      << ") | " << g(c.ratio) << "x | <= 1.3x |\n";
+  return o.str();
+}
+
+std::string shadow_cost_table(const std::vector<ShadowCost>& costs) {
+  std::ostringstream o;
+  o << "| default scene | plain frame ms | pseudo-shadow frame ms | ratio |";
+  if (!costs.empty())
+    for (const auto& [pass, ms] : costs.front().shadow_pass_ms) o << " " << pass << " ms |";
+  o << " shadow pixels | ratio of CPU time |\n| --- | --- | --- | --- |";
+  if (!costs.empty())
+    for (size_t i = 0; i < costs.front().shadow_pass_ms.size(); ++i) o << " --- |";
+  o << " --- | --- |\n";
+  for (const ShadowCost& c : costs) {
+    o << "| " << c.size << "x" << c.size << " | " << g(c.plain_frame_ms) << " | " << g(c.shadow_frame_ms) << " | "
+      << g(c.ratio) << "x |";
+    for (const auto& [pass, ms] : c.shadow_pass_ms) o << " " << g(ms) << " |";
+    o << " " << c.shadow_pixels << " | " << g(c.cpu_ratio) << "x |\n";
+  }
   return o.str();
 }
 

@@ -17,6 +17,10 @@ struct RssReport {
 std::string csv_text(const std::vector<BenchRow>& rows);  // bench.csv, header line first
 std::string summary_markdown(const std::vector<BenchRow>& rows, const SkipRatios& skip,
                              const RssReport& rss, int size);
+// The skip-check rows of the pseudo-shadow's cost (one per size) and the table of its passes;
+// part of summary_markdown, and all that `bench --shadow-cost` prints.
+std::string shadow_cost_rows(const std::vector<ShadowCost>& costs);
+std::string shadow_cost_table(const std::vector<ShadowCost>& costs);
 // Runs gnuplot: `dir`/bench.png (one time-vs-error panel per knob group, app/bench_plot.h) and
 // `dir`/bench_ratios.png (the Gabor strategies' speed-ups over the naive sum), with their
 // scripts bench_plot.gp and bench_ratios.gp beside them. An Error says why a plot was not made

@@ -378,6 +378,11 @@ Result<SkipRatios> run_skip_ratios(const BenchOptions& o) {
   if (!u) return u.error();
   out.untextured = u.value();
   if (Status st = slopes(o, out); !st) return st.error();
+  for (int size : {512, 1024}) {
+    auto c = run_shadow_cost(o, size);
+    if (!c) return c.error();
+    out.shadow_cost.push_back(c.value());
+  }
   return out;
 }
 

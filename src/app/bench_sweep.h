@@ -16,6 +16,7 @@
 
 #include <functional>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "core/result.h"
@@ -59,11 +60,24 @@ Result<Measurement> measure(const Scene& scene, const BenchOptions& o);
 // strategy, displacement method); Pareto flags set per group.
 Result<std::vector<BenchRow>> run_sweep(const BenchOptions& o);
 
+// The pseudo-shadow frame of the default scene against the plain shading of the same view
+// (probe out of reach), at size^2 (app/bench_shadow_cost.cpp). Target: ratio <= 1.3.
+struct ShadowCost {
+  int size = 0;
+  double shadow_frame_ms = 0.0, plain_frame_ms = 0.0, ratio = 0.0;  // medians; ratio of them
+  double cpu_ratio = 0.0;  // the same for the process's CPU time per frame (all threads)
+  std::vector<std::pair<std::string, double>> shadow_pass_ms;  // probe_depth, surface, reductions
+  double plain_surface_ms = 0.0;
+  unsigned shadow_pixels = 0;  // pixels inside the pseudo-shadow
+};
+Result<ShadowCost> run_shadow_cost(const BenchOptions& o, int size);
+
 struct SkipRatios {
   double beyond_influence = 0.0;  // frame with probe far / its plain shading (surface) pass
   double untextured = 0.0;        // PS_TEXTURED=0 frame / textured frame with no textured pixel
   double ms_per_kpx_footprint = 0.0;  // surface-pass slope vs textured footprint pixels
   double ms_per_kpx_screen = 0.0;     // surface-pass slope vs screen pixels, fixed footprint
+  std::vector<ShadowCost> shadow_cost;  // at 512^2 and 1024^2
 };
 Result<SkipRatios> run_skip_ratios(const BenchOptions& o);
 

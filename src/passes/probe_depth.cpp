@@ -15,9 +15,13 @@ Status ProbeDepthPass::init(const std::string& glsl_root, const Params& params) 
   params_ = params;
   auto analytic = gl::build_program({{"probe_depth_analytic.vert", "probe_depth_analytic.frag"}, {}}, glsl_root);
   if (!analytic) return analytic.error();
+  auto sphere = gl::build_program({{"probe_depth_analytic.vert", "probe_depth_analytic.frag"}, {{"PS_PROBE_SPHERE", "1"}}},
+                                  glsl_root);
+  if (!sphere) return sphere.error();
   auto mesh = gl::build_program({{"probe_depth_mesh.vert", "probe_depth_mesh.frag"}, {}}, glsl_root);
   if (!mesh) return mesh.error();
   analytic_ = std::move(analytic.value());
+  sphere_ = std::move(sphere.value());
   mesh_ = std::move(mesh.value());
   depth_ = gl::make_texture_2d(params.size, params.size, GL_R32F);
   glTextureParameteri(depth_.id(), GL_TEXTURE_MIN_FILTER, GL_NEAREST);
@@ -60,14 +64,16 @@ void ProbeDepthPass::run(const Inputs& in) {
   const float far_height[4] = {kFar, 0.0f, 0.0f, 0.0f};
   const float one = 1.0f;
   glClearNamedFramebufferfv(fbo_.id(), GL_COLOR, 0, far_height);
-  glClearNamedFramebufferfv(fbo_.id(), GL_DEPTH, 0, &one);
   glBindBufferBase(GL_UNIFORM_BUFFER, 0, ubo_.id());
-  if (!in.probe.mesh) {
+  if (!in.probe.mesh) {  // analytic: no depth test, so no depth clear
     glDisable(GL_DEPTH_TEST);
-    glUseProgram(analytic_.id());
+    // A capsule of length 0 is a sphere: its variant skips the cylinder and the second cap.
+    const CapsuleShape& c = in.probe.capsule;
+    glUseProgram(c.a == c.b ? sphere_.id() : analytic_.id());
     glBindVertexArray(empty_vao_.id());
     glDrawArrays(GL_TRIANGLES, 0, 3);
   } else {
+    glClearNamedFramebufferfv(fbo_.id(), GL_DEPTH, 0, &one);
     glEnable(GL_DEPTH_TEST);
     glDepthFunc(GL_LESS);
     glUseProgram(mesh_.id());

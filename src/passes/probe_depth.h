@@ -3,7 +3,8 @@
 //   inputs : probe (sphere/capsule analytically, or a GpuMesh), reference frame, window
 //   output : depth()  R32F size x size, the probe's lowest height h = dot(x, n) above each
 //            texel centre, 1e30 where the probe does not cover the texel.
-// Shaders: glsl/probe_depth_analytic.{vert,frag}, glsl/probe_depth_mesh.{vert,frag}.
+// Shaders: glsl/probe_depth_analytic.{vert,frag} (variant PS_PROBE_SPHERE for spheres),
+// glsl/probe_depth_mesh.{vert,frag}.
 #pragma once
 
 #include <string>
@@ -53,7 +54,7 @@ struct ProbeDepthPass {
 
  private:
   Params params_;
-  gl::Program analytic_, mesh_;
+  gl::Program analytic_, sphere_, mesh_;  // sphere_: analytic, PS_PROBE_SPHERE=1
   gl::Texture depth_;
   gl::Renderbuffer depth_buffer_;
   gl::Framebuffer fbo_;

@@ -33,18 +33,22 @@ Status ReductionsPass::init(const std::string& glsl_root, const SurfacePass& sur
   return ok_status();
 }
 
-ReductionResult ReductionsPass::run(const SurfacePass& surface, const Params& params, bool shadow) {
+ReductionResult ReductionsPass::mean_normal(const SurfacePass& surface) {
   ReductionResult r;
-  const int levels = surface.mip_levels();
   glGenerateTextureMipmap(surface.normal().id());
-  const glm::dvec4 n = read_top_level(surface.normal(), levels);
+  const glm::dvec4 n = read_top_level(surface.normal(), surface.mip_levels());
   r.normal_sum = glm::dvec3(n);
   r.normal_coverage = n.w;
-  if (!shadow) return r;
+  return r;
+}
 
+ReductionResult ReductionsPass::run(const SurfacePass& surface, const Params& params) {
+  ReductionResult r;
   const glm::ivec2 p = surface.padded_size();
+  const PixelRect& rect = surface.shadow_rect();
   const ReduceBlock block{{surface.width(), surface.height(), p.x, p.y},
-                          {static_cast<float>(params.weight_exponent), 0, 0, 0}};
+                          {static_cast<float>(params.weight_exponent), params.penetrating_box ? 1.0f : 0.0f, 0, 0},
+                          {rect.x0, rect.y0, rect.x1, rect.y1}};
   glNamedBufferSubData(ubo_.id(), 0, sizeof(block), &block);
   const MaxBlock zero{};
   glNamedBufferSubData(ssbo_.id(), 0, sizeof(zero), &zero);
@@ -53,17 +57,25 @@ ReductionResult ReductionsPass::run(const SurfacePass& surface, const Params& pa
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 1, rows_ssbo_.id());
   glBindTextureUnit(0, surface.aov().id());
   glBindTextureUnit(1, surface.normal().id());
-  const auto groups = static_cast<GLuint>((surface.height() + 63) / 64);  // one invocation per row
+  // One invocation per row of the rectangle (none when it is empty).
+  const auto groups = static_cast<GLuint>((rect.height() + 63) / 64);
 
-  glUseProgram(max_.id());
-  glDispatchCompute(groups, 1, 1);
-  glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_BUFFER_UPDATE_BARRIER_BIT);
-  glUseProgram(rows_.id());
-  glDispatchCompute(groups, 1, 1);
-  glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_BUFFER_UPDATE_BARRIER_BIT);
+  if (groups > 0) {
+    glUseProgram(max_.id());
+    glDispatchCompute(groups, 1, 1);
+    glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_BUFFER_UPDATE_BARRIER_BIT);
+    if (params.weighted) {
+      glUseProgram(rows_.id());
+      glDispatchCompute(groups, 1, 1);
+      glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_BUFFER_UPDATE_BARRIER_BIT);
+    }
+  }
 
-  std::vector<glm::vec4> rows(static_cast<size_t>(std::min(surface.height(), rows_capacity_)));
-  glGetNamedBufferSubData(rows_ssbo_.id(), 0, static_cast<GLsizeiptr>(rows.size() * sizeof(glm::vec4)), rows.data());
+  // Rows y0 .. y1 - 1 of the row sums (the others were not written this frame).
+  std::vector<glm::vec4> rows(params.weighted ? static_cast<size_t>(std::max(0, std::min(rect.y1, rows_capacity_) - rect.y0)) : 0);
+  if (!rows.empty())
+    glGetNamedBufferSubData(rows_ssbo_.id(), static_cast<GLintptr>(rect.y0) * sizeof(glm::vec4),
+                            static_cast<GLsizeiptr>(rows.size() * sizeof(glm::vec4)), rows.data());
   glm::dvec4 d(0.0);
   for (const glm::vec4& row : rows) d += glm::dvec4(row);
   if (d.w > 0.0) r.weighted_displacement = glm::dvec3(d) / d.w;
@@ -95,10 +107,18 @@ Result<gl::Texture> ReductionsPass::displacement_aov(const SurfacePass& surface)
   glDisable(GL_BLEND);
   const float clear[4] = {0, 0, 0, 0};
   glClearNamedFramebufferfv(fbo.id(), GL_COLOR, 0, clear);
-  glUseProgram(weights_.id());
-  glBindVertexArray(empty_vao_.id());
-  glDrawArrays(GL_TRIANGLES, 0, 3);
-  glBindVertexArray(0);
+  // Only the shadow's rectangle: the surface pass wrote its AOV there only (elsewhere the
+  // weights are zero, as cleared).
+  const PixelRect& rect = surface.shadow_rect();
+  if (!rect.empty()) {
+    glEnable(GL_SCISSOR_TEST);
+    glScissor(rect.x0, rect.y0, rect.width(), rect.height());
+    glUseProgram(weights_.id());
+    glBindVertexArray(empty_vao_.id());
+    glDrawArrays(GL_TRIANGLES, 0, 3);
+    glBindVertexArray(0);
+    glDisable(GL_SCISSOR_TEST);
+  }
   glBindFramebuffer(GL_FRAMEBUFFER, 0);
   return tex;
 }

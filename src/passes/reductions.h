@@ -2,6 +2,9 @@
 //   - reference normal: mean of the visible normals = top mip of the normal target (xyz / w);
 //   - exact maximum penetration (compute, glsl/max_penetration.comp): max of -d, and of
 //     resistance * -d, over every pseudo-shadow fragment;
+//   - both compute passes read only the surface pass's shadow_rect(): outside it every pixel
+//     is (0, NaN, 0, 0) and adds exactly nothing (a zero term leaves a float sum's bits as they
+//     are), so the results are those of the whole image, bit for bit;
 //   - weighted-average displacement (thesis §4.5.4, compute, glsl/displacement_rows.comp): per
 //     image row (sum w * disp, sum w), added here in double: sum(w * disp) / sum(w);
 //   - the `displacement` AOV, on request (displacement_aov): the same per-pixel (w * disp, w)
@@ -24,9 +27,10 @@ namespace ps {
 // std140 mirror of ReduceBlock in glsl/lib/reduce_block.glsl.
 struct ReduceBlock {
   glm::ivec4 size;    // image w, h; padded w, h
-  glm::vec4 params;   // x: weight exponent c
+  glm::vec4 params;   // x: weight exponent c; y: 1 = row sums over the penetrating box only
+  glm::ivec4 rect;    // x0, y0, x1, y1: the surface pass's shadow_rect(), the pixels reduced
 };
-static_assert(sizeof(ReduceBlock) == 32, "ReduceBlock must match std140 layout");
+static_assert(sizeof(ReduceBlock) == 48, "ReduceBlock must match std140 layout");
 
 // std430 mirror of MaxBlock.
 struct MaxBlock {
@@ -34,7 +38,9 @@ struct MaxBlock {
   std::uint32_t max_resisted_penetration_bits = 0;
   std::uint32_t penetrating_fragments = 0;
   std::uint32_t covered_fragments = 0;
+  glm::ivec4 penetrating_box{1 << 30, 1 << 30, -1, -1};  // inclusive; empty as initialised
 };
+static_assert(sizeof(MaxBlock) == 32, "MaxBlock must match std430 layout");
 
 struct ReductionResult {
   glm::dvec3 normal_sum{0.0};     // mean normal * coverage (not normalised)
@@ -44,16 +50,26 @@ struct ReductionResult {
   double max_resisted_penetration_mm = 0.0;
   std::uint32_t penetrating_fragments = 0;
   std::uint32_t covered_fragments = 0;
+  glm::ivec4 penetrating_box{1 << 30, 1 << 30, -1, -1};  // inclusive; empty as initialised
 };
+static_assert(sizeof(MaxBlock) == 32, "MaxBlock must match std430 layout");
 
 struct ReductionsPass {
   struct Params {
     double weight_exponent = 20.0;  // c
+    bool weighted = true;           // false: no weighted displacement (exact-max frames)
+    // Sum the rows over the box of penetrating pixels only (the same bits: the other terms are
+    // zero). false: whole rows of the shadow rectangle, the reference the tests compare with.
+    bool penetrating_box = true;
   };
 
   Status init(const std::string& glsl_root, const SurfacePass& surface);
-  // Normal mean only (shadow == false), or everything.
-  ReductionResult run(const SurfacePass& surface, const Params& params, bool shadow);
+  // The mean visible normal: generates the normal target's mip chain and reads its top level.
+  // Fills normal_sum and normal_coverage only.
+  ReductionResult mean_normal(const SurfacePass& surface);
+  // The pseudo-shadow's reductions over surface.shadow_rect(): maximum penetration, weighted
+  // displacement, fragment counts (normal_sum and normal_coverage stay zero).
+  ReductionResult run(const SurfacePass& surface, const Params& params);
   // (w * disp, w) per pixel of the last run() with shadow (RGBA32F, the surface's padded size,
   // zero outside the shadow), drawn now; the surface pass's targets must still hold that frame.
   Result<gl::Texture> displacement_aov(const SurfacePass& surface) const;

@@ -62,7 +62,11 @@ Status SurfacePass::init(const std::string& glsl_root, const Params& params) {
   glNamedFramebufferDrawBuffers(fbo_.id(), 3, buffers);
   if (glCheckNamedFramebufferStatus(fbo_.id(), GL_FRAMEBUFFER) != GL_FRAMEBUFFER_COMPLETE)
     return make_error("surface pass: MRT framebuffer incomplete (RGBA8 + 2x RGBA32F + D32F)");
-  ubo_ = gl::make_buffer(sizeof(SurfaceBlock), nullptr, GL_DYNAMIC_STORAGE_BIT);
+  GLint align = 256;
+  glGetIntegerv(GL_UNIFORM_BUFFER_OFFSET_ALIGNMENT, &align);
+  ubo_stride_ = static_cast<GLint>((sizeof(SurfaceBlock) + align - 1) / align * align);
+  ubo_capacity_ = 1;
+  ubo_ = gl::make_buffer(ubo_stride_, nullptr, GL_DYNAMIC_STORAGE_BIT);
   auto warm = program(true, true);  // compile the common variant up front: errors surface early
   if (!warm) return warm.error();
   return ok_status();
@@ -85,7 +89,9 @@ Result<const gl::Program*> SurfacePass::program(bool shadow, bool textured, bool
 }
 
 Status SurfacePass::run(const std::vector<SurfaceDraw>& draws, const gl::Texture* probe_depth,
-                        const glm::dvec3& background) {
+                        const glm::dvec3& background, const PixelRect& shadow_rect) {
+  const PixelRect image = PixelRect::whole(params_.width, params_.height);
+  shadow_rect_ = shadow_rect.clipped_to(image);
   glBindFramebuffer(GL_FRAMEBUFFER, fbo_.id());
   glViewport(0, 0, params_.width, params_.height);
   glDisable(GL_SCISSOR_TEST);
@@ -96,20 +102,58 @@ Status SurfacePass::run(const std::vector<SurfaceDraw>& draws, const gl::Texture
   glDepthMask(GL_TRUE);
   const glm::vec4 bg(glm::dvec4(background, 1.0));
   const float zero[4] = {0, 0, 0, 0}, aov_clear[4] = {0, kNoProbeDistance, 0, 0}, one = 1.0f;
+  // The draw buffers stay as init() set them: a change would make llvmpipe rasterise what is
+  // queued so far (a flush). The AOV is switched off by its colour mask instead.
+  glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
   glClearNamedFramebufferfv(fbo_.id(), GL_COLOR, 0, &bg.x);
   glClearNamedFramebufferfv(fbo_.id(), GL_COLOR, 1, zero);
-  glClearNamedFramebufferfv(fbo_.id(), GL_COLOR, 2, aov_clear);
   glClearNamedFramebufferfv(fbo_.id(), GL_DEPTH, 0, &one);
-  glBindBufferBase(GL_UNIFORM_BUFFER, 0, ubo_.id());
+
+  // Every block once, before any draw: updating one block between draws would make llvmpipe
+  // finish the queued draws first.
+  if (static_cast<int>(draws.size()) > ubo_capacity_) {
+    ubo_capacity_ = static_cast<int>(draws.size());
+    ubo_ = gl::make_buffer(static_cast<GLsizeiptr>(ubo_capacity_) * ubo_stride_, nullptr, GL_DYNAMIC_STORAGE_BIT);
+  }
+  for (size_t i = 0; i < draws.size(); ++i)
+    glNamedBufferSubData(ubo_.id(), static_cast<GLintptr>(i) * ubo_stride_, sizeof(SurfaceBlock), &draws[i].block);
   glBindTextureUnit(0, probe_depth ? probe_depth->id() : dummy_.id());
-  for (const SurfaceDraw& d : draws) {
-    auto prog = program(d.shadow, d.textured, d.stratified,
-                        d.gabor_tile ? (d.gabor_tile_linear ? 2 : 1) : 0);
+
+  // The footprint's rectangle: own variants, AOV cleared and written there only.
+  glEnable(GL_SCISSOR_TEST);
+  if (!shadow_rect_.empty()) {
+    glScissor(shadow_rect_.x0, shadow_rect_.y0, shadow_rect_.width(), shadow_rect_.height());
+    glClearNamedFramebufferfv(fbo_.id(), GL_COLOR, 2, aov_clear);
+    if (Status s = draw_all(draws, true); !s) return s;
+  }
+  // The rest of the image in bands around it (all of it when the rectangle is empty): plain
+  // shading, no AOV.
+  glColorMaski(2, GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
+  const PixelRect& r = shadow_rect_;
+  const PixelRect bands[4] = {{0, 0, image.x1, r.empty() ? image.y1 : r.y0},
+                              {0, r.y1, image.x1, image.y1},
+                              {0, r.y0, r.x0, r.y1},
+                              {r.x1, r.y0, image.x1, r.y1}};
+  for (const PixelRect& band : bands) {
+    if (band.empty()) continue;
+    glScissor(band.x0, band.y0, band.width(), band.height());
+    if (Status s = draw_all(draws, false); !s) return s;
+  }
+  glColorMaski(2, GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+  glDisable(GL_SCISSOR_TEST);
+  return ok_status();
+}
+
+Status SurfacePass::draw_all(const std::vector<SurfaceDraw>& draws, bool shadow) {
+  for (size_t i = 0; i < draws.size(); ++i) {
+    const SurfaceDraw& d = draws[i];
+    const bool own = shadow && d.shadow;
+    auto prog = program(own, d.textured, d.stratified, d.gabor_tile ? (d.gabor_tile_linear ? 2 : 1) : 0);
     if (!prog) return prog.error();
     glUseProgram(prog.value()->id());
     glBindTextureUnit(1, d.albedo ? d.albedo->id() : dummy_.id());
     glBindTextureUnit(2, d.gabor_tile ? d.gabor_tile->id() : dummy_.id());
-    glNamedBufferSubData(ubo_.id(), 0, sizeof(SurfaceBlock), &d.block);
+    glBindBufferRange(GL_UNIFORM_BUFFER, 0, ubo_.id(), static_cast<GLintptr>(i) * ubo_stride_, sizeof(SurfaceBlock));
     d.mesh->draw();
   }
   return ok_status();

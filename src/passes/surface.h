@@ -5,9 +5,11 @@
 //            darken the colour target only)
 //   outputs: color()  RGBA8    lit surface with the pseudo-shadow (gamma-encoded)
 //            normal() RGBA32F  (front-facing normal, 1) per covered pixel, full mip chain
-//            aov()    RGBA32F  (intensity, distance d mm, texture in sigmas, resistance);
-//                              cleared to (0, NaN, 0, 0); d is NaN wherever no probe is above
-//                              the pixel (kNoProbeDistance)
+//            aov()    RGBA32F  (intensity, distance d mm, texture in sigmas, resistance),
+//                              written inside shadow_rect() only (cleared there to
+//                              (0, NaN, 0, 0)); outside it the texture holds stale values and
+//                              the AOV is (0, NaN, 0, 0) by definition: d is NaN wherever no
+//                              probe is above the pixel (kNoProbeDistance)
 //   All targets are allocated at the next power of two of the image size (mipmap averages are
 //   exact only for power-of-two RGBA32F on llvmpipe, docs/gl-stack.md); the viewport covers the
 //   image, the padding stays cleared and drops out of every ratio computed from the mips.
@@ -29,6 +31,7 @@
 #include "gl/objects.h"
 #include "passes/gabor_block.h"
 #include "passes/gpu_mesh.h"
+#include "passes/pixel_rect.h"
 #include "reference/basis.h"
 #include "reference/body_shadow.h"
 #include "reference/gabor.h"
@@ -90,8 +93,14 @@ struct SurfacePass {
   };
 
   Status init(const std::string& glsl_root, const Params& params);
+  // `shadow_rect` (FramePlan::shadow_rect): the pixels that can show the pseudo-shadow. Only
+  // there do shadowed draws run their PS_SHADOW variant and is the AOV target written; every
+  // other pixel gets the PS_SHADOW=0 variant, whose colour and normal are the same bytes where
+  // the footprint is absent (intensity 0 composites as rgb * 1).
   Status run(const std::vector<SurfaceDraw>& draws, const gl::Texture* probe_depth,
-             const glm::dvec3& background);
+             const glm::dvec3& background, const PixelRect& shadow_rect);
+  // The last run()'s shadow_rect, clipped to the image: where aov() is valid.
+  const PixelRect& shadow_rect() const { return shadow_rect_; }
 
   const gl::Texture& color() const { return color_; }
   const gl::Texture& normal() const { return normal_; }
@@ -111,11 +120,18 @@ struct SurfacePass {
   Params params_;
   glm::ivec2 padded_{1, 1};
   int levels_ = 1;
+  // Draws every surface (inside the caller's scissor box); shadow == false draws all of them
+  // with their PS_SHADOW=0 variant.
+  Status draw_all(const std::vector<SurfaceDraw>& draws, bool shadow);
+
   std::map<std::tuple<bool, bool, bool, int>, gl::Program> programs_;
   gl::Texture color_, normal_, aov_, dummy_;
   gl::Renderbuffer depth_;
   gl::Framebuffer fbo_;
-  gl::Buffer ubo_;
+  gl::Buffer ubo_;        // one SurfaceBlock per draw, ubo_stride_ bytes apart
+  int ubo_capacity_ = 0;   // blocks
+  GLint ubo_stride_ = 0;
+  PixelRect shadow_rect_;
 };
 
 int next_pow2(int v);

@@ -4,6 +4,8 @@
 #include <cmath>
 #include <sstream>
 
+#include "render/camera.h"
+
 namespace ps {
 
 double distance_sphere_aabb(const BoundingSphere& s, const Aabb& box) {
@@ -41,6 +43,23 @@ bool sunk_below(const BoundingSphere& probe, const Aabb& box, const PlaneFrame& 
   return std::hypot(du, dv) < probe.radius + reach;
 }
 
+// The range of heights along f.n of the shadowed surfaces' boxes (their corners bound it).
+void shadowed_height_range(const std::vector<Aabb>& bounds, const std::vector<bool>& shadowed,
+                           const PlaneFrame& f, double& lo, double& hi) {
+  lo = 1e300;
+  hi = -1e300;
+  for (size_t i = 0; i < bounds.size(); ++i) {
+    if (!shadowed[i]) continue;
+    for (int k = 0; k < 8; ++k) {
+      const glm::dvec3 corner((k & 1) ? bounds[i].max.x : bounds[i].min.x, (k & 2) ? bounds[i].max.y : bounds[i].min.y,
+                              (k & 4) ? bounds[i].max.z : bounds[i].min.z);
+      const double h = glm::dot(corner, f.n);
+      lo = std::min(lo, h);
+      hi = std::max(hi, h);
+    }
+  }
+}
+
 }  // namespace
 
 std::vector<SphereCaster> bodies_in_reach(std::span<const SphereCaster> bodies, const Aabb& bounds,
@@ -53,6 +72,36 @@ std::vector<SphereCaster> bodies_in_reach(std::span<const SphereCaster> bodies, 
     if (finite && distance_sphere_aabb({b.centre, b.radius_mm}, bounds) < influence_mm) out.push_back(b);
   }
   return out;
+}
+
+PixelRect footprint_screen_rect(const Camera& camera, int width, int height, const PlaneFrame& f,
+                                const DepthWindow& window, int depth_map_size, double height_lo,
+                                double height_hi) {
+  const PixelRect image = PixelRect::whole(width, height);
+  if (!(height_lo <= height_hi) || !std::isfinite(height_lo) || !std::isfinite(height_hi)) return image;
+  // The shader reads texels within half a texel outside the window; one texel of margin covers
+  // that. Heights get 1e-3 mm + 1e-6 relative for the float vertex positions.
+  const double half = window.half_size_mm * (1.0 + 2.0 / std::max(depth_map_size, 2));
+  const double pad = 1e-3 + 1e-6 * std::max(std::abs(height_lo), std::abs(height_hi));
+  const glm::dmat4 vp = view_projection(camera, static_cast<double>(width) / height);
+  double x_lo = 1e300, x_hi = -1e300, y_lo = 1e300, y_hi = -1e300;
+  for (int k = 0; k < 8; ++k) {
+    const double u = window.center_uv.x + ((k & 1) ? half : -half);
+    const double v = window.center_uv.y + ((k & 2) ? half : -half);
+    const double h = (k & 4) ? height_hi + pad : height_lo - pad;
+    const glm::dvec4 clip = vp * glm::dvec4(u * f.t + v * f.b + h * f.n, 1.0);
+    // w is linear: all corners in front means the whole box is, and its projection is the hull
+    // of the corners' projections. 1e-6: w of a corner on the eye plane.
+    if (!(clip.w > 1e-6)) return image;
+    const double x = (clip.x / clip.w * 0.5 + 0.5) * width, y = (clip.y / clip.w * 0.5 + 0.5) * height;
+    if (!std::isfinite(x) || !std::isfinite(y)) return image;  // a NaN or huge probe: no bound
+    x_lo = std::min(x_lo, x), x_hi = std::max(x_hi, x), y_lo = std::min(y_lo, y), y_hi = std::max(y_hi, y);
+  }
+  // Pixel (i, j) is drawn when its centre (i + 0.5, j + 0.5) is inside a triangle; two pixels of
+  // margin. Clamped first: a corner near the eye plane projects to huge coordinates.
+  const auto lo_px = [](double c, int n) { return static_cast<int>(std::floor(std::clamp(c, -4.0, n + 4.0))) - 2; };
+  const auto hi_px = [](double c, int n) { return static_cast<int>(std::ceil(std::clamp(c, -4.0, n + 4.0))) + 2; };
+  return PixelRect{lo_px(x_lo, width), lo_px(y_lo, height), hi_px(x_hi, width), hi_px(y_hi, height)}.clipped_to(image);
 }
 
 FramePlan make_plan(const Scene& scene, const std::vector<Aabb>& bounds,
@@ -84,6 +133,12 @@ FramePlan make_plan(const Scene& scene, const std::vector<Aabb>& bounds,
   plan.window.center_uv = {c.x, c.y};
   // One texel of margin so the silhouette's edge texels are inside the map.
   plan.window.half_size_mm = probe.radius * (1.0 + 2.0 / std::max(depth_map_size, 2)) + 1e-6;
+  if (plan.shadow_active) {
+    double lo = 0.0, hi = 0.0;
+    shadowed_height_range(bounds, plan.surface_shadow, frame, lo, hi);
+    plan.shadow_rect = footprint_screen_rect(scene.camera, scene.render.width, scene.render.height, frame,
+                                             plan.window, depth_map_size, lo, hi);
+  }
   return plan;
 }
 

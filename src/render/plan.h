@@ -5,7 +5,10 @@
 //   - untextured materials (textured = false or zero amplitude) use PS_TEXTURED=0;
 //   - inside a shadowed surface the Gabor sum runs only on fragments inside the probe's
 //     footprint and onset distance (a branch in glsl/surface.frag), so its cost follows the
-//     footprint's pixel count rather than the screen size.
+//     footprint's pixel count rather than the screen size;
+//   - outside the footprint's screen-space bound (shadow_rect) the surface pass draws the plain
+//     variant and writes no AOV, and the reductions read nothing there: every pixel outside it
+//     holds the "no probe" values, which carry no information.
 #pragma once
 
 #include <span>
@@ -14,6 +17,7 @@
 
 #include <glm/glm.hpp>
 
+#include "passes/pixel_rect.h"
 #include "passes/probe_depth.h"
 #include "reference/basis.h"
 #include "reference/body_shadow.h"
@@ -32,6 +36,10 @@ struct FramePlan {
   std::vector<bool> surface_textured;   // per surface: PS_TEXTURED
   std::vector<double> surface_distance_mm;  // probe bounds to surface bounds
   DepthWindow window;
+  // The pixels (image size, GL window coordinates) that can show a shadowed surface inside the
+  // depth-map window: the only ones whose intensity, distance and texture can differ from the
+  // "no probe" values (0, NaN, 0). Empty when shadow_active is false.
+  PixelRect shadow_rect;
   std::vector<std::string> skipped;     // human-readable, for --stats
 };
 
@@ -43,6 +51,15 @@ double distance_sphere_aabb(const BoundingSphere& s, const Aabb& box);
 // left out. The rest cost the surface nothing.
 std::vector<SphereCaster> bodies_in_reach(std::span<const SphereCaster> bodies, const Aabb& bounds,
                                           double influence_mm);
+// A conservative screen-space bound of the points whose plane coordinates lie inside `window`
+// (widened by one texel of a `depth_map_size` map) and whose height along frame.n lies in
+// [height_lo, height_hi]: the bounding rectangle of that box's eight corners in pixels, plus
+// two pixels of margin (float rounding of the shader's world positions), clipped to the
+// image. The whole image when a corner is not in front of a perspective camera (the box's
+// projection is then unbounded).
+PixelRect footprint_screen_rect(const Camera& camera, int width, int height, const PlaneFrame& frame,
+                                const DepthWindow& window, int depth_map_size, double height_lo,
+                                double height_hi);
 
 // `depth_map_size` sets the margin: the window is the probe's bounding disc plus one texel.
 FramePlan make_plan(const Scene& scene, const std::vector<Aabb>& surface_bounds,

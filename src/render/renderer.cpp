@@ -299,8 +299,9 @@ Status Renderer::prime_reference_plane() {
                              scene_.render.depth_map_size);
   plan.surface_shadow.assign(plan.surface_shadow.size(), false);
   plan.surface_textured.assign(plan.surface_textured.size(), false);
-  if (Status s = surface_.run(surface_draws(plan), nullptr, scene_.render.background); !s) return s;
-  update_reference_plane(reductions_.run(surface_, {scene_.render.weight_exponent}, false));
+  if (Status s = surface_.run(surface_draws(plan), nullptr, scene_.render.background, PixelRect{}); !s) return s;
+  bool reduced = false;
+  update_reference_plane(mean_visible_normal(reduced));
   return ok_status();
 }
 
@@ -364,6 +365,20 @@ std::vector<SurfaceDraw> Renderer::surface_draws(const FramePlan& plan) {
   return draws;
 }
 
+namespace {
+bool same_camera(const Camera& a, const Camera& b) {
+  return a.projection == b.projection && a.position == b.position && a.target == b.target && a.up == b.up &&
+         a.fov_y_deg == b.fov_y_deg && a.ortho_height_mm == b.ortho_height_mm && a.near_mm == b.near_mm &&
+         a.far_mm == b.far_mm;
+}
+}  // namespace
+
+ReductionResult Renderer::mean_visible_normal(bool& reduced) {
+  reduced = !normal_mean_.valid || !same_camera(normal_mean_.camera, scene_.camera);
+  if (reduced) normal_mean_ = {true, scene_.camera, reductions_.mean_normal(surface_)};
+  return normal_mean_.result;
+}
+
 // Mean of the visible normals becomes the next frame's reference normal (thesis §4.5.2).
 // A mean of (nearly) zero length - a sheet seen edge-on, a sphere seen from inside - has no
 // direction: keep the previous plane rather than normalising noise.
@@ -408,12 +423,20 @@ Status Renderer::render_frame() {
     timer.lap("probe_depth");
   }
   if (Status s = surface_.run(surface_draws(plan), plan.shadow_active ? &probe_depth_.depth() : nullptr,
-                              scene_.render.background); !s)
+                              scene_.render.background, shadow_rect(plan));
+      !s)
     return s;
   timer.lap("surface");
   if (plan.shadow_active) {
-    const ReductionResult r = reductions_.run(surface_, {scene_.render.weight_exponent}, true);
+    ReductionResult r = reductions_.run(surface_, {scene_.render.weight_exponent,
+                                                   scene_.render.displacement == DisplacementMethod::kWeightedAverage,
+                                                   options_.footprint_rect});
     timer.lap("reductions");
+    bool reduced = false;
+    const ReductionResult n = mean_visible_normal(reduced);
+    if (reduced) timer.lap("reference_normal");
+    r.normal_sum = n.normal_sum;
+    r.normal_coverage = n.normal_coverage;
     apply_reductions(r, plan);
   } else {
     apply_reductions(ReductionResult{}, plan);  // zero sum: plane kept, no displacement
@@ -432,6 +455,11 @@ Status Renderer::render_frame() {
     stats_.first_frame_ms = ms_since_creation();
   }
   return ok_status();
+}
+
+PixelRect Renderer::shadow_rect(const FramePlan& plan) const {
+  if (!plan.shadow_active) return {};
+  return options_.footprint_rect ? plan.shadow_rect : PixelRect::whole(scene_.render.width, scene_.render.height);
 }
 
 void Renderer::run_probe_depth(const FramePlan& plan, const BoundingSphere& probe) {
@@ -541,6 +569,18 @@ Image read_region(const gl::Texture& tex, int w, int h, int channels_out, GLenum
   return img;
 }
 
+// The surface pass writes its AOV target inside the footprint's rectangle only (the texture
+// keeps older frames' values elsewhere): outside it every pixel is (0, NaN, 0, 0), the values
+// that say "no probe above this pixel" (passes/surface.h). `rect`: GL window coordinates.
+Image no_probe_outside(Image img, const PixelRect& rect) {
+  const float none[4] = {0.0f, kNoProbeDistance, 0.0f, 0.0f};
+  for (int y = 0; y < img.height; ++y)
+    for (int x = 0; x < img.width; ++x)
+      if (!rect.contains(x, img.height - 1 - y))  // img is top row first
+        for (int c = 0; c < img.channels; ++c) img.at(x, y, c) = none[c];
+  return img;
+}
+
 Image pick_channel(const Image& src, int channel) {
   Image out;
   out.width = src.width;
@@ -564,7 +604,9 @@ Result<Image> Renderer::read_aov(Aov aov) const {
   const int w = scene_.render.width, h = scene_.render.height;
   switch (e.source) {
     case AovSource::kSurfaceAov:
-      return pick_channel(read_region(surface_.aov(), w, h, 4, GL_RGBA, GL_FLOAT), e.channel);
+      return pick_channel(no_probe_outside(read_region(surface_.aov(), w, h, 4, GL_RGBA, GL_FLOAT),
+                                           surface_.shadow_rect()),
+                          e.channel);
     case AovSource::kNormal:
       return read_region(surface_.normal(), w, h, 3, GL_RGBA, GL_FLOAT);
     case AovSource::kDisplacement: {

@@ -56,6 +56,11 @@ struct RendererOptions {
   // Picture buttons get their pictures (render/button_pictures.h) before anything is built;
   // false for the pictures' own renders.
   bool button_pictures = true;
+  // true: the pseudo-shadow variants, the AOV target and the shadow's reductions cover only the
+  // footprint's screen rectangle (FramePlan::shadow_rect), the weighted row sums only the box of
+  // penetrating pixels. false: the whole image and whole rows, as before; the results are the
+  // same bits (tests compare the two).
+  bool footprint_rect = true;
 };
 
 struct FrameStats {
@@ -156,9 +161,14 @@ class Renderer {
   BoundingSphere current_probe_bounds() const;
   ProbeInput probe_input() const;
   void run_probe_depth(const FramePlan& plan, const BoundingSphere& probe);
+  PixelRect shadow_rect(const FramePlan& plan) const;  // the surface pass's (options_.footprint_rect)
   std::vector<SurfaceDraw> surface_draws(const FramePlan& plan);
   std::vector<SphereCaster> body_casters() const;  // the positioned bodies, for their shadows
   void update_reference_plane(const ReductionResult& r);
+  // The mean visible normal of this frame's normal target: reduced when the camera changed
+  // since the last reduction, else that reduction's result (see normal_mean_). `reduced`: set
+  // when the reduction ran.
+  ReductionResult mean_visible_normal(bool& reduced);
   void apply_reductions(const ReductionResult& r, const FramePlan& plan);
   void run_probe_view();
 
@@ -170,6 +180,16 @@ class Renderer {
   std::vector<MaterialState> materials_;
   TileBaker tiles_;           // the tiles still to bake (all of them at once unless sliced)
   std::chrono::steady_clock::time_point created_at_;  // start of create(): the stats' time origin
+  // The last mean visible normal and the camera it was reduced for. The normal target holds
+  // the visible surfaces' normals, which depend on the camera alone (the surfaces are fixed for a
+  // renderer's life; neither the probe, the reference plane nor the shader variant changes a
+  // normal's bits), so while the camera stays, a new reduction would give these bits again.
+  struct NormalMean {
+    bool valid = false;
+    Camera camera;
+    ReductionResult result;  // normal_sum and normal_coverage
+  };
+  NormalMean normal_mean_;
   ProbeDepthPass probe_depth_;
   SurfacePass surface_;
   ReductionsPass reductions_;

@@ -158,10 +158,12 @@ TEST(UniformLayoutTest, ReduceBlockMatches) {
   ASSERT_FALSE(o.empty());
   EXPECT_MEMBER(o, "u_size", ReduceBlock, size);
   EXPECT_MEMBER(o, "u_params", ReduceBlock, params);
+  EXPECT_MEMBER(o, "u_rect", ReduceBlock, rect);
   EXPECT_MEMBER(o, "max_penetration_bits", MaxBlock, max_penetration_bits);
   EXPECT_MEMBER(o, "max_resisted_penetration_bits", MaxBlock, max_resisted_penetration_bits);
   EXPECT_MEMBER(o, "penetrating_fragments", MaxBlock, penetrating_fragments);
   EXPECT_MEMBER(o, "covered_fragments", MaxBlock, covered_fragments);
+  EXPECT_MEMBER(o, "penetrating_box", MaxBlock, penetrating_box);
 }
 
 }  // namespace

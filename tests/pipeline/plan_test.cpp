@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include "pipeline/scenes.h"
+#include "render/camera.h"
 #include "render/plan.h"
 
 namespace ps {
@@ -121,6 +122,48 @@ TEST(PlanTest, BodiesInReachUseTheInfluenceDistance) {
   EXPECT_EQ(near[0].centre, bodies[2].centre);
   EXPECT_EQ(near[1].centre, bodies[5].centre);
   EXPECT_TRUE(bodies_in_reach({}, plane, 50.0).empty());
+}
+
+// The footprint's screen rectangle holds the projection of every point of a shadowed surface
+// inside the depth map's window (sampled on the window's grid and over the surfaces' heights,
+// tilted perspective view); it is empty when nothing is shadowed and the whole image when the
+// eye is inside the window's reach.
+TEST(PlanTest, ShadowRectHoldsTheWindowOnScreen) {
+  Scene s = test::flat_plane_scene(9.0);
+  s.camera.projection = Projection::kPerspective;
+  s.camera.position = {30.0, -60.0, 45.0};
+  s.render.width = 200;
+  s.render.height = 150;
+  const std::vector<Aabb> box{Aabb{{-100, -100, -3}, {100, 100, 2}}};  // heights -3 .. 2
+  const PlaneFrame f = make_plane_frame(glm::normalize(glm::dvec3(0.1, -0.2, 1.0)));
+  const FramePlan p = make_plan(s, box, {{4, -2, 9}, 8}, f, 256);
+  ASSERT_TRUE(p.shadow_active);
+  const PixelRect& r = p.shadow_rect;
+  ASSERT_FALSE(r.empty());
+  EXPECT_LT(r.width() * r.height(), 200 * 150 * 6 / 10);  // a bound, not the image
+  const glm::dmat4 vp = view_projection(s.camera, 200.0 / 150.0);
+  const double half = p.window.half_size_mm;
+  int inside = 0;
+  for (int i = 0; i <= 20; ++i)
+    for (int j = 0; j <= 20; ++j)
+      for (double h : {-3.0, -0.5, 2.0}) {
+        const double u = p.window.center_uv.x + half * (i / 10.0 - 1.0), v = p.window.center_uv.y + half * (j / 10.0 - 1.0);
+        // A point of plane coordinates (u, v) at height h along n; keep it on the box's slab.
+        const glm::dvec3 x = u * f.t + v * f.b + h * f.n;
+        if (x.z < -3.0 || x.z > 2.0) continue;
+        const glm::dvec4 c = vp * glm::dvec4(x, 1.0);
+        const double px = (c.x / c.w * 0.5 + 0.5) * 200, py = (c.y / c.w * 0.5 + 0.5) * 150;
+        if (px < 0 || px >= 200 || py < 0 || py >= 150) continue;
+        ++inside;
+        EXPECT_TRUE(r.contains(static_cast<int>(px), static_cast<int>(py))) << px << "," << py;
+      }
+  EXPECT_GT(inside, 300);
+  // Nothing shadowed: empty. The eye inside the window's reach: the whole image.
+  EXPECT_TRUE(make_plan(s, box, {{4, -2, 900}, 8}, f, 256).shadow_rect.empty());
+  Scene eye = s;
+  eye.camera.position = {4.0, -2.0, 1.0};
+  eye.camera.target = {4.0, 20.0, 0.0};
+  EXPECT_EQ(make_plan(eye, box, {{4, -2, 9}, 8}, f, 256).shadow_rect, PixelRect::whole(200, 150));
 }
 
 TEST(PlanTest, SphereAabbDistance) {

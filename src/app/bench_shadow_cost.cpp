@@ -1,0 +1,102 @@
+// `pseudoshadow bench`: the pseudo-shadow's cost over plain shading of the same view.
+// The default scene (the embedded scenes/default.toml) is drawn by two renderers alive at once:
+// one with the probe where the scene puts it (pressed 1 mm into the plank: probe depth pass,
+// pseudo-shadow, texture, reductions) and one with the probe out of reach (the plan skips all of
+// that: the plain shading of the same view). Both are long-lived renderers, as in a session
+// (expected_frames = 0: "auto" bakes its tile once, at creation, outside the timed frames).
+// Their frames alternate in rounds so that load from other processes hits both alike; the ratio
+// is of the medians of whole frames (the sum of the per-pass wall times, glFinish per pass).
+// The CPU time of the whole process per frame (llvmpipe's threads included) is reported beside
+// it: on a loaded machine it moves much less than wall time.
+#include <time.h>
+
+#include <algorithm>
+#include <map>
+#include <memory>
+
+#include "app/bench_sweep.h"
+#include "render/renderer.h"
+#include "scene/scene_io.h"
+
+namespace ps::bench {
+
+namespace {
+
+double median_of(std::vector<double> v) {
+  if (v.empty()) return 0.0;
+  std::sort(v.begin(), v.end());
+  const size_t n = v.size();
+  return n % 2 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
+}
+
+double process_cpu_ms() {
+  timespec t{};
+  clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &t);
+  return t.tv_sec * 1e3 + t.tv_nsec * 1e-6;
+}
+
+// One frame of `r` with its probe put back where `s` has it (undoes the last frame's push-out);
+// adds each pass's time to `passes`, the frame's total to `frames` and its CPU time to `cpu`.
+Status timed_frame(Renderer& r, const Scene& s, std::map<std::string, std::vector<double>>& passes,
+                   std::vector<double>& frames, std::vector<double>& cpu) {
+  r.set_probe_state(s.probe.position, s.probe.velocity);
+  const double cpu0 = process_cpu_ms();
+  if (Status st = r.render_frame(); !st) return st;
+  cpu.push_back(process_cpu_ms() - cpu0);
+  double total = 0.0;
+  for (const auto& [name, ms] : r.stats().timings_ms) {
+    passes[name].push_back(ms);
+    total += ms;
+  }
+  frames.push_back(total);
+  return ok_status();
+}
+
+}  // namespace
+
+Result<ShadowCost> run_shadow_cost(const BenchOptions& o, int size) {
+  auto parsed = parse_scene(default_scene_text(), "<embedded default>", default_scene_base_dir());
+  if (!parsed) return parsed.error();
+  Scene shadow = parsed.value();
+  shadow.render.width = shadow.render.height = size;
+  Scene plain = shadow;
+  plain.probe.position = {0.0, 0.0, 1e6};  // far beyond every influence distance; same camera
+  auto made = Renderer::create(shadow, {});
+  if (!made) return made.error();
+  RendererOptions share;
+  share.reuse_tiles_from = made.value().get();  // the same baked tile, not baked twice
+  auto made_plain = Renderer::create(plain, share);
+  if (!made_plain) return made_plain.error();
+  Renderer& rs = *made.value();
+  Renderer& rp = *made_plain.value();
+
+  std::map<std::string, std::vector<double>> shadow_passes, plain_passes, warm;
+  std::vector<double> shadow_frames, plain_frames, shadow_cpu, plain_cpu, unused, unused_cpu;
+  for (int i = 0; i < std::max(o.warm_frames, 2); ++i) {  // shader JIT, caches
+    if (Status st = timed_frame(rs, shadow, warm, unused, unused_cpu); !st) return st.error();
+    if (Status st = timed_frame(rp, plain, warm, unused, unused_cpu); !st) return st.error();
+  }
+  // Two frames of ~10 ms that differ by a few ms: pooled over alternated rounds, as the
+  // untextured ratio is (a shared 2-core machine moves single frames by 10-30 %).
+  const int rounds = std::max(o.rounds, 7), per_round = std::max(o.timed_frames, 8);
+  for (int round = 0; round < rounds; ++round)
+    for (int k = 0; k < 2 * per_round; ++k) {
+      const bool s = (k % 2 == 0) == (round % 2 == 0);  // alternate, and which goes first
+      Status st = s ? timed_frame(rs, shadow, shadow_passes, shadow_frames, shadow_cpu)
+                    : timed_frame(rp, plain, plain_passes, plain_frames, plain_cpu);
+      if (!st) return st.error();
+    }
+  ShadowCost c;
+  c.size = size;
+  c.shadow_frame_ms = median_of(shadow_frames);
+  c.plain_frame_ms = median_of(plain_frames);
+  c.ratio = c.shadow_frame_ms / c.plain_frame_ms;
+  c.cpu_ratio = median_of(shadow_cpu) / median_of(plain_cpu);
+  for (const char* pass : {"probe_depth", "surface", "reductions"})
+    c.shadow_pass_ms.emplace_back(pass, median_of(shadow_passes[pass]));
+  c.plain_surface_ms = median_of(plain_passes["surface"]);
+  c.shadow_pixels = rs.stats().shadow_pixels;
+  return c;
+}
+
+}  // namespace ps::bench

@@ -1,0 +1,195 @@
+// The footprint's screen rectangle (FramePlan::shadow_rect): the surface pass runs the
+// pseudo-shadow variants and clears and writes the AOV target only inside it, the shadow's
+// reductions read only inside it, and read_aov() fills the rest with the "no probe" values.
+// Every output of a frame must be the same bits as with all of that over the whole image
+// (RendererOptions::footprint_rect = false), which is how the frame was computed before the
+// rectangle existed. The tolerance is zero, and why it can be: outside the rectangle no
+// fragment can be inside the depth map's window, so its colour composites as rgb * (1 - 0),
+// its AOV is (0, NaN, 0) by definition, and its terms in the reductions are exact zeros (a
+// zero term leaves a float sum's bits unchanged; max and counts ignore it).
+// The probe moves between frames, far enough that a frame's rectangle leaves the last one's:
+// the AOV texture keeps the older frame's values there, which must never show.
+#include <cstring>
+#include <string>
+#include <vector>
+
+#include <gtest/gtest.h>
+
+#include "pipeline/scenes.h"
+#include "render/camera.h"
+#include "render/renderer.h"
+#include "scene/scene_io.h"
+#include "support/gl_test.h"
+
+namespace ps {
+namespace {
+
+class FootprintRectGLTest : public test::GlTest {};
+
+struct Case {
+  std::string name;
+  Scene scene;
+  std::vector<glm::dvec3> probe_path;  // one position per frame
+};
+
+Scene shipped(const std::string& name, int width, int height) {
+  auto s = load_scene(std::string(PS_SOURCE_DIR) + "/scenes/" + name + ".toml",
+                      {"render.size=[" + std::to_string(width) + "," + std::to_string(height) + "]"});
+  EXPECT_TRUE(s.ok()) << (s.ok() ? "" : s.error().message);
+  return s.ok() ? s.value() : Scene{};
+}
+
+std::vector<Case> cases() {
+  std::vector<Case> c;
+  {
+    Scene s = shipped("default", 160, 128);
+    const glm::dvec3 p = s.probe.position;
+    // 20 mm along x leaves the 16 mm footprint's rectangle; then half-way back.
+    c.push_back({"default", s, {p, p + glm::dvec3(20, 0, 0), p + glm::dvec3(10, 0, -0.5)}});
+    // Partly off the image's left edge (about 43 mm of plank are in view).
+    c.push_back({"default_at_edge", s, {p + glm::dvec3(-22, 0, 0), p + glm::dvec3(-24, 6, 0)}});
+    // The eye just above the plank, inside the window's reach: corners behind it, whole image.
+    Scene low = s;
+    low.camera.position = {0.0, -5.0, 2.0};
+    low.camera.target = {0.0, 10.0, 0.0};
+    c.push_back({"default_eye_in_window", low, {p, p + glm::dvec3(3, 4, 0)}});
+  }
+  {
+    Scene s = shipped("torus_capsule", 160, 120);  // capsule, exact-max displacement, curved
+    const glm::dvec3 p = s.probe.position;
+    c.push_back({"torus_capsule", s, {p, p + glm::dvec3(25, 8, 0), p + glm::dvec3(5, 0, -0.3)}});
+  }
+  {
+    Scene s = shipped("materials_demo", 160, 120);  // several surfaces and materials, a hidden one
+    const glm::dvec3 p = s.probe.position;
+    c.push_back({"materials_demo", s, {p, p + glm::dvec3(-30, 10, 0), p + glm::dvec3(40, -5, 0)}});
+  }
+  {
+    Scene s = shipped("table5_1_monkey_head", 160, 120);  // a mesh seen in perspective
+    const glm::dvec3 p = s.probe.position;
+    c.push_back({"monkey_head", s, {p, p + glm::dvec3(12, 0, 3)}});
+  }
+  {
+    Scene s = shipped("heightfield", 160, 120);
+    const glm::dvec3 p = s.probe.position;
+    c.push_back({"heightfield", s, {p, p + glm::dvec3(-15, 20, 0)}});
+  }
+  {
+    Scene s = test::flat_plane_scene(7.5);  // orthographic, sunk 0.5 mm
+    s.render.displacement = DisplacementMethod::kWeightedAverage;
+    c.push_back({"flat_ortho", s, {s.probe.position, {14, -9, 7.0}, {-3, 2, 8.5}}});
+  }
+  return c;
+}
+
+// Bitwise: NaN equals NaN of the same bits, and -0 differs from +0.
+int differing_values(const Image& a, const Image& b, std::string& first) {
+  if (a.width != b.width || a.height != b.height || a.channels != b.channels) {
+    first = "sizes differ";
+    return -1;
+  }
+  int n = 0;
+  for (size_t i = 0; i < a.pixels.size(); ++i)
+    if (std::memcmp(&a.pixels[i], &b.pixels[i], sizeof(float)) != 0) {
+      if (n++ == 0) {
+        const size_t px = i / a.channels;
+        first = "pixel (" + std::to_string(px % a.width) + ", " + std::to_string(px / a.width) + ") channel " +
+                std::to_string(i % a.channels) + ": " + std::to_string(a.pixels[i]) + " vs " +
+                std::to_string(b.pixels[i]);
+      }
+    }
+  return n;
+}
+
+void expect_same_frame(const Renderer& rect, const Renderer& whole, const std::string& where) {
+  std::string first;
+  EXPECT_EQ(differing_values(rect.read_color(), whole.read_color(), first), 0) << where << " colour, first " << first;
+  for (const std::string& aov : aov_names()) {
+    auto a = rect.read_aov(aov), b = whole.read_aov(aov);
+    ASSERT_TRUE(a.ok() && b.ok()) << where << " " << aov;
+    EXPECT_EQ(differing_values(a.value(), b.value(), first), 0) << where << " AOV " << aov << ", first " << first;
+  }
+  const FrameStats &s = rect.stats(), &t = whole.stats();
+  EXPECT_EQ(s.reference_normal, t.reference_normal) << where;
+  EXPECT_EQ(s.displacement, t.displacement) << where;
+  EXPECT_EQ(s.max_penetration_mm, t.max_penetration_mm) << where;
+  EXPECT_EQ(s.probe_position, t.probe_position) << where;
+  EXPECT_EQ(s.shadow_pixels, t.shadow_pixels) << where;
+  EXPECT_EQ(s.penetrating_pixels, t.penetrating_pixels) << where;
+}
+
+TEST_P(FootprintRectGLTest, EveryOutputEqualsTheWholeImagesBitForBit) {
+  int shadowed_frames = 0;
+  for (const Case& c : cases()) {
+    RendererOptions rect_opts, whole_opts;
+    rect_opts.expected_frames = whole_opts.expected_frames = 3;  // short: no tile bake
+    whole_opts.footprint_rect = false;
+    auto rect = Renderer::create(c.scene, rect_opts);
+    auto whole = Renderer::create(c.scene, whole_opts);
+    ASSERT_TRUE(rect.ok() && whole.ok()) << c.name;
+    for (size_t f = 0; f < c.probe_path.size(); ++f) {
+      const std::string where = c.name + " frame " + std::to_string(f);
+      for (Renderer* r : {rect.value().get(), whole.value().get()}) {
+        r->set_probe_state(c.probe_path[f], c.scene.probe.velocity);
+        ASSERT_TRUE(r->render_frame().ok()) << where;
+      }
+      expect_same_frame(*rect.value(), *whole.value(), where);
+      if (rect.value()->stats().shadow_pixels > 0) ++shadowed_frames;
+    }
+  }
+  EXPECT_GE(shadowed_frames, 14);  // the comparison saw pseudo-shadows, not empty frames
+}
+
+// After a frame whose footprint lies elsewhere, the old footprint's pixels read "no probe":
+// intensity 0, distance NaN, texture 0 (the AOV texture still holds the old frame there).
+TEST_P(FootprintRectGLTest, AovOutsideTheFootprintIsNoProbeAfterTheProbeMoved) {
+  Scene s = test::flat_plane_scene(9.0);
+  auto made = Renderer::create(s, {});
+  ASSERT_TRUE(made.ok()) << made.error().message;
+  Renderer& r = *made.value();
+  ASSERT_TRUE(r.render_frame().ok());
+  const Image before = r.read_aov(Aov::kIntensity).value();
+  r.set_probe_state({-10.0, 10.0, 9.0}, {});  // 14 mm away: the 8 mm footprints do not overlap
+  ASSERT_TRUE(r.render_frame().ok());
+  const Image inten = r.read_aov(Aov::kIntensity).value(), dist = r.read_aov(Aov::kDistance).value();
+  const Image tex = r.read_aov(Aov::kTexture).value();
+  int old_footprint = 0;
+  for (int y = 0; y < before.height; ++y)
+    for (int x = 0; x < before.width; ++x) {
+      if (!(before.at(x, y, 0) > 0.0f)) continue;
+      const glm::dvec2 w = test::pixel_to_world(s, x, y);
+      if (glm::length(w - glm::dvec2(-10.0, 10.0)) < 8.5) continue;  // the new footprint
+      ++old_footprint;
+      EXPECT_EQ(inten.at(x, y, 0), 0.0f) << x << "," << y;
+      EXPECT_TRUE(std::isnan(dist.at(x, y, 0))) << x << "," << y << ": " << dist.at(x, y, 0);
+      EXPECT_EQ(tex.at(x, y, 0), 0.0f) << x << "," << y;
+    }
+  EXPECT_GT(old_footprint, 1500);  // pi (8 / 0.3125)^2 ~ 2060 pixels, less the overlap margin
+}
+
+// The mean visible normal is reused while the camera stays and reduced again when it moves: a
+// renderer whose camera moved gives the same plane as one created with the new camera.
+TEST_P(FootprintRectGLTest, ReferenceNormalFollowsTheCamera) {
+  Scene s = shipped("torus_capsule", 160, 120);  // curved: the mean normal depends on the view
+  Scene moved = s;
+  moved.camera.position = {40.0, -100.0, 70.0};
+  auto a = Renderer::create(s, {.expected_frames = 2});
+  auto b = Renderer::create(moved, {.expected_frames = 2});
+  ASSERT_TRUE(a.ok() && b.ok());
+  ASSERT_TRUE(a.value()->render_frame().ok());
+  const glm::dvec3 n_first = a.value()->reference().n;
+  a.value()->set_camera(moved.camera);
+  a.value()->set_probe_state(s.probe.position, s.probe.velocity);
+  ASSERT_TRUE(a.value()->render_frame().ok());
+  ASSERT_GT(a.value()->stats().shadow_pixels, 0u);  // the reductions ran
+  EXPECT_GT(glm::length(n_first - b.value()->reference().n), 1e-3);  // the views differ
+  EXPECT_EQ(a.value()->reference().n, b.value()->reference().n);
+  bool reduced = false;
+  for (const auto& [pass, ms] : a.value()->stats().timings_ms) reduced = reduced || pass == "reference_normal";
+  EXPECT_TRUE(reduced);
+}
+
+PS_INSTANTIATE_HEADLESS_BACKENDS(FootprintRectGLTest);
+
+}  // namespace
+}  // namespace ps
