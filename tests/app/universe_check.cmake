@@ -3,7 +3,7 @@
 # switch to it; the last frame is Weight's (it differs from the first, the panel's); the button
 # pictures were made in the cache ($PSEUDOSHADOW_CACHE_DIR) and a second replay reuses them
 # (same files, same times) and gives the same frames.
-file(REMOVE_RECURSE "${DIR}")
+file(REMOVE_RECURSE "${DIR}" "$ENV{PSEUDOSHADOW_CACHE_DIR}")  # a cold cache: the first replay makes the pictures
 file(MAKE_DIRECTORY "${DIR}")
 foreach(run a b)
   execute_process(COMMAND ${CMD} replay --scene ${SCENE} --log ${TRAJ} --out ${DIR}/${run} --fps 10
@@ -12,7 +12,7 @@ foreach(run a b)
   if(NOT rc EQUAL 0)
     message(FATAL_ERROR "replay ${run}: exit ${rc}: ${err}")
   endif()
-  file(GLOB pictures_${run} "$ENV{PSEUDOSHADOW_CACHE_DIR}/pictures/*.png")
+  file(GLOB pictures_${run} "$ENV{PSEUDOSHADOW_CACHE_DIR}/pictures/*_128.png")  # not Field's floor map
   set(stamps_${run} "")
   foreach(p IN LISTS pictures_${run})
     file(TIMESTAMP ${p} t "%s")
