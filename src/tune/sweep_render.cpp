@@ -68,6 +68,7 @@ Result<std::vector<SweepCell>> render_sweep(const SweepJob& job, const SweepProg
     options.expected_frames = scene->render.frames;  // as `render` does, so a cell equals its render
     auto renderer = Renderer::create(scene.value(), options);
     if (!renderer) return renderer.error();
+    show_world_at_start(*renderer.value());  // as `render` does: bodies, charges, bands
     for (int f = 0; f < scene->render.frames; ++f)
       if (Status s = renderer.value()->render_frame(); !s) return s.error();
     cell.image = renderer.value()->read_color();
