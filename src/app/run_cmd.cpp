@@ -146,6 +146,7 @@ struct Session {  // everything the window loop touches, grouped by owner thread
   std::string pending_scene;          // a button's scene action, carried out after this frame
   std::vector<std::string> came_from; // scenes a button switched away from (Backspace goes back)
   bool going_back = false;            // the pending switch is a Backspace: do not remember it
+  std::map<std::string, std::string> haptic_edits;  // the panel's edits the haptic scene was built with
 };
 
 Status open_device(const RunArgs& a, Session& s) {
@@ -445,6 +446,7 @@ void switch_scene(const RunArgs& a, Session& s) {
   if (back) s.came_from.pop_back();
   else s.came_from.push_back(s.tune->scene_path());
   s.tune = std::move(tune.value());
+  s.haptic_edits.clear();
   s.tune->renderer().set_show_probe(a.show_probe);
   s.tune->renderer().set_show_device(a.show_device);
   s.axes = pointer_plane(s.tune->renderer());
@@ -477,6 +479,10 @@ Status window_loop(const RunArgs& a, Session& s) {
     present_to_default_framebuffer(s.tune->renderer(), w, h);
     if (Status r = handle_keys(s, w, h); !r) return r;  // screenshots read GL_BACK before the swap
     if (Status r = draw_overlays(a, s, st, frame, now_s); !r) return r;  // after the screenshots
+    if (s.tune->edits() != s.haptic_edits) {  // a panel edit may change the feel (a body's time scale)
+      s.haptic_edits = s.tune->edits();
+      reload_haptic_scene(s);
+    }
     s.input.keys_captured = s.ui->panel().wants_input();
     glfwSwapBuffers(win);
     const auto f1 = std::chrono::steady_clock::now();

@@ -149,6 +149,32 @@ void TunePanel::probe_camera_section(TuneSession& session) {
     apply(session, "camera.position", vec_text(eye));
 }
 
+bool TunePanel::has_world_knobs(const Scene& scene) {
+  for (std::size_t i = 0; i < scene.surfaces.size(); ++i)
+    if (scene.surfaces[i].visual_stretch != glm::dvec3(1.0) &&
+        std::find(stretched_.begin(), stretched_.end(), static_cast<int>(i)) == stretched_.end())
+      stretched_.push_back(static_cast<int>(i));
+  return !stretched_.empty() || !scene.bodies.empty();
+}
+
+void TunePanel::world_section(TuneSession& session) {
+  const Scene& scene = session.renderer().scene();
+  for (int i : stretched_) {
+    if (i >= static_cast<int>(scene.surfaces.size())) continue;
+    const glm::dvec3& st = scene.surfaces[static_cast<std::size_t>(i)].visual_stretch;
+    float v[3] = {float(st.x), float(st.y), float(st.z)};
+    const std::string key = "surfaces." + std::to_string(i) + ".visual_stretch";
+    if (slider("surface " + std::to_string(i) + " drawn stretch", key, v, 3, 0.25f, 4.f, true))
+      apply(session, key, vec_text(v));
+  }
+  for (std::size_t b = 0; b < scene.bodies.size(); ++b) {
+    float t = static_cast<float>(scene.bodies[b].time_scale);
+    const std::string key = "bodies." + std::to_string(b) + ".time_scale";
+    if (slider("body " + std::to_string(b) + " time scale (< 1: heavier)", key, &t, 1, 0.05f, 2.f, true))
+      apply(session, key, number(t));
+  }
+}
+
 void TunePanel::plots(const TuneSession& session) {
   const Scene& scene = session.renderer().scene();
   const Material& m = scene.materials[material_];
@@ -194,6 +220,8 @@ void TunePanel::contents(TuneSession& session) {
   if (ImGui::CollapsingHeader("material", ImGuiTreeNodeFlags_DefaultOpen)) material_section(session);
   if (ImGui::CollapsingHeader("curves", ImGuiTreeNodeFlags_DefaultOpen)) plots(session);
   if (ImGui::CollapsingHeader("probe and camera")) probe_camera_section(session);
+  if (has_world_knobs(session.renderer().scene()) && ImGui::CollapsingHeader("world", ImGuiTreeNodeFlags_DefaultOpen))
+    world_section(session);
   ImGui::Text("%zu edited keys", session.edits().size());
   if (ImGui::Button("Save overrides")) {
     const Status s = session.save_overrides();

@@ -15,6 +15,7 @@
 
 #include <memory>
 #include <string>
+#include <vector>
 
 #include "app/ui_layout.h"
 #include "tune/tune_session.h"
@@ -42,12 +43,17 @@ class TunePanel {
   void contents(TuneSession& session);
   void material_section(TuneSession& session);
   void probe_camera_section(TuneSession& session);
+  // The haptic world's knobs (seed 002's Virtual Universe): each drawn-stretched surface's
+  // stretch (Illusion) and each body's time scale (Weight). Shown only for scenes that have them.
+  void world_section(TuneSession& session);
+  bool has_world_knobs(const Scene& scene);
   void plots(const TuneSession& session);
   void apply(TuneSession& session, const std::string& key, const std::string& value);
 
   bool visible_ = false;
   bool collapsed_ = false;
   int material_ = 0;
+  std::vector<int> stretched_;  // surfaces seen stretched: their slider stays, also at 1
   std::string status_;
 };
 
