@@ -7,6 +7,7 @@
 #include <fstream>
 #include <iterator>
 
+#include "core/hash.h"
 #include "image/image.h"
 #include "render/renderer.h"
 #include "scene/scene_io.h"
@@ -14,15 +15,6 @@
 namespace ps {
 
 namespace {
-
-// FNV-1a, 64 bits: a name for the picture, not a security measure.
-std::uint64_t fnv1a(const std::string& bytes, std::uint64_t h = 14695981039346656037ull) {
-  for (unsigned char c : bytes) {
-    h ^= c;
-    h *= 1099511628211ull;
-  }
-  return h;
-}
 
 Result<std::string> picture_path(const std::string& scene_file) {
   std::ifstream in(scene_file, std::ios::binary);

@@ -6,6 +6,7 @@
 #include <filesystem>
 #include <vector>
 
+#include "core/hash.h"
 #include "render/button_pictures.h"
 #include "world/fields.h"
 
@@ -42,15 +43,6 @@ glm::dvec3 colour(double t) {
   t = std::clamp(t, 0.0, 1.0);
   const glm::dvec3 a(0.05, 0.05, 0.35), b(0.75, 0.2, 0.55), c(1.0, 0.9, 0.25);
   return t < 0.5 ? glm::mix(a, b, 2.0 * t) : glm::mix(b, c, 2.0 * t - 1.0);
-}
-
-std::uint64_t fnv1a(const void* data, std::size_t n, std::uint64_t h) {
-  const auto* p = static_cast<const unsigned char*>(data);
-  for (std::size_t i = 0; i < n; ++i) {
-    h ^= p[i];
-    h *= 1099511628211ull;
-  }
-  return h;
 }
 
 }  // namespace
@@ -90,7 +82,7 @@ Status make_field_maps(Scene& scene) {
     if (!s.field_map || s.field_map_material < 0) continue;
     // Named by everything the map depends on: the charges, the frame, the size.
     const MapFrame f = frame_of(scene, s);
-    std::uint64_t h = 14695981039346656037ull;
+    std::uint64_t h = kFnv1aOffset;
     const double head[5] = {f.corner.x, f.corner.y, f.side, f.z, static_cast<double>(kFieldMapSize)};
     h = fnv1a(head, sizeof head, h);
     for (const Field& c : scene.fields)
