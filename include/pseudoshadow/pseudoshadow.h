@@ -121,6 +121,9 @@ class PSEUDOSHADOW_API Renderer {
   // CLI's message and changes nothing.
   void set(std::string_view key, std::string_view value);
   void set(std::string_view key_equals_value);
+  // Several "KEY=VALUE" at once, checked together (lambda_min <= lambda_max holds only for the
+  // pair): one rebuild, and on an error none of them is applied.
+  void set(const std::vector<std::string>& key_equals_values);
   // Moves the probe (position mm, velocity mm/s) without rendering.
   void set_probe(const Vec3& position, const Vec3& velocity);
 

@@ -22,6 +22,8 @@ from ._core import Error, aov_names
 from ._core import Renderer as _CoreRenderer
 from ._core import read_image as _read_image
 
+Error.__module__ = "pseudoshadow"  # shown as pseudoshadow.Error in tracebacks
+
 __all__ = ["Error", "Frame", "Renderer", "aov_names", "read_image", "toml_value"]
 
 
@@ -86,15 +88,18 @@ class Renderer:
             self._r = _CoreRenderer.open("default", "", "", backend, sets)
 
     def set(self, key, value=None):
-        """Change one scene value by its path, as --set: set("materials.wood.lambda_min", 0.4),
-        or set("materials.wood.lambda_min=0.4"). The probe keeps its state."""
-        if value is None:
-            key, sep, text = str(key).partition("=")
-            if not sep:
-                raise Error(f"--set {key}: expected KEY=VALUE, e.g. materials.wood.lambda_min=0.4")
-            self._r.set(key, text)
+        """Change scene values by their paths, as --set: set("materials.wood.lambda_min", 0.4),
+        set("materials.wood.lambda_min=0.4"), or several checked together (one rebuild; on an
+        error none applies): set({"materials.wood.lambda_min": 0.4, "materials.wood.lambda_max": 0.6}).
+        The probe keeps its position and velocity unless these keys set them."""
+        if isinstance(key, dict):
+            if value is not None:
+                raise TypeError("set(dict) takes no value")
+            self._r.set([f"{k}={toml_value(v)}" for k, v in key.items()])
+        elif value is None:
+            self._r.set([str(key)])
         else:
-            self._r.set(key, toml_value(value))
+            self._r.set([f"{key}={toml_value(value)}"])
 
     def set_probe(self, position, velocity):
         """Move the probe (mm) and set its velocity (mm/s) without rendering."""

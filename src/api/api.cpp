@@ -127,31 +127,36 @@ Renderer Renderer::open_default(const OpenDesc& desc) {
 }
 
 void Renderer::set(std::string_view key, std::string_view value) {
+  set(std::vector<std::string>{trimmed(key) + "=" + std::string(value)});
+}
+
+void Renderer::set(std::string_view key_equals_value) {
+  set(std::vector<std::string>{std::string(key_equals_value)});
+}
+
+void Renderer::set(const std::vector<std::string>& key_equals_values) {
   Impl& m = impl("set");
-  const std::string name = trimmed(key);
-  if (name.empty() || name.find('=') != std::string::npos) {
-    throw Error("--set " + std::string(key) + ": expected a scene path such as materials.wood.lambda_min");
-  }
-  // The probe keeps its state unless this very key sets it.
-  const glm::dvec3 position = m.probe().position, velocity = m.probe().velocity;
   std::vector<std::string> overrides = m.overrides;
-  overrides.push_back(name + "=" + std::string(value));
+  bool sets_position = false, sets_velocity = false;
+  for (const std::string& kv : key_equals_values) {
+    const size_t eq = kv.find('=');
+    const std::string key = trimmed(std::string_view(kv).substr(0, eq));
+    if (eq == std::string::npos || key.empty()) {
+      throw Error("--set " + kv + ": expected KEY=VALUE, e.g. materials.wood.lambda_min=0.4");
+    }
+    sets_position |= key == "probe.position";
+    sets_velocity |= key == "probe.velocity";
+    overrides.push_back(key + "=" + kv.substr(eq + 1));
+  }
+  // The probe keeps its state unless these very keys set it.
+  const glm::dvec3 position = m.probe().position, velocity = m.probe().velocity;
   ps::Scene scene = value_or_throw(m.parse(overrides));  // throws: nothing changed
-  if (name != "probe.position") scene.probe.position = position;
-  if (name != "probe.velocity") scene.probe.velocity = velocity;
+  if (!sets_position) scene.probe.position = position;
+  if (!sets_velocity) scene.probe.velocity = velocity;
   if (m.renderer) m.context->make_current();
   m.renderer.reset();
   m.scene = std::move(scene);
   m.overrides = std::move(overrides);
-}
-
-void Renderer::set(std::string_view key_equals_value) {
-  const size_t eq = key_equals_value.find('=');
-  if (eq == std::string_view::npos) {
-    throw Error("--set " + std::string(key_equals_value) +
-                ": expected KEY=VALUE, e.g. materials.wood.lambda_min=0.4");
-  }
-  set(key_equals_value.substr(0, eq), key_equals_value.substr(eq + 1));
 }
 
 void Renderer::set_probe(const Vec3& position, const Vec3& velocity) {
