@@ -35,9 +35,11 @@ install(FILES ${CMAKE_BINARY_DIR}/cmake/pseudoshadowConfig.cmake
               ${CMAKE_BINARY_DIR}/cmake/pseudoshadowConfigVersion.cmake
         DESTINATION ${PS_CMAKE_INSTALL_DIR})
 
-# The Python package.
-install(TARGETS ps_python_core LIBRARY DESTINATION ${PS_PYTHON_INSTALL_DIR}/pseudoshadow)
-install(FILES python/pseudoshadow/__init__.py DESTINATION ${PS_PYTHON_INSTALL_DIR}/pseudoshadow)
+# The Python package (not in sanitizer builds, see the top-level CMakeLists.txt).
+if(TARGET ps_python_core)
+  install(TARGETS ps_python_core LIBRARY DESTINATION ${PS_PYTHON_INSTALL_DIR}/pseudoshadow)
+  install(FILES python/pseudoshadow/__init__.py DESTINATION ${PS_PYTHON_INSTALL_DIR}/pseudoshadow)
+endif()
 
 # ---- Debian package (CPack) ----
 set(CPACK_GENERATOR DEB)
