@@ -56,7 +56,7 @@ PYBIND11_MODULE(_core, m) {
         if (kind == "string") return psa::Renderer::open_string(source, "<string>", base_dir, desc);
         return psa::Renderer::open_default(desc);
       })
-      .def("set", [](psa::Renderer& r, const std::vector<std::string>& key_values) { r.set(key_values); })
+      .def("set", [](psa::Renderer& r, const std::vector<std::string>& key_values) { r.set_all(key_values); })
       .def("set_probe", &psa::Renderer::set_probe)
       .def("size", &psa::Renderer::size)
       .def("probe", &psa::Renderer::probe)

@@ -33,8 +33,6 @@
 
 namespace pseudoshadow {
 
-inline constexpr int kVersionMajor = 0, kVersionMinor = 1, kVersionPatch = 0;
-
 // The one-line message of a failed call, as the CLI prints it.
 class PSEUDOSHADOW_API Error : public std::runtime_error {
  public:
@@ -123,7 +121,7 @@ class PSEUDOSHADOW_API Renderer {
   void set(std::string_view key_equals_value);
   // Several "KEY=VALUE" at once, checked together (lambda_min <= lambda_max holds only for the
   // pair): one rebuild, and on an error none of them is applied.
-  void set(const std::vector<std::string>& key_equals_values);
+  void set_all(const std::vector<std::string>& key_equals_values);
   // Moves the probe (position mm, velocity mm/s) without rendering.
   void set_probe(const Vec3& position, const Vec3& velocity);
 

@@ -127,14 +127,14 @@ Renderer Renderer::open_default(const OpenDesc& desc) {
 }
 
 void Renderer::set(std::string_view key, std::string_view value) {
-  set(std::vector<std::string>{trimmed(key) + "=" + std::string(value)});
+  set_all({trimmed(key) + "=" + std::string(value)});
 }
 
 void Renderer::set(std::string_view key_equals_value) {
-  set(std::vector<std::string>{std::string(key_equals_value)});
+  set_all({std::string(key_equals_value)});
 }
 
-void Renderer::set(const std::vector<std::string>& key_equals_values) {
+void Renderer::set_all(const std::vector<std::string>& key_equals_values) {
   Impl& m = impl("set");
   std::vector<std::string> overrides = m.overrides;
   bool sets_position = false, sets_velocity = false;
