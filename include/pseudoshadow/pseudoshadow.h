@@ -6,7 +6,8 @@
 //
 //   pseudoshadow::Renderer r = pseudoshadow::Renderer::open_file("scene.toml");
 //   r.set("materials.wood.lambda_min", "0.4");
-//   pseudoshadow::Frame f = r.render({.probe = {{2, 0, 7.5}}, .velocity = {{0, 150, 0}}});
+//   pseudoshadow::Frame f = r.render({.probe = pseudoshadow::Vec3{2, 0, 7.5},
+//                                     .velocity = pseudoshadow::Vec3{0, 150, 0}, .aovs = {"distance"}});
 //   // f.color: RGB8, f.aov("distance"): float mm, f.stats.max_penetration_mm
 //
 // Failures (a scene error, an unknown key, no GL context, a missing shader) throw
@@ -57,7 +58,9 @@ struct OpenDesc {
 struct RenderDesc {
   std::optional<Vec3> probe;     // probe position, mm (the CLI's --probe); unset: unchanged
   std::optional<Vec3> velocity;  // probe velocity, mm/s (--velocity); unset: unchanged
-  int frames = 1;                // >= 1 (--frames): the probe moves by each frame's displacement
+  // Frames to render (--frames); the probe moves by each frame's displacement. 0: the scene's
+  // render.frames (1 unless the scene says), as the CLI without --frames.
+  int frames = 0;
   // The AOVs to read back into Frame::aovs (names of aov_names()); empty: none. All of them:
   // aov_names().
   std::vector<std::string> aovs;
@@ -126,8 +129,8 @@ class PSEUDOSHADOW_API Renderer {
   void set_probe(const Vec3& position, const Vec3& velocity);
 
   // Renders desc.frames frames and returns the last. The first render after opening or after
-  // set() equals the CLI's `render --frames N` with the same scene, overrides, --probe and
-  // --velocity byte for byte; later calls continue from where the probe was pushed to.
+  // set() equals the CLI's `render` with the same scene, overrides, --probe, --velocity and
+  // --frames byte for byte; later calls continue from where the probe was pushed to.
   Frame render(const RenderDesc& desc = {});
 
   // Image size of the current scene (render.size), pixels.

@@ -115,12 +115,14 @@ class Renderer:
         """(position, velocity) of the probe now."""
         return self._r.probe()
 
-    def render(self, probe=None, velocity=None, frames=1, aovs=()):
-        """Render `frames` frames (the probe moves by each frame's displacement) and return the
-        last as a Frame. aovs: names from aov_names(), or "all"."""
+    def render(self, probe=None, velocity=None, frames=None, aovs=()):
+        """Render `frames` frames (the probe moves by each frame's displacement; None: the
+        scene's render.frames, as the CLI without --frames) and return the last as a Frame.
+        aovs: names from aov_names(), or "all"."""
         names = aov_names() if aovs == "all" else [str(a) for a in aovs]
         raw = self._r.render(None if probe is None else tuple(probe),
-                             None if velocity is None else tuple(velocity), int(frames), names)
+                             None if velocity is None else tuple(velocity),
+                             0 if frames is None else int(frames), names)
         return Frame(raw)
 
 

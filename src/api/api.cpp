@@ -178,9 +178,11 @@ std::pair<Vec3, Vec3> Renderer::probe() const {
 
 Frame Renderer::render(const RenderDesc& desc) {
   Impl& m = impl("render");
-  if (desc.frames < 1) {
-    throw Error("--frames: " + std::to_string(desc.frames) + " is not a frame count; use 1 or more");
+  if (desc.frames < 0) {
+    throw Error("--frames: " + std::to_string(desc.frames) +
+                " is not a frame count; use 1 or more (or 0 for the scene's render.frames)");
   }
+  const int frames = desc.frames > 0 ? desc.frames : m.scene.render.frames;
   std::vector<ps::Aov> aovs;
   for (const std::string& name : desc.aovs) aovs.push_back(value_or_throw(ps::parse_aov(name)));
   const ps::Probe& now = m.probe();
@@ -192,14 +194,14 @@ Frame Renderer::render(const RenderDesc& desc) {
     // in render.frames and in expected_frames (which decides whether a tile bake pays off).
     m.scene.probe.position = position;
     m.scene.probe.velocity = velocity;
-    m.scene.render.frames = desc.frames;
+    m.scene.render.frames = frames;
     ps::RendererOptions options;
-    options.expected_frames = desc.frames;
+    options.expected_frames = frames;
     m.renderer = value_or_throw(ps::Renderer::create(m.scene, options));
   } else {
     m.renderer->set_probe_state(position, velocity);
   }
-  for (int i = 0; i < desc.frames; ++i) ok_or_throw(m.renderer->render_frame());
+  for (int i = 0; i < frames; ++i) ok_or_throw(m.renderer->render_frame());
 
   Frame frame;
   const ps::Image color = m.renderer->read_color();
@@ -210,7 +212,7 @@ Frame Renderer::render(const RenderDesc& desc) {
     ps::Image image = value_or_throw(m.renderer->read_aov(aovs[i]));
     frame.aovs.push_back(Aov{desc.aovs[i], image.channels, std::move(image.pixels)});
   }
-  frame.stats = to_stats(m.renderer->stats(), *m.context, desc.frames);
+  frame.stats = to_stats(m.renderer->stats(), *m.context, frames);
   return frame;
 }
 

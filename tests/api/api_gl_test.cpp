@@ -72,9 +72,10 @@ TEST(ApiGLTest, ErrorsSayWhatToDo) {
   EXPECT_EQ(f.aov("distance").pixels.size(), 32u * 32u);
   EXPECT_EQ(error_of([&] { (void)f.aov("normal"); }),
             "AOV 'normal' was not rendered (asked for: distance); name it in RenderDesc::aovs");
-  psa::RenderDesc no_frames;
-  no_frames.frames = 0;
-  EXPECT_EQ(error_of([&] { r.render(no_frames); }), "--frames: 0 is not a frame count; use 1 or more");
+  psa::RenderDesc negative;
+  negative.frames = -1;
+  EXPECT_EQ(error_of([&] { r.render(negative); }),
+            "--frames: -1 is not a frame count; use 1 or more (or 0 for the scene's render.frames)");
   EXPECT_EQ(error_of([] { psa::Renderer::open_file("no/such/scene.toml"); }),
             "no/such/scene.toml: cannot open scene file: no such file");
   psa::Renderer moved = std::move(r);
