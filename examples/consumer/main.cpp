@@ -1,5 +1,6 @@
-// Renders one frame of the built-in default scene through the installed C++ API and writes its
-// colour as a binary PPM: consumer OUT.ppm [auto|egl|osmesa]. Prints the stats' main numbers.
+// Renders the built-in default scene (or SCENE.toml) through the installed C++ API and writes the
+// last frame's colour as a binary PPM: consumer OUT.ppm [auto|egl|osmesa] [SCENE.toml].
+// Prints the stats' main numbers; a failure is pseudoshadow::Error's one line and exit 1.
 #include <cstdio>
 #include <fstream>
 #include <string>
@@ -18,14 +19,15 @@ pseudoshadow::Backend backend_from(const std::string& name) {
 
 int main(int argc, char** argv) {
   if (argc < 2) {
-    std::fprintf(stderr, "usage: consumer OUT.ppm [auto|egl|osmesa]\n");
+    std::fprintf(stderr, "usage: consumer OUT.ppm [auto|egl|osmesa] [SCENE.toml]\n");
     return 2;
   }
   try {
     pseudoshadow::OpenDesc desc;
     desc.backend = backend_from(argc > 2 ? argv[2] : "auto");
     desc.set = {"render.size=[64,64]"};
-    pseudoshadow::Renderer renderer = pseudoshadow::Renderer::open_default(desc);
+    pseudoshadow::Renderer renderer = argc > 3 ? pseudoshadow::Renderer::open_file(argv[3], desc)
+                                               : pseudoshadow::Renderer::open_default(desc);
     renderer.set("materials.wood.lambda_min", "0.4");
     const pseudoshadow::Frame frame =
         renderer.render({.probe = pseudoshadow::Vec3{2, 0, 7.5}, .velocity = pseudoshadow::Vec3{0, 150, 0},

@@ -18,6 +18,14 @@ if(NOT said MATCHES "64x64 on osmesa: [1-9][0-9]* shadow pixels")
   message(FATAL_ERROR "the consumer rendered no shadow: ${said}")
 endif()
 
+# An error thrown inside libpseudoshadow.so is caught by its type in the consumer, with the
+# CLI's message (the exception's type information crosses the library boundary).
+ps_run(NAME "the example consumer on a missing scene" EXPECT_FAIL
+  COMMAND ${DIR}/consumer/consumer ${DIR}/none.ppm osmesa no/such/scene.toml OUTPUT_VARIABLE failed)
+if(NOT failed STREQUAL "consumer: no/such/scene.toml: cannot open scene file: no such file\n")
+  message(FATAL_ERROR "the consumer on a missing scene said: '${failed}'")
+endif()
+
 # The same frame from the build tree's CLI: equal in every byte.
 ps_run(NAME "CLI render" COMMAND ${CLI} ${PS_RENDER_ARGS} --out ${DIR}/cli.png)
 ps_run(NAME "the consumer's frame equals the CLI's"
