@@ -29,6 +29,10 @@ ps_run(NAME "the build's CLI renders"
   COMMAND ${CLI} ${PS_RENDER_ARGS} --out ${DIR}/cli.png --aov distance=${DIR}/cli_d.exr)
 ps_run(NAME "the unpacked binary's image equals the build's"
   COMMAND ${CLI} compare ${DIR}/cli.png ${DIR}/deb.png --fail 0 --failpercent 0)
+# A shipped scene with an include (the material library) and textures, from the unpacked copy.
+ps_run(NAME "the unpacked binary renders an unpacked scene with an include and textures"
+  COMMAND ${no_env} ${bin} render --scene ${DIR}/root/usr/share/pseudoshadow/scenes/materials_demo.toml
+          --size 64x64 --backend osmesa -q --out ${DIR}/materials_demo.png)
 # The distance AOV is NaN outside the shadow; the Python reader compares it with NaN == NaN.
 ps_run(NAME "the unpacked Python module imports from the unpacked root and renders"
   COMMAND ${CMAKE_COMMAND} -E env --unset=PSEUDOSHADOW_GLSL_DIR
