@@ -87,6 +87,24 @@ class Renderer:
         else:
             self._r = _CoreRenderer.open("default", "", "", backend, sets)
 
+    def close(self):
+        """Release the renderer now; with the last one open, its GL context too, after which
+        another backend may be opened (a process has one GL backend at a time). Also done
+        when the renderer is garbage-collected, or on leaving a `with` block."""
+        self._r = None
+
+    def __enter__(self):
+        return self
+
+    def __exit__(self, *exc):
+        self.close()
+
+    @property
+    def _core(self):
+        if self._r is None:
+            raise Error("this renderer was closed; open a new pseudoshadow.Renderer")
+        return self._r
+
     def set(self, key, value=None):
         """Change scene values by their paths, as --set: set("materials.wood.lambda_min", 0.4),
         set("materials.wood.lambda_min=0.4"), or several checked together (one rebuild; on an
@@ -95,32 +113,32 @@ class Renderer:
         if isinstance(key, dict):
             if value is not None:
                 raise TypeError("set(dict) takes no value")
-            self._r.set([f"{k}={toml_value(v)}" for k, v in key.items()])
+            self._core.set([f"{k}={toml_value(v)}" for k, v in key.items()])
         elif value is None:
-            self._r.set([str(key)])
+            self._core.set([str(key)])
         else:
-            self._r.set([f"{key}={toml_value(value)}"])
+            self._core.set([f"{key}={toml_value(value)}"])
 
     def set_probe(self, position, velocity):
         """Move the probe (mm) and set its velocity (mm/s) without rendering."""
-        self._r.set_probe(tuple(position), tuple(velocity))
+        self._core.set_probe(tuple(position), tuple(velocity))
 
     @property
     def size(self):
         """(width, height) in pixels."""
-        return self._r.size()
+        return self._core.size()
 
     @property
     def probe(self):
         """(position, velocity) of the probe now."""
-        return self._r.probe()
+        return self._core.probe()
 
     def render(self, probe=None, velocity=None, frames=None, aovs=()):
         """Render `frames` frames (the probe moves by each frame's displacement; None: the
         scene's render.frames, as the CLI without --frames) and return the last as a Frame.
         aovs: names from aov_names(), or "all"."""
         names = aov_names() if aovs == "all" else [str(a) for a in aovs]
-        raw = self._r.render(None if probe is None else tuple(probe),
+        raw = self._core.render(None if probe is None else tuple(probe),
                              None if velocity is None else tuple(velocity),
                              0 if frames is None else int(frames), names)
         return Frame(raw)

@@ -4,6 +4,7 @@ messages. Run by CTest once per headless backend (python.pytest.egl, python.pyte
 PS_TEST_BACKEND names it, PS_CLI is the pseudoshadow binary of the same build, PS_SOURCE_DIR
 the source tree (its scenes and examples). Images are 64x64 to keep the suite cheap."""
 
+import gc
 import importlib.util
 import json
 import os
@@ -150,6 +151,20 @@ def test_scene_text_renders_as_its_file():
                             set=SIZE).render(aovs=["texture"])
     assert np.array_equal(from_file.color, from_text.color)
     assert np.array_equal(from_file.aovs["texture"], from_text.aovs["texture"])
+
+
+def test_close_releases_the_backend_for_another():
+    # Renderers of earlier tests may still be held by the tracebacks of the errors they raised
+    # (reference cycles), which only the cycle collector frees.
+    gc.collect()
+    other = "osmesa" if BACKEND == "egl" else "egl"
+    with ps.Renderer(backend=BACKEND, set=SIZE) as r:
+        r.render()
+        with pytest.raises(ps.Error, match=f"backend {other}: a renderer on .* is open"):
+            ps.Renderer(backend=other)
+    with pytest.raises(ps.Error, match="this renderer was closed"):
+        r.render()
+    assert ps.Renderer(backend=other, set=SIZE).render().stats["backend"] == other
 
 
 def test_lambda_sweep_example_measures_the_wavelength_it_sets():
