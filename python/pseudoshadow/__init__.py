@@ -3,7 +3,7 @@
     import pseudoshadow
     r = pseudoshadow.Renderer(scene="scenes/table4_1_e.toml", backend="egl",
                               set={"render.size": [128, 128]})
-    r.set("materials.wood.lambda_min", 0.4)
+    r.set("materials.table4_1_e.lambda_min", 0.4)
     f = r.render(probe=(2, 0, 7.5), velocity=(0, 150, 0), frames=2, aovs=["distance"])
     f.color            # numpy uint8, height x width x 3: the bytes of `render --out x.png`
     f.aovs["distance"] # numpy float32, height x width (mm; NaN where no probe is above)
