@@ -7,6 +7,8 @@
 
 #include "gl/shader.h"
 
+#include "core/install_layout.h"
+
 namespace ps::gl {
 namespace {
 
@@ -81,6 +83,13 @@ Result<Shader> compile_stage(const std::string& path, const Defines& defines,
 Result<Program> build_program(const ProgramDesc& desc, const std::string& glsl_root) {
   assert(gl_loaded() && "build_program: no current GL context (create_context first)");
   assert(!desc.stages.empty() && "build_program: ProgramDesc::stages is empty");
+  std::error_code ec;
+  if (!fs::is_directory(glsl_root, ec)) {
+    // The likely cause is an incomplete install or a binary copied out of it (install_layout.h).
+    return make_error(glsl_root + ": no shader directory; pseudoshadow looks for share/pseudoshadow/glsl "
+                      "beside or above its binary: install it with cmake --install (or the Debian package), "
+                      "or set PSEUDOSHADOW_GLSL_DIR to a glsl/ directory");
+  }
   std::vector<Shader> shaders;
   std::string names;
   for (const std::string& stage : desc.stages) {
@@ -107,14 +116,9 @@ std::string default_glsl_root() {
   if (const char* env = std::getenv("PSEUDOSHADOW_GLSL_DIR"); env != nullptr && *env != '\0') {
     return env;
   }
-  std::error_code ec;
-#ifdef PS_GLSL_SOURCE_DIR
-  if (fs::is_directory(PS_GLSL_SOURCE_DIR, ec)) return PS_GLSL_SOURCE_DIR;
-#endif
-  // Installed layout: <prefix>/bin/exe and <prefix>/share/pseudoshadow/glsl.
-  const fs::path exe = fs::read_symlink("/proc/self/exe", ec);
-  const fs::path base = ec ? fs::current_path(ec) : exe.parent_path();
-  return (base / ".." / "share" / "pseudoshadow" / "glsl").lexically_normal().string();
+  // Found from this binary's own location, never from the tree it was built in
+  // (core/install_layout.h): the build tree links build/share/pseudoshadow/glsl to glsl/.
+  return (install::data_dir() / "glsl").string();
 }
 
 }  // namespace ps::gl

@@ -52,8 +52,8 @@ struct ProgramDesc {
 // Preprocesses, compiles and links; errors carry mapped file:line and the driver's log.
 Result<Program> build_program(const ProgramDesc& desc, const std::string& glsl_root);
 
-// Directory holding the shaders: $PSEUDOSHADOW_GLSL_DIR if set, else the source tree's glsl/
-// (compiled in), else "<exe dir>/../share/pseudoshadow/glsl".
+// Directory holding the shaders: $PSEUDOSHADOW_GLSL_DIR if set, else share/pseudoshadow/glsl
+// found from the binary's own location (core/install_layout.h; in the build tree a link to glsl/).
 std::string default_glsl_root();
 
 }  // namespace ps::gl

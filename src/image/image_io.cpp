@@ -11,6 +11,7 @@
 
 #include <dlfcn.h>
 
+#include "core/install_layout.h"
 #include "image/image.h"
 #include "image/image_io_internal.h"
 
@@ -18,6 +19,9 @@
 // the running executable, and where the build put it, for binaries that live elsewhere (tests).
 #ifndef PS_OIIO_MODULE_NAME
 #error "PS_OIIO_MODULE_NAME must be defined by the build (src/image/CMakeLists.txt)"
+#endif
+#ifndef PS_INSTALL_LIBDIR
+#error "PS_INSTALL_LIBDIR must be defined by the build (src/image/CMakeLists.txt)"
 #endif
 #ifndef PS_OIIO_MODULE_PATH
 #error "PS_OIIO_MODULE_PATH must be defined by the build (src/image/CMakeLists.txt)"
@@ -74,6 +78,10 @@ const LoadedModule& oiio_module() {
     std::error_code ec;
     const fs::path exe = fs::read_symlink("/proc/self/exe", ec);
     if (!ec) candidates.push_back((exe.parent_path() / PS_OIIO_MODULE_NAME).string());
+    // Installed: <prefix>/<libdir>/pseudoshadow/, found from the binary holding this code (the
+    // Python module and libpseudoshadow.so are not beside any executable; core/install_layout.h).
+    candidates.push_back((install::data_dir() / ".." / ".." / PS_INSTALL_LIBDIR / "pseudoshadow" /
+                          PS_OIIO_MODULE_NAME).lexically_normal().string());
     if (candidates.empty() || candidates.front() != PS_OIIO_MODULE_PATH) {
       candidates.push_back(PS_OIIO_MODULE_PATH);
     }

@@ -6,6 +6,7 @@
 #include <fstream>
 #include <sstream>
 
+#include "core/install_layout.h"
 #include "scene/mesh.h"
 #include "scene/scene_convert.h"
 
@@ -310,6 +311,7 @@ Result<Scene> load_scene_or_default(const std::string& path, const std::vector<s
   return load_scene(path, overrides);
 }
 
-std::string default_scene_base_dir() { return PS_DEFAULT_SCENE_BASE_DIR; }
+// Found from the binary's own location, never compiled in (core/install_layout.h).
+std::string default_scene_base_dir() { return (install::data_dir() / "scenes").string(); }
 
 }  // namespace ps

@@ -36,8 +36,9 @@ Result<Scene> load_scene_or_default(const std::string& path, const std::vector<s
 // The embedded copy of scenes/default.toml (compiled in so `render` works with no --scene).
 std::string_view default_scene_text();
 
-// Base dir for the relative paths of default_scene_text(): the source tree's scenes/ dir,
-// fixed at build time (compile definition PS_DEFAULT_SCENE_BASE_DIR). Parse the embedded scene
+// Base dir for the relative paths of default_scene_text(): share/pseudoshadow/scenes found from
+// the binary's own location (core/install_layout.h; in the build tree a link to the source
+// tree's scenes/, in an install the shipped copy). Parse the embedded scene
 // with parse_scene(default_scene_text(), "<embedded default>", default_scene_base_dir(), sets).
 std::string default_scene_base_dir();
 

@@ -1,0 +1,79 @@
+// pseudoshadow._core: the C++ API (include/pseudoshadow/pseudoshadow.h) for Python. Images
+// become numpy arrays (colour uint8 H x W x 3; an AOV float32 H x W, or H x W x C for C > 1),
+// pseudoshadow::Error becomes pseudoshadow.Error (a RuntimeError) with the CLI's message. The
+// friendlier signatures (keyword arguments, Python values for set()) are in __init__.py.
+#include <pybind11/numpy.h>
+#include <pybind11/pybind11.h>
+#include <pybind11/stl.h>
+
+#include "pseudoshadow/pseudoshadow.h"
+
+namespace py = pybind11;
+namespace psa = pseudoshadow;
+
+namespace {
+
+// A copy of `values` shaped height x width (x channels when channels > 1).
+template <class T>
+py::array_t<T> image_array(const std::vector<T>& values, int width, int height, int channels) {
+  std::vector<py::ssize_t> shape = {height, width};
+  if (channels > 1) shape.push_back(channels);
+  py::array_t<T> array(shape);
+  std::copy(values.begin(), values.end(), array.mutable_data());
+  return array;
+}
+
+psa::Backend parse_backend(const std::string& name) {
+  if (name == "auto") return psa::Backend::kAuto;
+  if (name == "egl") return psa::Backend::kEgl;
+  if (name == "osmesa") return psa::Backend::kOsmesa;
+  throw psa::Error("--backend: unknown backend '" + name + "' (use auto, egl or osmesa)");
+}
+
+py::dict frame_dict(const psa::Frame& f) {
+  py::dict aovs;
+  for (const psa::Aov& a : f.aovs) aovs[py::str(a.name)] = image_array(a.pixels, f.width, f.height, a.channels);
+  py::dict out;
+  out["color"] = image_array(f.color, f.width, f.height, 3);
+  out["aovs"] = aovs;
+  out["stats_json"] = f.stats.json;
+  return out;
+}
+
+}  // namespace
+
+PYBIND11_MODULE(_core, m) {
+  m.doc() = "pseudoshadow's renderer (C++); use the pseudoshadow package";
+  py::register_exception<psa::Error>(m, "Error", PyExc_RuntimeError);
+
+  py::class_<psa::Renderer>(m, "Renderer")
+      .def_static("open", [](const std::string& kind, const std::string& source, const std::string& base_dir,
+                             const std::string& backend, const std::vector<std::string>& sets) {
+        psa::OpenDesc desc;
+        desc.backend = parse_backend(backend);
+        desc.set = sets;
+        if (kind == "file") return psa::Renderer::open_file(source, desc);
+        if (kind == "string") return psa::Renderer::open_string(source, "<string>", base_dir, desc);
+        return psa::Renderer::open_default(desc);
+      })
+      .def("set", [](psa::Renderer& r, const std::vector<std::string>& key_values) { r.set_all(key_values); })
+      .def("set_probe", &psa::Renderer::set_probe)
+      .def("size", &psa::Renderer::size)
+      .def("probe", &psa::Renderer::probe)
+      .def("render", [](psa::Renderer& r, std::optional<psa::Vec3> probe, std::optional<psa::Vec3> velocity,
+                        int frames, const std::vector<std::string>& aovs) {
+        psa::RenderDesc desc{probe, velocity, frames, aovs};
+        psa::Frame frame;
+        {
+          py::gil_scoped_release release;  // the frames take a while; other Python threads may run
+          frame = r.render(desc);
+        }
+        return frame_dict(frame);
+      });
+
+  m.def("aov_names", &psa::aov_names);
+  m.def("read_image", [](const std::string& path) {
+    const psa::ImageData image = psa::read_image(path);
+    return image_array(image.pixels, image.width, image.height, image.channels);
+  });
+}

@@ -1,0 +1,150 @@
+"""pseudoshadow: render the pseudo-shadow of a haptic probe on virtual surfaces, headless.
+
+    import pseudoshadow
+    r = pseudoshadow.Renderer(scene="scenes/table4_1_e.toml", backend="egl",
+                              set={"render.size": [128, 128]})
+    r.set("materials.table4_1_e.lambda_min", 0.4)
+    f = r.render(probe=(2, 0, 7.5), velocity=(0, 150, 0), frames=2, aovs=["distance"])
+    f.color            # numpy uint8, height x width x 3: the bytes of `render --out x.png`
+    f.aovs["distance"] # numpy float32, height x width (mm; NaN where no probe is above)
+    f.stats            # dict: the JSON of `render --stats FILE`
+
+Errors raise pseudoshadow.Error (a RuntimeError) with the command line's message, e.g.
+"scene.toml:12: ..." or "--set materials.wood.lambda_mn: unknown key; close matches: ...".
+The C++ API it wraps and every decision: docs/api.md.
+"""
+
+import json
+import math
+import os
+
+from ._core import Error, aov_names
+from ._core import Renderer as _CoreRenderer
+from ._core import read_image as _read_image
+
+Error.__module__ = "pseudoshadow"  # shown as pseudoshadow.Error in tracebacks
+
+__all__ = ["Error", "Frame", "Renderer", "aov_names", "read_image", "toml_value"]
+
+
+def toml_value(value):
+    """The TOML text of a Python value, as `--set KEY=VALUE` takes it."""
+    if isinstance(value, bool):
+        return "true" if value else "false"
+    if isinstance(value, int):
+        return str(value)
+    if isinstance(value, float):
+        if math.isnan(value):
+            return "nan"
+        if math.isinf(value):
+            return "inf" if value > 0 else "-inf"
+        return repr(value)  # the shortest text that reads back as the same double
+    if isinstance(value, str):
+        return json.dumps(value)  # a TOML basic string: JSON's escapes are TOML's
+    if isinstance(value, (list, tuple)):
+        return "[" + ",".join(toml_value(v) for v in value) + "]"
+    if hasattr(value, "tolist"):  # numpy scalars and arrays
+        return toml_value(value.tolist())
+    raise TypeError(f"cannot write {type(value).__name__} as a scene value: "
+                    "use a number, bool, string or a list of them")
+
+
+class Frame:
+    """The last frame of a render() call: colour, the AOVs asked for, and the stats."""
+
+    def __init__(self, raw):
+        self.color = raw["color"]
+        self.aovs = raw["aovs"]
+        self.stats = json.loads(raw["stats_json"])
+
+    def __repr__(self):
+        h, w = self.color.shape[:2]
+        return f"<pseudoshadow.Frame {w}x{h} aovs={sorted(self.aovs)}>"
+
+
+class Renderer:
+    """A scene on a headless OpenGL 4.5 context (EGL or OSMesa).
+
+    scene: a scene file's path; None for the built-in default scene.
+    scene_text: scene TOML given as a string instead (relative files resolve against base_dir,
+      default the current directory).
+    backend: "auto" (EGL, then OSMesa), "egl" or "osmesa".
+    set: scene overrides applied when the scene is parsed, as {path: value} or ["path=value", ...].
+    """
+
+    def __init__(self, scene=None, backend="auto", set=None, scene_text=None, base_dir=""):
+        if scene is not None and scene_text is not None:
+            raise ValueError("give scene (a file) or scene_text, not both")
+        sets = []
+        if isinstance(set, dict):
+            sets = [f"{k}={toml_value(v)}" for k, v in set.items()]
+        elif set is not None:
+            sets = [str(s) for s in set]
+        if scene_text is not None:
+            self._r = _CoreRenderer.open("string", scene_text, str(base_dir), backend, sets)
+        elif scene is not None:
+            self._r = _CoreRenderer.open("file", os.fspath(scene), "", backend, sets)
+        else:
+            self._r = _CoreRenderer.open("default", "", "", backend, sets)
+
+    def close(self):
+        """Release the renderer now; with the last one open, its GL context too, after which
+        another backend may be opened (a process has one GL backend at a time). Also done
+        when the renderer is garbage-collected, or on leaving a `with` block."""
+        self._r = None
+
+    def __enter__(self):
+        return self
+
+    def __exit__(self, *exc):
+        self.close()
+
+    @property
+    def _core(self):
+        if self._r is None:
+            raise Error("this renderer was closed; open a new pseudoshadow.Renderer")
+        return self._r
+
+    def set(self, key, value=None):
+        """Change scene values by their paths, as --set: set("materials.wood.lambda_min", 0.4),
+        set("materials.wood.lambda_min=0.4"), or several checked together (one rebuild; on an
+        error none applies): set({"materials.wood.lambda_min": 0.4, "materials.wood.lambda_max": 0.6}).
+        The probe keeps its position and velocity unless these keys set them."""
+        if isinstance(key, dict):
+            if value is not None:
+                raise TypeError("set(dict) takes no value")
+            self._core.set([f"{k}={toml_value(v)}" for k, v in key.items()])
+        elif value is None:
+            self._core.set([str(key)])
+        else:
+            self._core.set([f"{key}={toml_value(value)}"])
+
+    def set_probe(self, position, velocity):
+        """Move the probe (mm) and set its velocity (mm/s) without rendering."""
+        self._core.set_probe(tuple(position), tuple(velocity))
+
+    @property
+    def size(self):
+        """(width, height) in pixels."""
+        return self._core.size()
+
+    @property
+    def probe(self):
+        """(position, velocity) of the probe now."""
+        return self._core.probe()
+
+    def render(self, probe=None, velocity=None, frames=None, aovs=()):
+        """Render `frames` frames (the probe moves by each frame's displacement; None: the
+        scene's render.frames, as the CLI without --frames) and return the last as a Frame.
+        aovs: names from aov_names(), or "all"."""
+        names = aov_names() if aovs == "all" else [str(a) for a in aovs]
+        raw = self._core.render(None if probe is None else tuple(probe),
+                             None if velocity is None else tuple(velocity),
+                             0 if frames is None else int(frames), names)
+        return Frame(raw)
+
+
+def read_image(path):
+    """An image file read by pseudoshadow's own reader (PNG; EXR and others through
+    OpenImageIO): float32, height x width (x channels); 8-bit files as k/255."""
+    return _read_image(os.fspath(path))

@@ -1,0 +1,179 @@
+"""The Python module against the command line: the same scene, overrides, probe and frame count
+must give the CLI's PNG bytes, its EXR floats and its --stats JSON exactly, and the same error
+messages. Run by CTest once per headless backend (python.pytest.egl, python.pytest.osmesa):
+PS_TEST_BACKEND names it, PS_CLI is the pseudoshadow binary of the same build, PS_SOURCE_DIR
+the source tree (its scenes and examples). Images are 64x64 to keep the suite cheap."""
+
+import gc
+import importlib.util
+import json
+import os
+import subprocess
+from pathlib import Path
+
+import numpy as np
+import pytest
+
+import pseudoshadow as ps
+
+BACKEND = os.environ.get("PS_TEST_BACKEND", "auto")
+CLI = os.environ.get("PS_CLI", "pseudoshadow")
+SOURCE = Path(os.environ.get("PS_SOURCE_DIR", Path(__file__).resolve().parents[2]))
+SCENES = SOURCE / "scenes"
+SIZE = {"render.size": [64, 64]}
+# Wall times differ between any two runs; everything else in --stats must be equal.
+TIME_KEYS = {"timings_ms", "gabor_bake_ms", "gabor_tiles_ready_ms", "first_frame_ms"}
+
+
+def cli(*args, cwd):
+    return subprocess.run([CLI, *map(str, args), "--backend", BACKEND], cwd=cwd,
+                          capture_output=True, text=True, check=False)
+
+
+def png_bytes(path):
+    """The 8-bit samples of a PNG, through pseudoshadow's reader (k/255 floats)."""
+    pixels = ps.read_image(path)
+    assert pixels.dtype == np.float32
+    return np.rint(pixels * 255.0).astype(np.uint8)
+
+
+def assert_same(got, want, what):
+    """Exact equality (NaN equals NaN), with a short message instead of two array dumps."""
+    assert got.shape == want.shape, f"{what}: shape {got.shape} vs {want.shape}"
+    same = (got == want) | (np.isnan(got) & np.isnan(want)) if got.dtype.kind == "f" else got == want
+    if not same.all():
+        diff = np.abs(got.astype(np.float64) - want.astype(np.float64))
+        raise AssertionError(f"{what}: {np.count_nonzero(~same)} of {same.size} values differ, "
+                             f"max |difference| {np.nanmax(diff)}")
+
+
+def without_times(stats):
+    return {k: v for k, v in stats.items() if k not in TIME_KEYS}
+
+
+def test_import_lists_the_aovs():
+    assert ps.aov_names() == ["intensity", "distance", "texture", "normal", "displacement"]
+
+
+def test_frame_equals_the_cli_png_exr_and_stats(tmp_path):
+    aov_files = {name: f"{name}.exr" for name in ps.aov_names()}
+    args = ["render", "--size", "64x64", "--set", "materials.wood.lambda_min=0.4",
+            "--probe", "2,0,7.5", "--velocity", "0,150,0", "--frames", "3",
+            "--out", "color.png", "--stats", "stats.json", "-q"]
+    for name, file in aov_files.items():
+        args += ["--aov", f"{name}={file}"]
+    run = cli(*args, cwd=tmp_path)
+    assert run.returncode == 0, run.stderr
+
+    r = ps.Renderer(backend=BACKEND, set=SIZE)
+    r.set("materials.wood.lambda_min", 0.4)
+    f = r.render(probe=(2, 0, 7.5), velocity=(0, 150, 0), frames=3, aovs="all")
+
+    assert f.color.dtype == np.uint8 and f.color.shape == (64, 64, 3)
+    assert_same(f.color, png_bytes(tmp_path / "color.png"), "colour vs the CLI's PNG")
+    for name, file in aov_files.items():
+        exr = ps.read_image(tmp_path / file)
+        got = f.aovs[name]
+        assert got.dtype == np.float32, name
+        assert_same(got, exr, f"AOV {name} vs the CLI's EXR")
+    # Not a vacuous comparison: a shadow with texture, and NaN distance outside it.
+    assert f.aovs["intensity"].max() == 1.0
+    assert np.isnan(f.aovs["distance"]).any() and np.isfinite(f.aovs["distance"]).any()
+    assert np.count_nonzero(f.aovs["texture"]) > 100
+
+    cli_stats = json.loads((tmp_path / "stats.json").read_text())
+    assert without_times(f.stats) == without_times(cli_stats)
+    assert f.stats["backend"] == (BACKEND if BACKEND != "auto" else cli_stats["backend"])
+    assert f.stats["frames"] == 3 and f.stats["shadow_pixels"] > 0
+
+
+def test_later_renders_continue_from_the_pushed_probe():
+    r = ps.Renderer(backend=BACKEND, set=SIZE)  # default scene: the probe 1 mm into the plank
+    z0 = 7.0
+    first = r.render()
+    z1 = first.stats["probe_position"][2]
+    assert z1 > z0  # pushed out of the surface
+    assert r.probe[0][2] == z1
+    second = r.render()
+    assert second.stats["max_penetration"] < first.stats["max_penetration"]
+    assert second.stats["probe_position"][2] > z1
+    # A given pose starts from there again.
+    third = r.render(probe=(0, 0, z0))
+    assert third.stats["max_penetration"] > second.stats["max_penetration"]
+
+
+def test_set_changes_the_image_and_a_bad_set_changes_nothing(tmp_path):
+    r = ps.Renderer(backend=BACKEND, set=SIZE)
+    before = r.render(probe=(0, 0, 7), frames=1)
+    r.set("materials.wood.lambda_min", 0.4)
+    after = r.render(probe=(0, 0, 7), frames=1)
+    assert np.count_nonzero(before.color != after.color) > 50
+
+    with pytest.raises(ps.Error) as err:
+        r.set("materials.wood.lambda_mn", 0.4)
+    message = str(err.value)
+    assert message.startswith("--set materials.wood.lambda_mn: unknown key")
+    run = cli("render", "--set", "materials.wood.lambda_mn=0.4", "--out", "x.png", cwd=tmp_path)
+    assert run.returncode == 2 and message in run.stderr
+
+    with pytest.raises(ps.Error, match=r"--set render\.size"):
+        r.set("render.size", [0, 64])
+    assert r.size == (64, 64)
+    again = ps.Renderer(backend=BACKEND, set=SIZE)
+    again.set("materials.wood.lambda_min=0.4")
+    assert np.array_equal(again.render(probe=(0, 0, 7)).color, after.color)
+
+
+def test_scene_errors_carry_file_and_line_like_the_cli(tmp_path):
+    bad = tmp_path / "bad.toml"
+    bad.write_text((SCENES / "table4_1_a.toml").read_text().replace(
+        "radius_mm = 25.0", "radius_mm = -25.0"))
+    line = next(i for i, text in enumerate(bad.read_text().splitlines(), 1) if "-25.0" in text)
+    with pytest.raises(ps.Error) as err:
+        ps.Renderer(scene=bad, backend=BACKEND)
+    message = str(err.value)
+    assert message.startswith(f"{bad}:{line}:"), message
+    run = cli("render", "--scene", bad, "--out", "x.png", cwd=tmp_path)
+    assert run.returncode == 1 and message in run.stderr
+
+    with pytest.raises(ps.Error, match=r"^<string>:2: unknown key 'radius' in \[probe\]"):
+        ps.Renderer(scene_text="[probe]\nradius = 1\n", backend=BACKEND)
+    with pytest.raises(ps.Error, match="unknown AOV 'depth'"):
+        ps.Renderer(backend=BACKEND, set=SIZE).render(aovs=["depth"])
+    with pytest.raises(ps.Error, match="unknown backend 'vulkan'"):
+        ps.Renderer(backend="vulkan")
+
+
+def test_scene_text_renders_as_its_file():
+    path = SCENES / "table4_1_a.toml"
+    from_file = ps.Renderer(scene=path, backend=BACKEND, set=SIZE).render(aovs=["texture"])
+    from_text = ps.Renderer(scene_text=path.read_text(), base_dir=SCENES, backend=BACKEND,
+                            set=SIZE).render(aovs=["texture"])
+    assert np.array_equal(from_file.color, from_text.color)
+    assert np.array_equal(from_file.aovs["texture"], from_text.aovs["texture"])
+
+
+def test_close_releases_the_backend_for_another():
+    # Renderers of earlier tests may still be held by the tracebacks of the errors they raised
+    # (reference cycles), which only the cycle collector frees.
+    gc.collect()
+    other = "osmesa" if BACKEND == "egl" else "egl"
+    with ps.Renderer(backend=BACKEND, set=SIZE) as r:
+        r.render()
+        with pytest.raises(ps.Error, match=f"backend {other}: a renderer on .* is open"):
+            ps.Renderer(backend=other)
+    with pytest.raises(ps.Error, match="this renderer was closed"):
+        r.render()
+    assert ps.Renderer(backend=other, set=SIZE).render().stats["backend"] == other
+
+
+def test_lambda_sweep_example_measures_the_wavelength_it_sets():
+    spec = importlib.util.spec_from_file_location(
+        "lambda_sweep", SOURCE / "examples" / "python" / "lambda_sweep.py")
+    sweep = importlib.util.module_from_spec(spec)
+    spec.loader.exec_module(sweep)
+    lambdas = [2.0, 3.0]
+    measured = sweep.measure(lambdas, size=128, backend=BACKEND)
+    assert measured[0] < measured[1]
+    for set_mm, got_mm in zip(lambdas, measured):
+        assert got_mm == pytest.approx(set_mm, rel=sweep.tolerance(set_mm))
