@@ -1,5 +1,11 @@
 #include "app/cli_groups.h"
 
+#include <algorithm>
+
+#include <cstdlib>
+
+#include <unistd.h>
+
 #include "app/cli.h"
 #include "scene/scene_io.h"
 #include "tune/overrides_file.h"
@@ -105,5 +111,21 @@ Result<Scene> load_scene_or_default(const SceneArgs& scene) {
 int scene_exit_code(const Error& e) { return e.message.rfind("--", 0) == 0 ? kExitUsage : kExitRuntime; }
 
 std::string scene_display_name(const std::string& path) { return path.empty() ? kDefaultSceneName : path; }
+
+void add_render_threads_option(CLI::App& app, int& threads) {
+  add_int(app, "--render-threads", "N", threads, 0, 1024,
+          "llvmpipe's rasteriser threads beside the haptic thread (default: one core fewer than the machine "
+          "has, at least 1, so the 1 kHz loop keeps time; 0: every core; LP_NUM_THREADS in the environment wins)");
+}
+
+std::string apply_render_threads(int threads) {
+  if (const char* set = std::getenv("LP_NUM_THREADS"); set != nullptr && *set != '\0')
+    return std::string(set) + " (LP_NUM_THREADS from the environment)";
+  if (threads == 0) return "every core (llvmpipe's default)";
+  const long cores = std::max(1L, sysconf(_SC_NPROCESSORS_ONLN));
+  const long n = threads > 0 ? threads : std::max(1L, cores - 1);
+  setenv("LP_NUM_THREADS", std::to_string(n).c_str(), 1);
+  return std::to_string(n) + (threads > 0 ? "" : " (a core left for the haptic thread)");
+}
 
 }  // namespace ps::cli

@@ -48,6 +48,14 @@ void add_image_options(CLI::App& app, SceneArgs& scene);
 void add_gl_options(CLI::App& app, gl::Backend& backend);
 // --stats FILE.json (the per-frame numbers of the last frame, Renderer's stats_json).
 void add_stats_option(CLI::App& app, std::string& path);
+// --render-threads N for the commands that run a real-time haptic loop beside the renderer
+// (`run`, `bench-haptics`): llvmpipe's rasteriser threads. Default -1: one core fewer than the
+// machine has (at least 1), so the haptic thread always finds a free core (docs/haptics.md,
+// "Keeping time without privileges"); 0: llvmpipe's own default (every core).
+void add_render_threads_option(CLI::App& app, int& threads);
+// Sets LP_NUM_THREADS for `threads` before the GL context is created, unless the user set it;
+// returns what is in force, for the command's report ("1 (a core left for the haptic thread)").
+std::string apply_render_threads(int threads);
 // -q, --quiet.
 void add_quiet_option(CLI::App& app, bool& quiet, const std::string& help = "no progress output");
 
