@@ -19,6 +19,7 @@ readonly kPackages=(
 
 repo_root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 build_dir="${repo_root}/build"
+ccache_launcher="env;CCACHE_BASEDIR=${repo_root};CCACHE_NOHASHDIR=true;ccache"
 
 log() { echo "bootstrap: $*"; }
 die() { echo "bootstrap: error: $*" >&2; exit 1; }
@@ -65,9 +66,10 @@ configure() {
   fi
   log "configuring ${build_dir}"
   # ccache (installed above) makes rebuilds of an unchanged file, in this or another checkout,
-  # a cache hit; it never changes what is built.
+  # a cache hit; it never changes what is built. Paths are hashed relative to the checkout
+  # (CCACHE_BASEDIR, CCACHE_NOHASHDIR), so a fresh clone elsewhere hits the same entries.
   cmake -S "${repo_root}" -B "${build_dir}" -DCMAKE_BUILD_TYPE=RelWithDebInfo \
-    -DCMAKE_C_COMPILER_LAUNCHER=ccache -DCMAKE_CXX_COMPILER_LAUNCHER=ccache ||
+    "-DCMAKE_C_COMPILER_LAUNCHER=${ccache_launcher}" "-DCMAKE_CXX_COMPILER_LAUNCHER=${ccache_launcher}" ||
     die "cmake configure failed"
 }
 

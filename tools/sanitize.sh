@@ -8,6 +8,8 @@
 #   PS_FUZZ_SECONDS=1800 tools/sanitize.sh   # longer fuzzing
 set -euo pipefail
 repo_root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
+# As tools/bootstrap.sh: ccache hashes paths relative to the checkout, so clones share entries.
+ccache_launcher="env;CCACHE_BASEDIR=${repo_root};CCACHE_NOHASHDIR=true;ccache"
 jobs="$(nproc)"
 log() { echo "sanitize: $*"; }
 
@@ -16,7 +18,8 @@ configure() {  # configure DIR [cmake args...] unless DIR is already configured
   if [ -f "${dir}/CMakeCache.txt" ] && [ -f "${dir}/Makefile" ]; then return 0; fi
   cmake -S "${repo_root}" -B "${dir}" -DCMAKE_BUILD_TYPE=RelWithDebInfo \
     -DCMAKE_C_COMPILER=clang -DCMAKE_CXX_COMPILER=clang++ \
-    -DCMAKE_C_COMPILER_LAUNCHER=ccache -DCMAKE_CXX_COMPILER_LAUNCHER=ccache "$@" > "${dir}.configure.log" ||
+    "-DCMAKE_C_COMPILER_LAUNCHER=${ccache_launcher}" "-DCMAKE_CXX_COMPILER_LAUNCHER=${ccache_launcher}" "$@" \
+    > "${dir}.configure.log" ||
     { cat "${dir}.configure.log"; exit 1; }
 }
 
