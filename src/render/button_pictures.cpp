@@ -7,6 +7,8 @@
 #include <fstream>
 #include <iterator>
 
+#include <unistd.h>
+
 #include "core/hash.h"
 #include "image/image.h"
 #include "render/renderer.h"
@@ -45,19 +47,22 @@ Status render_picture(const std::string& scene_file, const std::string& path) {
   if (!r) return r.error();
   show_world_at_start(*r.value());
   if (Status s = r.value()->render_frame(); !s) return s;
-  std::error_code ec;
-  std::filesystem::create_directories(picture_cache_dir(), ec);
-  if (ec) return make_error(picture_cache_dir() + ": cannot create the picture cache: " + ec.message());
   return write_image(path, r.value()->read_color());
 }
 
 }  // namespace
 
 std::string picture_cache_dir() {
-  if (const char* d = std::getenv("PSEUDOSHADOW_CACHE_DIR"); d != nullptr && *d != '\0') return std::string(d) + "/pictures";
-  if (const char* d = std::getenv("XDG_CACHE_HOME"); d != nullptr && *d != '\0') return std::string(d) + "/pseudoshadow/pictures";
-  const char* home = std::getenv("HOME");
-  return std::string(home != nullptr && *home != '\0' ? home : "/tmp") + "/.cache/pseudoshadow/pictures";
+  std::string dir;
+  if (const char* d = std::getenv("PSEUDOSHADOW_CACHE_DIR"); d != nullptr && *d != '\0') dir = std::string(d) + "/pictures";
+  else if (const char* x = std::getenv("XDG_CACHE_HOME"); x != nullptr && *x != '\0') dir = std::string(x) + "/pseudoshadow/pictures";
+  else if (const char* h = std::getenv("HOME"); h != nullptr && *h != '\0') dir = std::string(h) + "/.cache/pseudoshadow/pictures";
+  std::error_code ec;
+  if (!dir.empty() && (std::filesystem::create_directories(dir, ec), !ec) && access(dir.c_str(), W_OK) == 0) return dir;
+  const std::string tmp = (std::filesystem::temp_directory_path(ec) / ("pseudoshadow-" + std::to_string(getuid()))).string() +
+                          "/pictures";
+  std::filesystem::create_directories(tmp, ec);
+  return tmp;
 }
 
 Status make_button_pictures(Scene& scene) {

@@ -21,7 +21,9 @@ namespace ps {
 
 inline constexpr int kPictureSize = 128;
 
-// The cache directory's pictures/ (not created here).
+// The cache directory's pictures/, created if need be. When it cannot be created (no HOME, a
+// read-only home) a directory of this user's under the system's temporary directory is used
+// instead, so a scene with pictures still renders (they are then made again after a reboot).
 std::string picture_cache_dir();
 
 // For every picture button of `scene`: its picture's file (cached or rendered now, which needs

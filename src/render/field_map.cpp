@@ -95,8 +95,6 @@ Status make_field_maps(Scene& scene) {
     const std::string path = picture_cache_dir() + name;
     auto cached = read_image(path);
     if (!cached || cached->width != kFieldMapSize || cached->height != kFieldMapSize) {
-      std::error_code ec;
-      std::filesystem::create_directories(picture_cache_dir(), ec);
       if (Status st = write_image(path, field_map_image(scene, s)); !st)
         return make_error(scene.path + ":" + std::to_string(s.line) + ": field map: " + st.error().message);
     }
