@@ -428,23 +428,20 @@ Status open_events(const RunArgs& a, Session& s) {
 void switch_scene(const RunArgs& a, Session& s) {
   const std::string path = std::exchange(s.pending_scene, std::string());
   const bool back = std::exchange(s.going_back, false);
+  auto stay = [&path](const Error& e) {
+    std::fprintf(stderr, "button: cannot switch to %s, staying: %s\n", path.c_str(), e.message.c_str());
+  };
   auto scene = load_scene(path);
-  auto haptic = scene ? world::HapticScene::build(scene.value()) : Result<world::HapticScene>(scene.error());
-  if (!scene || !haptic) {
-    std::fprintf(stderr, "button: cannot switch to %s, staying: %s\n", path.c_str(),
-                 (scene ? haptic.error() : scene.error()).message.c_str());
-    return;
-  }
+  if (!scene) return stay(scene.error());
+  auto haptic = world::HapticScene::build(scene.value());
+  if (!haptic) return stay(haptic.error());
   const Scene& current = s.tune->renderer().scene();
   scene->render.width = current.render.width;  // the window keeps its size
   scene->render.height = current.render.height;
   RendererOptions options;
   options.bake_slice_ms = 40.0;
   auto tune = TuneSession::open({path, {}, options}, std::move(scene.value()));
-  if (!tune) {
-    std::fprintf(stderr, "button: cannot switch to %s, staying: %s\n", path.c_str(), tune.error().message.c_str());
-    return;
-  }
+  if (!tune) return stay(tune.error());
   if (back) s.came_from.pop_back();
   else s.came_from.push_back(s.tune->scene_path());
   s.tune = std::move(tune.value());

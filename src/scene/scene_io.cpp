@@ -166,6 +166,17 @@ Surface button_plate(const Button& b, int index) {
   return s;
 }
 
+// A white copy of material `index`, named NAME@suffix, appended to the materials: a surface that
+// gets an albedo texture of its own (a button's picture, a field map) draws it in true colours
+// and keeps the material's other keys and feel. Returns the copy's index.
+int add_white_copy(Scene& scene, int index, const std::string& suffix) {
+  Material m = scene.materials[static_cast<std::size_t>(index)];
+  m.name += "@" + suffix;
+  m.albedo = glm::dvec3(1.0);
+  scene.materials.push_back(std::move(m));
+  return static_cast<int>(scene.materials.size()) - 1;
+}
+
 Status read_buttons(const ParseContext& ctx, const toml::table& root, const std::vector<std::string>& names,
                     Scene& scene) {
   if (Status s = read_array(ctx, root, "buttons", scene.buttons, [&](const toml::table& t, int i, Button& b) {
@@ -190,13 +201,7 @@ Status read_buttons(const ParseContext& ctx, const toml::table& root, const std:
         scene.flags.push_back(b.action_target);
       }
     }
-    if (b.picture) {  // its own material: the picture goes in as its albedo texture
-      Material m = scene.materials[static_cast<std::size_t>(b.material_index)];
-      m.name += "@button" + std::to_string(i);
-      m.albedo = glm::dvec3(1.0);
-      b.picture_material = static_cast<int>(scene.materials.size());
-      scene.materials.push_back(std::move(m));
-    }
+    if (b.picture) b.picture_material = add_white_copy(scene, b.material_index, "button" + std::to_string(i));
     scene.surfaces.push_back(button_plate(b, static_cast<int>(i)));
   }
   return ok_status();
@@ -206,12 +211,8 @@ Status read_buttons(const ParseContext& ctx, const toml::table& root, const std:
 void add_field_map_materials(Scene& scene) {
   for (std::size_t i = 0; i < scene.surfaces.size(); ++i) {
     Surface& s = scene.surfaces[i];
-    if (!s.field_map) continue;
-    Material m = scene.materials[static_cast<std::size_t>(s.material_index)];
-    m.name += "@field_map" + std::to_string(i);
-    m.albedo = glm::dvec3(1.0);
-    s.field_map_material = s.material_index = static_cast<int>(scene.materials.size());
-    scene.materials.push_back(std::move(m));
+    if (s.field_map)
+      s.field_map_material = s.material_index = add_white_copy(scene, s.material_index, "field_map" + std::to_string(i));
   }
 }
 
