@@ -4,14 +4,21 @@
 #include <cstdio>
 #include <filesystem>
 
+#include "world/deformable.h"
+
 namespace ps {
 
 Status drive_frame(Renderer& renderer, HapticLoop& loop, std::uint64_t frame, HapticState& state) {
   state = loop.state().read();
   const Probe& probe = renderer.scene().probe;
-  // The proxy as drawn: stretched near an Illusion object (visual_position; identity elsewhere).
-  const glm::dvec3 shown = state.have_sample ? visual_position(renderer.scene(), state.proxy_mm) : probe.position;
+  // The proxy as drawn: stretched near an Illusion object (visual_position; identity elsewhere),
+  // pressed into a deformable surface by the coupling's share of the hand's depth
+  // (world::pressed_position), which then dents under it (Renderer::advance_deformation).
+  const glm::dvec3 pressed = world::pressed_position(renderer.scene(), state.contact_surface, state.proxy_mm,
+                                                     state.position_mm, loop.params().forces.coupling_n_per_mm);
+  const glm::dvec3 shown = state.have_sample ? visual_position(renderer.scene(), pressed) : probe.position;
   if (state.have_sample) renderer.set_probe_state(shown, state.velocity_mm_s);
+  if (state.have_sample) renderer.advance_deformation(state.time_s);
   if (state.have_sample) renderer.set_device_position(state.device_mm);
   const std::span<const glm::dvec3> bodies(state.body_mm.data(), static_cast<std::size_t>(state.body_count));
   renderer.set_body_positions(bodies);

@@ -122,6 +122,7 @@ class HapticLoop {
   void stop();         // joins it; idempotent
   void run_ticks(std::uint64_t n);  // on the caller's thread (fake clock)
 
+  const HapticLoopParams& params() const { return params_; }
   const Snapshot<HapticState>& state() const { return state_; }
   // Events the haptic thread raised (contact start/end, ...): drained by one consumer, the
   // render thread or `replay` (haptics/events.h).

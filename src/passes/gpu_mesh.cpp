@@ -4,8 +4,9 @@
 
 namespace ps {
 
-GpuMesh GpuMesh::upload(const Mesh& mesh) {
-  GpuMesh g;
+namespace {
+
+std::vector<float> interleave(const Mesh& mesh) {
   std::vector<float> interleaved;
   interleaved.reserve(mesh.positions.size() * 6);
   for (size_t i = 0; i < mesh.positions.size(); ++i) {
@@ -13,8 +14,16 @@ GpuMesh GpuMesh::upload(const Mesh& mesh) {
     const glm::vec3 n = i < mesh.normals.size() ? mesh.normals[i] : glm::vec3(0.0f, 0.0f, 1.0f);
     interleaved.insert(interleaved.end(), {p.x, p.y, p.z, n.x, n.y, n.z});
   }
+  return interleaved;
+}
+
+}  // namespace
+
+GpuMesh GpuMesh::upload(const Mesh& mesh, bool dynamic) {
+  GpuMesh g;
+  const std::vector<float> interleaved = interleave(mesh);
   g.vertices = gl::make_buffer(static_cast<GLsizeiptr>(interleaved.size() * sizeof(float)),
-                               interleaved.data(), 0);
+                               interleaved.data(), dynamic ? GL_DYNAMIC_STORAGE_BIT : 0);
   g.indices = gl::make_buffer(static_cast<GLsizeiptr>(mesh.indices.size() * sizeof(std::uint32_t)),
                               mesh.indices.data(), 0);
   g.index_count = static_cast<GLsizei>(mesh.indices.size());
@@ -28,6 +37,12 @@ GpuMesh GpuMesh::upload(const Mesh& mesh) {
     glVertexArrayAttribBinding(vao, attr, 0);
   }
   return g;
+}
+
+void GpuMesh::update(const Mesh& mesh) {
+  const std::vector<float> interleaved = interleave(mesh);
+  glNamedBufferSubData(vertices.id(), 0, static_cast<GLsizeiptr>(interleaved.size() * sizeof(float)),
+                       interleaved.data());
 }
 
 void GpuMesh::draw() const {

@@ -13,7 +13,10 @@ struct GpuMesh {
   gl::Buffer indices;
   GLsizei index_count = 0;
 
-  static GpuMesh upload(const Mesh& mesh);
+  // `dynamic`: the vertex buffer may be rewritten with update() (a deformable surface).
+  static GpuMesh upload(const Mesh& mesh, bool dynamic = false);
+  // New positions and normals for the same vertices (upload(mesh, true) only).
+  void update(const Mesh& mesh);
   void draw() const;
 };
 

@@ -15,6 +15,7 @@
 #include "reference/modulation.h"
 #include "render/camera.h"
 #include "scene/mesh.h"
+#include "world/deformable.h"
 
 namespace ps {
 
@@ -146,9 +147,58 @@ Status Renderer::upload_surfaces() {
     if (!mesh) return mesh.error();
     if (s.visual_stretch != glm::dvec3(1.0)) stretch_mesh(mesh.value(), s);
     geometry_.surface_bounds.push_back(mesh_bounds(mesh.value()));
+    if (s.deform.enabled) {
+      Deformed d;
+      d.surface = static_cast<int>(geometry_.surface_meshes.size());
+      d.sim = std::make_shared<world::Deformable>(mesh.value(), s.deform);
+      d.mesh = std::move(mesh.value());
+      d.sim->write(d.mesh);  // smooth welded normals from the first frame on (Gouraud)
+      geometry_.surface_meshes.push_back(GpuMesh::upload(d.mesh, true));
+      deformed_.push_back(std::move(d));
+      continue;
+    }
     geometry_.surface_meshes.push_back(GpuMesh::upload(mesh.value()));
   }
+  deform_stats_.surfaces = static_cast<int>(deformed_.size());
+  // `render` shows the scene's probe pressing in as it would after a second of holding still.
+  if (!deformed_.empty())
+    for (int i = 0; i < 10; ++i) step_deformation(0.1);
   return ok_status();
+}
+
+DeformationStats Renderer::advance_deformation(double time_s) {
+  if (deformed_.empty() || !std::isfinite(time_s)) return deform_stats_;
+  const double dt = deform_time_s_ < 0.0 ? 0.0 : time_s - deform_time_s_;
+  deform_time_s_ = time_s;
+  return dt > 0.0 ? step_deformation(dt) : deform_stats_;
+}
+
+DeformationStats Renderer::step_deformation(double dt_s) {
+  DeformationStats st;
+  st.surfaces = static_cast<int>(deformed_.size());
+  // The probe's sphere: a sphere probe, or a capsule's tip cap (Probe::position is its centre);
+  // a mesh probe's bounding sphere would dent far more than the mesh touches, so it does not press.
+  const Probe& p = scene_.probe;
+  const glm::dvec3 centre = p.shape == ProbeShape::kMesh ? glm::dvec3(std::nan("")) : p.position;
+  for (Deformed& d : deformed_) {
+    const world::DeformStep step = d.sim->step(dt_s, centre, p.radius_mm);
+    d.sim->write(d.mesh);
+    geometry_.surface_meshes[static_cast<std::size_t>(d.surface)].update(d.mesh);
+    st.substeps = std::max(st.substeps, step.substeps);
+    st.constrained += step.constrained;
+    st.max_displacement_mm = std::max(st.max_displacement_mm, step.max_displacement_mm);
+    st.finite = st.finite && d.sim->finite();
+  }
+  // The normal target's mean holds only while the surfaces do not move.
+  normal_mean_.valid = false;
+  deform_stats_ = st;
+  return st;
+}
+
+std::vector<glm::dvec3> Renderer::deformed_vertices(int surface) const {
+  for (const Deformed& d : deformed_)
+    if (d.surface == surface) return d.sim->positions();
+  return {};
 }
 
 Status Renderer::load_probe_mesh() {
@@ -409,6 +459,7 @@ void Renderer::apply_reductions(const ReductionResult& r, const FramePlan& plan)
 
 Status Renderer::render_frame() {
   stats_.timings_ms.clear();
+  stats_.deformation = deform_stats_;
   if (Status s = advance_bake(); !s) return s;  // before the timer: a band is not the frame's work
   PassTimer timer(options_.time_passes, stats_);
   const BoundingSphere probe = current_probe_bounds();

@@ -27,6 +27,18 @@
 #include "scene/scene.h"
 
 namespace ps {
+namespace world {
+class Deformable;
+}
+
+// What the last advance_deformation() did (all deformable surfaces together).
+struct DeformationStats {
+  int surfaces = 0;               // deformable surfaces in the scene
+  int substeps = 0;
+  int constrained = 0;            // vertices held on the probe's surface
+  double max_displacement_mm = 0.0;
+  bool finite = true;
+};
 
 struct RendererOptions {
   std::string glsl_root;          // empty: gl::default_glsl_root()
@@ -79,6 +91,7 @@ struct FrameStats {
   int frames_before_tiles = 0;   // frames drawn with the per-pixel sum while a tile was unfinished
   double first_frame_ms = -1.0;  // until the first frame was drawn; -1: none yet
   double tiles_ready_ms = -1.0;  // until the last tile was ready (create's time if none); -1: not yet
+  DeformationStats deformation;  // the deformable surfaces as this frame drew them
 };
 
 
@@ -119,6 +132,14 @@ class Renderer {
   void set_device_position(const glm::dvec3& position) { device_position_ = position; }
   void set_show_device(bool show) { show_device_ = show; }
   bool show_device() const { return show_device_; }
+  // Seed 002 §6's bendable polygons (world/deformable.h): moves every deformable surface's
+  // drawn vertices on to session time `time_s` with the probe where set_probe_state put it, and
+  // uploads them. The first call only sets the clock; create() settles the surfaces for 1 s with
+  // the scene's probe (what `render` shows). No deformable surface: nothing.
+  DeformationStats advance_deformation(double time_s);
+  const DeformationStats& deformation() const { return deform_stats_; }
+  // The welded vertices of deformable surface `surface` now (world mm); empty if not deformable.
+  std::vector<glm::dvec3> deformed_vertices(int surface) const;
   // The frame's colour target (RGBA8, padded to a power of two; the image is the
   // width x height region at the origin, bottom row first): blitted to the window.
   const gl::Texture& color_texture() const { return surface_.color(); }
@@ -190,6 +211,16 @@ class Renderer {
     ReductionResult result;  // normal_sum and normal_coverage
   };
   NormalMean normal_mean_;
+  // Deformable surfaces: the drawn mesh (rest topology, deformed positions) and its springs.
+  struct Deformed {
+    int surface = -1;
+    Mesh mesh;
+    std::shared_ptr<world::Deformable> sim;
+  };
+  std::vector<Deformed> deformed_;
+  double deform_time_s_ = -1.0;   // < 0: the clock is not set yet
+  DeformationStats deform_stats_;
+  DeformationStats step_deformation(double dt_s);
   ProbeDepthPass probe_depth_;
   SurfacePass surface_;
   ReductionsPass reductions_;

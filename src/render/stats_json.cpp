@@ -38,6 +38,11 @@ std::string stats_json(const FrameStats& s, const std::string& backend,
   j["gabor_tiles_ready_ms"] = ms_or_null(s.tiles_ready_ms);
   j["first_frame_ms"] = ms_or_null(s.first_frame_ms);
   j["frames_before_tiles"] = s.frames_before_tiles;
+  if (s.deformation.surfaces > 0)
+    j["deformation"] = {{"surfaces", s.deformation.surfaces},
+                        {"max_displacement_mm", s.deformation.max_displacement_mm},
+                        {"vertices_on_probe", s.deformation.constrained},
+                        {"finite", s.deformation.finite}};
   j["units"] = {{"length", "mm"}, {"speed", "mm/s"}, {"time", "ms"}};
   return j.dump(2) + "\n";
 }

@@ -85,6 +85,17 @@ struct Material {
 
 enum class SurfaceType { kPlane, kSphere, kTorus, kHeightField, kMesh, kBox };
 
+// Seed 002 §6's bendable polygons (world/deformable.h): the drawn vertices on springs to their
+// rest positions and to their neighbours, dented by the probe; the felt shape stays at rest.
+struct DeformParams {
+  bool enabled = false;               // `deformable`
+  double base_n_per_mm = 0.05;        // spring from each vertex to its base point
+  double neighbour_n_per_mm = 0.2;    // spring between neighbouring vertices' displacements
+  double damping_n_s_per_mm = 0.005;  // per vertex, on its velocity
+  double mass_g = 1.0;                // per vertex
+  double max_mm = 6.0;                // no vertex moves farther from its base point
+};
+
 struct Surface {
   SurfaceType type = SurfaceType::kPlane;
   std::string material;      // material name as written
@@ -117,6 +128,7 @@ struct Surface {
   // It gets its own material, `field_map_material` (a white copy of `material`).
   bool field_map = false;
   int field_map_material = -1;
+  DeformParams deform;       // deformable + deform_* keys
   int button = -1;           // >= 0: the plate the scene's [[buttons]] #button adds (not in the file)
   int line = 0;              // line in the scene file, for error messages
 };

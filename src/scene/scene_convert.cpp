@@ -198,6 +198,18 @@ Status read_surface(const ParseContext& ctx, const toml::table& table, int index
   r.boolean("field_map", out.field_map);
   r.require(!out.field_map || out.type == SurfaceType::kPlane || out.type == SurfaceType::kBox, "field_map",
             "needs a plane or a box (the map lies on its top, along world X and Y)");
+  r.boolean("deformable", out.deform.enabled);
+  r.number("deform_base_n_per_mm", out.deform.base_n_per_mm, Range::positive(1e3));
+  r.number("deform_neighbour_n_per_mm", out.deform.neighbour_n_per_mm, Range::positive(1e3));
+  r.number("deform_damping_n_s_per_mm", out.deform.damping_n_s_per_mm, Range::closed(0.0, 1e3));
+  r.number("deform_mass_g", out.deform.mass_g, Range::positive(1e6));
+  r.number("deform_max_mm", out.deform.max_mm, Range::positive(kMaxLengthMm));
+  r.require(!out.deform.enabled || out.type == SurfaceType::kMesh || out.type == SurfaceType::kSphere ||
+                out.type == SurfaceType::kTorus || out.type == SurfaceType::kHeightField,
+            "deformable", "needs a tessellated surface (mesh, sphere, torus or heightfield): a plane's or a "
+                          "box's few vertices cannot dent");
+  r.require(!out.deform.enabled || out.visual_stretch == glm::dvec3(1.0), "deformable",
+            "cannot be combined with visual_stretch (the dent follows the drawn probe on the felt shape)");
   r.require(out.type != SurfaceType::kTorus || out.minor_radius_mm < out.radius_mm,
             "minor_radius_mm", "must be < 'radius_mm' for a torus (a ring torus)");
   r.require(out.type != SurfaceType::kHeightField || !out.heightmap.empty(), "heightmap",

@@ -48,7 +48,9 @@ constexpr std::array kSurfaceKeys = {"type"sv,      "material"sv,        "center
                                      "minor_radius_mm"sv, "heightmap"sv, "height_mm"sv,
                                      "mesh_file"sv, "scale"sv,           "resolution"sv,
                                      "visible"sv,   "touchable"sv,       "visual_stretch"sv,
-                                     "field_map"sv};
+                                     "field_map"sv, "deformable"sv,      "deform_base_n_per_mm"sv,
+                                     "deform_neighbour_n_per_mm"sv, "deform_damping_n_s_per_mm"sv,
+                                     "deform_mass_g"sv, "deform_max_mm"sv};
 
 constexpr std::array kFieldKeys = {"type"sv,          "acceleration_mm_s2"sv, "force_n"sv,
                                    "fluctuation_n"sv, "frequency_hz"sv,       "viscosity_n_s_per_mm"sv,

@@ -192,5 +192,33 @@ TEST(SceneWorldTest, BadButtonsNameFileAndLine) {
   EXPECT_EQ(error_of(with(many)), "s.toml:39: [[buttons]] #16: a scene has at most 16 buttons");
 }
 
+// Poly's bendable polygons (surfaces.N.deformable): the keys, and a spring constant of zero or
+// below, a plane (too few vertices to dent) or a stretched surface refused at file:line.
+TEST(SceneWorldTest, DeformableSurfacesAndTheirErrors) {
+  Result<Scene> scene = parse(with("type = \"sphere\"\ndeformable = true\ndeform_base_n_per_mm = 0.1\n"
+                                   "deform_neighbour_n_per_mm = 0.3\ndeform_max_mm = 4\n"),
+                              {"surfaces.0.deform_mass_g=2"});
+  ASSERT_TRUE(scene) << scene.error().message;
+  const DeformParams& d = scene->surfaces[0].deform;
+  EXPECT_TRUE(d.enabled);
+  EXPECT_EQ(d.base_n_per_mm, 0.1);
+  EXPECT_EQ(d.neighbour_n_per_mm, 0.3);
+  EXPECT_EQ(d.max_mm, 4.0);
+  EXPECT_EQ(d.mass_g, 2.0);
+  EXPECT_EQ(error_of(with("type = \"sphere\"\ndeformable = true\ndeform_base_n_per_mm = 0\n")),
+            "s.toml:9: 'deform_base_n_per_mm' must be in (0, 1000] (got 0)");
+  EXPECT_EQ(error_of(with("type = \"torus\"\nradius_mm = 20\ndeformable = true\n"
+                          "deform_neighbour_n_per_mm = -0.2\n")),
+            "s.toml:10: 'deform_neighbour_n_per_mm' must be in (0, 1000] (got -0.2)");
+  EXPECT_EQ(error_of(with("type = \"sphere\"\ndeformable = true\n"), {"surfaces.0.deform_base_n_per_mm=0"}),
+            "--set surfaces.0.deform_base_n_per_mm: 'deform_base_n_per_mm' must be in (0, 1000] (got 0)");
+  EXPECT_EQ(error_of(with("deformable = true\n")),
+            "s.toml:7: 'deformable' needs a tessellated surface (mesh, sphere, torus or heightfield): a "
+            "plane's or a box's few vertices cannot dent");
+  EXPECT_EQ(error_of(with("type = \"sphere\"\nvisual_stretch = [2, 1, 1]\ndeformable = true\n")),
+            "s.toml:9: 'deformable' cannot be combined with visual_stretch (the dent follows the drawn probe "
+            "on the felt shape)");
+}
+
 }  // namespace
 }  // namespace ps
