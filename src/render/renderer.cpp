@@ -150,9 +150,8 @@ Status Renderer::upload_surfaces() {
     if (s.deform.enabled) {
       Deformed d;
       d.surface = static_cast<int>(geometry_.surface_meshes.size());
-      d.sim = std::make_shared<world::Deformable>(mesh.value(), s.deform);
-      d.mesh = std::move(mesh.value());
-      d.sim->write(d.mesh);  // smooth welded normals from the first frame on (Gouraud)
+      d.mesh = world::subdivide(mesh.value(), s.deform.max_edge_mm);
+      d.sim = std::make_shared<world::Deformable>(d.mesh, s.deform);
       geometry_.surface_meshes.push_back(GpuMesh::upload(d.mesh, true));
       deformed_.push_back(std::move(d));
       continue;

@@ -94,6 +94,9 @@ struct DeformParams {
   double damping_n_s_per_mm = 0.005;  // per vertex, on its velocity
   double mass_g = 1.0;                // per vertex
   double max_mm = 6.0;                // no vertex moves farther from its base point
+  // The drawn mesh is split (each triangle into four, edge midpoints shared) until no edge is
+  // longer than this, so a dent is round on a coarse mesh (seed 002's "divided into six").
+  double max_edge_mm = 1.5;
 };
 
 struct Surface {

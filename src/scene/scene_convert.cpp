@@ -204,6 +204,7 @@ Status read_surface(const ParseContext& ctx, const toml::table& table, int index
   r.number("deform_damping_n_s_per_mm", out.deform.damping_n_s_per_mm, Range::closed(0.0, 1e3));
   r.number("deform_mass_g", out.deform.mass_g, Range::positive(1e6));
   r.number("deform_max_mm", out.deform.max_mm, Range::positive(kMaxLengthMm));
+  r.number("deform_max_edge_mm", out.deform.max_edge_mm, Range::closed(0.05, kMaxLengthMm));
   r.require(!out.deform.enabled || out.type == SurfaceType::kMesh || out.type == SurfaceType::kSphere ||
                 out.type == SurfaceType::kTorus || out.type == SurfaceType::kHeightField,
             "deformable", "needs a tessellated surface (mesh, sphere, torus or heightfield): a plane's or a "

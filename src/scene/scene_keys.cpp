@@ -50,7 +50,7 @@ constexpr std::array kSurfaceKeys = {"type"sv,      "material"sv,        "center
                                      "visible"sv,   "touchable"sv,       "visual_stretch"sv,
                                      "field_map"sv, "deformable"sv,      "deform_base_n_per_mm"sv,
                                      "deform_neighbour_n_per_mm"sv, "deform_damping_n_s_per_mm"sv,
-                                     "deform_mass_g"sv, "deform_max_mm"sv};
+                                     "deform_mass_g"sv, "deform_max_mm"sv, "deform_max_edge_mm"sv};
 
 constexpr std::array kFieldKeys = {"type"sv,          "acceleration_mm_s2"sv, "force_n"sv,
                                    "fluctuation_n"sv, "frequency_hz"sv,       "viscosity_n_s_per_mm"sv,

@@ -21,11 +21,13 @@ bool finite3(const glm::dvec3& v) { return std::isfinite(v.x) && std::isfinite(v
 }  // namespace
 
 Deformable::Deformable(const Mesh& rest, const DeformParams& params) : params_(params) {
-  // Weld by exact position (float bits of the drawn mesh).
-  std::map<std::tuple<float, float, float>, std::uint32_t> index;
+  // Weld by position on a 1e-4 mm grid: files split vertices at seams and hard edges, and a
+  // closed parametric shape's seam (u = 0 and u = 1) repeats its positions only to rounding.
+  std::map<std::tuple<long long, long long, long long>, std::uint32_t> index;
   weld_.reserve(rest.positions.size());
   for (const glm::vec3& p : rest.positions) {
-    const auto [it, inserted] = index.try_emplace({p.x, p.y, p.z}, static_cast<std::uint32_t>(base_.size()));
+    const auto q = [](float c) { return std::llround(static_cast<double>(c) * 1e4); };
+    const auto [it, inserted] = index.try_emplace({q(p.x), q(p.y), q(p.z)}, static_cast<std::uint32_t>(base_.size()));
     if (inserted) base_.emplace_back(p);
     weld_.push_back(it->second);
   }
@@ -51,6 +53,13 @@ Deformable::Deformable(const Mesh& rest, const DeformParams& params) : params_(p
   x_ = base_;
   v_.assign(base_.size(), glm::dvec3(0.0));
   force_.assign(base_.size(), glm::dvec3(0.0));
+  is_active_.assign(base_.size(), 0);
+  rest_normal_ = rest.normals;
+  rest_area_normal_ = area_normals();
+  double edges = 0.0;
+  for (std::size_t i = 0; i < base_.size(); ++i)
+    for (std::uint32_t e = nbr_begin_[i]; e < nbr_begin_[i + 1]; ++e) edges += glm::length(base_[nbr_[e]] - base_[i]);
+  mean_edge_mm_ = nbr_.empty() ? 1.0 : edges / static_cast<double>(nbr_.size());
   // The web's stiffest mode: k_b + k_n * (largest Laplacian eigenvalue <= 2 deg_max). Damping is
   // integrated implicitly, so only the springs bound the step; 0.5 / omega leaves a wide margin
   // below the symplectic Euler limit of 2 / omega.
@@ -62,6 +71,39 @@ Deformable::Deformable(const Mesh& rest, const DeformParams& params) : params_(p
 void Deformable::reset() {
   x_ = base_;
   std::fill(v_.begin(), v_.end(), glm::dvec3(0.0));
+  active_.clear();
+}
+
+namespace {
+constexpr double kRestMm = 1e-4, kRestMmS = 1e-3;
+constexpr int kWindowRings = 3;
+}  // namespace
+
+void Deformable::collect_active(const glm::dvec3& centre_mm, double radius_mm, bool probe) {
+  std::fill(is_active_.begin(), is_active_.end(), 0);
+  active_.clear();
+  const double reach = probe ? radius_mm + 2.0 * mean_edge_mm_ : 0.0;
+  for (std::size_t i = 0; i < base_.size(); ++i) {
+    const bool moved = glm::length(x_[i] - base_[i]) > kRestMm || glm::length(v_[i]) > kRestMmS;
+    const bool near = probe && glm::length(x_[i] - centre_mm) < reach;
+    if (moved || near) {
+      is_active_[i] = 1;
+      active_.push_back(static_cast<std::uint32_t>(i));
+    }
+  }
+  std::size_t ring_begin = 0;
+  for (int ring = 0; ring < kWindowRings; ++ring) {
+    const std::size_t ring_end = active_.size();
+    for (std::size_t a = ring_begin; a < ring_end; ++a) {
+      const std::uint32_t i = active_[a];
+      for (std::uint32_t e = nbr_begin_[i]; e < nbr_begin_[i + 1]; ++e)
+        if (!is_active_[nbr_[e]]) {
+          is_active_[nbr_[e]] = 1;
+          active_.push_back(nbr_[e]);
+        }
+    }
+    ring_begin = ring_end;
+  }
 }
 
 DeformStep Deformable::step(double dt_s, const glm::dvec3& centre_mm, double radius_mm) {
@@ -76,9 +118,9 @@ DeformStep Deformable::step(double dt_s, const glm::dvec3& centre_mm, double rad
   const double damp = 1.0 / (1.0 + h * c / m);                     // implicit damping factor
   const bool probe = finite3(centre_mm) && std::isfinite(radius_mm) && radius_mm > 0.0;
   const double max_mm = params_.max_mm;
-  const std::size_t n = base_.size();
+  collect_active(centre_mm, radius_mm, probe);
   for (int s = 0; s < out.substeps; ++s) {
-    for (std::size_t i = 0; i < n; ++i) {
+    for (const std::uint32_t i : active_) {
       const glm::dvec3 ui = x_[i] - base_[i];
       glm::dvec3 f = -kb * ui;
       for (std::uint32_t e = nbr_begin_[i]; e < nbr_begin_[i + 1]; ++e) {
@@ -88,17 +130,18 @@ DeformStep Deformable::step(double dt_s, const glm::dvec3& centre_mm, double rad
       force_[i] = f;  // N (N/mm * mm)
     }
     out.constrained = 0;
-    for (std::size_t i = 0; i < n; ++i) {
+    for (const std::uint32_t i : active_) {
       v_[i] = (v_[i] + h * force_[i] / m * kMmPerM) * damp;  // mm/s
       x_[i] += h * v_[i];
       if (probe) {
         const glm::dvec3 d = x_[i] - centre_mm;
         const double len = glm::length(d);
-        if (len < radius_mm) {
+        const double held = std::max(0.0, radius_mm - kContactOverlapMm);
+        if (len < held) {
           // Onto the probe's surface, along the line from its centre (the probe pushes straight
           // out of itself); at the very centre, back toward the base point.
           const glm::dvec3 dir = len > 1e-9 ? d / len : glm::normalize(base_[i] - centre_mm + glm::dvec3(0.0, 0.0, 1e-9));
-          x_[i] = centre_mm + radius_mm * dir;
+          x_[i] = centre_mm + held * dir;
           const double into = glm::dot(v_[i], dir);
           if (into < 0.0) v_[i] -= into * dir;
           ++out.constrained;
@@ -112,23 +155,74 @@ DeformStep Deformable::step(double dt_s, const glm::dvec3& centre_mm, double rad
       }
     }
   }
+  for (const std::uint32_t i : active_)
+    if (glm::length(x_[i] - base_[i]) <= kRestMm && glm::length(v_[i]) <= kRestMmS) {
+      x_[i] = base_[i];
+      v_[i] = glm::dvec3(0.0);
+    }
   out.max_displacement_mm = max_displacement_mm();
   return out;
 }
 
-void Deformable::write(Mesh& mesh) const {
+std::vector<glm::dvec3> Deformable::area_normals() const {
   std::vector<glm::dvec3> normals(base_.size(), glm::dvec3(0.0));
   for (std::size_t t = 0; t + 2 < triangles_.size(); t += 3) {
     const glm::dvec3 &a = x_[triangles_[t]], &b = x_[triangles_[t + 1]], &c = x_[triangles_[t + 2]];
     const glm::dvec3 area2 = glm::cross(b - a, c - a);  // length = twice the area: area-weighted
     for (int k = 0; k < 3; ++k) normals[triangles_[t + k]] += area2;
   }
+  for (glm::dvec3& n : normals) {
+    const double len = glm::length(n);
+    if (len > 0.0) n /= len;
+  }
+  return normals;
+}
+
+void Deformable::write(Mesh& mesh) const {
+  const std::vector<glm::dvec3> now = area_normals();
   for (std::size_t i = 0; i < mesh.positions.size() && i < weld_.size(); ++i) {
     const std::uint32_t w = weld_[i];
     mesh.positions[i] = glm::vec3(x_[w]);
-    const double len = glm::length(normals[w]);
-    if (i < mesh.normals.size() && len > 0.0) mesh.normals[i] = glm::vec3(normals[w] / len);
+    if (i >= mesh.normals.size() || i >= rest_normal_.size()) continue;
+    const glm::dvec3 n = glm::dvec3(rest_normal_[i]) + (now[w] - rest_area_normal_[w]);
+    const double len = glm::length(n);
+    mesh.normals[i] = len > 1e-12 ? glm::vec3(n / len) : glm::vec3(now[w]);
   }
+}
+
+Mesh subdivide(const Mesh& mesh, double max_edge_mm, std::size_t max_triangles) {
+  Mesh out = mesh;
+  for (int level = 0; level < 3; ++level) {
+    double longest = 0.0;
+    for (std::size_t t = 0; t + 2 < out.indices.size(); t += 3)
+      for (int k = 0; k < 3; ++k)
+        longest = std::max(longest, static_cast<double>(glm::length(out.positions[out.indices[t + k]] -
+                                                                     out.positions[out.indices[t + (k + 1) % 3]])));
+    if (longest <= max_edge_mm || out.indices.size() / 3 * 4 > max_triangles) break;
+    std::map<std::pair<std::uint32_t, std::uint32_t>, std::uint32_t> mid;
+    auto midpoint = [&](std::uint32_t a, std::uint32_t b) {
+      const auto key = std::minmax(a, b);
+      const auto [it, inserted] = mid.try_emplace({key.first, key.second}, static_cast<std::uint32_t>(out.positions.size()));
+      if (inserted) {
+        out.positions.push_back(0.5f * (out.positions[a] + out.positions[b]));
+        if (out.normals.size() + 1 == out.positions.size()) {
+          const glm::vec3 n = out.normals[a] + out.normals[b];
+          const float len = glm::length(n);
+          out.normals.push_back(len > 0.0f ? n / len : out.normals[a]);
+        }
+      }
+      return it->second;
+    };
+    std::vector<std::uint32_t> indices;
+    indices.reserve(out.indices.size() * 4);
+    for (std::size_t t = 0; t + 2 < out.indices.size(); t += 3) {
+      const std::uint32_t a = out.indices[t], b = out.indices[t + 1], c = out.indices[t + 2];
+      const std::uint32_t ab = midpoint(a, b), bc = midpoint(b, c), ca = midpoint(c, a);
+      indices.insert(indices.end(), {a, ab, ca, ab, b, bc, ca, bc, c, ab, bc, ca});
+    }
+    out.indices = std::move(indices);
+  }
+  return out;
 }
 
 double Deformable::max_displacement_mm() const {

@@ -10,8 +10,19 @@
 // spreads a dent smoothly). Semi-implicit Euler with the damping implicit, in substeps no longer
 // than 0.5 / omega_max (omega_max^2 = (k_b + 2 deg_max k_n) / m, the web's highest mode), so it
 // is stable for any parameters. After every substep the probe is a hard constraint: a vertex
-// inside the probe sphere is moved onto its surface and loses its velocity into the probe. Every
+// inside the probe sphere is moved onto it, kContactOverlapMm inside its surface, and loses its
+// velocity into the probe. (Exactly on the surface, the pseudo-shadow's distance in the dent
+// would be 0 within the depth map's precision and the contact patch would break up into specks
+// of "contact" and "almost"; a tenth of a millimetre in, the whole dent reads as contact.) Every
 // displacement is clamped to max_mm (the bound a violent trajectory cannot break).
+// Windowed (seed 002: "windowing of the local area"): each step simulates only the vertices that
+// are displaced or moving (above 1e-4 mm or 1e-3 mm/s: a tenth of a micrometre is far below a
+// pixel at any zoom a person uses) or near the probe, and three rings of their neighbours; the
+// rest are exactly at rest, and a vertex that has come back below those is put exactly at rest.
+// A press costs its neighbourhood, not the mesh.
+// Normals: each drawn vertex keeps its rest normal (the file's, Gouraud across a facet) turned by
+// the change of its welded neighbourhood's area-weighted normal, so at rest the surface shades as
+// drawn before and a dent shades as a dent.
 // No GL: the renderer owns one per deformable surface and uploads positions and normals.
 #pragma once
 
@@ -26,6 +37,8 @@
 
 namespace ps::world {
 
+inline constexpr double kContactOverlapMm = 0.15;
+
 struct DeformStep {
   int substeps = 0;
   int constrained = 0;         // vertices on the probe's surface after the last substep
@@ -34,8 +47,8 @@ struct DeformStep {
 
 class Deformable {
  public:
-  // `rest`: the drawn mesh at rest (world mm). Vertices at identical positions are welded (files
-  // split them at seams and hard edges), so the dent and the normals are continuous.
+  // `rest`: the drawn mesh at rest (world mm). Vertices at the same position (to 1e-4 mm) are
+  // welded (files split them at seams and hard edges), so no crack opens along a seam.
   Deformable(const Mesh& rest, const DeformParams& params);
 
   // Advances dt_s seconds (0..0.1 s; longer is clamped) with the drawn probe, a sphere of
@@ -44,9 +57,9 @@ class Deformable {
   // Back to rest, at rest.
   void reset();
 
-  // `mesh` (the rest mesh this was built from) gets the deformed positions and smooth normals
-  // (area-weighted over the welded neighbourhood: Gouraud across the seams).
+  // `mesh` (the rest mesh this was built from) gets the deformed positions and normals.
   void write(Mesh& mesh) const;
+  std::size_t active_count() const { return active_.size(); }  // simulated by the last step
 
   std::size_t welded_count() const { return base_.size(); }
   const std::vector<glm::dvec3>& positions() const { return x_; }   // welded, world mm
@@ -62,8 +75,20 @@ class Deformable {
   std::vector<std::uint32_t> nbr_begin_, nbr_;  // CSR adjacency of welded vertices
   std::vector<std::uint32_t> triangles_;   // welded indices, 3 per triangle
   std::vector<glm::dvec3> force_;          // scratch
+  std::vector<glm::dvec3> rest_area_normal_;  // welded, area-weighted, at rest
+  std::vector<glm::vec3> rest_normal_;     // mesh vertex normals as drawn at rest
+  std::vector<std::uint32_t> active_;      // welded vertices simulated this step
+  std::vector<std::uint8_t> is_active_;
+  double mean_edge_mm_ = 1.0;
   double substep_s_ = 1e-3;
+  std::vector<glm::dvec3> area_normals() const;
+  void collect_active(const glm::dvec3& centre_mm, double radius_mm, bool probe);
 };
+
+// `mesh` with every triangle split into four (edge midpoints shared by the triangles that share
+// the edge; a midpoint's normal the normalised mean of its ends') until no edge is longer than
+// max_edge_mm, at most 3 times and while the result stays under max_triangles.
+Mesh subdivide(const Mesh& mesh, double max_edge_mm, std::size_t max_triangles = 400'000);
 
 // Where the probe is drawn when it presses a deformable surface (seed 002 §6, the pseudo-haptic
 // way): the god-object `proxy_mm` stays on the felt rest surface while the hand (`device_mm`, the

@@ -18,6 +18,11 @@
 namespace ps::world {
 namespace {
 
+// A position on a 1e-4 mm grid: copies of a vertex (a seam repeats its positions to rounding).
+std::tuple<long long, long long, long long> key(const glm::vec3& p) {
+  return {std::llround(p.x * 1e4), std::llround(p.y * 1e4), std::llround(p.z * 1e4)};
+}
+
 constexpr double kRadius = 20.0, kProbe = 6.0;
 
 Mesh sphere_mesh(int resolution = 48) {
@@ -48,9 +53,9 @@ void run(Deformable& d, double seconds, const glm::dvec3& centre, double radius 
   for (int i = 0; i < static_cast<int>(std::lround(seconds * 60.0)); ++i) d.step(1.0 / 60.0, centre, radius);
 }
 
-// Pressed 2 mm in for 2 s: the pole vertex sits on the probe's surface 2 mm below its base
-// point, no vertex is inside the probe (1e-9 mm: the constraint projects exactly), the dent is
-// no deeper than the press, and it fades with the angle from the pole (ring means).
+// Pressed 2 mm in for 2 s: the pole vertex sits kContactOverlapMm inside the probe's surface,
+// 2 mm - kContactOverlapMm below its base point; no vertex is deeper inside the probe (1e-9 mm:
+// the constraint projects exactly); the dent fades with the angle from the pole (ring means).
 TEST(DeformableTest, TheDentTakesTheProbesShape) {
   const Mesh mesh = sphere_mesh();
   Deformable d(mesh, params());
@@ -60,7 +65,7 @@ TEST(DeformableTest, TheDentTakesTheProbesShape) {
   std::map<int, std::pair<double, int>> rings;  // 5-degree rings from the pole: sum, count
   for (std::size_t i = 0; i < d.welded_count(); ++i) {
     const glm::dvec3 x = d.positions()[i], b = d.base_points()[i];
-    EXPECT_GE(glm::length(x - pressing(2.0)), kProbe - 1e-9) << "vertex " << i << " inside the probe";
+    EXPECT_GE(glm::length(x - pressing(2.0)), kProbe - kContactOverlapMm - 1e-9) << "vertex " << i << " inside the probe";
     const double u = glm::length(x - b);
     deepest = std::max(deepest, u);
     if (b.z > 0.0) {
@@ -69,8 +74,7 @@ TEST(DeformableTest, TheDentTakesTheProbesShape) {
       ++r.second;
     }
   }
-  EXPECT_NEAR(deepest, 2.0, 1e-6);
-  EXPECT_LE(d.max_displacement_mm(), 2.0 + 1e-6);
+  EXPECT_NEAR(deepest, 2.0 - kContactOverlapMm, 1e-6);
   double last = 1e9;
   for (const auto& [ring, sum_count] : rings) {
     if (ring > 12) break;
@@ -83,22 +87,16 @@ TEST(DeformableTest, TheDentTakesTheProbesShape) {
 
 // At rest under the probe, every vertex the probe does not hold balances its springs:
 // -k_b u_i + k_n sum_j (u_j - u_i) = 0, with the neighbours j found here from the triangles
-// (welded by position). Residual below 1e-5 of the largest spring force k_b * 2 mm: what is left
-// of the overdamped motion after 3 s.
+// (welded by position). Residual below 4 k_n x 1e-4 mm (8e-4 of the press's k_b x 2 mm): the
+// window leaves vertices under 1e-4 mm at rest, so a window's edge may be off by that much.
 TEST(DeformableTest, FreeVerticesSettleWhereTheSpringWebBalances) {
   const Mesh mesh = sphere_mesh();
   const DeformParams p = params();
   Deformable d(mesh, p);
   run(d, 3.0, pressing(2.0));
-  std::map<std::tuple<double, double, double>, std::size_t> index;
-  for (std::size_t i = 0; i < d.welded_count(); ++i) {
-    const glm::dvec3 b = d.base_points()[i];
-    index[{b.x, b.y, b.z}] = i;
-  }
-  auto welded = [&](std::uint32_t v) {
-    const glm::dvec3 b(mesh.positions[v]);
-    return index.at({b.x, b.y, b.z});
-  };
+  std::map<std::tuple<long long, long long, long long>, std::size_t> index;
+  for (std::size_t i = 0; i < d.welded_count(); ++i) index[key(glm::vec3(d.base_points()[i]))] = i;
+  auto welded = [&](std::uint32_t v) { return index.at(key(mesh.positions[v])); };
   std::vector<std::set<std::size_t>> nbr(d.welded_count());
   for (std::size_t t = 0; t < mesh.indices.size(); t += 3)
     for (int k = 0; k < 3; ++k) {
@@ -109,24 +107,25 @@ TEST(DeformableTest, FreeVerticesSettleWhereTheSpringWebBalances) {
   double worst = 0.0;
   int free_moved = 0;
   for (std::size_t i = 0; i < d.welded_count(); ++i) {
-    if (glm::length(d.positions()[i] - pressing(2.0)) < kProbe + 1e-6) continue;  // held by the probe
+    if (glm::length(d.positions()[i] - pressing(2.0)) < kProbe - kContactOverlapMm + 1e-6) continue;  // held
     glm::dvec3 f = -p.base_n_per_mm * u(i);
     for (std::size_t j : nbr[i]) f += p.neighbour_n_per_mm * (u(j) - u(i));
     worst = std::max(worst, glm::length(f));
     if (glm::length(u(i)) > 0.01) ++free_moved;
   }
   EXPECT_GT(free_moved, 10) << "the web should carry the dent beyond the contact";
-  EXPECT_LT(worst, 1e-5 * p.base_n_per_mm * 2.0);
+  EXPECT_LT(worst, 4.0 * p.neighbour_n_per_mm * 1e-4);
 }
 
 // Released, the springs bring every vertex back (the overdamped web's slowest mode decays as
-// exp(-k_b t / c) = exp(-12.5 t): after 1.5 s the dent is below 1e-6 of its 2 mm).
+// exp(-k_b t / c) = exp(-12.5 t): after 1.5 s the dent is below 1e-8 of its 2 mm, and every
+// vertex has been put exactly at rest by the window).
 TEST(DeformableTest, SpringsReturnTheSurfaceToRestWhenTheProbeLeaves) {
   Deformable d(sphere_mesh(), params());
   run(d, 1.0, pressing(2.0));
-  ASSERT_GT(d.max_displacement_mm(), 1.9);
+  ASSERT_GT(d.max_displacement_mm(), 1.8);
   run(d, 1.5, glm::dvec3(0.0, 0.0, 200.0));
-  EXPECT_LT(d.max_displacement_mm(), 2e-6);
+  EXPECT_EQ(d.max_displacement_mm(), 0.0);
   d.step(0.05, pressing(1.0), kProbe);
   d.reset();
   EXPECT_EQ(d.max_displacement_mm(), 0.0);
@@ -140,17 +139,18 @@ TEST(DeformableTest, SeamsStayClosedAndSmooth) {
   Deformable d(mesh, params());
   run(d, 0.5, glm::dvec3(kRadius + kProbe - 2.0, 0.0, 0.0));  // on the x axis: the UV seam
   d.write(mesh);
-  std::map<std::tuple<float, float, float>, std::size_t> first;
+  std::map<std::tuple<long long, long long, long long>, std::size_t> first;
   int copies = 0;
   double moved = 0.0;
   for (std::size_t i = 0; i < rest.positions.size(); ++i) {
     const glm::vec3 b = rest.positions[i];
     moved = std::max(moved, static_cast<double>(glm::length(mesh.positions[i] - b)));
-    const auto [it, inserted] = first.try_emplace({b.x, b.y, b.z}, i);
+    const auto [it, inserted] = first.try_emplace(key(b), i);
     if (inserted) continue;
     ++copies;
     EXPECT_EQ(mesh.positions[i], mesh.positions[it->second]) << i;
-    EXPECT_EQ(mesh.normals[i], mesh.normals[it->second]) << i;
+    // The sphere's copies have one rest normal, so they keep one normal (no crease appears).
+    EXPECT_LT(glm::length(mesh.normals[i] - mesh.normals[it->second]), 1e-6) << i;
   }
   EXPECT_GT(copies, 0);
   EXPECT_GT(moved, 1.5) << "the seam should be dented";
@@ -194,14 +194,14 @@ TEST(DeformableTest, StiffWebsShortenTheSubstepAndStayStable) {
   auto mesh = build_surface_mesh(s);
   ASSERT_TRUE(mesh);
   Deformable d(mesh.value(), p);
-  std::map<std::tuple<float, float, float>, std::set<std::tuple<float, float, float>>> nbr;
+  std::map<std::tuple<long long, long long, long long>, std::set<std::tuple<long long, long long, long long>>> nbr;
   const auto& m = mesh.value();
   for (std::size_t t = 0; t < m.indices.size(); t += 3)
     for (int k = 0; k < 3; ++k) {
-      const glm::vec3 a = m.positions[m.indices[t + k]], b = m.positions[m.indices[t + (k + 1) % 3]];
+      const auto a = key(m.positions[m.indices[t + k]]), b = key(m.positions[m.indices[t + (k + 1) % 3]]);
       if (a == b) continue;
-      nbr[{a.x, a.y, a.z}].insert({b.x, b.y, b.z});
-      nbr[{b.x, b.y, b.z}].insert({a.x, a.y, a.z});
+      nbr[a].insert(b);
+      nbr[b].insert(a);
     }
   std::size_t deg = 0;
   for (const auto& [v, n] : nbr) deg = std::max(deg, n.size());
@@ -209,7 +209,7 @@ TEST(DeformableTest, StiffWebsShortenTheSubstepAndStayStable) {
   run(d, 0.5, pressing(1.5));
   EXPECT_TRUE(d.finite());
   const double dent = d.max_displacement_mm();
-  EXPECT_GE(dent, 1.5 - 1e-6);
+  EXPECT_GE(dent, 1.5 - kContactOverlapMm - 1e-6);
   EXPECT_LE(dent, p.max_mm);
   run(d, 1.0, glm::dvec3(0.0, 0.0, 200.0));
   EXPECT_TRUE(d.finite());
@@ -234,6 +234,46 @@ TEST(DeformableTest, PressedPositionIsTheCouplingsShareOfTheHandsDepth) {
   EXPECT_EQ(pressed_position(scene.value(), 1, proxy, glm::dvec3(0.0, 0.0, 23.0), 0.5), proxy);
   EXPECT_EQ(pressed_position(scene.value(), -1, proxy, glm::dvec3(0.0, 0.0, 23.0), 0.5), proxy);
   EXPECT_EQ(pressed_position(scene.value(), 0, proxy, glm::dvec3(std::nan(""), 0.0, 0.0), 0.5), proxy);
+}
+
+// Subdivision: every edge ends at or under max_edge_mm (three levels suffice here), each triangle
+// became four of a quarter of its area (total area kept to float precision), shared edges share
+// their midpoint (no T-junctions: welded, each edge is in exactly two triangles of the closed
+// sphere), and a press moves only a window of the vertices, not the whole mesh. (Three levels
+// of a 16-segment sphere of radius 20 mm: the diagonals end near 1.35 mm.)
+TEST(DeformableTest, SubdividedMeshesAreClosedAndPressesStayLocal) {
+  const Mesh coarse = sphere_mesh(16);
+  const Mesh fine = subdivide(coarse, 1.5);
+  auto area = [](const Mesh& m) {
+    double a = 0.0;
+    for (std::size_t t = 0; t < m.indices.size(); t += 3)
+      a += 0.5 * glm::length(glm::cross(glm::dvec3(m.positions[m.indices[t + 1]] - m.positions[m.indices[t]]),
+                                         glm::dvec3(m.positions[m.indices[t + 2]] - m.positions[m.indices[t]])));
+    return a;
+  };
+  EXPECT_NEAR(area(fine), area(coarse), 1e-5 * area(coarse));
+  std::map<std::tuple<long long, long long, long long>, std::uint32_t> weld;
+  auto id = [&](std::uint32_t v) {
+    return weld.try_emplace(key(fine.positions[v]), static_cast<std::uint32_t>(weld.size())).first->second;
+  };
+  std::map<std::pair<std::uint32_t, std::uint32_t>, int> edges;
+  double longest = 0.0;
+  for (std::size_t t = 0; t < fine.indices.size(); t += 3)
+    for (int k = 0; k < 3; ++k) {
+      const std::uint32_t a = fine.indices[t + k], b = fine.indices[t + (k + 1) % 3];
+      longest = std::max(longest, static_cast<double>(glm::length(fine.positions[a] - fine.positions[b])));
+      const std::uint32_t wa = id(a), wb = id(b);
+      if (wa != wb) ++edges[std::minmax(wa, wb)];
+    }
+  EXPECT_LE(longest, 1.5);
+  EXPECT_EQ(fine.indices.size(), coarse.indices.size() * 64) << "three levels of four";
+  for (const auto& [e, n] : edges) ASSERT_EQ(n, 2) << "edge " << e.first << "-" << e.second;
+  Deformable d(fine, params());
+  run(d, 0.5, pressing(1.0));
+  EXPECT_GT(d.active_count(), 0u);
+  // With k_b / k_n = 1/4 a dent decays by ~0.6 per ring of neighbours, so a 1 mm press reaches
+  // the 1e-4 mm rest threshold ~18 rings out: a cap of the sphere, not all of it.
+  EXPECT_LT(d.active_count(), d.welded_count() / 2) << "the window should hold the press's neighbourhood only";
 }
 
 }  // namespace
