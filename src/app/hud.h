@@ -18,6 +18,8 @@
 #include <string>
 #include <vector>
 
+#include <glm/glm.hpp>
+
 #include "app/tune_panel.h"
 #include "app/ui_layout.h"
 
@@ -40,6 +42,7 @@ struct HudReadouts {
   int button = -1;                       // the button pressed (-1: none), how far, and its travel
   double button_depth_mm = 0.0, button_travel_mm = 0.0;
   std::optional<std::string> flags;      // the scene's flags that are on ("" none); none: no flags
+  std::optional<glm::dvec3> view_mm;     // [navigation]: how far the view has moved; none: no box
 };
 
 // The readouts as "name  value" lines (the box draws them in this order).

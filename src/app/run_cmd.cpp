@@ -257,6 +257,7 @@ HudReadouts readouts(const Session& s, const HapticState& st, const ShadowMeasur
       if ((st.flags >> i) & 1u) on += (on.empty() ? "" : ", ") + sc.flags[i];
     r.flags = on;
   }
+  if (sc.navigation.enabled) r.view_mm = st.view_offset_mm;
   return r;
 }
 

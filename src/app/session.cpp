@@ -19,6 +19,7 @@ Status drive_frame(Renderer& renderer, HapticLoop& loop, std::uint64_t frame, Ha
   const glm::dvec3 shown = state.have_sample ? visual_position(renderer.scene(), pressed) : probe.position;
   if (state.have_sample) renderer.set_probe_state(shown, state.velocity_mm_s);
   if (state.have_sample) renderer.advance_deformation(state.time_s);
+  renderer.set_view_offset(state.view_offset_mm);
   if (state.have_sample) renderer.set_device_position(state.device_mm);
   const std::span<const glm::dvec3> bodies(state.body_mm.data(), static_cast<std::size_t>(state.body_count));
   renderer.set_body_positions(bodies);
@@ -44,7 +45,11 @@ PlaneAxes pointer_plane(const Renderer& renderer) {
 PointerView pointer_view(const Renderer& renderer, const PlaneAxes& plane, glm::dvec2 window_size) {
   const Scene& sc = renderer.scene();
   PointerView v;
+  // The pointer moves the hand in the device's workspace: through the camera as it was before
+  // any [navigation] moved the view (the haptic loop adds the view's offset itself).
   v.camera = sc.camera;
+  v.camera.position -= renderer.view_offset();
+  v.camera.target -= renderer.view_offset();
   v.aspect = static_cast<double>(sc.render.width) / sc.render.height;
   v.window_size = window_size.x > 0.0 && window_size.y > 0.0 ? window_size : glm::dvec2(sc.render.width, sc.render.height);
   v.plane = plane;

@@ -154,6 +154,7 @@ void HapticLoop::adopt_pending_scene(Clock::Ns now) {
   bodies_ = world::BodySet(pending_->bodies(), pending_->fields().gravity_mm_s2());
   buttons_ = world::ButtonSet(pending_->button_shapes(), pending_->probe_radius_mm());
   local_.flags = 0;  // flags are the scene's: a new scene starts with all of them off
+  view_offset_ = glm::dvec3(0.0);  // and its own view
   retired_ = std::move(scene_owned_);
   scene_owned_ = std::move(pending_);
   HapticEvent e;
@@ -252,6 +253,23 @@ glm::dvec3 HapticLoop::world_forces(double t, double dt) {
   return f;
 }
 
+glm::dvec3 HapticLoop::navigate(double dt) {
+  const Navigation& nav = god_->scene().navigation();
+  if (!nav.enabled) return glm::dvec3(0.0);
+  const glm::dvec3 hand = local_.position_mm;  // workspace
+  const glm::dvec3 half = 0.5 * nav.box_size_mm;
+  const glm::dvec3 past = hand - glm::clamp(hand, nav.box_center - half, nav.box_center + half);
+  glm::dvec3 v = nav.speed_mm_s_per_mm * past;
+  const double speed = glm::length(v);
+  if (speed > nav.max_speed_mm_s) v *= nav.max_speed_mm_s / speed;
+  view_offset_ += v * dt;
+  local_.view_offset_mm = view_offset_;
+  local_.position_mm = hand + view_offset_;
+  local_.device_mm = last_fed_.position_mm + view_offset_;
+  local_.velocity_mm_s += v;  // the hand's speed over the world: the texture sees the craft move
+  return -nav.wall_n_per_mm * past;
+}
+
 void HapticLoop::tick(Clock::Ns now) {
   if (swap_pending_.load(std::memory_order_acquire)) adopt_pending_scene(now);
   // T of the filter = the measured tick period: after a preemption sleep_until() runs the
@@ -284,7 +302,8 @@ void HapticLoop::tick(Clock::Ns now) {
     local_.position_mm = kalman_.position();
     local_.velocity_mm_s = kalman_.velocity();
     glm::dvec3 field_force(0.0);
-    if (god_) field_force = world_forces(t, dt);
+    if (god_) field_force = navigate(dt);
+    if (god_) field_force += world_forces(t, dt);
     const ForceResult f = god_ ? compute_proxy_force(params_.forces, *god_, local_.position_mm, local_.velocity_mm_s, t,
                                                      field_force)
                                : compute_force(params_.forces, surface_.read(), local_.position_mm,

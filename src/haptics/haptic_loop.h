@@ -87,6 +87,10 @@ struct HapticState {
   int button_pressed = -1;           // haptic scene: the button the probe presses (-1: none)
   double button_depth_mm = 0.0;      // and how far it is in
   std::uint32_t flags = 0;           // haptic scene: bit i = Scene::flags[i], toggled by buttons
+  // haptic scene with [navigation]: how far the view has moved (the world position of the
+  // workspace's origin). position_mm, device_mm and proxy_mm are world positions (the device's
+  // own plus this offset); the renderer moves its camera by it.
+  glm::dvec3 view_offset_mm{0.0};
   bool have_sample = false, in_contact = false;
   double rate_hz = 0.0;              // over the last second
   double jitter_p99_us = 0.0;        // |period - nominal|, p99 over the last second
@@ -154,6 +158,10 @@ class HapticLoop {
   bool have_fed_ = false;
   void adopt_pending_scene(Clock::Ns now);  // haptic thread, at a tick's start
   glm::dvec3 world_forces(double t, double dt);  // fields + bodies on the probe (haptic scene)
+  // [navigation]: moves the view by the hand's push past its box's walls and turns the hand's
+  // workspace position (local_.position_mm) into a world one; returns the walls' force.
+  glm::dvec3 navigate(double dt);
+  glm::dvec3 view_offset_{0.0};
   std::optional<world::GodObject> god_;  // set when a haptic scene is given
   world::BodySet bodies_;                // the scene's bodies (reset with each scene)
   world::ButtonSet buttons_;             // the scene's buttons (reset with each scene)

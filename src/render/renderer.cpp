@@ -359,6 +359,13 @@ void Renderer::set_probe_state(const glm::dvec3& position, const glm::dvec3& vel
   scene_.probe.velocity = velocity;
 }
 
+void Renderer::set_view_offset(const glm::dvec3& offset) {
+  const glm::dvec3 by = offset - view_offset_;
+  scene_.camera.position += by;
+  scene_.camera.target += by;
+  view_offset_ = offset;
+}
+
 BoundingSphere Renderer::current_probe_bounds() const {
   const Probe& p = scene_.probe;
   const Aabb& b = geometry_.probe_mesh_bounds;

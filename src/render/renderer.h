@@ -114,6 +114,10 @@ class Renderer {
   const PlaneFrame& reference() const { return frame_; }
   void set_probe_state(const glm::dvec3& position, const glm::dvec3& velocity);
   void set_camera(const Camera& camera) { scene_.camera = camera; }  // orbit/zoom in the window
+  // [navigation]: the view has moved by `offset` (HapticState::view_offset_mm) since the scene
+  // opened; the camera (as set, orbits included) moves with it. scene().camera is the moved one.
+  void set_view_offset(const glm::dvec3& offset);
+  const glm::dvec3& view_offset() const { return view_offset_; }
   // Draw the probe (the displayed proxy) over the image after the pseudo-shadow; off by default.
   // Changes the colour image only, never the AOVs, the reference plane or the displacement.
   void set_show_probe(bool show) { show_probe_ = show; }
@@ -226,6 +230,7 @@ class Renderer {
   ReductionsPass reductions_;
   ProbeViewPass probe_view_;
   bool show_probe_ = false;
+  glm::dvec3 view_offset_{0.0};
   void run_world_view();           // bodies and the device ghost, over the colour image
   ProbeViewPass body_view_, ghost_view_;  // initialised on first use (own mesh caches)
   bool world_view_ready_ = false;

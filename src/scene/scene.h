@@ -238,6 +238,19 @@ struct Button {
   int line = 0;
 };
 
+// [navigation] (seed 002 §5, Field's craft): the probe moves in a box of the device's workspace;
+// pushing a wall of it moves the view (and the box with it) in that direction at a speed that
+// follows the push, and the wall pushes back. HapticLoop applies it (docs/universe.md, "Field").
+struct Navigation {
+  bool enabled = false;                  // the table is present
+  glm::dvec3 box_center{0.0};            // workspace (device) mm
+  glm::dvec3 box_size_mm{120.0, 90.0, 60.0};
+  double speed_mm_s_per_mm = 20.0;       // view speed per mm the hand is past a wall
+  double max_speed_mm_s = 300.0;
+  double wall_n_per_mm = 0.5;            // the wall's spring on the hand
+  int line = 0;
+};
+
 struct Scene {
   std::string path;  // file the scene came from ("<embedded default>" for the built-in one)
   Camera camera;
@@ -250,6 +263,7 @@ struct Scene {
   std::vector<Body> bodies;
   std::vector<Button> buttons;
   std::vector<std::string> flags;  // names toggled by the buttons' flag actions, first use first
+  Navigation navigation;
 };
 
 }  // namespace ps

@@ -80,6 +80,20 @@ Status read_light(const ParseContext& ctx, const toml::table* table, Light& out)
   return r.status();
 }
 
+Status read_navigation(const ParseContext& ctx, const toml::table* table, Navigation& out) {
+  if (table == nullptr) return ok_status();
+  TableReader r(ctx, table, Section::kNavigation, "navigation", "[navigation]");
+  out.enabled = true;
+  out.line = static_cast<int>(table->source().begin.line);
+  r.check_unknown_keys();
+  r.vec3("box_center", out.box_center, kCoordinate);
+  r.vec3("box_size_mm", out.box_size_mm, kLength);
+  r.number("speed_mm_s_per_mm", out.speed_mm_s_per_mm, Range::closed(0.0, 1e4));
+  r.number("max_speed_mm_s", out.max_speed_mm_s, Range::positive(1e5));
+  r.number("wall_n_per_mm", out.wall_n_per_mm, Range::closed(0.0, 100.0));
+  return r.status();
+}
+
 Status read_probe(const ParseContext& ctx, const toml::table* table, Probe& out) {
   TableReader r(ctx, table, Section::kProbe, "probe", "[probe]");
   r.check_unknown_keys();

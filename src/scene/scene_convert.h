@@ -13,6 +13,7 @@ namespace ps::scene_detail {
 // scene.h) and validates ranges. `table` may be null (section absent).
 Status read_camera(const ParseContext& ctx, const toml::table* table, Camera& out);
 Status read_light(const ParseContext& ctx, const toml::table* table, Light& out);
+Status read_navigation(const ParseContext& ctx, const toml::table* table, Navigation& out);
 Status read_probe(const ParseContext& ctx, const toml::table* table, Probe& out);
 Status read_render(const ParseContext& ctx, const toml::table* table, RenderSettings& out);
 Status read_material(const ParseContext& ctx, const toml::table& table, const std::string& name,

@@ -247,13 +247,15 @@ Status read_sections(const ParseContext& ctx, const toml::table& root, Scene& sc
   Result<const toml::table*> light = section(ctx, root, "light");
   Result<const toml::table*> probe = section(ctx, root, "probe");
   Result<const toml::table*> render = section(ctx, root, "render");
-  for (const auto* r : {&camera, &light, &probe, &render}) {
+  Result<const toml::table*> navigation = section(ctx, root, "navigation");
+  for (const auto* r : {&camera, &light, &probe, &render, &navigation}) {
     if (!*r) return r->error();
   }
   if (Status s = scene_detail::read_camera(ctx, *camera, scene.camera); !s) return s;
   if (Status s = scene_detail::read_light(ctx, *light, scene.light); !s) return s;
   if (Status s = scene_detail::read_probe(ctx, *probe, scene.probe); !s) return s;
   if (Status s = scene_detail::read_render(ctx, *render, scene.render); !s) return s;
+  if (Status s = scene_detail::read_navigation(ctx, *navigation, scene.navigation); !s) return s;
   if (Status s = read_materials(ctx, root, scene); !s) return s;
   if (Status s = read_surfaces(ctx, root, scene); !s) return s;
   return read_world(ctx, root, scene);

@@ -14,7 +14,9 @@ using std::string_view_literals::operator""sv;
 
 constexpr std::array kRootKeys = {"include"sv, "camera"sv,    "light"sv,   "probe"sv,
                                   "render"sv,  "materials"sv, "surfaces"sv, "fields"sv,
-                                  "bodies"sv,  "buttons"sv};
+                                  "bodies"sv,  "buttons"sv,   "navigation"sv};
+constexpr std::array kNavigationKeys = {"box_center"sv, "box_size_mm"sv, "speed_mm_s_per_mm"sv,
+                                        "max_speed_mm_s"sv, "wall_n_per_mm"sv};
 constexpr std::array kCameraKeys = {"projection"sv, "position"sv,        "target"sv, "up"sv,
                                     "fov_y_deg"sv,  "ortho_height_mm"sv, "near_mm"sv, "far_mm"sv};
 constexpr std::array kLightKeys = {"direction"sv, "color"sv, "ambient"sv};
@@ -71,6 +73,7 @@ std::span<const std::string_view> known_keys(Section section) {
     case Section::kRoot: return kRootKeys;
     case Section::kCamera: return kCameraKeys;
     case Section::kLight: return kLightKeys;
+    case Section::kNavigation: return kNavigationKeys;
     case Section::kProbe: return kProbeKeys;
     case Section::kRender: return kRenderKeys;
     case Section::kMaterial: return kMaterialKeys;

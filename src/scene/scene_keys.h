@@ -12,7 +12,7 @@
 namespace ps::scene_detail {
 
 // kHaptic is [materials.NAME.haptic]; kHapticWave one [[materials.NAME.haptic.texture]] entry.
-enum class Section { kRoot, kCamera, kLight, kProbe, kRender, kMaterial, kHaptic, kHapticWave, kSurface, kField, kBody, kButton };
+enum class Section { kRoot, kCamera, kLight, kProbe, kRender, kMaterial, kHaptic, kHapticWave, kSurface, kField, kBody, kButton, kNavigation };
 
 std::span<const std::string_view> known_keys(Section section);
 

@@ -43,6 +43,7 @@ toml::table parse_value(const std::string& value) {
 Section section_of(std::string_view name) {
   if (name == "camera") return Section::kCamera;
   if (name == "light") return Section::kLight;
+  if (name == "navigation") return Section::kNavigation;
   if (name == "probe") return Section::kProbe;
   if (name == "render") return Section::kRender;
   if (name == "materials") return Section::kMaterial;

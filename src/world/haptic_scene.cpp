@@ -54,6 +54,7 @@ Result<HapticScene> HapticScene::build(const Scene& scene) {
   out.bodies_ = scene.bodies;
   out.buttons_ = scene.buttons;
   out.flags_ = scene.flags;
+  out.navigation_ = scene.navigation;
   for (std::size_t i = 0; i < scene.surfaces.size(); ++i) {
     const int b = scene.surfaces[i].button;
     if (b >= 0) out.button_shapes_.push_back(ButtonShape::make(scene.buttons[static_cast<std::size_t>(b)], static_cast<int>(i)));

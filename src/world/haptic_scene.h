@@ -66,6 +66,7 @@ class HapticScene {
   const std::vector<ButtonShape>& button_shapes() const { return button_shapes_; }
   const std::vector<Button>& buttons() const { return buttons_; }
   const std::vector<std::string>& flags() const { return flags_; }
+  const Navigation& navigation() const { return navigation_; }  // [navigation] (Field's box)
   double probe_radius_mm() const { return probe_radius_mm_; }
   std::size_t analytic_count() const { return shapes_.size(); }
   std::size_t triangle_count() const { return meshes_.triangle_count(); }  // overall model
@@ -97,6 +98,7 @@ class HapticScene {
   std::vector<ButtonShape> button_shapes_;
   std::vector<Button> buttons_;
   std::vector<std::string> flags_;
+  Navigation navigation_;
 };
 
 }  // namespace ps::world

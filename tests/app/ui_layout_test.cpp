@@ -224,6 +224,7 @@ TEST(HudTest, ButtonAndFlagsShowWhenTheSceneHasThem) {
   for (const std::string& l : hud_lines(r)) all += l + "\n";
   EXPECT_EQ(all.find("button"), std::string::npos) << all;
   EXPECT_EQ(all.find("flags"), std::string::npos) << all;
+  EXPECT_EQ(all.find("view"), std::string::npos) << all;
   r.button = 1;
   r.button_depth_mm = 2.14;
   r.button_travel_mm = 3.0;
@@ -236,6 +237,10 @@ TEST(HudTest, ButtonAndFlagsShowWhenTheSceneHasThem) {
   all.clear();
   for (const std::string& l : hud_lines(r)) all += l + "\n";
   EXPECT_NE(all.find("flags on    light, door"), std::string::npos) << all;
+  r.view_mm = glm::dvec3(151.4, 0.0, -2.0);
+  all.clear();
+  for (const std::string& l : hud_lines(r)) all += l + "\n";
+  EXPECT_NE(all.find("view        +151 +0 -2 mm"), std::string::npos) << all;
 }
 
 TEST(RunKeysTest, EveryKeyOfTheWindowIsInTheTableOnce) {

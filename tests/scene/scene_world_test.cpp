@@ -220,5 +220,23 @@ TEST(SceneWorldTest, DeformableSurfacesAndTheirErrors) {
             "on the felt shape)");
 }
 
+TEST(SceneWorldTest, NavigationBoxAndItsErrors) {
+  Result<Scene> none = parse(with(""));
+  ASSERT_TRUE(none) << none.error().message;
+  EXPECT_FALSE(none->navigation.enabled);
+  Result<Scene> scene = parse("[navigation]\nbox_size_mm = [100, 80, 40]\n" + std::string(test::kMinimalScene),
+                              {"navigation.speed_mm_s_per_mm=5"});
+  ASSERT_TRUE(scene) << scene.error().message;
+  EXPECT_TRUE(scene->navigation.enabled);
+  EXPECT_EQ(scene->navigation.box_size_mm, glm::dvec3(100, 80, 40));
+  EXPECT_EQ(scene->navigation.speed_mm_s_per_mm, 5.0);
+  EXPECT_EQ(error_of("[navigation]\nbox_size_mm = [100, 0, 40]\n" + std::string(test::kMinimalScene)),
+            "s.toml:2: 'box_size_mm' must be in (0, 100000] (got 0)");
+  EXPECT_EQ(error_of("[navigation]\nspeed_mm_s_per_m = 3\n" + std::string(test::kMinimalScene)),
+            "s.toml:2: unknown key 'speed_mm_s_per_m' in [navigation]; did you mean 'speed_mm_s_per_mm'?");
+  EXPECT_EQ(error_of("navigation = 2\n" + std::string(test::kMinimalScene)),
+            "s.toml:1: 'navigation' must be a table");
+}
+
 }  // namespace
 }  // namespace ps

@@ -206,6 +206,45 @@ TEST_P(UniverseReplayGLTest, WeightsFirstBounceRisesAsItsRestitutionSays) {
   EXPECT_NEAR(apex - floor_z, rise, 0.3 + 0.02 * rise) << "impact at " << hit.value << " mm/s, t " << t_hit;
 }
 
+// Field's box through replay (tests/haptics/data/universe_field_navigate.traj): the camera moves
+// with the view's offset (its target is the file's plus the offset), the pointer still maps
+// through the camera as the file has it (the mouse moves the hand in the workspace), the frames
+// change while the view travels and not once it has stopped (1.6 s and 2.0 s: the same bytes).
+TEST_P(UniverseReplayGLTest, FieldsViewTravelsWithTheBox) {
+  auto scene = load_scene(universe("field.toml"), {"render.size=[64,64]", "render.depth_map_size=32"});
+  ASSERT_TRUE(scene) << scene.error().message;
+  auto haptic = world::HapticScene::build(scene.value());
+  ASSERT_TRUE(haptic) << haptic.error().message;
+  RendererOptions ro;
+  ro.button_pictures = false;
+  auto renderer = Renderer::create(scene.value(), ro);
+  ASSERT_TRUE(renderer) << renderer.error().message;
+  auto log = load_sample_log(data("universe_field_navigate.traj"));
+  ASSERT_TRUE(log) << log.error().message;
+  LogDevice device(log.value(), true, "trajectory");
+  ReplayOptions opt;
+  opt.fps = 10.0;
+  opt.haptic_scene = &haptic.value();
+  std::vector<Image> frames;
+  glm::dvec3 offset(0.0);
+  auto r = replay_session(*renderer.value(), device, opt, [&](int, double, const HapticState& s, const Renderer& rr) {
+    frames.push_back(rr.read_color());
+    offset = s.view_offset_mm;
+    return ok_status();
+  });
+  ASSERT_TRUE(r) << r.error().message;
+  ASSERT_EQ(frames.size(), 21u);
+  EXPECT_GT(offset.x, 140.0);
+  const Camera& cam = renderer.value()->scene().camera;
+  EXPECT_EQ(cam.target, scene->camera.target + offset);
+  EXPECT_EQ(cam.position, scene->camera.position + offset);
+  const PointerView view = pointer_view(*renderer.value(), pointer_plane(*renderer.value()));
+  EXPECT_NEAR(glm::length(view.camera.position - scene->camera.position), 0.0, 1e-9);
+  EXPECT_NEAR(glm::length(view.camera.target - scene->camera.target), 0.0, 1e-9);
+  EXPECT_FALSE(frames[2].pixels == frames[10].pixels) << "the view should have moved";
+  EXPECT_TRUE(frames[16].pixels == frames[20].pixels) << "the view should have stopped";
+}
+
 PS_INSTANTIATE_HEADLESS_BACKENDS(UniverseReplayGLTest);
 
 }  // namespace

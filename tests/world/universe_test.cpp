@@ -197,5 +197,48 @@ TEST(UniverseTest, PanelLeadsToEveryWorldAndEachWorldBack) {
   }
 }
 
+// Field's box (seed 002 §5), through the loop on tests/haptics/data/universe_field_navigate.traj:
+// 10 mm past the +x wall the view travels +x at 15 x 10 = 150 mm/s (2 %: the Kalman filter
+// takes a few ms to reach the held position), the wall pushes back with 0.5 N/mm x 10 mm, the
+// hand's world position is its workspace position plus the view's offset, and back inside the
+// box the view stays where it went. Pushed 30 mm past, the speed stops at max_speed_mm_s.
+TEST(UniverseTest, FieldsBoxMovesTheViewWhileTheHandPushesAWall) {
+  auto scene = load_scene(universe("field.toml"));
+  ASSERT_TRUE(scene) << scene.error().message;
+  const Navigation& nav = scene->navigation;
+  ASSERT_TRUE(nav.enabled);
+  ASSERT_EQ(nav.box_center.x + 0.5 * nav.box_size_mm.x, 65.0);
+  auto hs = HapticScene::build(scene.value());
+  ASSERT_TRUE(hs) << hs.error().message;
+  auto log = load_sample_log(std::string(PS_SOURCE_DIR) + "/tests/haptics/data/universe_field_navigate.traj");
+  ASSERT_TRUE(log) << log.error().message;
+  LogDevice device(log.value(), true, "trajectory");
+  FakeClock clock;
+  HapticLoop loop(device, clock, HapticLoopParams{}, &hs.value());
+  auto at = [&](double t) {
+    while (loop.state().read().time_s < t - 1e-9) loop.run_ticks(1);
+    return loop.state().read();
+  };
+  EXPECT_EQ(at(0.2).view_offset_mm, glm::dvec3(0.0));
+  const HapticState a = at(0.4), b = at(1.3);
+  EXPECT_NEAR((b.view_offset_mm.x - a.view_offset_mm.x) / 0.9, 150.0, 3.0) << b.view_offset_mm.x << " " << b.field_force_n.x;
+  EXPECT_EQ(b.view_offset_mm.y, 0.0);
+  EXPECT_EQ(b.view_offset_mm.z, 0.0);
+  EXPECT_NEAR(b.field_force_n.x, -0.5 * 10.0, 0.1);
+  EXPECT_NEAR(b.position_mm.x, 75.0 + b.view_offset_mm.x, 0.05);
+  const HapticState c = at(1.5), d = at(2.0);
+  EXPECT_GT(c.view_offset_mm.x, 140.0);
+  EXPECT_EQ(c.view_offset_mm, d.view_offset_mm) << "inside the box the view stays";
+  EXPECT_NEAR(d.position_mm.x, d.view_offset_mm.x, 0.05);
+
+  LogDevice hard({{0.0, {95, 0, 20}, 0, true}, {1.0, {95, 0, 20}, 0, true}}, true, "hard");
+  FakeClock clock2;
+  HapticLoop loop2(hard, clock2, HapticLoopParams{}, &hs.value());
+  loop2.run_ticks(501);
+  const double x0 = loop2.state().read().view_offset_mm.x;
+  loop2.run_ticks(400);
+  EXPECT_NEAR((loop2.state().read().view_offset_mm.x - x0) / 0.4, nav.max_speed_mm_s, 1e-6);
+}
+
 }  // namespace
 }  // namespace ps::world
