@@ -245,6 +245,60 @@ TEST_P(UniverseReplayGLTest, FieldsViewTravelsWithTheBox) {
   EXPECT_TRUE(frames[16].pixels == frames[20].pixels) << "the view should have stopped";
 }
 
+// Illusion through replay (tests/haptics/data/universe_illusion_slide.traj: pressed 2 mm into
+// the sphere's top, slid 40 mm along x). The drawn probe (after the renderer's own push-out)
+// travels 1.6 times the felt proxy's x range across the top (1 %: the stretch is exact near the
+// object, and the renderer's push-out of the drawn probe is along the surface normal, tenths of
+// a millimetre at most here);
+// a solid material keeps the drawn probe out of the drawn ellipsoid (un-stretched, it is at
+// least r + R from the centre, to 0.01 mm), while water lets it in (seed 002: a non-compliant
+// material "made it seem harder").
+TEST_P(UniverseReplayGLTest, IllusionStretchesThePathAndSolidsKeepTheProbeOut) {
+  auto replay = [&](const std::string& material, double& felt_x, double& drawn_x, double& min_gap) {
+    auto scene = load_scene(universe("illusion.toml"), {"render.size=[64,64]", "render.depth_map_size=32",
+                                                        "surfaces.0.material=\"" + material + "\""});
+    ASSERT_TRUE(scene) << scene.error().message;
+    auto haptic = world::HapticScene::build(scene.value());
+    ASSERT_TRUE(haptic) << haptic.error().message;
+    RendererOptions ro;
+    ro.button_pictures = false;
+    ro.expected_frames = 61;  // a short replay: the per-pixel texture sum instead of a tile bake
+    auto renderer = Renderer::create(scene.value(), ro);
+    ASSERT_TRUE(renderer) << renderer.error().message;
+    auto log = load_sample_log(data("universe_illusion_slide.traj"));
+    ASSERT_TRUE(log) << log.error().message;
+    LogDevice device(log.value(), true, "trajectory");
+    ReplayOptions opt;
+    opt.fps = 30.0;
+    opt.haptic_scene = &haptic.value();
+    const Surface& sphere = scene->surfaces[0];
+    const double reach = sphere.radius_mm + scene->probe.radius_mm;
+    double f_lo = 1e9, f_hi = -1e9, d_lo = 1e9, d_hi = -1e9;
+    min_gap = 1e9;
+    auto r = replay_session(*renderer.value(), device, opt, [&](int, double t, const HapticState& s, const Renderer& rr) {
+      const glm::dvec3 drawn = rr.stats().probe_position;
+      const glm::dvec3 unstretched = sphere.center + (drawn - sphere.center) / sphere.visual_stretch;
+      min_gap = std::min(min_gap, glm::length(unstretched - sphere.center) - reach);
+      if (t >= 0.5 && t <= 1.5) {
+        f_lo = std::min(f_lo, s.proxy_mm.x), f_hi = std::max(f_hi, s.proxy_mm.x);
+        d_lo = std::min(d_lo, drawn.x), d_hi = std::max(d_hi, drawn.x);
+      }
+      return ok_status();
+    });
+    ASSERT_TRUE(r) << r.error().message;
+    felt_x = f_hi - f_lo;
+    drawn_x = d_hi - d_lo;
+  };
+  double felt = 0.0, drawn = 0.0, gap = 0.0;
+  replay("plastic", felt, drawn, gap);
+  EXPECT_GT(felt, 30.0);
+  EXPECT_NEAR(drawn / felt, 1.6, 0.016);
+  EXPECT_GT(gap, -0.01) << "a solid keeps the drawn probe out of the drawn ellipsoid";
+  RecordProperty("plastic_drawn_over_felt", std::to_string(drawn / felt));
+  replay("water", felt, drawn, gap);
+  EXPECT_LT(gap, -1.5) << "water lets the probe in";
+}
+
 PS_INSTANTIATE_HEADLESS_BACKENDS(UniverseReplayGLTest);
 
 }  // namespace
