@@ -222,6 +222,15 @@ Status read_world(const ParseContext& ctx, const toml::table& root, Scene& scene
       !s)
     return s;
   if (Status s = check_charges(ctx, scene); !s) return s;
+  // A field map with nothing to map (seed 002's Field with an empty charge list) is a mistake
+  // the picture would hide: a uniformly dark floor.
+  const bool any_charge = std::any_of(scene.fields.begin(), scene.fields.end(),
+                                      [](const Field& f) { return f.type == FieldType::kCharge; });
+  for (std::size_t i = 0; i < scene.surfaces.size() && !any_charge; ++i)
+    if (scene.surfaces[i].field_map)
+      return make_error(ctx.source_name + ":" + std::to_string(scene.surfaces[i].line) + ": [[surfaces]] #" +
+                        std::to_string(i) + ": 'field_map' shows the field of the scene's charges, and it has "
+                        "none; add a [[fields]] with type = \"charge\", or remove field_map");
   std::vector<std::string> names;
   for (const Material& m : scene.materials) names.push_back(m.name);
   if (Status s = read_array(ctx, root, "bodies", scene.bodies, [&](const toml::table& t, int i, Body& b) {

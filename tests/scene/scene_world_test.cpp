@@ -238,5 +238,14 @@ TEST(SceneWorldTest, NavigationBoxAndItsErrors) {
             "s.toml:1: 'navigation' must be a table");
 }
 
+// A field map over a scene without charges (an empty charge list) is refused at the surface.
+TEST(SceneWorldTest, FieldMapWithoutChargesNamesTheSurface) {
+  EXPECT_EQ(error_of(with("type = \"box\"\nfield_map = true\n")),
+            "s.toml:5: [[surfaces]] #0: 'field_map' shows the field of the scene's charges, and it has none; "
+            "add a [[fields]] with type = \"charge\", or remove field_map");
+  EXPECT_TRUE(parse(with("type = \"box\"\nfield_map = true\n[[fields]]\ntype = \"charge\"\nposition = [0, 0, 9]\n"
+                         "charge_n_mm2 = 5\n")));
+}
+
 }  // namespace
 }  // namespace ps

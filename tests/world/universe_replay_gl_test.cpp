@@ -7,6 +7,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <map>
 #include <random>
 
 #include "app/session.h"
@@ -297,6 +298,52 @@ TEST_P(UniverseReplayGLTest, IllusionStretchesThePathAndSolidsKeepTheProbeOut) {
   RecordProperty("plastic_drawn_over_felt", std::to_string(drawn / felt));
   replay("water", felt, drawn, gap);
   EXPECT_LT(gap, -1.5) << "water lets the probe in";
+}
+
+// Field through replay (tests/haptics/data/universe_field_points.traj): held still at three
+// points, the fields' force the loop publishes is the softened Coulomb sum of the file's charges
+// at the probe (the god-object proxy, which the coupling holds F / k_c from the hand; 1e-9
+// relative: the same law in another order, at the proxy of one tick earlier, which has stopped
+// moving), and at the weak spot it is under 1 % of the force 10 mm away.
+TEST_P(UniverseReplayGLTest, FieldsForceIsTheCoulombSumAndVanishesAtTheWeakSpot) {
+  auto scene = load_scene(universe("field.toml"), {"render.size=[48,48]", "render.depth_map_size=32"});
+  ASSERT_TRUE(scene) << scene.error().message;
+  auto haptic = world::HapticScene::build(scene.value());
+  ASSERT_TRUE(haptic) << haptic.error().message;
+  RendererOptions ro;
+  ro.button_pictures = false;
+  auto renderer = Renderer::create(scene.value(), ro);
+  ASSERT_TRUE(renderer) << renderer.error().message;
+  auto log = load_sample_log(data("universe_field_points.traj"));
+  ASSERT_TRUE(log) << log.error().message;
+  LogDevice device(log.value(), true, "trajectory");
+  ReplayOptions opt;
+  opt.fps = 10.0;
+  opt.haptic_scene = &haptic.value();
+  std::map<int, HapticState> at;  // frame index -> state
+  auto r = replay_session(*renderer.value(), device, opt, [&](int i, double, const HapticState& s, const Renderer&) {
+    at[i] = s;
+    return ok_status();
+  });
+  ASSERT_TRUE(r) << r.error().message;
+  auto coulomb = [&](const glm::dvec3& p) {
+    glm::dvec3 f(0.0);
+    for (const Field& c : scene->fields) {
+      const glm::dvec3 d = p - c.position;
+      f += c.charge_n_mm2 * d / std::pow(glm::dot(d, d) + c.softening_mm * c.softening_mm, 1.5);
+    }
+    return f;
+  };
+  for (int frame : {4, 10, 16}) {  // the ends of the three holds
+    const HapticState& s = at.at(frame);
+    const glm::dvec3 want = coulomb(s.proxy_mm);
+    EXPECT_GT(glm::length(want), 0.01);
+    EXPECT_EQ(s.view_offset_mm, glm::dvec3(0.0)) << "inside the box";
+    for (int k = 0; k < 3; ++k) EXPECT_NEAR(s.field_force_n[k], want[k], 1e-9 * glm::length(want)) << frame;
+  }
+  const HapticState& weak = at.at(24);
+  EXPECT_NEAR(weak.proxy_mm.y, -9.8, 0.05);
+  EXPECT_LT(glm::length(weak.field_force_n), 0.01 * glm::length(coulomb(weak.proxy_mm + glm::dvec3(10, 0, 0))));
 }
 
 PS_INSTANTIATE_HEADLESS_BACKENDS(UniverseReplayGLTest);
