@@ -7,7 +7,9 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <functional>
 #include <map>
+#include <optional>
 #include <random>
 
 #include "app/session.h"
@@ -27,6 +29,48 @@ std::string data(const std::string& name) { return std::string(PS_SOURCE_DIR) + 
 
 bool finite3(const glm::dvec3& v) { return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z); }
 
+// A universe scene opened for a replay: the scene (with `sets`), its haptic scene and a renderer
+// without button pictures. `expected_frames` > 0: a short replay draws the per-pixel texture sum
+// instead of baking a tile.
+struct World {
+  Scene scene;
+  std::optional<world::HapticScene> haptic;
+  std::unique_ptr<Renderer> renderer;
+};
+
+World open_world(const std::string& file, const std::vector<std::string>& sets, int expected_frames = 0) {
+  World w;
+  auto scene = load_scene(universe(file), sets);
+  EXPECT_TRUE(scene) << scene.error().message;
+  if (!scene) return w;
+  w.scene = scene.value();
+  auto haptic = world::HapticScene::build(w.scene);
+  EXPECT_TRUE(haptic) << haptic.error().message;
+  if (haptic) w.haptic.emplace(std::move(haptic.value()));
+  RendererOptions ro;
+  ro.button_pictures = false;
+  ro.expected_frames = expected_frames;
+  auto renderer = Renderer::create(w.scene, ro);
+  EXPECT_TRUE(renderer) << renderer.error().message;
+  if (renderer) w.renderer = std::move(renderer.value());
+  return w;
+}
+
+// Replays `traj` (a file of tests/haptics/data, interpolated) on `w` at `fps`.
+void replay_world(World& w, const std::string& traj, double fps, const FrameSink& sink,
+                  std::function<void(const HapticEvent&)> on_event = {}) {
+  ASSERT_TRUE(w.renderer && w.haptic);
+  auto log = load_sample_log(data(traj));
+  ASSERT_TRUE(log) << log.error().message;
+  LogDevice device(log.value(), true, "trajectory");
+  ReplayOptions opt;
+  opt.fps = fps;
+  opt.haptic_scene = &*w.haptic;
+  opt.on_event = std::move(on_event);
+  auto r = replay_session(*w.renderer, device, opt, sink);
+  ASSERT_TRUE(r) << r.error().message;
+}
+
 struct PolyFrame {
   double t = 0.0;
   HapticState state;
@@ -36,31 +80,22 @@ struct PolyFrame {
 };
 
 struct PolyRun {
-  std::unique_ptr<Renderer> renderer;
+  World world;
   std::vector<PolyFrame> frames;
 };
 
-PolyRun replay_poly(Device& device, const std::vector<std::string>& sets = {}) {
-  std::vector<std::string> all = {"render.size=[96,96]", "render.depth_map_size=64"};
-  all.insert(all.end(), sets.begin(), sets.end());
-  auto scene = load_scene(universe("poly.toml"), all);
-  EXPECT_TRUE(scene) << scene.error().message;
-  auto haptic = world::HapticScene::build(scene.value());
-  EXPECT_TRUE(haptic) << haptic.error().message;
-  RendererOptions ro;
-  ro.button_pictures = false;
-  auto renderer = Renderer::create(scene.value(), ro);
-  EXPECT_TRUE(renderer) << renderer.error().message;
+PolyRun replay_poly(Device& device) {
   PolyRun run;
+  run.world = open_world("poly.toml", {"render.size=[96,96]", "render.depth_map_size=64"});
+  if (!run.world.renderer || !run.world.haptic) return run;
   ReplayOptions opt;
   opt.fps = 30.0;
-  opt.haptic_scene = &haptic.value();
-  auto r = replay_session(*renderer.value(), device, opt, [&](int, double t, const HapticState& s, const Renderer& rr) {
+  opt.haptic_scene = &*run.world.haptic;
+  auto r = replay_session(*run.world.renderer, device, opt, [&](int, double t, const HapticState& s, const Renderer& rr) {
     run.frames.push_back({t, s, rr.deformation(), rr.stats().max_penetration_mm, rr.stats().probe_position});
     return ok_status();
   });
   EXPECT_TRUE(r) << (r ? "" : r.error().message);
-  run.renderer = std::move(renderer.value());
   return run;
 }
 
@@ -106,16 +141,11 @@ TEST_P(UniverseReplayGLTest, PolyDentsUnderTheProbeAndSpringsBack) {
   EXPECT_EQ(last.deformation.max_displacement_mm, 0.0);
 
   // The same drawn probe over Suzanne undented.
-  auto scene = load_scene(universe("poly.toml"), {"render.size=[96,96]", "render.depth_map_size=64",
-                                                  "surfaces.0.deformable=false"});
-  ASSERT_TRUE(scene) << scene.error().message;
-  RendererOptions ro;
-  ro.button_pictures = false;
-  auto rigid = Renderer::create(scene.value(), ro);
-  ASSERT_TRUE(rigid) << rigid.error().message;
-  rigid.value()->set_probe_state(deepest_drawn, glm::dvec3(0.0));
-  ASSERT_TRUE(rigid.value()->render_frame());
-  EXPECT_GT(rigid.value()->stats().max_penetration_mm, deepest_sink - 0.3) << "sink " << deepest_sink;
+  World rigid = open_world("poly.toml", {"render.size=[96,96]", "render.depth_map_size=64", "surfaces.0.deformable=false"});
+  ASSERT_TRUE(rigid.renderer);
+  rigid.renderer->set_probe_state(deepest_drawn, glm::dvec3(0.0));
+  ASSERT_TRUE(rigid.renderer->render_frame());
+  EXPECT_GT(rigid.renderer->stats().max_penetration_mm, deepest_sink - 0.3) << "sink " << deepest_sink;
 }
 
 // A violent trajectory: 1.5 s of jumps to random points in and around the head every 5 ms (the
@@ -136,7 +166,7 @@ TEST_P(UniverseReplayGLTest, PolySurvivesAViolentTrajectory) {
     ASSERT_TRUE(f.deformation.finite) << f.t;
     ASSERT_TRUE(finite3(f.drawn)) << f.t;
     EXPECT_LE(f.deformation.max_displacement_mm, 6.0) << f.t;
-    EXPECT_LE(glm::length(f.state.proxy_mm - world::pressed_position(run.renderer->scene(), f.state.contact_surface,
+    EXPECT_LE(glm::length(f.state.proxy_mm - world::pressed_position(run.world.scene, f.state.contact_surface,
                                                                      f.state.proxy_mm, f.state.position_mm, 0.5)),
               3.0 + 1e-9);
     touching += f.deformation.constrained > 0;
@@ -154,30 +184,18 @@ TEST_P(UniverseReplayGLTest, PolySurvivesAViolentTrajectory) {
 // a/2 (2.5 ms)^2 = 0.06 mm below it at the ~20 m/s^2 there, the impact is caught at the end of
 // its 1 ms tick, and the loop's velocity Verlet is second order at 1 ms.
 TEST_P(UniverseReplayGLTest, WeightsFirstBounceRisesAsItsRestitutionSays) {
-  auto scene = load_scene(universe("weight.toml"), {"render.size=[48,48]", "render.depth_map_size=32"});
-  ASSERT_TRUE(scene) << scene.error().message;
-  auto haptic = world::HapticScene::build(scene.value());
-  ASSERT_TRUE(haptic) << haptic.error().message;
-  RendererOptions ro;
-  ro.button_pictures = false;
-  auto renderer = Renderer::create(scene.value(), ro);
-  ASSERT_TRUE(renderer) << renderer.error().message;
-  auto log = load_sample_log(data("universe_weight_drop.traj"));
-  ASSERT_TRUE(log) << log.error().message;
-  LogDevice device(log.value(), true, "trajectory");
-  ReplayOptions opt;
-  opt.fps = 200.0;
-  opt.haptic_scene = &haptic.value();
+  World w = open_world("weight.toml", {"render.size=[48,48]", "render.depth_map_size=32"});
   std::vector<HapticEvent> impacts;
-  opt.on_event = [&](const HapticEvent& e) {
-    if (e.kind == EventKind::body_impact) impacts.push_back(e);
-  };
   std::vector<std::pair<double, double>> z;  // frame time, ball height
-  auto r = replay_session(*renderer.value(), device, opt, [&](int, double t, const HapticState& s, const Renderer&) {
-    z.emplace_back(t, s.body_mm[0].z);
-    return ok_status();
-  });
-  ASSERT_TRUE(r) << r.error().message;
+  replay_world(
+      w, "universe_weight_drop.traj", 200.0,
+      [&](int, double t, const HapticState& s, const Renderer&) {
+        z.emplace_back(t, s.body_mm[0].z);
+        return ok_status();
+      },
+      [&](const HapticEvent& e) {
+        if (e.kind == EventKind::body_impact) impacts.push_back(e);
+      });
   // The first impact once the hand is still (it lands at 0.3 s), and the one after it.
   std::size_t first = 0;
   while (first < impacts.size() && impacts[first].time_s <= 0.3) ++first;
@@ -188,9 +206,9 @@ TEST_P(UniverseReplayGLTest, WeightsFirstBounceRisesAsItsRestitutionSays) {
   for (const auto& [t, h] : z)
     if (t > t_hit && t < t_next) apex = std::max(apex, h);
 
-  const Body& b = scene->bodies[0];
+  const Body& b = w.scene.bodies[0];
   const double e = b.restitution, k = b.spring_n_per_mm, m = b.mass_g, L = b.rest_length_mm;
-  const double g = scene->fields[0].acceleration_mm_s2.z, hand = 45.0, floor_z = b.floor_z_mm + b.radius_mm;
+  const double g = w.scene.fields[0].acceleration_mm_s2.z, hand = 45.0, floor_z = b.floor_z_mm + b.radius_mm;
   auto accel = [&](double zz) { return g + k * ((hand - zz) - L) * 1e6 / m; };
   double zz = floor_z, v = e * hit.value;
   const double h = 1e-5;
@@ -212,36 +230,22 @@ TEST_P(UniverseReplayGLTest, WeightsFirstBounceRisesAsItsRestitutionSays) {
 // through the camera as the file has it (the mouse moves the hand in the workspace), the frames
 // change while the view travels and not once it has stopped (1.6 s and 2.0 s: the same bytes).
 TEST_P(UniverseReplayGLTest, FieldsViewTravelsWithTheBox) {
-  auto scene = load_scene(universe("field.toml"), {"render.size=[64,64]", "render.depth_map_size=32"});
-  ASSERT_TRUE(scene) << scene.error().message;
-  auto haptic = world::HapticScene::build(scene.value());
-  ASSERT_TRUE(haptic) << haptic.error().message;
-  RendererOptions ro;
-  ro.button_pictures = false;
-  auto renderer = Renderer::create(scene.value(), ro);
-  ASSERT_TRUE(renderer) << renderer.error().message;
-  auto log = load_sample_log(data("universe_field_navigate.traj"));
-  ASSERT_TRUE(log) << log.error().message;
-  LogDevice device(log.value(), true, "trajectory");
-  ReplayOptions opt;
-  opt.fps = 10.0;
-  opt.haptic_scene = &haptic.value();
+  World w = open_world("field.toml", {"render.size=[64,64]", "render.depth_map_size=32"});
   std::vector<Image> frames;
   glm::dvec3 offset(0.0);
-  auto r = replay_session(*renderer.value(), device, opt, [&](int, double, const HapticState& s, const Renderer& rr) {
+  replay_world(w, "universe_field_navigate.traj", 10.0, [&](int, double, const HapticState& s, const Renderer& rr) {
     frames.push_back(rr.read_color());
     offset = s.view_offset_mm;
     return ok_status();
   });
-  ASSERT_TRUE(r) << r.error().message;
   ASSERT_EQ(frames.size(), 21u);
   EXPECT_GT(offset.x, 140.0);
-  const Camera& cam = renderer.value()->scene().camera;
-  EXPECT_EQ(cam.target, scene->camera.target + offset);
-  EXPECT_EQ(cam.position, scene->camera.position + offset);
-  const PointerView view = pointer_view(*renderer.value(), pointer_plane(*renderer.value()));
-  EXPECT_NEAR(glm::length(view.camera.position - scene->camera.position), 0.0, 1e-9);
-  EXPECT_NEAR(glm::length(view.camera.target - scene->camera.target), 0.0, 1e-9);
+  const Camera& cam = w.renderer->scene().camera;
+  EXPECT_EQ(cam.target, w.scene.camera.target + offset);
+  EXPECT_EQ(cam.position, w.scene.camera.position + offset);
+  const PointerView view = pointer_view(*w.renderer, pointer_plane(*w.renderer));
+  EXPECT_NEAR(glm::length(view.camera.position - w.scene.camera.position), 0.0, 1e-9);
+  EXPECT_NEAR(glm::length(view.camera.target - w.scene.camera.target), 0.0, 1e-9);
   EXPECT_FALSE(frames[2].pixels == frames[10].pixels) << "the view should have moved";
   EXPECT_TRUE(frames[16].pixels == frames[20].pixels) << "the view should have stopped";
 }
@@ -256,27 +260,14 @@ TEST_P(UniverseReplayGLTest, FieldsViewTravelsWithTheBox) {
 // material "made it seem harder").
 TEST_P(UniverseReplayGLTest, IllusionStretchesThePathAndSolidsKeepTheProbeOut) {
   auto replay = [&](const std::string& material, double& felt_x, double& drawn_x, double& min_gap) {
-    auto scene = load_scene(universe("illusion.toml"), {"render.size=[64,64]", "render.depth_map_size=32",
-                                                        "surfaces.0.material=\"" + material + "\""});
-    ASSERT_TRUE(scene) << scene.error().message;
-    auto haptic = world::HapticScene::build(scene.value());
-    ASSERT_TRUE(haptic) << haptic.error().message;
-    RendererOptions ro;
-    ro.button_pictures = false;
-    ro.expected_frames = 61;  // a short replay: the per-pixel texture sum instead of a tile bake
-    auto renderer = Renderer::create(scene.value(), ro);
-    ASSERT_TRUE(renderer) << renderer.error().message;
-    auto log = load_sample_log(data("universe_illusion_slide.traj"));
-    ASSERT_TRUE(log) << log.error().message;
-    LogDevice device(log.value(), true, "trajectory");
-    ReplayOptions opt;
-    opt.fps = 30.0;
-    opt.haptic_scene = &haptic.value();
-    const Surface& sphere = scene->surfaces[0];
-    const double reach = sphere.radius_mm + scene->probe.radius_mm;
+    World w = open_world("illusion.toml",
+                         {"render.size=[64,64]", "render.depth_map_size=32", "surfaces.0.material=\"" + material + "\""},
+                         61);
+    const Surface& sphere = w.scene.surfaces[0];
+    const double reach = sphere.radius_mm + w.scene.probe.radius_mm;
     double f_lo = 1e9, f_hi = -1e9, d_lo = 1e9, d_hi = -1e9;
     min_gap = 1e9;
-    auto r = replay_session(*renderer.value(), device, opt, [&](int, double t, const HapticState& s, const Renderer& rr) {
+    replay_world(w, "universe_illusion_slide.traj", 30.0, [&](int, double t, const HapticState& s, const Renderer& rr) {
       const glm::dvec3 drawn = rr.stats().probe_position;
       const glm::dvec3 unstretched = sphere.center + (drawn - sphere.center) / sphere.visual_stretch;
       min_gap = std::min(min_gap, glm::length(unstretched - sphere.center) - reach);
@@ -286,7 +277,6 @@ TEST_P(UniverseReplayGLTest, IllusionStretchesThePathAndSolidsKeepTheProbeOut) {
       }
       return ok_status();
     });
-    ASSERT_TRUE(r) << r.error().message;
     felt_x = f_hi - f_lo;
     drawn_x = d_hi - d_lo;
   };
@@ -306,29 +296,15 @@ TEST_P(UniverseReplayGLTest, IllusionStretchesThePathAndSolidsKeepTheProbeOut) {
 // relative: the same law in another order, at the proxy of one tick earlier, which has stopped
 // moving), and at the weak spot it is under 1 % of the force 10 mm away.
 TEST_P(UniverseReplayGLTest, FieldsForceIsTheCoulombSumAndVanishesAtTheWeakSpot) {
-  auto scene = load_scene(universe("field.toml"), {"render.size=[48,48]", "render.depth_map_size=32"});
-  ASSERT_TRUE(scene) << scene.error().message;
-  auto haptic = world::HapticScene::build(scene.value());
-  ASSERT_TRUE(haptic) << haptic.error().message;
-  RendererOptions ro;
-  ro.button_pictures = false;
-  auto renderer = Renderer::create(scene.value(), ro);
-  ASSERT_TRUE(renderer) << renderer.error().message;
-  auto log = load_sample_log(data("universe_field_points.traj"));
-  ASSERT_TRUE(log) << log.error().message;
-  LogDevice device(log.value(), true, "trajectory");
-  ReplayOptions opt;
-  opt.fps = 10.0;
-  opt.haptic_scene = &haptic.value();
+  World w = open_world("field.toml", {"render.size=[48,48]", "render.depth_map_size=32"});
   std::map<int, HapticState> at;  // frame index -> state
-  auto r = replay_session(*renderer.value(), device, opt, [&](int i, double, const HapticState& s, const Renderer&) {
+  replay_world(w, "universe_field_points.traj", 10.0, [&](int i, double, const HapticState& s, const Renderer&) {
     at[i] = s;
     return ok_status();
   });
-  ASSERT_TRUE(r) << r.error().message;
   auto coulomb = [&](const glm::dvec3& p) {
     glm::dvec3 f(0.0);
-    for (const Field& c : scene->fields) {
+    for (const Field& c : w.scene.fields) {
       const glm::dvec3 d = p - c.position;
       f += c.charge_n_mm2 * d / std::pow(glm::dot(d, d) + c.softening_mm * c.softening_mm, 1.5);
     }
