@@ -144,7 +144,8 @@ std::string header(const MazeDesc& d, const RoomGeometry& g, const glm::dvec3& p
       << "\ntheta_min = 0.0\ntheta_max = 180.0\npeak_hz = " << num(d.texture_peak_hz)
       << "\nbandwidth_hz = " << num(0.4 * d.texture_peak_hz) << "\n[materials.texture.haptic]\nstiffness_n_per_mm = "
       << num(d.wall_stiffness_n_per_mm) << "\n[[materials.texture.haptic.texture]]\nshape = \"square\"\namplitude_n = "
-      << num(d.texture_amplitude_n) << "\nperiod_mm = " << num(d.texture_period_mm) << "\n";
+      << num(d.texture_amplitude_n) << "\nperiod_mm = " << num(d.texture_period_mm)
+      << "\ndirection = [1.0, 1.0]\n";  // diagonal: felt whichever way the probe slides
   }
   if (elastic)
     o << "\n[materials.elastic]\nalbedo = " << vec(d.wall_albedo) << "\ntextured = false\n"

@@ -11,7 +11,7 @@ namespace ps::maze {
 
 namespace {
 
-using nlohmann::json;
+using json = nlohmann::ordered_json;  // keys in the order written: "type" and the ids first
 
 json per_kind(const auto& values) {
   json o = json::object();
@@ -20,7 +20,8 @@ json per_kind(const auto& values) {
 }
 
 json trial_json(const SessionInfo& info, const Trial& t) {
-  return {{"participant", info.participant},
+  return {{"type", ""},
+          {"participant", info.participant},
           {"pass", t.pass + 1},
           {"room", t.index + 1},
           {"cue", cue_name(t.cue)},
