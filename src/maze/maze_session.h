@@ -8,6 +8,7 @@
 #include <functional>
 #include <memory>
 #include <string>
+#include <utility>
 
 #include "core/result.h"
 #include "devices/device.h"
@@ -51,6 +52,40 @@ using ScoreFn = std::function<Status(const PassScore&)>;
 
 // The haptic scene a loop collides with, shared so a pass switch can hand it over.
 Result<std::shared_ptr<const world::HapticScene>> build_haptic(const MazeScene& scene);
+
+// What a session does with each state of the haptic loop, whoever drives it: run_session()
+// below once per tick, the window (app/maze_window.cpp) once per frame. Owns the log, the
+// tracker and the scene of the pass in progress.
+class SessionCore {
+ public:
+  // Generates pass 1, opens the log and writes its first lines.
+  static Result<std::unique_ptr<SessionCore>> open(const SessionOptions& options);
+  const MazeScene& scene() const { return scene_; }
+  const std::shared_ptr<const world::HapticScene>& haptic() const { return haptic_; }
+  // Feeds one state to the tracker and logs what happened; at the end of a pass the score goes
+  // to on_score and, unless the session is over, the next pass's scene to the loop (adopted at
+  // its next tick; seamless: the new scene holds the room the probe is in).
+  Status step(const HapticState& state, HapticLoop& loop, const ScoreFn& on_score);
+  bool finished() const { return tracker_.finished(); }
+  // True once after each pass switch: the caller draws with a new renderer.
+  bool take_scene_changed() { return std::exchange(scene_changed_, false); }
+  std::string label() const { return room_label_text(tracker_.room(), options_.info.cues); }
+  const Tracker& tracker() const { return tracker_; }
+  // Writes session_end (`reason_if_open` when the tracker has not finished: device_ended, quit).
+  Result<SessionResult> finish(double time_s, const std::string& reason_if_open);
+
+ private:
+  SessionCore(const SessionOptions& o, SessionLog log, MazeScene scene, std::shared_ptr<const world::HapticScene> h)
+      : options_(o), log_(std::move(log)), tracker_(o.desc, o.route, o.desc.max_passes), scene_(std::move(scene)),
+        haptic_(std::move(h)) {}
+  SessionOptions options_;
+  SessionLog log_;
+  Tracker tracker_;
+  MazeScene scene_;
+  std::shared_ptr<const world::HapticScene> haptic_;
+  bool scene_changed_ = true;
+  SessionResult result_;
+};
 
 Result<SessionResult> run_session(Device& device, const SessionOptions& options, const FrameFn& on_frame,
                                   const ScoreFn& on_score);
