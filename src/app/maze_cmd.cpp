@@ -41,7 +41,7 @@ struct MazeArgs {
   long long seed = -1, every = 0;
   double fps = 30.0, pace = 0.0;
   gl::Backend backend = gl::Backend::kAuto;
-  bool quiet = false;
+  bool quiet = false, window = false;
 };
 
 void declare(cli::Command& cmd, MazeArgs& a) {
@@ -75,6 +75,7 @@ void declare(cli::Command& cmd, MazeArgs& a) {
   app.add_option("--write-scene", a.write_scene, "also write pass 1's generated scene (a scene file `run` takes)")
       ->type_name("FILE")
       ->group(cli::kOutputGroup);
+  app.add_flag("--window", a.window, "open the window also for a trajectory:/playback: device (played in real time)");
   cli::add_gl_options(app, a.backend);
   cli::add_quiet_option(app, a.quiet);
   cmd.usage("pseudoshadow maze --participant ID --seed N --cues on|off [--device trajectory:FILE] [--out DIR]");
@@ -183,7 +184,7 @@ int maze_main(const cli::Command& cmd, const MazeArgs& a) {
     if (!scene) return cmd.fail(scene.error());
     if (Status s = write_file_atomic(a.write_scene, scene->text); !s) return cmd.fail(s.error());
   }
-  if (a.device.empty() || a.device == "mouse") return run_maze_window(cmd, o, args.out_dir);
+  if (a.window || a.device.empty() || a.device == "mouse") return run_maze_window(cmd, o, a.device);
   return run_headless(cmd, args, o);
 }
 

@@ -175,10 +175,10 @@ Status write_plots(const std::string& dir, const std::vector<ParticipantSummary>
   if (std::system("command -v gnuplot > /dev/null 2>&1") != 0)
     return make_error("gnuplot not found (install gnuplot-nox): no plots written, the CSV files have the data");
   std::ostringstream gp;
-  gp << "set terminal pngcairo size 900,500 font ',10'\nset output '" << dir << "/errors_by_room.png'\n"
+  gp << "set terminal pngcairo noenhanced size 900,500 font ',10'\nset output '" << dir << "/errors_by_room.png'\n"
      << "set title 'Wrong exits per room (mean per participant) by condition'\nset ylabel 'errors'\n"
      << "set style data histograms\nset style histogram clustered gap 1\nset style fill solid 0.8 border -1\n"
-     << "set boxwidth 0.9\nset yrange [0:*]\nset key top right\nset grid ytics\n$errors << EOD\nroom";
+     << "set boxwidth 0.9\nset bmargin 5\nset offsets 0, 0, 0.5, 0\nset yrange [0:*]\nset key top right\nset grid ytics\n$errors << EOD\nroom";
   for (const GroupSummary& g : groups) gp << " \"" << g.condition << "\"";
   gp << "\n";
   for (int c = 0; c < kCueCount; ++c) {
@@ -191,7 +191,7 @@ Status write_plots(const std::string& dir, const std::vector<ParticipantSummary>
     gp << (i ? ", " : "") << "$errors using " << i + 2 << (i == 0 ? ":xtic(1)" : "") << " title columnheader";
   gp << "\n\nset output '" << dir << "/time_per_trial.png'\nunset style\nset style data linespoints\n"
      << "set title 'Time per trial (one pass through all rooms)'\nset xlabel 'trial (pass)'\nset ylabel 'time (s)'\n"
-     << "set xtics 1\nset yrange [0:*]\nset key outside right\n";
+     << "set xtics 1\nset yrange [0:*]\nset offsets 0.2, 0.2, 1, 0\nset key outside right\n";
   for (std::size_t k = 0; k < people.size(); ++k) {
     gp << "$p" << k << " << EOD\n";
     for (std::size_t i = 0; i < people[k].pass_time_s.size(); ++i) gp << i + 1 << " " << people[k].pass_time_s[i] << "\n";
