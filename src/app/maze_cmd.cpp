@@ -14,7 +14,7 @@
 #include "app/session.h"
 #include "core/file_io.h"
 #include "gl/context.h"
-#include "image/text.h"
+#include "maze/maze_screen.h"
 #include "maze/maze_script.h"
 #include "maze/maze_session.h"
 #include "maze/maze_summary.h"
@@ -81,38 +81,6 @@ void declare(cli::Command& cmd, MazeArgs& a) {
   cmd.usage("pseudoshadow maze --participant ID --seed N --cues on|off [--device trajectory:FILE] [--out DIR]");
 }
 
-// The score screen of one pass (seed 003 §VI item 3): per room, the exit taken and whether it
-// was right. Rooms are named by their place in the pass, and by their label only with cues off
-// (with cues on the labels stay hidden, §VI item 2).
-Image score_image(const maze::PassScore& s, bool cues) {
-  Image im;
-  im.width = 512;
-  im.height = 72 + 28 * static_cast<int>(s.trials.size());
-  im.channels = 3;
-  im.pixels.assign(static_cast<std::size_t>(im.width) * im.height * 3, 0.08f);
-  char line[128];
-  std::snprintf(line, sizeof line, "pass %d: %d of %zu rooms right", s.pass + 1, s.correct(), s.trials.size());
-  draw_text(im, 16, 16, line, {1.0f, 1.0f, 1.0f}, 3);
-  int y = 60;
-  for (const maze::Trial& t : s.trials) {
-    std::snprintf(line, sizeof line, "room %d %-14s %-8s %s", t.index + 1, cues ? "" : maze::cue_label(t.cue),
-                  maze::exit_name(t.chosen), t.ok ? "RIGHT" : "WRONG");
-    draw_text(im, 16, y, line, t.ok ? glm::vec3(0.4f, 1.0f, 0.4f) : glm::vec3(1.0f, 0.4f, 0.35f), 2);
-    y += 28;
-  }
-  return im;
-}
-
-// The room label in the top left corner of a frame, on a dark box (cues off only).
-void stamp_label(Image& im, const std::string& label) {
-  if (label.empty()) return;
-  const int scale = std::max(1, im.width / 256), w = text_width(label, scale) + 8 * scale, h = 11 * scale;
-  for (int y = 0; y < std::min(h, im.height); ++y)
-    for (int x = 0; x < std::min(w, im.width); ++x)
-      for (int c = 0; c < 3; ++c) im.at(x, y, c) = 0.05f;
-  draw_text(im, 4 * scale, 2 * scale, label, {1.0f, 0.95f, 0.5f}, scale);
-}
-
 struct Frames {  // headless rendering, only when frames are asked for
   std::unique_ptr<gl::Context> ctx;
   std::unique_ptr<Renderer> renderer;
@@ -135,7 +103,7 @@ Status render_frame(const MazeArgs& a, const maze::MazeDesc& desc, Frames& f, co
   f.renderer->set_probe_state(v.state.proxy_mm, v.state.velocity_mm_s);
   if (Status s = f.renderer->render_frame(); !s) return s;
   Image im = f.renderer->read_color();
-  stamp_label(im, v.label);
+  maze::stamp_label(im, v.label);
   char name[48];
   std::snprintf(name, sizeof name, "/frames/frame_%05d.png", v.index);
   return write_image(a.out_dir + name, im);
@@ -154,7 +122,7 @@ int run_headless(const cli::Command& cmd, const MazeArgs& a, const maze::Session
   auto on_frame = [&](const maze::FrameView& v) { return render_frame(a, o.desc, frames, v); };
   auto on_score = [&](const maze::PassScore& s) -> Status {
     if (!a.quiet) std::printf("pass %d: %d of 6 rooms right\n", s.pass + 1, s.correct());
-    return write_image(a.out_dir + "/score_pass_" + std::to_string(s.pass + 1) + ".png", score_image(s, o.info.cues));
+    return write_image(a.out_dir + "/score_pass_" + std::to_string(s.pass + 1) + ".png", maze::score_image(s, o.info.cues));
   };
   auto r = maze::run_session(*device->device, o, on_frame, on_score);
   if (!r) return fail(r.error());
