@@ -100,6 +100,7 @@ int run_maze_window(const cli::Command& cmd, const maze::SessionOptions& o, cons
   ImGui_ImplGlfw_InitForOpenGL(win, true);
   ImGui_ImplOpenGL3_Init("#version 450 core");
   std::string score, reason = "quit";
+  Result<maze::SessionResult> result = make_error("the session did not end");
   double score_until = -1.0, last_flush = 0.0, end_at = -1.0;
   HapticState st;
   Status failed = ok_status();
@@ -114,7 +115,10 @@ int run_maze_window(const cli::Command& cmd, const maze::SessionOptions& o, cons
     if (w.mouse) w.mouse->poll(st.time_s, pointer_view(*w.renderer, floor_plane(*w.renderer)));
     if (!core.finished())
       if (failed = core.step(st, loop, on_score); !failed) break;
-    if (core.finished() && end_at < 0.0) end_at = st.time_s + kScoreSeconds;  // the last score, then close
+    if (core.finished() && end_at < 0.0) {  // logged now (the session's time), then the last score shows
+      end_at = st.time_s + kScoreSeconds;
+      result = core.finish(st.time_s, reason);
+    }
     if (end_at >= 0.0 && st.time_s > end_at) break;
     if (w.device->duration_s() >= 0.0 && st.time_s > w.device->duration_s() && end_at < 0.0) {
       reason = "device_ended";
@@ -151,7 +155,7 @@ int run_maze_window(const cli::Command& cmd, const maze::SessionOptions& o, cons
   ImGui_ImplOpenGL3_Shutdown();
   ImGui_ImplGlfw_Shutdown();
   ImGui::DestroyContext();
-  auto result = core.finish(st.time_s, reason);
+  if (end_at < 0.0) result = core.finish(st.time_s, reason);  // quit or device ended before the criterion
   if (Status s = recorder.close(); !s) return cmd.fail(s.error());
   if (!failed) return cmd.fail(failed.error());
   if (!result) return cmd.fail(result.error());
