@@ -199,6 +199,8 @@ TEST(MazeCueTest, ElasticRoomPushesBackByTheStiffnessRatio) {
     return last.force_n.z;
   };
   const double elastic = press(Cue::kElastic), dummy = press(Cue::kNone);
+  RecordProperty("elastic_force_n", std::to_string(elastic));
+  RecordProperty("dummy_force_n", std::to_string(dummy));
   EXPECT_NEAR(dummy, 2.0 * s.desc.wall_stiffness_n_per_mm, 1e-3);  // k r, r = 2 mm (the filter's rest offset < 1 um)
   EXPECT_NEAR(elastic / dummy, s.desc.elastic_stiffness_n_per_mm / s.desc.wall_stiffness_n_per_mm, 1e-6);
 }
@@ -218,6 +220,7 @@ TEST(MazeCueTest, TextureRoomFloorIsFeltRough) {
   };
   const CueSetup on = setup(true), off = setup(false);
   const double a = on.desc.texture_amplitude_n;
+  RecordProperty("texture_force_swing_n", std::to_string(spread(on, Cue::kTexture)));
   EXPECT_GT(spread(on, Cue::kTexture), 1.8 * a);  // a square wave of amplitude A swings by 2A
   EXPECT_LT(spread(on, Cue::kNone), 0.1 * a);
   EXPECT_LT(spread(off, Cue::kTexture), 0.1 * a);
