@@ -72,7 +72,9 @@ void declare(cli::Command& cmd, MazeArgs& a) {
   cli::add_positive(app, "--pace", "X", a.pace, 1000.0, "1",
                     "headless: run the session at X times real time (1: as long as it lasts live; default: "
                     "as fast as it computes)");
-  app.add_option("--write-scene", a.write_scene, "also write pass 1's generated scene (a scene file `run` takes)")
+  app.add_option("--write-scene", a.write_scene,
+                 "write pass 1's generated scene for --seed and --cues (a scene file `run`, `render` and `replay` "
+                 "take) and exit without a session")
       ->type_name("FILE")
       ->group(cli::kOutputGroup);
   app.add_flag("--window", a.window, "open the window also for a trajectory:/playback: device (played in real time)");
@@ -132,11 +134,23 @@ int run_headless(const cli::Command& cmd, const MazeArgs& a, const maze::Session
   return cli::kExitOk;
 }
 
+// --write-scene: pass 1's scene as a file `run`, `render` and the goldens take; no session.
+int write_scene(const cli::Command& cmd, const MazeArgs& a, const maze::MazeDesc& desc) {
+  if (a.seed < 0 || a.cues.empty())
+    return cmd.usage_error(make_error("--write-scene needs --seed N and --cues on|off (e.g. --seed 7 --cues on)"));
+  auto scene = maze::generate_scene(desc, maze::draw_route(static_cast<std::uint64_t>(a.seed)), a.cues == "on", 0);
+  if (!scene) return cmd.fail(scene.error());
+  if (Status s = prepare_output_dir(a.write_scene); !s) return cmd.fail(s.error());
+  if (Status s = write_file_atomic(a.write_scene, scene->text); !s) return cmd.fail(s.error());
+  return cli::kExitOk;
+}
+
 int maze_main(const cli::Command& cmd, const MazeArgs& a) {
-  if (a.participant.empty() || a.seed < 0 || a.cues.empty())
-    return cmd.usage_error(make_error("--participant ID, --seed N and --cues on|off are required (e.g. --participant P01 --seed 7 --cues on)"));
   auto desc = maze::load_maze_desc(a.maze);
   if (!desc) return cmd.fail(desc.error());
+  if (!a.write_scene.empty()) return write_scene(cmd, a, desc.value());
+  if (a.participant.empty() || a.seed < 0 || a.cues.empty())
+    return cmd.usage_error(make_error("--participant ID, --seed N and --cues on|off are required (e.g. --participant P01 --seed 7 --cues on)"));
   MazeArgs args = a;
   if (args.out_dir.empty()) args.out_dir = "maze-" + a.participant;
   if (Status s = prepare_output_dir(args.out_dir + "/session.jsonl"); !s) return cmd.fail(s.error());
@@ -147,11 +161,6 @@ int maze_main(const cli::Command& cmd, const MazeArgs& a) {
             o.desc.max_passes};
   o.log_path = args.out_dir + "/session.jsonl";
   o.record_path = args.out_dir + "/device.log";
-  if (!a.write_scene.empty()) {
-    auto scene = maze::generate_scene(o.desc, o.route, o.info.cues, 0);
-    if (!scene) return cmd.fail(scene.error());
-    if (Status s = write_file_atomic(a.write_scene, scene->text); !s) return cmd.fail(s.error());
-  }
   if (a.window || a.device.empty() || a.device == "mouse") return run_maze_window(cmd, o, a.device);
   return run_headless(cmd, args, o);
 }
