@@ -46,6 +46,7 @@ Status SessionCore::step(const HapticState& st, HapticLoop& loop, const ScoreFn&
     }
     if (e.kind == TrackEvent::Kind::kFinished) {
       result_.reason = e.criterion ? "criterion" : "max_passes";
+      end_time_s_ = st.time_s;
       if (e.criterion) result_.trials_to_criterion = static_cast<int>(result_.scores.size());
     }
   }

@@ -71,6 +71,8 @@ class SessionCore {
   bool take_scene_changed() { return std::exchange(scene_changed_, false); }
   std::string label() const { return room_label_text(tracker_.room(), options_.info.cues); }
   const Tracker& tracker() const { return tracker_; }
+  // The session time of the tick at which the tracker finished (the criterion or max_passes).
+  double end_time_s() const { return end_time_s_; }
   // Writes session_end (`reason_if_open` when the tracker has not finished: device_ended, quit).
   Result<SessionResult> finish(double time_s, const std::string& reason_if_open);
 
@@ -84,6 +86,7 @@ class SessionCore {
   MazeScene scene_;
   std::shared_ptr<const world::HapticScene> haptic_;
   bool scene_changed_ = true;
+  double end_time_s_ = 0.0;
   SessionResult result_;
 };
 
