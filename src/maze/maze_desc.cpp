@@ -82,7 +82,10 @@ struct Reader {
 // The geometric rules the generator relies on; each message says what to change.
 std::string check_geometry(const MazeDesc& d) {
   std::ostringstream o;
-  if (d.corridor_width_mm < 2.0 * d.probe_radius_mm + 4.0)
+  if (d.wall_dynamic_friction > d.wall_static_friction)
+    o << "[walls] 'dynamic_friction' (" << d.wall_dynamic_friction << ") must be <= 'static_friction' ("
+      << d.wall_static_friction << ")";
+  else if (d.corridor_width_mm < 2.0 * d.probe_radius_mm + 4.0)
     o << "'corridor_width_mm' (" << d.corridor_width_mm << ") must be at least the probe's diameter + 4 mm ("
       << 2.0 * d.probe_radius_mm + 4.0 << ") so the probe fits through every door";
   else if (d.room_size_mm < d.corridor_width_mm + 4.0 * d.probe_radius_mm)
@@ -93,8 +96,9 @@ std::string check_geometry(const MazeDesc& d) {
   else if (d.corridor_length_mm < d.corridor_width_mm)
     o << "'corridor_length_mm' (" << d.corridor_length_mm << ") must be at least 'corridor_width_mm' ("
       << d.corridor_width_mm << "): the probe starts in a corridor and must fit in it";
-  else if (d.hidden_radius_mm > 0.5 * d.room_height_mm)
-    o << "'radius_mm' of [cues.hidden_sphere] (" << d.hidden_radius_mm << ") must be at most half the room height";
+  else if (d.hidden_height_mm + d.hidden_radius_mm > d.room_height_mm)
+    o << "[cues.hidden_sphere] 'height_mm' + 'radius_mm' (" << d.hidden_height_mm + d.hidden_radius_mm
+      << ") must be at most 'room_height_mm' (" << d.room_height_mm << "): the sphere stays under the ceiling";
   else if (std::abs(d.hidden_offset_mm.x) + d.hidden_radius_mm > 0.5 * d.room_size_mm ||
            std::abs(d.hidden_offset_mm.y) + d.hidden_radius_mm > 0.5 * d.room_size_mm)
     o << "[cues.hidden_sphere] must lie inside the room: |offset| + radius <= room_size_mm / 2";
@@ -125,6 +129,8 @@ Result<MazeDesc> parse_maze_desc(const std::string& text, const std::string& sou
         {"max_passes", 1, 100, nullptr, nullptr, nullptr, &d.max_passes}}},
       {"walls",
        {{"stiffness_n_per_mm", 0.01, 100, &d.wall_stiffness_n_per_mm},
+        {"static_friction", 0, 5, &d.wall_static_friction},
+        {"dynamic_friction", 0, 5, &d.wall_dynamic_friction},
         {"albedo", 0, 1, nullptr, nullptr, &d.wall_albedo}}},
       {"camera",
        {{"height_mm", 10, 5000, &d.camera_height_mm},
@@ -141,7 +147,9 @@ Result<MazeDesc> parse_maze_desc(const std::string& text, const std::string& sou
        {{"stiffness_n_per_mm", 0.01, 100, &d.elastic_stiffness_n_per_mm},
         {"restitution", 0, 1, &d.elastic_restitution}}},
       {"cues.hidden_sphere",
-       {{"radius_mm", 1, 1000, &d.hidden_radius_mm}, {"offset_mm", -1000, 1000, nullptr, &d.hidden_offset_mm}}},
+       {{"radius_mm", 1, 1000, &d.hidden_radius_mm},
+        {"offset_mm", -1000, 1000, nullptr, &d.hidden_offset_mm},
+        {"height_mm", 0, 1000, &d.hidden_height_mm}}},
       {"cues.external_force",
        {{"force_n", -100, 100, nullptr, nullptr, &d.external_force_n},
         {"fluctuation_n", -100, 100, nullptr, nullptr, &d.external_fluctuation_n},

@@ -113,7 +113,7 @@ void Builder::cue_content(int slot, Cue cue) {
   if (cue == Cue::kHiddenSphere) {
     toml << "\n[[surfaces]]\ntype = \"sphere\"\nmaterial = \"wall\"\nvisible = false\nradius_mm = "
          << num(d.hidden_radius_mm) << "\ncenter = "
-         << vec(centre + glm::dvec3(d.hidden_offset_mm, 0.0)) << "\n";
+         << vec(glm::dvec3(d.hidden_offset_mm.x, d.hidden_offset_mm.y + g.center_y(slot), d.hidden_height_mm)) << "\n";
     kinds.push_back(SurfaceKind::kHidden);
     slots.push_back(slot);
   } else if (cue == Cue::kViscosity) {
@@ -126,6 +126,10 @@ void Builder::cue_content(int slot, Cue cue) {
   }
 }
 
+std::string friction(const MazeDesc& d) {  // after a stiffness line, before the next key
+  return "\nstatic_friction = " + num(d.wall_static_friction) + "\ndynamic_friction = " + num(d.wall_dynamic_friction) + "\n";
+}
+
 std::string header(const MazeDesc& d, const RoomGeometry& g, const glm::dvec3& probe, bool texture, bool elastic) {
   std::ostringstream o;
   const Camera cam = follow_camera(d, probe);
@@ -135,7 +139,7 @@ std::string header(const MazeDesc& d, const RoomGeometry& g, const glm::dvec3& p
     << num(cam.far_mm) << "\n\n[probe]\nshape = \"sphere\"\nradius_mm = " << num(d.probe_radius_mm)
     << "\nposition = " << vec(probe) << "\n\n[render]\nsize = [" << d.image_size << ", " << d.image_size
     << "]\n\n[materials.wall]\nalbedo = " << vec(d.wall_albedo) << "\ntextured = false\n"
-    << "[materials.wall.haptic]\nstiffness_n_per_mm = " << num(d.wall_stiffness_n_per_mm) << "\n";
+    << "[materials.wall.haptic]\nstiffness_n_per_mm = " << num(d.wall_stiffness_n_per_mm) << friction(d);
   if (texture) {
     // Same look as every room (seed 003 §V: landmarks inhibited); the Gabor texture shows only
     // in the pseudo-shadow near the probe, at its peak for a probe moving at lambda * peak_hz.
@@ -143,14 +147,14 @@ std::string header(const MazeDesc& d, const RoomGeometry& g, const glm::dvec3& p
       << "lambda_min = " << num(d.texture_lambda_mm) << "\nlambda_max = " << num(d.texture_lambda_mm)
       << "\ntheta_min = 0.0\ntheta_max = 180.0\npeak_hz = " << num(d.texture_peak_hz)
       << "\nbandwidth_hz = " << num(0.4 * d.texture_peak_hz) << "\n[materials.texture.haptic]\nstiffness_n_per_mm = "
-      << num(d.wall_stiffness_n_per_mm) << "\n[[materials.texture.haptic.texture]]\nshape = \"square\"\namplitude_n = "
+      << num(d.wall_stiffness_n_per_mm) << friction(d) << "[[materials.texture.haptic.texture]]\nshape = \"square\"\namplitude_n = "
       << num(d.texture_amplitude_n) << "\nperiod_mm = " << num(d.texture_period_mm)
       << "\ndirection = [1.0, 1.0]\n";  // diagonal: felt whichever way the probe slides
   }
   if (elastic)
     o << "\n[materials.elastic]\nalbedo = " << vec(d.wall_albedo) << "\ntextured = false\n"
-      << "[materials.elastic.haptic]\nstiffness_n_per_mm = " << num(d.elastic_stiffness_n_per_mm)
-      << "\nrestitution = " << num(d.elastic_restitution) << "\n";
+      << "[materials.elastic.haptic]\nstiffness_n_per_mm = " << num(d.elastic_stiffness_n_per_mm) << friction(d)
+      << "restitution = " << num(d.elastic_restitution) << "\n";
   (void)g;
   return o.str();
 }

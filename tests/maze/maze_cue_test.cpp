@@ -118,17 +118,16 @@ TEST(MazeCueTest, ViscositySlowsAConstantPushByTheExpectedFactor) {
   EXPECT_NEAR(ratio / n, b, 1e-3 * b);  // F = -b v exactly, v the filtered velocity the law uses
 }
 
-// (4) The hidden sphere: a stroke at its centre's height, 12 mm beside its centre, is pushed
-// aside by the overlap, radius + probe radius - 12 = 8 mm (1 %: the stroke is slow, 60 mm/s, so
-// the god-object settles on the sphere each tick), touching the sphere, and still gets past it;
-// with cues off the same stroke goes straight (the proxy on the line within 1e-6 mm). Near the
-// floor the sphere leaves a 6 mm gap the probe cannot pass and the god-object wedges in it
-// (docs/maze.md, "Known limits"), so the stroke is at mid-height.
+// (4) The hidden sphere: a stroke 1 mm over the floor (the sphere's centre height, as the
+// participant travels), 12 mm beside its centre, is pushed aside by the overlap, radius + probe
+// radius - 12 = 8 mm (1 %: the stroke is slow, 60 mm/s, so the god-object settles on the sphere
+// each tick), touching the hidden surface, and still gets past it; with cues off the same stroke
+// goes straight (the proxy on the line within 1e-6 mm).
 // The picture (no pixel shows the sphere): maze_gl_test.
 TEST(MazeCueTest, HiddenSphereDeflectsThePath) {
   for (const bool cues : {true, false}) {
     const CueSetup s = setup(cues);
-    const glm::dvec3 c = s.room(Cue::kHiddenSphere) + glm::dvec3(s.desc.hidden_offset_mm, 0.5 * s.desc.room_height_mm) +
+    const glm::dvec3 c = s.room(Cue::kHiddenSphere) + glm::dvec3(s.desc.hidden_offset_mm, s.desc.hidden_height_mm) +
                          glm::dvec3(12.0, 0.0, 0.0);
     auto dev = scripted({{0.0, c - glm::dvec3(0, 45, 0)}, {1.5, c + glm::dvec3(0, 45, 0)}});
     double off_line = 0.0;

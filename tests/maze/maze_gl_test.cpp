@@ -97,7 +97,7 @@ TEST_P(MazeGLTest, HiddenSphereDrawsNoPixel) {
   ASSERT_EQ(removed, 1u);
   const glm::dvec3 probe = s.room(Cue::kHiddenSphere) +
                            glm::dvec3(s.desc.hidden_offset_mm.x + s.desc.hidden_radius_mm + s.desc.probe_radius_mm,
-                                      s.desc.hidden_offset_mm.y, 0.5 * s.desc.room_height_mm);
+                                      s.desc.hidden_offset_mm.y, s.desc.hidden_height_mm);
   const Image a = render(s, with, probe, glm::dvec3(0.0)), b = render(s, without, probe, glm::dvec3(0.0));
   EXPECT_EQ(differing(a, b, 0, 0, a.width, a.height), 0);
 }

@@ -12,6 +12,7 @@
 #include <nlohmann/json.hpp>
 
 #include "devices/sample_log.h"
+#include "haptics/haptic_loop.h"
 #include "maze/maze.h"
 #include "maze/maze_script.h"
 #include "maze/maze_session.h"
@@ -110,6 +111,32 @@ TEST(MazeSceneTest, RoomsAreIdenticalAndCuesFollowTheCondition) {
   auto pass2 = generate_scene(d.value(), route, true, 1);
   ASSERT_TRUE(pass2) << pass2.error().message;
   EXPECT_EQ(pass2->slots.front(), 5) << "pass 2's scene starts with pass 1's last room";
+}
+
+// The walls' low friction (the description's [walls]): a device pushed diagonally 15 mm into
+// the learning room's west wall, beside its door, slides the proxy along the wall after it
+// (it follows the device's y to within 2 mm; with the scene parser's default friction, 0.3, the
+// proxy sticks where it first touched, 5 mm behind).
+TEST(MazeSceneTest, WallsLetTheProbeSlide) {
+  auto d = load_maze_desc(maze_file());
+  ASSERT_TRUE(d) << d.error().message;
+  auto run = [&](double mu) {
+    MazeDesc desc = d.value();
+    desc.wall_static_friction = desc.wall_dynamic_friction = mu;
+    auto scene = generate_scene(desc, draw_route(3), false, 0);
+    EXPECT_TRUE(scene) << scene.error().message;
+    auto haptic = build_haptic(scene.value()).value();
+    const double z = desc.probe_radius_mm + 1.0;
+    LogDevice dev({{0.0, {0, -40, z}, 0u, true}, {1.0, {-75, -20, z}, 0u, true}}, true, "diagonal");
+    FakeClock clock;
+    HapticLoop loop(dev, clock, HapticLoopParams{}, haptic.get());
+    loop.run_ticks(1001);
+    const HapticState st = loop.state().read();
+    EXPECT_TRUE(st.in_contact);
+    return st.proxy_mm.y - st.device_mm.y;
+  };
+  EXPECT_GT(run(0.05), -2.0);
+  EXPECT_LT(run(0.3), -4.0);
 }
 
 // A scripted participant that takes `passes` exits, through a whole session.
