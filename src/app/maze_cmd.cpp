@@ -62,8 +62,10 @@ void declare(cli::Command& cmd, MazeArgs& a) {
                  "trajectory:FILE or playback:FILE runs headless (a scripted or recorded participant); "
                  "mouse (the default) opens the window")
       ->type_name("DEVICE");
-  app.add_option("--out", a.out_dir, std::string("where the log, device stream and scores go (default maze-ID). ") +
-                                         cli::kOutputRule)
+  app.add_option("--out", a.out_dir,
+                 "where the log, device stream and scores go (default maze-ID); it must exist, or only its last "
+                 "component may be missing (it is created). The log is written as the session goes, whole lines, "
+                 "each synced: a killed session leaves every line written so far")
       ->type_name("DIR")
       ->group(cli::kOutputGroup);
   cli::add_int(app, "--every", "N", a.every, 0LL, 1'000'000LL,
@@ -176,8 +178,9 @@ struct SummarizeArgs {
 void declare_summarize(cli::Command& cmd, SummarizeArgs& a) {
   CLI::App& app = cmd.app();
   app.add_option("logs", a.logs, "session logs (DIR/session.jsonl of each participant)")->type_name("LOG");
-  app.add_option("--out", a.out_dir, std::string("writes participants.csv, groups.csv, trials.csv, summary.md and the "
-                                                 "plots there (required). ") + cli::kOutputRule)
+  app.add_option("--out", a.out_dir,
+                 "writes participants.csv, groups.csv, trials.csv, summary.md and the plots there (required); it "
+                 "must exist, or only its last component may be missing (it is created)")
       ->type_name("DIR")
       ->group(cli::kOutputGroup);
   app.add_flag("--no-plots", a.no_plots, "tables only (no gnuplot needed)");
