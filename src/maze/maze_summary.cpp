@@ -120,15 +120,17 @@ std::vector<GroupSummary> summarize_groups(const std::vector<ParticipantSummary>
   return groups;
 }
 
-Status write_tables(const std::string& dir, const std::vector<ParticipantSummary>& people,
-                    const std::vector<GroupSummary>& groups) {
-  std::ostringstream pc, gc, tc, md;
+namespace {
+
+// participants.csv, trials.csv and the markdown's participant table.
+void participant_tables(const std::vector<ParticipantSummary>& people, std::ostringstream& pc, std::ostringstream& tc,
+                        std::ostringstream& md) {
   pc << "participant,condition,seed,passes,trials_to_criterion,ended,total_time_s" << csv_header_cues("errors_")
      << csv_header_cues("room_time_s_") << "\n";
   tc << "participant,condition,pass,correct,pass_time_s\n";
-  md << "# Maze summary\n\n## Participants\n\n| participant | condition | seed | passes | trials to criterion | total time (s) |";
+  md << "## Participants\n\n| participant | condition | seed | passes | trials to criterion | total time (s) |";
   for (int c = 0; c < kCueCount; ++c) md << " errors " << cue_name(static_cast<Cue>(c)) << " |";
-  md << "\n|" << std::string("---|") + "---|---|---|---|---|";
+  md << "\n|---|---|---|---|---|---|";
   for (int c = 0; c < kCueCount; ++c) md << "---|";
   md << "\n";
   for (const ParticipantSummary& p : people) {
@@ -144,6 +146,10 @@ Status write_tables(const std::string& dir, const std::vector<ParticipantSummary
     for (std::size_t i = 0; i < p.pass_time_s.size(); ++i)
       tc << p.participant << "," << p.condition << "," << i + 1 << "," << p.pass_correct[i] << "," << fmt(p.pass_time_s[i]) << "\n";
   }
+}
+
+// groups.csv and the markdown's group table.
+void group_tables(const std::vector<GroupSummary>& groups, std::ostringstream& gc, std::ostringstream& md) {
   gc << "condition,participants,reached_criterion,mean_trials_to_criterion,mean_total_time_s"
      << csv_header_cues("mean_errors_") << csv_header_cues("mean_room_time_s_") << "\n";
   md << "\n## Groups\n\n| condition | participants | reached criterion | mean trials to criterion | mean total time (s) |";
@@ -162,6 +168,16 @@ Status write_tables(const std::string& dir, const std::vector<ParticipantSummary
     gc << "\n";
     md << "\n";
   }
+}
+
+}  // namespace
+
+Status write_tables(const std::string& dir, const std::vector<ParticipantSummary>& people,
+                    const std::vector<GroupSummary>& groups) {
+  std::ostringstream pc, gc, tc, md;
+  md << "# Maze summary\n\n";
+  participant_tables(people, pc, tc, md);
+  group_tables(groups, gc, md);
   md << "\nErrors per room are wrong exits summed over all passes; room time is the time from entering a room to "
         "leaving it by an exit, averaged over passes. Plots: errors_by_room.png, time_per_trial.png.\n";
   for (const auto& [name, text] : {std::pair<std::string, std::string>{"participants.csv", pc.str()},
@@ -170,15 +186,15 @@ Status write_tables(const std::string& dir, const std::vector<ParticipantSummary
   return ok_status();
 }
 
-Status write_plots(const std::string& dir, const std::vector<ParticipantSummary>& people,
-                   const std::vector<GroupSummary>& groups) {
-  if (std::system("command -v gnuplot > /dev/null 2>&1") != 0)
-    return make_error("gnuplot not found (install gnuplot-nox): no plots written, the CSV files have the data");
-  std::ostringstream gp;
+namespace {
+
+// Mean wrong exits per room, one bar per condition.
+void errors_script(std::ostringstream& gp, const std::string& dir, const std::vector<GroupSummary>& groups) {
   gp << "set terminal pngcairo noenhanced size 900,500 font ',10'\nset output '" << dir << "/errors_by_room.png'\n"
      << "set title 'Wrong exits per room (mean per participant) by condition'\nset ylabel 'errors'\n"
      << "set style data histograms\nset style histogram clustered gap 1\nset style fill solid 0.8 border -1\n"
-     << "set boxwidth 0.9\nset bmargin 5\nset offsets 0, 0, 0.5, 0\nset yrange [0:*]\nset key top right\nset grid ytics\n$errors << EOD\nroom";
+     << "set boxwidth 0.9\nset bmargin 5\nset offsets 0, 0, 0.5, 0\nset yrange [0:*]\nset key top right\nset grid ytics\n"
+     << "$errors << EOD\nroom";
   for (const GroupSummary& g : groups) gp << " \"" << g.condition << "\"";
   gp << "\n";
   for (int c = 0; c < kCueCount; ++c) {
@@ -189,7 +205,14 @@ Status write_plots(const std::string& dir, const std::vector<ParticipantSummary>
   gp << "EOD\nplot ";
   for (std::size_t i = 0; i < groups.size(); ++i)
     gp << (i ? ", " : "") << "$errors using " << i + 2 << (i == 0 ? ":xtic(1)" : "") << " title columnheader";
-  gp << "\n\nset output '" << dir << "/time_per_trial.png'\nunset style\nset style data linespoints\n"
+  if (groups.empty()) gp << "0 notitle";
+  gp << "\n";
+}
+
+// Time per pass, one line per participant, coloured by condition.
+void time_script(std::ostringstream& gp, const std::string& dir, const std::vector<ParticipantSummary>& people,
+                 const std::vector<GroupSummary>& groups) {
+  gp << "\nset output '" << dir << "/time_per_trial.png'\nunset style\nset style data linespoints\n"
      << "set title 'Time per trial (one pass through all rooms)'\nset xlabel 'trial (pass)'\nset ylabel 'time (s)'\n"
      << "set xtics 1\nset yrange [0:*]\nset offsets 0.2, 0.2, 1, 0\nset key outside right\n";
   for (std::size_t k = 0; k < people.size(); ++k) {
@@ -207,6 +230,19 @@ Status write_plots(const std::string& dir, const std::vector<ParticipantSummary>
   }
   if (people.empty()) gp << "0 notitle";
   gp << "\n";
+}
+
+}  // namespace
+
+Status write_plots(const std::string& dir, const std::vector<ParticipantSummary>& people,
+                   const std::vector<GroupSummary>& groups) {
+  if (std::system("command -v gnuplot > /dev/null 2>&1") != 0)
+    return make_error("gnuplot not found (install gnuplot-nox): no plots written, the CSV files have the data");
+  if (dir.find('\'') != std::string::npos)
+    return make_error(dir + ": a directory name with a single quote cannot be handed to gnuplot; choose another --out");
+  std::ostringstream gp;
+  errors_script(gp, dir, groups);
+  time_script(gp, dir, people, groups);
   const std::string script = dir + "/plots.gp";
   if (Status s = write_file_atomic(script, gp.str()); !s) return s;
   if (std::system(("gnuplot '" + script + "' 2> '" + dir + "/plots.log'").c_str()) != 0)

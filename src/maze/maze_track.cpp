@@ -34,33 +34,25 @@ void Tracker::accumulate(const ProbeStep& s, double dt) {
   trial_.field_force_max_n = std::max(trial_.field_force_max_n, glm::length(s.field_force_n));
 }
 
-std::vector<TrackEvent> Tracker::feed(const ProbeStep& s) {
-  std::vector<TrackEvent> events;
-  if (finished_) return events;
-  const double dt = have_last_ ? std::max(0.0, s.time_s - last_.time_s) : 0.0;
-  const bool in = inside(s.proxy_mm);
-  if (!entered_ && in) {  // first tick in the room: the trial starts
-    entered_ = true;
-    trial_ = Trial{};
-    trial_.pass = pass_;
-    trial_.index = index_;
-    trial_.cue = room();
-    trial_.correct = route_.correct_exit(trial_.cue);
-    trial_.enter_s = s.time_s;
-    force_sum_ = 0.0;
-    force_n_ = 0;
-    if (index_ == 0) current_.start_s = s.time_s;
-    events.push_back({TrackEvent::Kind::kRoomEntered, trial_, {}, false});
-  }
-  if (entered_) accumulate(s, dt);
-  last_ = s;
-  have_last_ = true;
-  if (!entered_ || in) return events;
+void Tracker::start_trial(const ProbeStep& s, std::vector<TrackEvent>& events) {
+  entered_ = true;
+  trial_ = Trial{};
+  trial_.pass = pass_;
+  trial_.index = index_;
+  trial_.cue = room();
+  trial_.correct = route_.correct_exit(trial_.cue);
+  trial_.enter_s = s.time_s;
+  force_sum_ = 0.0;
+  force_n_ = 0;
+  if (index_ == 0) current_.start_s = s.time_s;
+  events.push_back({TrackEvent::Kind::kRoomEntered, trial_, {}, false});
+}
+
+// The probe has left the interior through a door: the branch is the side it crossed (at a
+// corner, the side it is farther past). Then the next room, or the pass's end.
+void Tracker::end_trial(const ProbeStep& s, std::vector<TrackEvent>& events) {
   const double y = g_.center_y(pass_ * kRoomsPerPass + index_);
   const glm::dvec3 p = s.proxy_mm;
-  if (p.y - y <= -g_.a && std::abs(p.x) < g_.a) return events;  // back out of the entrance: no choice yet
-  // Left the interior through a door: the branch is the side it crossed (a corner counts for
-  // the side it is farther past).
   const double past_x = std::abs(p.x) - g_.a, past_y = p.y - y - g_.a;
   trial_.chosen = past_y >= past_x ? Exit::kStraight : p.x < 0.0 ? Exit::kLeft : Exit::kRight;
   trial_.ok = trial_.chosen == trial_.correct;
@@ -69,7 +61,7 @@ std::vector<TrackEvent> Tracker::feed(const ProbeStep& s) {
   current_.trials.push_back(trial_);
   events.push_back({TrackEvent::Kind::kBranch, trial_, {}, false});
   entered_ = false;
-  if (++index_ < kRoomsPerPass) return events;
+  if (++index_ < kRoomsPerPass) return;
   current_.pass = pass_;
   current_.end_s = s.time_s;
   done_.push_back(current_);
@@ -77,15 +69,30 @@ std::vector<TrackEvent> Tracker::feed(const ProbeStep& s) {
   const bool criterion = current_.correct() == kRoomsPerPass;
   if (criterion || pass_ + 1 >= max_passes_) {
     finished_ = true;
-    index_ = kRoomsPerPass - 1;  // stays on the last room
+    index_ = kRoomsPerPass - 1;  // room() stays on the last room
     events.push_back({TrackEvent::Kind::kFinished, {}, {}, criterion});
-    return events;
+    return;
   }
   ++pass_;
   index_ = 0;
   order_ = route_.order(pass_);
   current_ = PassScore{};
   current_.order = order_;
+}
+
+std::vector<TrackEvent> Tracker::feed(const ProbeStep& s) {
+  std::vector<TrackEvent> events;
+  if (finished_) return events;
+  const double dt = have_last_ ? std::max(0.0, s.time_s - last_.time_s) : 0.0;
+  const bool in = inside(s.proxy_mm);
+  if (!entered_ && in) start_trial(s, events);  // first tick in the room: the trial starts
+  if (entered_) accumulate(s, dt);
+  last_ = s;
+  have_last_ = true;
+  if (!entered_ || in) return events;
+  const double y = g_.center_y(pass_ * kRoomsPerPass + index_);
+  if (s.proxy_mm.y - y <= -g_.a && std::abs(s.proxy_mm.x) < g_.a) return events;  // back out of the entrance: no choice
+  end_trial(s, events);
   return events;
 }
 

@@ -67,6 +67,8 @@ class Tracker {
  private:
   bool inside(const glm::dvec3& p) const;
   void accumulate(const ProbeStep& s, double dt);
+  void start_trial(const ProbeStep& s, std::vector<TrackEvent>& events);
+  void end_trial(const ProbeStep& s, std::vector<TrackEvent>& events);
   RoomGeometry g_;
   Route route_;
   int max_passes_;
