@@ -58,9 +58,16 @@ void declare(cli::Command& cmd, MazeArgs& a) {
          },
          "on: haptic cues, labels hidden; off: no cues, rooms labelled on screen (required)")
       ->type_name("on|off");
-  app.add_option("--device", a.device,
-                 "trajectory:FILE or playback:FILE runs headless (a scripted or recorded participant); "
-                 "mouse (the default) opens the window")
+  app.add_option_function<std::string>(
+         "--device",
+         [&a](const std::string& v) {
+           if (v != "mouse" && v != "gamepad" && v.rfind("trajectory:", 0) != 0 && v.rfind("playback:", 0) != 0)
+             throw cli::UsageError("--device: expected mouse, gamepad, trajectory:FILE or playback:FILE, e.g. "
+                                   "--device trajectory:p01.traj (got '" + v + "')");
+           a.device = v;
+         },
+         "trajectory:FILE or playback:FILE runs headless (a scripted or recorded participant); mouse (the "
+         "default) or gamepad opens the window")
       ->type_name("DEVICE");
   app.add_option("--out", a.out_dir,
                  "where the log, device stream and scores go (default maze-ID); it must exist, or only its last "
@@ -116,8 +123,7 @@ Status render_frame(const MazeArgs& a, const maze::MazeDesc& desc, Frames& f, co
 int run_headless(const cli::Command& cmd, const MazeArgs& a, const maze::SessionOptions& base) {
   auto fail = [&cmd](const Error& e) { return cmd.fail(e); };
   auto device = open_device_log(a.device);
-  if (!device) return cmd.usage_error(make_error("--device: " + device.error().message));
-  if (device->pointer) return cmd.usage_error(make_error("--device: pointer logs need the window's camera; use trajectory: or playback:"));
+  if (!device) return cmd.fail(make_error("--device: " + device.error().message));
   maze::SessionOptions o = base;
   o.pace = a.pace;
   o.fps = a.every > 0 ? a.fps : 0.0;
@@ -163,7 +169,7 @@ int maze_main(const cli::Command& cmd, const MazeArgs& a) {
             o.desc.max_passes};
   o.log_path = args.out_dir + "/session.jsonl";
   o.record_path = args.out_dir + "/device.log";
-  if (a.window || a.device.empty() || a.device == "mouse") return run_maze_window(cmd, o, a.device);
+  if (a.window || a.device.empty() || a.device == "mouse" || a.device == "gamepad") return run_maze_window(cmd, o, a.device);
   return run_headless(cmd, args, o);
 }
 

@@ -50,7 +50,7 @@ struct Window {  // context first: the renderer's GL objects die before it
   std::unique_ptr<gl::Context> ctx;
   std::unique_ptr<Renderer> renderer;
   std::unique_ptr<Device> device;
-  GlfwInputDevice* mouse = nullptr;
+  GlfwInputDevice* input = nullptr;  // == device.get() for the mouse or gamepad
   std::string out_dir;
   int screenshots = 0;
 };
@@ -61,18 +61,21 @@ PlaneAxes floor_plane(const Renderer& r) {
 }
 
 Status open_device(const std::string& device, Window& w) {
-  if (device.empty() || device == "mouse") {
+  if (device.empty() || device == "mouse" || device == "gamepad") {
     GlfwInputParams params;
     params.mm_per_count = kMmPerCount;
-    auto m = std::make_unique<GlfwInputDevice>(GlfwInputDevice::Kind::kMouse, w.ctx->window(), params);
-    m->toggle_capture();  // relative: the camera follows the probe, so an absolute pointer would chase it
-    w.mouse = m.get();
+    const bool mouse = device != "gamepad";
+    auto m = std::make_unique<GlfwInputDevice>(mouse ? GlfwInputDevice::Kind::kMouse : GlfwInputDevice::Kind::kGamepad,
+                                               w.ctx->window(), params);
+    // The mouse relative (captured): the camera follows the probe, so an absolute pointer would
+    // chase it. The gamepad's stick is relative already.
+    if (mouse) m->toggle_capture();
+    w.input = m.get();
     w.device = std::move(m);
     return ok_status();
   }
   auto d = open_device_log(device);
   if (!d) return make_error("--device: " + d.error().message);
-  if (d->pointer) return make_error("--device: pointer logs are not supported by the maze; use mouse, trajectory: or playback:");
   w.device = std::move(d->device);
   return ok_status();
 }
@@ -180,9 +183,9 @@ Status window_loop(const maze::SessionOptions& o, maze::SessionCore& core, Windo
     keys.poll(w.ctx->window());
     if (keys.quit) return ok_status();
     st = loop.state().read();
-    if (w.mouse) {
-      w.mouse->add_height_steps(std::exchange(keys.height_steps, 0));
-      w.mouse->poll(st.time_s, pointer_view(*w.renderer, floor_plane(*w.renderer)));
+    if (w.input) {
+      w.input->add_height_steps(std::exchange(keys.height_steps, 0));
+      w.input->poll(st.time_s, pointer_view(*w.renderer, floor_plane(*w.renderer)));
     }
     if (!core.finished())
       if (Status s = core.step(st, loop, on_score); !s) return s;
@@ -221,7 +224,7 @@ int run_maze_window(const cli::Command& cmd, const maze::SessionOptions& o, cons
   HapticLoop loop(*w.device, clock, o.haptics, core.haptic().get());
   SampleRecorder recorder(o.record_path);
   loop.set_recorder(&recorder);
-  if (w.mouse) w.mouse->poll(0.0, pointer_view(*w.renderer, floor_plane(*w.renderer)));
+  if (w.input) w.input->poll(0.0, pointer_view(*w.renderer, floor_plane(*w.renderer)));
   loop.start();
   std::string reason = "quit";
   Status looped = ok_status();
