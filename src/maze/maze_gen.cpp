@@ -265,6 +265,9 @@ Result<MazeScene> generate_scene(const MazeDesc& desc, const Route& route, bool 
     texture |= cues && tail == Cue::kTexture;
     elastic |= cues && tail == Cue::kElastic;
     b.room(first - 1, tail, cues);
+    // Its entrance led back into the previous pass's rooms, which this scene does not hold: closed.
+    const double south = b.g.center_y(first - 1) - b.g.a;
+    b.cap(south - b.g.t, south, first - 1);
   }
   for (int i = 0; i < kRoomsPerPass; ++i) {
     texture |= cues && order[static_cast<std::size_t>(i)] == Cue::kTexture;

@@ -111,6 +111,14 @@ TEST(MazeSceneTest, RoomsAreIdenticalAndCuesFollowTheCondition) {
   auto pass2 = generate_scene(d.value(), route, true, 1);
   ASSERT_TRUE(pass2) << pass2.error().message;
   EXPECT_EQ(pass2->slots.front(), 5) << "pass 2's scene starts with pass 1's last room";
+  // ... whose entrance (into pass 1's rooms, not in this scene) is closed: a probe walked back
+  // through it stops at the south wall's line instead of leaving the maze.
+  auto back = build_haptic(pass2.value());
+  ASSERT_TRUE(back) << back.error().message;
+  const double south = g.center_y(5) - g.a;
+  const world::Contact c = back.value()->closest(glm::dvec3(0.0, south + 1.0, 7.0), 10.0);
+  ASSERT_TRUE(c.hit);
+  EXPECT_NEAR(c.distance_mm, 1.0, 1e-9);
 }
 
 // The walls' low friction (the description's [walls]): a device pushed diagonally 15 mm into
