@@ -38,7 +38,7 @@ std::string default_maze() { return default_scene_base_dir() + "/maze/maze.toml"
 
 struct MazeArgs {
   std::string maze = default_maze(), participant, cues, device, out_dir, write_scene;
-  long long seed = -1, every = 0;
+  long long seed = -1, every = 0, session = 1;
   double fps = 30.0, pace = 0.0;
   gl::Backend backend = gl::Backend::kAuto;
   bool quiet = false, window = false;
@@ -50,6 +50,8 @@ void declare(cli::Command& cmd, MazeArgs& a) {
   app.add_option("--participant", a.participant, "the participant's id, written into the log (required)")->type_name("ID");
   cli::add_int(app, "--seed", "N", a.seed, 0LL, 9'007'199'254'740'991LL,
                "the participant's seed: correct exits and room orders (required)");
+  cli::add_int(app, "--session", "K", a.session, 1LL, 1000LL,
+               "which session of this participant (default 1; 2: a retest with the same seed, seed 003 §VII)");
   app.add_option_function<std::string>(
          "--cues",
          [&a](const std::string& v) {
@@ -166,7 +168,7 @@ int maze_main(const cli::Command& cmd, const MazeArgs& a) {
   o.desc = desc.value();
   o.route = maze::draw_route(static_cast<std::uint64_t>(a.seed));
   o.info = {a.participant, a.cues == "on", o.route.seed, a.maze, a.device.empty() ? "mouse" : a.device, "device.log",
-            o.desc.max_passes};
+            o.desc.max_passes, static_cast<int>(a.session)};
   o.log_path = args.out_dir + "/session.jsonl";
   o.record_path = args.out_dir + "/device.log";
   if (a.window || a.device.empty() || a.device == "mouse" || a.device == "gamepad") return run_maze_window(cmd, o, a.device);
@@ -205,7 +207,7 @@ int summarize_main(const cli::Command& cmd, const SummarizeArgs& a) {
   }
   const auto groups = maze::summarize_groups(people);
   if (Status s = prepare_output_dir(a.out_dir + "/summary.md"); !s) return cmd.fail(s.error());
-  if (Status s = maze::write_tables(a.out_dir, people, groups); !s) return cmd.fail(s.error());
+  if (Status s = maze::write_tables(a.out_dir, people, groups, maze::summarize_retests(people)); !s) return cmd.fail(s.error());
   if (!a.no_plots)
     if (Status s = maze::write_plots(a.out_dir, people, groups); !s) return cmd.fail(s.error());
   if (!a.quiet) std::printf("summarized %zu participants in %zu groups into %s\n", people.size(), groups.size(), a.out_dir.c_str());

@@ -60,6 +60,7 @@ Status SessionLog::session_start(const SessionInfo& info, const Route& route) {
   return append(json{{"type", "session_start"},
                      {"schema", kLogSchema},
                      {"participant", info.participant},
+                     {"session", info.session},
                      {"condition", info.cues ? "cues_on" : "cues_off"},
                      {"cues", info.cues},
                      {"seed", info.seed},

@@ -32,6 +32,7 @@ void read_line(ParticipantSummary& p, const json& j, const std::string& where) {
   if (j.contains("time_s")) p.total_time_s = std::max(p.total_time_s, j.at("time_s").get<double>());
   if (type == "session_start") {
     p.participant = j.at("participant").get<std::string>();
+    p.session = j.value("session", 1);
     p.condition = j.at("condition").get<std::string>();
     p.seed = j.at("seed").get<std::uint64_t>();
   } else if (type == "branch") {
@@ -84,10 +85,13 @@ Result<ParticipantSummary> summarize_log(const std::string& path) {
 std::vector<GroupSummary> summarize_groups(const std::vector<ParticipantSummary>& people) {
   std::vector<GroupSummary> groups;
   for (const ParticipantSummary& p : people) {
-    auto it = std::find_if(groups.begin(), groups.end(), [&](const GroupSummary& g) { return g.condition == p.condition; });
+    auto it = std::find_if(groups.begin(), groups.end(), [&](const GroupSummary& g) {
+      return g.condition == p.condition && g.session == p.session;
+    });
     if (it == groups.end()) {
       GroupSummary g;
       g.condition = p.condition;
+      g.session = p.session;
       it = groups.insert(groups.end(), g);
     }
     GroupSummary& g = *it;
@@ -108,7 +112,7 @@ std::vector<GroupSummary> summarize_groups(const std::vector<ParticipantSummary>
     }
     std::vector<int> count;
     for (const ParticipantSummary& p : people) {
-      if (p.condition != g.condition) continue;
+      if (p.condition != g.condition || p.session != g.session) continue;
       for (std::size_t i = 0; i < p.pass_time_s.size(); ++i) {
         if (g.mean_pass_time_s.size() <= i) g.mean_pass_time_s.push_back(0.0), count.push_back(0);
         g.mean_pass_time_s[i] += p.pass_time_s[i];
@@ -125,42 +129,42 @@ namespace {
 // participants.csv, trials.csv and the markdown's participant table.
 void participant_tables(const std::vector<ParticipantSummary>& people, std::ostringstream& pc, std::ostringstream& tc,
                         std::ostringstream& md) {
-  pc << "participant,condition,seed,passes,trials_to_criterion,ended,total_time_s" << csv_header_cues("errors_")
+  pc << "participant,session,condition,seed,passes,trials_to_criterion,ended,total_time_s" << csv_header_cues("errors_")
      << csv_header_cues("room_time_s_") << "\n";
-  tc << "participant,condition,pass,correct,pass_time_s\n";
-  md << "## Participants\n\n| participant | condition | seed | passes | trials to criterion | total time (s) |";
+  tc << "participant,session,condition,pass,correct,pass_time_s\n";
+  md << "## Participants\n\n| participant | session | condition | seed | passes | trials to criterion | total time (s) |";
   for (int c = 0; c < kCueCount; ++c) md << " errors " << cue_name(static_cast<Cue>(c)) << " |";
-  md << "\n|---|---|---|---|---|---|";
+  md << "\n|---|---|---|---|---|---|---|";
   for (int c = 0; c < kCueCount; ++c) md << "---|";
   md << "\n";
   for (const ParticipantSummary& p : people) {
     const std::string ttc = p.trials_to_criterion > 0 ? std::to_string(p.trials_to_criterion) : "";
-    pc << p.participant << "," << p.condition << "," << p.seed << "," << p.passes << "," << ttc << ","
+    pc << p.participant << "," << p.session << "," << p.condition << "," << p.seed << "," << p.passes << "," << ttc << ","
        << (p.ended ? "yes" : "no") << "," << fmt(p.total_time_s);
-    md << "| " << p.participant << " | " << p.condition << " | " << p.seed << " | " << p.passes << " | "
+    md << "| " << p.participant << " | " << p.session << " | " << p.condition << " | " << p.seed << " | " << p.passes << " | "
        << (ttc.empty() ? "not reached" : ttc) << " | " << fmt(p.total_time_s, 2) << " |";
     for (int c = 0; c < kCueCount; ++c) pc << "," << p.errors[static_cast<std::size_t>(c)], md << " " << p.errors[static_cast<std::size_t>(c)] << " |";
     for (int c = 0; c < kCueCount; ++c) pc << "," << fmt(p.mean_room_time_s(c));
     pc << "\n";
     md << (p.ended ? "" : " (log cut short)") << "\n";
     for (std::size_t i = 0; i < p.pass_time_s.size(); ++i)
-      tc << p.participant << "," << p.condition << "," << i + 1 << "," << p.pass_correct[i] << "," << fmt(p.pass_time_s[i]) << "\n";
+      tc << p.participant << "," << p.session << "," << p.condition << "," << i + 1 << "," << p.pass_correct[i] << "," << fmt(p.pass_time_s[i]) << "\n";
   }
 }
 
 // groups.csv and the markdown's group table.
 void group_tables(const std::vector<GroupSummary>& groups, std::ostringstream& gc, std::ostringstream& md) {
-  gc << "condition,participants,reached_criterion,mean_trials_to_criterion,mean_total_time_s"
+  gc << "condition,session,participants,reached_criterion,mean_trials_to_criterion,mean_total_time_s"
      << csv_header_cues("mean_errors_") << csv_header_cues("mean_room_time_s_") << "\n";
-  md << "\n## Groups\n\n| condition | participants | reached criterion | mean trials to criterion | mean total time (s) |";
+  md << "\n## Groups\n\n| condition | session | participants | reached criterion | mean trials to criterion | mean total time (s) |";
   for (int c = 0; c < kCueCount; ++c) md << " mean room time " << cue_name(static_cast<Cue>(c)) << " (s) |";
-  md << "\n|---|---|---|---|---|";
+  md << "\n|---|---|---|---|---|---|";
   for (int c = 0; c < kCueCount; ++c) md << "---|";
   md << "\n";
   for (const GroupSummary& g : groups) {
-    gc << g.condition << "," << g.participants << "," << g.reached_criterion << "," << fmt(g.mean_trials_to_criterion)
+    gc << g.condition << "," << g.session << "," << g.participants << "," << g.reached_criterion << "," << fmt(g.mean_trials_to_criterion)
        << "," << fmt(g.mean_total_time_s);
-    md << "| " << g.condition << " | " << g.participants << " | " << g.reached_criterion << " | "
+    md << "| " << g.condition << " | " << g.session << " | " << g.participants << " | " << g.reached_criterion << " | "
        << fmt(g.mean_trials_to_criterion, 2) << " | " << fmt(g.mean_total_time_s, 2) << " |";
     for (int c = 0; c < kCueCount; ++c) gc << "," << fmt(g.mean_errors[static_cast<std::size_t>(c)]);
     for (int c = 0; c < kCueCount; ++c)
@@ -172,16 +176,45 @@ void group_tables(const std::vector<GroupSummary>& groups, std::ostringstream& g
 
 }  // namespace
 
+std::vector<RetestSummary> summarize_retests(const std::vector<ParticipantSummary>& people) {
+  std::vector<RetestSummary> out;
+  for (const ParticipantSummary& first : people) {
+    if (first.session != 1 || !first.ended) continue;
+    for (const ParticipantSummary& again : people) {
+      if (again.session != 2 || !again.ended || again.participant != first.participant || again.condition != first.condition)
+        continue;
+      auto it = std::find_if(out.begin(), out.end(), [&](const RetestSummary& r) { return r.condition == first.condition; });
+      if (it == out.end()) {
+        RetestSummary r;
+        r.condition = first.condition;
+        it = out.insert(out.end(), r);
+      }
+      ++it->retested;
+      if (again.total_time_s < first.total_time_s) ++it->faster;
+    }
+  }
+  return out;
+}
+
 Status write_tables(const std::string& dir, const std::vector<ParticipantSummary>& people,
-                    const std::vector<GroupSummary>& groups) {
-  std::ostringstream pc, gc, tc, md;
+                    const std::vector<GroupSummary>& groups, const std::vector<RetestSummary>& retests) {
+  std::ostringstream pc, gc, tc, rc, md;
   md << "# Maze summary\n\n";
   participant_tables(people, pc, tc, md);
   group_tables(groups, gc, md);
+  rc << "condition,retested,faster_on_retest,share_faster\n";
+  if (!retests.empty())
+    md << "\n## Retest (session 2 against session 1, seed 003 §VII)\n\n| condition | retested | faster on retest | share |\n"
+          "|---|---|---|---|\n";
+  for (const RetestSummary& r : retests) {
+    rc << r.condition << "," << r.retested << "," << r.faster << "," << fmt(r.share_faster()) << "\n";
+    md << "| " << r.condition << " | " << r.retested << " | " << r.faster << " | " << fmt(100.0 * r.share_faster(), 0) << " % |\n";
+  }
   md << "\nErrors per room are wrong exits summed over all passes; room time is the time from entering a room to "
         "leaving it by an exit, averaged over passes. Plots: errors_by_room.png, time_per_trial.png.\n";
   for (const auto& [name, text] : {std::pair<std::string, std::string>{"participants.csv", pc.str()},
-                                   {"groups.csv", gc.str()}, {"trials.csv", tc.str()}, {"summary.md", md.str()}})
+                                   {"groups.csv", gc.str()}, {"trials.csv", tc.str()}, {"retest.csv", rc.str()},
+                                   {"summary.md", md.str()}})
     if (Status s = write_file_atomic(dir + "/" + name, text); !s) return s;
   return ok_status();
 }
@@ -195,7 +228,8 @@ void errors_script(std::ostringstream& gp, const std::string& dir, const std::ve
      << "set style data histograms\nset style histogram clustered gap 1\nset style fill solid 0.8 border -1\n"
      << "set boxwidth 0.9\nset bmargin 5\nset offsets 0, 0, 0.5, 0\nset yrange [0:*]\nset key top right\nset grid ytics\n"
      << "$errors << EOD\nroom";
-  for (const GroupSummary& g : groups) gp << " \"" << g.condition << "\"";
+  for (const GroupSummary& g : groups)
+    gp << " \"" << g.condition << (g.session > 1 ? " session " + std::to_string(g.session) : "") << "\"";
   gp << "\n";
   for (int c = 0; c < kCueCount; ++c) {
     gp << "\"" << cue_label(static_cast<Cue>(c)) << "\\n" << cue_name(static_cast<Cue>(c)) << "\"";
@@ -224,9 +258,10 @@ void time_script(std::ostringstream& gp, const std::string& dir, const std::vect
   for (std::size_t k = 0; k < people.size(); ++k) {
     std::size_t group = 0;
     for (std::size_t gi = 0; gi < groups.size(); ++gi)
-      if (groups[gi].condition == people[k].condition) group = gi;
+      if (groups[gi].condition == people[k].condition && groups[gi].session == people[k].session) group = gi;
     gp << (k ? ", " : "") << "$p" << k << " using 1:2 lc " << group + 1 << " pt " << k % 10 + 1 << " title '"
-       << people[k].participant << " (" << people[k].condition << ")'";
+       << people[k].participant << (people[k].session > 1 ? " session " + std::to_string(people[k].session) : "")
+       << " (" << people[k].condition << ")'";
   }
   if (people.empty()) gp << "0 notitle";
   gp << "\n";

@@ -17,6 +17,7 @@ inline constexpr int kCueCount = 6;  // Cue::kNone ... Cue::kExternalForce
 
 struct ParticipantSummary {
   std::string participant, condition, log;
+  int session = 1;               // 1, or a retest (logs without the field: 1)
   std::uint64_t seed = 0;
   bool ended = false;            // the log has its session_end line (else the session was cut short)
   std::string end_reason;        // criterion, max_passes, device_ended, quit ("" when cut short)
@@ -33,8 +34,9 @@ struct ParticipantSummary {
   }
 };
 
-struct GroupSummary {
+struct GroupSummary {  // one condition in one session (1: the first; 2: the retest; ...)
   std::string condition;
+  int session = 1;
   int participants = 0, reached_criterion = 0;
   double mean_trials_to_criterion = 0.0;  // over those who reached it
   double mean_total_time_s = 0.0;
@@ -43,14 +45,23 @@ struct GroupSummary {
   std::vector<double> mean_pass_time_s;            // per pass index, over those who made that pass
 };
 
+// Seed 003 §VII's retest: per condition, of the participants with a complete first session
+// and a complete session 2, how many took less time in session 2.
+struct RetestSummary {
+  std::string condition;
+  int retested = 0, faster = 0;
+  double share_faster() const { return retested > 0 ? static_cast<double>(faster) / retested : 0.0; }
+};
+
 // One log; errors name file:line (a line that is not JSON, a missing session_start).
 Result<ParticipantSummary> summarize_log(const std::string& path);
-// Groups by condition, in order of first appearance.
+// Groups by condition and session, in order of first appearance.
 std::vector<GroupSummary> summarize_groups(const std::vector<ParticipantSummary>& people);
+std::vector<RetestSummary> summarize_retests(const std::vector<ParticipantSummary>& people);
 
-// participants.csv, groups.csv, trials.csv and summary.md in `dir` (which must exist).
+// participants.csv, groups.csv, trials.csv, retest.csv and summary.md in `dir` (which must exist).
 Status write_tables(const std::string& dir, const std::vector<ParticipantSummary>& people,
-                    const std::vector<GroupSummary>& groups);
+                    const std::vector<GroupSummary>& groups, const std::vector<RetestSummary>& retests);
 // errors_by_room.png and time_per_trial.png (gnuplot).
 Status write_plots(const std::string& dir, const std::vector<ParticipantSummary>& people,
                    const std::vector<GroupSummary>& groups);

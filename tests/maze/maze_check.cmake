@@ -28,7 +28,7 @@ foreach(f p01/session.jsonl p01/device.log p01/score_pass_1.png p01/score_pass_2
 endforeach()
 run(${CMD} maze summarize ${DIR}/p01/session.jsonl ${DIR}/p02/session.jsonl --out ${DIR}/summary)
 file(READ ${DIR}/summary/groups.csv groups)
-if(NOT groups MATCHES "\ncues_on,1,1,2.000," OR NOT groups MATCHES "\ncues_off,1,1,3.000,")
+if(NOT groups MATCHES "\ncues_on,1,1,1,2.000," OR NOT groups MATCHES "\ncues_off,1,1,1,3.000,")
   message(FATAL_ERROR "groups.csv: expected cues_on reaching the criterion at pass 2, cues_off at 3:\n${groups}")
 endif()
 foreach(f participants.csv trials.csv summary.md errors_by_room.png time_per_trial.png)

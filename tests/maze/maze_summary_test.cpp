@@ -1,7 +1,7 @@
-// `maze summarize` on three small logs written by hand (tests/maze/data): every number of the
-// tables equals the one worked out by hand in the comments below (to 1e-12: sums and means of
-// a few decimals); a log cut short (no session_end) still counts what it holds; bad lines are
-// file:line errors.
+// `maze summarize` on small logs written by hand (tests/maze/data): every number of the tables
+// equals the one worked out by hand in the comments below (to 1e-12: sums and means of a few
+// decimals); a log cut short (no session_end) still counts what it holds; the retest (session 2)
+// is compared with session 1; bad lines are file:line errors.
 #include <gtest/gtest.h>
 
 #include <fstream>
@@ -84,10 +84,10 @@ TEST(MazeSummaryTest, TablesAndPlotsAreWritten) {
   const auto people = three();
   const auto groups = summarize_groups(people);
   const std::string dir = test::temp_dir("summary_tables");
-  ASSERT_TRUE(write_tables(dir, people, groups));
+  ASSERT_TRUE(write_tables(dir, people, groups, summarize_retests(people)));
   const auto groups_csv = test::read_lines(dir + "/groups.csv");
   ASSERT_EQ(groups_csv.size(), 3u);
-  EXPECT_EQ(groups_csv[1].rfind("cues_on,2,1,2.000,35.000,0.500,1.000,0.000,0.500,0.000,0.000,1.625,2.250,2.750,", 0), 0u)
+  EXPECT_EQ(groups_csv[1].rfind("cues_on,1,2,1,2.000,35.000,0.500,1.000,0.000,0.500,0.000,0.000,1.625,2.250,2.750,", 0), 0u)
       << groups_csv[1];
   const auto trials = test::read_lines(dir + "/trials.csv");
   EXPECT_EQ(trials.size(), 1u + 2 + 2 + 1);
@@ -95,6 +95,41 @@ TEST(MazeSummaryTest, TablesAndPlotsAreWritten) {
   ASSERT_TRUE(plots) << plots.error().message;
   for (const char* png : {"/errors_by_room.png", "/time_per_trial.png"})
     EXPECT_GT(std::filesystem::file_size(dir + png), 1000u) << png;
+}
+
+// Seed 003 §VII's retest: P1 (cues on) took 40 s, then 30 s in session 2: faster; P2 (cues
+// off) 20 s, then 25 s: slower; P3 was cut short (no complete first session): not counted. The
+// retest sessions form groups of their own (session 2), not mixed into session 1's means.
+TEST(MazeSummaryTest, RetestComparesSessionTwoWithSessionOne) {
+  auto people = three();
+  for (const char* f : {"p1_cues_on_retest.jsonl", "p2_cues_off_retest.jsonl"}) {
+    auto p = summarize_log(data(f));
+    ASSERT_TRUE(p) << p.error().message;
+    EXPECT_EQ(p->session, 2);
+    people.push_back(p.value());
+  }
+  EXPECT_EQ(people[0].session, 1);  // logs without the field are first sessions
+  const auto retests = summarize_retests(people);
+  ASSERT_EQ(retests.size(), 2u);
+  EXPECT_EQ(retests[0].condition, "cues_on");
+  EXPECT_EQ(retests[0].retested, 1);
+  EXPECT_EQ(retests[0].faster, 1);
+  EXPECT_EQ(retests[1].condition, "cues_off");
+  EXPECT_EQ(retests[1].retested, 1);
+  EXPECT_EQ(retests[1].faster, 0);
+  const auto groups = summarize_groups(people);
+  ASSERT_EQ(groups.size(), 4u);
+  EXPECT_EQ(groups[0].session, 1);
+  EXPECT_DOUBLE_EQ(groups[0].mean_total_time_s, 35.0);  // session 1 of cues_on as before: (40 + 30) / 2
+  EXPECT_EQ(groups[2].condition, "cues_on");
+  EXPECT_EQ(groups[2].session, 2);
+  EXPECT_DOUBLE_EQ(groups[2].mean_total_time_s, 30.0);
+  EXPECT_DOUBLE_EQ(groups[3].mean_errors[kElastic], 1.0);  // P2's retest: one wrong exit in the elastic room
+  const std::string dir = test::temp_dir("summary_retest");
+  ASSERT_TRUE(write_tables(dir, people, groups, retests));
+  EXPECT_EQ(test::read_lines(dir + "/retest.csv"),
+            (std::vector<std::string>{"condition,retested,faster_on_retest,share_faster", "cues_on,1,1,1.000",
+                                      "cues_off,1,0,0.000"}));
 }
 
 TEST(MazeSummaryTest, BadLinesNameFileAndLine) {
