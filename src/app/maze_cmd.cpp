@@ -219,7 +219,7 @@ int summarize_main(const cli::Command& cmd, const SummarizeArgs& a) {
 struct ScriptArgs {
   std::string maze = default_maze(), out;
   long long seed = -1, errors = 0, passes = 0;
-  double speed = 100.0;
+  double speed = 100.0, height = -1.0;
 };
 
 void declare_script(cli::Command& cmd, ScriptArgs& a) {
@@ -231,6 +231,9 @@ void declare_script(cli::Command& cmd, ScriptArgs& a) {
   cli::add_int(app, "--passes", "P", a.passes, 0LL, 100LL,
                "passes to walk; the last takes every correct exit (default: 1, or 2 with --errors)");
   cli::add_positive(app, "--speed", "MM_S", a.speed, 10000.0, "100", "walking speed in mm/s (default 100)");
+  cli::add_positive(app, "--height", "MM", a.height, 1000.0, "5.5",
+                    "the probe centre's height over the floor (default: probe radius + 1, no contact; below the "
+                    "radius it presses into the floor, so the floor's feel shows in the log)");
   app.add_option("--out", a.out, "the trajectory file to write (required)")->type_name("FILE.traj")->group(cli::kOutputGroup);
   cmd.usage("pseudoshadow maze script --seed N --out FILE.traj [--errors K] [--passes P]");
 }
@@ -246,7 +249,7 @@ int script_main(const cli::Command& cmd, const ScriptArgs& a) {
     choices.push_back(p + 1 < passes ? maze::choices_with_errors(route, p, static_cast<int>(a.errors))
                                      : maze::correct_choices(route, p));
   if (Status s = prepare_output_dir(a.out); !s) return cmd.fail(s.error());
-  if (Status s = write_file_atomic(a.out, maze::script_trajectory(desc.value(), choices, a.speed)); !s) return cmd.fail(s.error());
+  if (Status s = write_file_atomic(a.out, maze::script_trajectory(desc.value(), choices, a.speed, a.height)); !s) return cmd.fail(s.error());
   return cli::kExitOk;
 }
 

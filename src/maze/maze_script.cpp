@@ -18,9 +18,10 @@ PassChoices choices_with_errors(const Route& route, int pass, int wrong) {
   return c;
 }
 
-std::string script_trajectory(const MazeDesc& desc, const std::vector<PassChoices>& passes, double speed_mm_s) {
+std::string script_trajectory(const MazeDesc& desc, const std::vector<PassChoices>& passes, double speed_mm_s,
+                              double height_mm) {
   const RoomGeometry g = room_geometry(desc);
-  const double z = desc.probe_radius_mm + 1.0, a = g.a;
+  const double z = height_mm >= 0.0 ? height_mm : desc.probe_radius_mm + 1.0, a = g.a;
   std::vector<glm::dvec2> way{glm::dvec2(g.start(desc.probe_radius_mm))};
   for (std::size_t p = 0; p < passes.size(); ++p)
     for (int i = 0; i < kRoomsPerPass; ++i) {

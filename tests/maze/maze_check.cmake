@@ -71,3 +71,4 @@ foreach(who p01 p02)
     endif()
   endforeach()
 endforeach()
+

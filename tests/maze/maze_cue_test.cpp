@@ -5,10 +5,15 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <fstream>
+#include <map>
+
+#include <nlohmann/json.hpp>
 
 #include "devices/sample_log.h"
 #include "haptics/haptic_loop.h"
 #include "maze/maze.h"
+#include "maze/maze_script.h"
 #include "maze/maze_session.h"
 #include "maze_test_util.h"
 
@@ -223,6 +228,54 @@ TEST(MazeCueTest, TextureRoomFloorIsFeltRough) {
   EXPECT_GT(spread(on, Cue::kTexture), 1.8 * a);  // a square wave of amplitude A swings by 2A
   EXPECT_LT(spread(on, Cue::kNone), 0.1 * a);
   EXPECT_LT(spread(off, Cue::kTexture), 0.1 * a);
+}
+
+// The cues as a session's log shows them: a scripted participant walks pass 1 (cues on, the
+// correct exits) pressing 0.5 mm into the floor all the way, at 100 mm/s. Per room, from the
+// branch lines of its log: the elastic room's mean force is 3 x the learning room's (1.5 / 0.5
+// N/mm: both are the spring k r plus the same 5 % friction; 2 % for the corners of the path and
+// the filter's settling at the room's entry), the texture room's largest force is the spring
+// plus the wave's amplitude (0.25 + 0.15 N, 2 %), the viscous room's largest field force is b v
+// (0.4 N; 10 %: the filtered velocity overshoots at the path's corners), the external force
+// room's is the fluctuation's 1 N (1 %); the floor is touched the whole time in every room.
+TEST(MazeCueTest, CuesShowInTheSessionLog) {
+  auto d = load_maze_desc(test::maze_file());
+  ASSERT_TRUE(d) << d.error().message;
+  const Route route = draw_route(7);
+  const std::string dir = test::temp_dir("cues_in_log");
+  const double depth = 0.5;
+  std::ofstream(dir + "/press.traj") << script_trajectory(d.value(), {correct_choices(route, 0)}, 100.0,
+                                                          d->probe_radius_mm - depth);
+  auto dev = open_log_device("trajectory:" + dir + "/press.traj");
+  ASSERT_TRUE(dev) << dev.error().message;
+  SessionOptions o;
+  o.desc = d.value();
+  o.route = route;
+  o.info.participant = "press";
+  o.info.cues = true;
+  o.log_path = dir + "/session.jsonl";
+  auto r = run_session(*dev.value(), o, nullptr, nullptr);
+  ASSERT_TRUE(r) << r.error().message;
+  ASSERT_EQ(r->reason, "criterion");
+  std::map<std::string, nlohmann::json> room;
+  for (const std::string& line : test::read_lines(o.log_path)) {
+    const auto j = nlohmann::json::parse(line);
+    if (j["type"] == "branch") room[j["cue"].get<std::string>()] = j;
+  }
+  ASSERT_EQ(room.size(), 6u);
+  const double k = d->wall_stiffness_n_per_mm, ratio = d->elastic_stiffness_n_per_mm / k;
+  const double mean_none = room["none"]["force_mean_n"], mean_elastic = room["elastic"]["force_mean_n"];
+  RecordProperty("log_elastic_over_dummy", std::to_string(mean_elastic / mean_none));
+  EXPECT_NEAR(mean_elastic / mean_none, ratio, 0.02 * ratio);
+  EXPECT_NEAR(room["texture"]["force_max_n"].get<double>(), k * depth + d->texture_amplitude_n, 0.02 * (k * depth + d->texture_amplitude_n));
+  EXPECT_NEAR(room["none"]["force_max_n"].get<double>(), k * depth * std::hypot(1.0, d->wall_dynamic_friction), 0.02 * k * depth);
+  const double bv = d->viscosity_n_s_per_mm * 100.0;
+  EXPECT_NEAR(room["viscosity"]["field_force_max_n"].get<double>(), bv, 0.1 * bv);
+  EXPECT_NEAR(room["external_force"]["field_force_max_n"].get<double>(), glm::length(d->external_fluctuation_n), 0.01);
+  for (const auto& [cue, j] : room) {
+    EXPECT_NEAR(j["contact_s"]["floor"].get<double>(), j["room_time_s"].get<double>(), 0.002) << cue;
+    EXPECT_EQ(j["contact_s"]["wall"].get<double>(), 0.0) << cue;
+  }
 }
 
 }  // namespace
