@@ -14,6 +14,7 @@
 #include "app/session.h"
 #include "core/file_io.h"
 #include "gl/context.h"
+#include "maze/maze_frames.h"
 #include "maze/maze_screen.h"
 #include "maze/maze_script.h"
 #include "maze/maze_session.h"
@@ -94,34 +95,6 @@ void declare(cli::Command& cmd, MazeArgs& a) {
   cmd.usage("pseudoshadow maze --participant ID --seed N --cues on|off [--device trajectory:FILE] [--out DIR]");
 }
 
-struct Frames {  // headless rendering, only when frames are asked for
-  std::unique_ptr<gl::Context> ctx;
-  std::unique_ptr<Renderer> renderer;
-};
-
-Status render_frame(const MazeArgs& a, const maze::MazeDesc& desc, Frames& f, const maze::FrameView& v) {
-  if (v.index % a.every != 0) return ok_status();
-  if (!f.ctx) {
-    auto ctx = gl::create_context({a.backend});
-    if (!ctx) return ctx.error();
-    f.ctx = std::move(ctx.value());
-  }
-  if (v.scene_changed || !f.renderer) {
-    f.renderer.reset();
-    auto r = Renderer::create(v.scene.scene, RendererOptions{});
-    if (!r) return r.error();
-    f.renderer = std::move(r.value());
-  }
-  f.renderer->set_camera(maze::follow_camera(desc, v.state.proxy_mm));
-  f.renderer->set_probe_state(v.state.proxy_mm, v.state.velocity_mm_s);
-  if (Status s = f.renderer->render_frame(); !s) return s;
-  Image im = f.renderer->read_color();
-  maze::stamp_label(im, v.label);
-  char name[48];
-  std::snprintf(name, sizeof name, "/frames/frame_%05d.png", v.index);
-  return write_image(a.out_dir + name, im);
-}
-
 int run_headless(const cli::Command& cmd, const MazeArgs& a, const maze::SessionOptions& base) {
   auto fail = [&cmd](const Error& e) { return cmd.fail(e); };
   auto device = open_device_log(a.device);
@@ -129,9 +102,18 @@ int run_headless(const cli::Command& cmd, const MazeArgs& a, const maze::Session
   maze::SessionOptions o = base;
   o.pace = a.pace;
   o.fps = a.every > 0 ? a.fps : 0.0;
-  if (a.every > 0) std::filesystem::create_directories(a.out_dir + "/frames");
-  Frames frames;
-  auto on_frame = [&](const maze::FrameView& v) { return render_frame(a, o.desc, frames, v); };
+  // GL only when frames are asked for: a session alone needs none.
+  std::unique_ptr<gl::Context> ctx;
+  std::unique_ptr<maze::FrameWriter> frames;
+  if (a.every > 0) {
+    if (Status s = prepare_output_dir(a.out_dir + "/frames/frame_00000.png"); !s) return fail(s.error());
+    auto c = gl::create_context({a.backend});
+    if (!c) return fail(c.error());
+    ctx = std::move(c.value());
+    frames = std::make_unique<maze::FrameWriter>(o.desc, a.out_dir + "/frames", static_cast<int>(a.every));
+  }
+  const maze::FrameFn on_frame = frames ? maze::FrameFn([&](const maze::FrameView& v) { return frames->on_frame(v); })
+                                        : maze::FrameFn();
   auto on_score = [&](const maze::PassScore& s) -> Status {
     if (!a.quiet) std::printf("pass %d: %d of 6 rooms right\n", s.pass + 1, s.correct());
     return write_image(a.out_dir + "/score_pass_" + std::to_string(s.pass + 1) + ".png", maze::score_image(s, o.info.cues));

@@ -7,6 +7,7 @@
 #include <cmath>
 
 #include "maze/maze.h"
+#include "maze/maze_frames.h"
 #include "maze/maze_screen.h"
 #include "maze_test_util.h"
 #include "render/renderer.h"
@@ -134,6 +135,23 @@ TEST_P(MazeGLTest, TextureRoomShadowIsTextured) {
   EXPECT_LE(max_levels(t_on, d_on, 12, false), 1.0);
   const Image t_off = render(s, off, s.room(Cue::kTexture) + at, v), d_off = render(s, off, s.room(Cue::kNone) + at, v);
   EXPECT_LE(std::max(max_levels(t_off, d_off, 12, true), max_levels(t_off, d_off, 12, false)), 1.0);
+}
+
+// `maze --every 2`: a pass switch reported on a frame the writer skips still gives the next
+// written frame a renderer of the new pass's scene (the switch is reported once).
+TEST_P(MazeGLTest, FramesAfterAPassSwitchDrawTheNewPass) {
+  const Shot s = shot(64);
+  auto pass1 = generate_scene(s.desc, s.route, true, 0), pass2 = generate_scene(s.desc, s.route, true, 1);
+  ASSERT_TRUE(pass1 && pass2);
+  FrameWriter writer(s.desc, test::temp_dir("frames_switch_" + std::string(gl::backend_name(GetParam()))), 2);
+  HapticState st;
+  st.proxy_mm = glm::dvec3(0.0, room_geometry(s.desc).hall_y(5), 7.0);
+  ASSERT_TRUE(writer.on_frame({0, st, pass1.value(), true, ""}));
+  ASSERT_TRUE(writer.on_frame({1, st, pass2.value(), true, ""}));  // not written: odd
+  ASSERT_TRUE(writer.on_frame({2, st, pass2.value(), false, ""}));
+  ASSERT_NE(writer.renderer(), nullptr);
+  EXPECT_EQ(writer.renderer()->scene().path, pass2->scene.path);
+  EXPECT_EQ(writer.written(), 2);
 }
 
 PS_INSTANTIATE_HEADLESS_BACKENDS(MazeGLTest);
