@@ -31,7 +31,11 @@ json trial_json(const SessionInfo& info, const Trial& t) {
 }  // namespace
 
 Result<SessionLog> SessionLog::open(const std::string& path) {
-  const int fd = ::open(path.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_APPEND | O_CLOEXEC, 0644);
+  // O_EXCL: a participant's log is never overwritten by a later run into the same directory.
+  const int fd = ::open(path.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_APPEND | O_CLOEXEC, 0644);
+  if (fd < 0 && errno == EEXIST)
+    return make_error(path + ": a session log is already there (a participant's data is never overwritten); "
+                             "give another --out, or move that one away");
   if (fd < 0) return make_error(path + ": cannot create the session log: " + std::strerror(errno));
   return SessionLog(fd, path);
 }

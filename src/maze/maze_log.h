@@ -29,7 +29,7 @@ struct SessionInfo {
 
 class SessionLog {
  public:
-  // Creates (truncates) `path`; its directory must exist.
+  // Creates `path` (its directory must exist); an existing file is an error, never truncated.
   static Result<SessionLog> open(const std::string& path);
   SessionLog(SessionLog&& o) noexcept : fd_(o.fd_), path_(std::move(o.path_)), lines_(o.lines_) { o.fd_ = -1; }
   SessionLog(const SessionLog&) = delete;

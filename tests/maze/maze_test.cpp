@@ -209,6 +209,21 @@ TEST(MazeSessionTest, WrongExitIsAFailedTrialAndThePerfectPassEnds) {
   EXPECT_EQ(nlohmann::json::parse(lines.back())["trials_to_criterion"], 2);
 }
 
+// A second session into the same directory is refused before anything is written: the first
+// participant's log stays as it was.
+TEST(MazeSessionTest, AnExistingLogIsNeverOverwritten) {
+  auto d = load_maze_desc(maze_file());
+  ASSERT_TRUE(d) << d.error().message;
+  const Route route = draw_route(5);
+  const std::string dir = temp_dir("no_overwrite");
+  ASSERT_TRUE(scripted_session(dir, d.value(), route, true, {correct_choices(route, 0)}));
+  const auto before = read_lines(dir + "/session.jsonl");
+  auto again = scripted_session(dir, d.value(), route, false, {correct_choices(route, 0)});
+  ASSERT_FALSE(again);
+  EXPECT_NE(again.error().message.find("a session log is already there"), std::string::npos) << again.error().message;
+  EXPECT_EQ(read_lines(dir + "/session.jsonl"), before);
+}
+
 // max_passes stops a session that never gets a perfect pass.
 TEST(MazeSessionTest, MaxPassesEndsASessionWithoutCriterion) {
   auto d = load_maze_desc(maze_file());
