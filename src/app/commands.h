@@ -15,6 +15,7 @@ int run_replay(int argc, char** argv);         // src/app/replay_cmd.cpp
 int run_bench_haptics(int argc, char** argv);  // src/app/bench_haptics_cmd.cpp
 int run_bench(int argc, char** argv);          // src/app/bench_cmd.cpp
 int run_tune(int argc, char** argv);           // src/app/tune_cmd.cpp
+int run_maze(int argc, char** argv);           // src/app/maze_cmd.cpp
 
 struct CommandInfo {
   std::string_view name;
@@ -30,6 +31,7 @@ inline constexpr CommandInfo kCommands[] = {
     {"bench-haptics", "measure the haptic loop's rate, jitter and latency while rendering", run_bench_haptics},
     {"bench", "sweep accuracy knobs: time vs error CSV + plot, skip ratios, peak RSS", run_bench},
     {"tune", "parameter sweeps into a labelled contact sheet, or a scripted console session", run_tune},
+    {"maze", "the haptic cue maze of seed 003: run a participant, script one, summarize the logs", run_maze},
 };
 
 }  // namespace ps

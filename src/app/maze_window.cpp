@@ -1,0 +1,248 @@
+#include "app/maze_window.h"
+
+#define GLFW_INCLUDE_NONE
+#include <GLFW/glfw3.h>
+#include <imgui.h>
+
+#include <backends/imgui_impl_glfw.h>
+#include <backends/imgui_impl_opengl3.h>
+
+#include <cstdio>
+#include <filesystem>
+
+#include "app/session.h"
+#include "devices/glfw_input.h"
+#include "devices/sample_log.h"
+#include "gl/context.h"
+#include "maze/maze_screen.h"
+#include "render/present.h"
+#include "render/renderer.h"
+
+namespace ps {
+
+namespace {
+
+constexpr double kScoreSeconds = 5.0;  // how long a pass's score screen stays up
+constexpr double kMmPerCount = 0.15;   // captured mouse: mm on the floor per raw count
+
+// Keys read by polling (edge-triggered), so ImGui's GLFW callbacks need no chaining.
+struct Keys {
+  bool quit = false, screenshot = false;
+  int height_steps = 0;  // PageUp/Up +1, PageDown/Down -1 (0.5 mm each, HeightControl)
+  std::array<bool, 5> was{};
+  void poll(GLFWwindow* win) {
+    const int keys[5] = {GLFW_KEY_PAGE_UP, GLFW_KEY_UP, GLFW_KEY_PAGE_DOWN, GLFW_KEY_DOWN, GLFW_KEY_S};
+    for (std::size_t i = 0; i < was.size(); ++i) {
+      const bool down = glfwGetKey(win, keys[i]) == GLFW_PRESS;
+      if (down && !was[i]) {
+        if (i < 2) ++height_steps;
+        else if (i < 4) --height_steps;
+        else screenshot = true;
+      }
+      was[i] = down;
+    }
+    quit = glfwWindowShouldClose(win) || glfwGetKey(win, GLFW_KEY_ESCAPE) == GLFW_PRESS ||
+           glfwGetKey(win, GLFW_KEY_Q) == GLFW_PRESS;
+  }
+};
+
+struct Window {  // context first: the renderer's GL objects die before it
+  std::unique_ptr<gl::Context> ctx;
+  std::unique_ptr<Renderer> renderer;
+  std::unique_ptr<Device> device;
+  GlfwInputDevice* input = nullptr;  // == device.get() for the mouse or gamepad
+  std::string out_dir;
+  int screenshots = 0;
+};
+
+// The floor under the camera target: the plane the captured mouse moves the probe over.
+PlaneAxes floor_plane(const Renderer& r) {
+  return {r.scene().camera.target, glm::dvec3(1, 0, 0), glm::dvec3(0, 1, 0), glm::dvec3(0, 0, 1)};
+}
+
+Status open_device(const std::string& device, Window& w) {
+  if (device.empty() || device == "mouse" || device == "gamepad") {
+    GlfwInputParams params;
+    params.mm_per_count = kMmPerCount;
+    const bool mouse = device != "gamepad";
+    auto m = std::make_unique<GlfwInputDevice>(mouse ? GlfwInputDevice::Kind::kMouse : GlfwInputDevice::Kind::kGamepad,
+                                               w.ctx->window(), params);
+    // The mouse relative (captured): the camera follows the probe, so an absolute pointer would
+    // chase it. The gamepad's stick is relative already.
+    if (mouse) m->toggle_capture();
+    w.input = m.get();
+    w.device = std::move(m);
+    return ok_status();
+  }
+  auto d = open_device_log(device);
+  if (!d) return make_error("--device: " + d.error().message);
+  w.device = std::move(d->device);
+  return ok_status();
+}
+
+Status open_window(const maze::SessionOptions& o, const std::string& device, const maze::SessionCore& core, Window& w) {
+  gl::ContextDesc desc;
+  desc.backend = gl::Backend::kGlfw;
+  desc.window_width = desc.window_height = o.desc.image_size;
+  desc.window_title = "pseudoshadow maze - " + o.info.participant;
+  auto ctx = gl::create_context(desc);
+  if (!ctx) return ctx.error();
+  w.ctx = std::move(ctx.value());
+  auto r = Renderer::create(core.scene().scene, RendererOptions{});
+  if (!r) return r.error();
+  w.renderer = std::move(r.value());
+  w.out_dir = std::filesystem::path(o.log_path).parent_path().string();
+  return open_device(device, w);
+}
+
+void text_window(const char* id, ImVec2 pos, const std::string& text, float scale) {
+  ImGui::SetNextWindowPos(pos);
+  ImGui::SetNextWindowBgAlpha(0.75f);
+  ImGui::Begin(id, nullptr, ImGuiWindowFlags_NoDecoration | ImGuiWindowFlags_AlwaysAutoResize | ImGuiWindowFlags_NoInputs);
+  ImGui::SetWindowFontScale(scale);
+  ImGui::TextUnformatted(text.c_str());
+  ImGui::End();
+}
+
+std::string score_text(const maze::PassScore& s, bool cues) {
+  std::string t = "Pass " + std::to_string(s.pass + 1) + ": " + std::to_string(s.correct()) + " of 6 rooms right\n";
+  for (const maze::Trial& r : s.trials)
+    t += "\nroom " + std::to_string(r.index + 1) + (cues ? "" : std::string("  ") + maze::cue_label(r.cue)) + "  " +
+         maze::exit_name(r.chosen) + "  " + (r.ok ? "RIGHT" : "WRONG");
+  return t;
+}
+
+// What the window shows over the frame: the label (cues off), the last score for a while.
+struct Overlay {
+  std::string label, score;
+  double score_until = -1.0;
+  bool done = false;
+};
+
+// Renders the state, stamps a screenshot if asked (the frame plus the label, as headless
+// frames have it), blits, draws the overlay.
+Status draw(Window& w, const maze::MazeDesc& desc, const HapticState& st, const Overlay& ov, bool screenshot) {
+  if (st.have_sample) {
+    w.renderer->set_camera(maze::follow_camera(desc, st.proxy_mm));
+    w.renderer->set_probe_state(st.proxy_mm, st.velocity_mm_s);
+  }
+  if (Status s = w.renderer->render_frame(); !s) return s;
+  if (screenshot) {
+    Image im = w.renderer->read_color();
+    maze::stamp_label(im, ov.label);
+    char name[48];
+    std::snprintf(name, sizeof name, "/screenshot_%04d.png", w.screenshots++);
+    if (Status s = write_image(w.out_dir + name, im); !s) return s;
+  }
+  int fw = 0, fh = 0;
+  glfwGetFramebufferSize(w.ctx->window(), &fw, &fh);
+  present_to_default_framebuffer(*w.renderer, fw, fh);
+  ImGui_ImplOpenGL3_NewFrame();
+  ImGui_ImplGlfw_NewFrame();
+  ImGui::NewFrame();
+  if (!ov.label.empty()) text_window("##label", ImVec2(10, 10), ov.label, 2.0f);
+  if (st.time_s < ov.score_until) text_window("##score", ImVec2(40, 80), ov.score, 1.6f);
+  if (ov.done) text_window("##done", ImVec2(40, fh - 60.0f), "The session is over.", 1.6f);
+  ImGui::Render();
+  ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
+  glfwSwapBuffers(w.ctx->window());
+  return ok_status();
+}
+
+struct ImGuiScope {  // ImGui over the window for the session's life
+  explicit ImGuiScope(GLFWwindow* win) {
+    IMGUI_CHECKVERSION();
+    ImGui::CreateContext();
+    ImGui::GetIO().IniFilename = nullptr;  // no imgui.ini next to the participant's files
+    ImGui_ImplGlfw_InitForOpenGL(win, true);
+    ImGui_ImplOpenGL3_Init("#version 450 core");
+  }
+  ~ImGuiScope() {
+    ImGui_ImplOpenGL3_Shutdown();
+    ImGui_ImplGlfw_Shutdown();
+    ImGui::DestroyContext();
+  }
+};
+
+// The render thread's loop: input, the session's step on the newest haptic state (a pass switch
+// brings a new renderer), the frame. Returns when the participant quits, the log device ends, or
+// kScoreSeconds after the session ended (its last score stays up that long).
+Status window_loop(const maze::SessionOptions& o, maze::SessionCore& core, Window& w, HapticLoop& loop,
+                   SampleRecorder& recorder, std::string& reason) {
+  Overlay ov;
+  Keys keys;
+  HapticState st;
+  double last_flush = 0.0, end_at = -1.0;
+  const auto on_score = [&](const maze::PassScore& s) -> Status {
+    ov.score = score_text(s, o.info.cues);
+    ov.score_until = st.time_s + kScoreSeconds;
+    return ok_status();
+  };
+  for (;;) {
+    glfwPollEvents();
+    keys.poll(w.ctx->window());
+    if (keys.quit) return ok_status();
+    st = loop.state().read();
+    if (w.input) {
+      w.input->add_height_steps(std::exchange(keys.height_steps, 0));
+      w.input->poll(st.time_s, pointer_view(*w.renderer, floor_plane(*w.renderer)));
+    }
+    if (!core.finished())
+      if (Status s = core.step(st, loop, on_score); !s) return s;
+    if (core.finished() && end_at < 0.0) {
+      end_at = st.time_s + kScoreSeconds;
+      reason = "logged";
+      ov.done = true;
+    }
+    if ((end_at >= 0.0 && st.time_s > end_at) || (end_at < 0.0 && w.device->duration_s() >= 0.0 && st.time_s > w.device->duration_s())) {
+      if (end_at < 0.0) reason = "device_ended";
+      return ok_status();
+    }
+    if (core.take_scene_changed()) {
+      auto r = Renderer::create(core.scene().scene, RendererOptions{});
+      if (!r) return r.error();
+      w.renderer = std::move(r.value());
+    }
+    ov.label = core.label();
+    if (Status s = draw(w, o.desc, st, ov, std::exchange(keys.screenshot, false)); !s) return s;
+    if (st.time_s - last_flush >= 1.0) {  // the device stream, about once a second
+      last_flush = st.time_s;
+      if (Status s = recorder.flush(); !s) return s;
+    }
+  }
+}
+
+}  // namespace
+
+int run_maze_window(const cli::Command& cmd, const maze::SessionOptions& o, const std::string& device) {
+  auto opened = maze::SessionCore::open(o);
+  if (!opened) return cmd.fail(opened.error());
+  maze::SessionCore& core = *opened.value();
+  Window w;
+  if (Status s = open_window(o, device, core, w); !s) return cmd.fail(s.error());
+  SteadyClock clock;
+  HapticLoop loop(*w.device, clock, o.haptics, core.haptic().get());
+  SampleRecorder recorder(o.record_path);
+  loop.set_recorder(&recorder);
+  if (w.input) w.input->poll(0.0, pointer_view(*w.renderer, floor_plane(*w.renderer)));
+  loop.start();
+  std::string reason = "quit";
+  Status looped = ok_status();
+  {
+    ImGuiScope imgui(w.ctx->window());
+    looped = window_loop(o, core, w, loop, recorder, reason);
+  }
+  loop.stop();
+  // The session's end is logged at the time it ended: at the criterion (or max_passes) that is
+  // the tick the tracker saw it, not when its score screen closed.
+  const double end_time = reason == "logged" ? core.end_time_s() : loop.state().read().time_s;
+  auto result = core.finish(end_time, reason == "logged" ? "quit" : reason);
+  if (Status s = recorder.close(); !s) return cmd.fail(s.error());
+  if (!looped) return cmd.fail(looped.error());
+  if (!result) return cmd.fail(result.error());
+  std::printf("maze: %s after %d pass%s (%s), %.1f s; log %s\n", o.info.participant.c_str(), result->passes,
+              result->passes == 1 ? "" : "es", result->reason.c_str(), result->time_s, o.log_path.c_str());
+  return cli::kExitOk;
+}
+
+}  // namespace ps

@@ -1,0 +1,141 @@
+#include "maze/maze_log.h"
+
+#include <cerrno>
+#include <cstring>
+#include <fcntl.h>
+#include <unistd.h>
+
+#include <nlohmann/json.hpp>
+
+namespace ps::maze {
+
+namespace {
+
+using json = nlohmann::ordered_json;  // keys in the order written: "type" and the ids first
+
+json per_kind(const auto& values) {
+  json o = json::object();
+  for (int k = 0; k < 4; ++k) o[surface_kind_name(static_cast<SurfaceKind>(k))] = values[static_cast<std::size_t>(k)];
+  return o;
+}
+
+json trial_json(const SessionInfo& info, const Trial& t) {
+  return {{"type", ""},
+          {"participant", info.participant},
+          {"pass", t.pass + 1},
+          {"room", t.index + 1},
+          {"cue", cue_name(t.cue)},
+          {"label", cue_label(t.cue)}};
+}
+
+}  // namespace
+
+Result<SessionLog> SessionLog::open(const std::string& path) {
+  // O_EXCL: a participant's log is never overwritten by a later run into the same directory.
+  const int fd = ::open(path.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_APPEND | O_CLOEXEC, 0644);
+  if (fd < 0 && errno == EEXIST)
+    return make_error(path + ": a session log is already there (a participant's data is never overwritten); "
+                             "give another --out, or move that one away");
+  if (fd < 0) return make_error(path + ": cannot create the session log: " + std::strerror(errno));
+  return SessionLog(fd, path);
+}
+
+SessionLog::~SessionLog() {
+  if (fd_ >= 0) ::close(fd_);
+}
+
+Status SessionLog::append(const std::string& json_line) {
+  const std::string line = json_line + "\n";
+  // One write of the whole line: with O_APPEND it lands whole or (on a full disk) is reported.
+  const ssize_t n = ::write(fd_, line.data(), line.size());
+  if (n != static_cast<ssize_t>(line.size()))
+    return make_error(path_ + ": cannot append to the session log: " + (n < 0 ? std::strerror(errno) : "short write"));
+  if (::fsync(fd_) != 0) return make_error(path_ + ": cannot sync the session log: " + std::strerror(errno));
+  ++lines_;
+  return ok_status();
+}
+
+Status SessionLog::session_start(const SessionInfo& info, const Route& route) {
+  json correct = json::object(), labels = json::object();
+  for (int c = 0; c <= static_cast<int>(Cue::kExternalForce); ++c) {
+    correct[cue_name(static_cast<Cue>(c))] = exit_name(route.correct_exit(static_cast<Cue>(c)));
+    labels[cue_name(static_cast<Cue>(c))] = cue_label(static_cast<Cue>(c));
+  }
+  return append(json{{"type", "session_start"},
+                     {"schema", kLogSchema},
+                     {"participant", info.participant},
+                     {"session", info.session},
+                     {"condition", info.cues ? "cues_on" : "cues_off"},
+                     {"cues", info.cues},
+                     {"seed", info.seed},
+                     {"maze", info.maze_path},
+                     {"device", info.device},
+                     {"device_log", info.device_log},
+                     {"max_passes", info.max_passes},
+                     {"correct_route", correct},
+                     {"labels", labels},
+                     {"time_s", 0.0}}
+                    .dump());
+}
+
+Status SessionLog::pass_start(int pass, const std::array<Cue, kRoomsPerPass>& order, double time_s) {
+  json rooms = json::array();
+  for (const Cue c : order) rooms.push_back(cue_name(c));
+  return append(json{{"type", "pass_start"}, {"pass", pass + 1}, {"order", rooms}, {"time_s", time_s}}.dump());
+}
+
+Status SessionLog::event(const SessionInfo& info, const TrackEvent& e) {
+  switch (e.kind) {
+    case TrackEvent::Kind::kRoomEntered: {
+      json j = trial_json(info, e.trial);
+      j["type"] = "room_enter";
+      j["time_s"] = e.trial.enter_s;
+      return append(j.dump());
+    }
+    case TrackEvent::Kind::kBranch: {
+      const Trial& t = e.trial;
+      json j = trial_json(info, t);
+      j["type"] = "branch";
+      j["exit"] = exit_name(t.chosen);
+      j["correct_exit"] = exit_name(t.correct);
+      j["correct"] = t.ok;
+      j["time_s"] = t.exit_s;
+      j["enter_s"] = t.enter_s;
+      j["room_time_s"] = t.time_s();
+      j["path_mm"] = t.path_mm;
+      j["contacts"] = per_kind(t.contacts);
+      j["contact_s"] = per_kind(t.contact_s);
+      j["force_mean_n"] = t.force_mean_n;
+      j["force_max_n"] = t.force_max_n;
+      j["field_force_max_n"] = t.field_force_max_n;
+      return append(j.dump());
+    }
+    case TrackEvent::Kind::kPassEnd: {
+      const PassScore& s = e.score;
+      json score = json::array();
+      for (const Trial& t : s.trials)
+        score.push_back({{"room", t.index + 1}, {"cue", cue_name(t.cue)}, {"exit", exit_name(t.chosen)}, {"correct", t.ok}});
+      return append(json{{"type", "pass_end"},
+                         {"pass", s.pass + 1},
+                         {"correct", s.correct()},
+                         {"rooms", kRoomsPerPass},
+                         {"pass_time_s", s.end_s - s.start_s},
+                         {"time_s", s.end_s},
+                         {"score", score}}
+                        .dump());
+    }
+    case TrackEvent::Kind::kFinished: return ok_status();  // session_end says it
+  }
+  return ok_status();
+}
+
+Status SessionLog::session_end(const std::string& reason, int passes, int trials_to_criterion, double time_s) {
+  return append(json{{"type", "session_end"},
+                     {"reason", reason},
+                     {"passes", passes},
+                     {"trials_to_criterion", trials_to_criterion > 0 ? json(trials_to_criterion) : json(nullptr)},
+                     {"time_s", time_s}}
+                    .dump());
+}
+
+}  // namespace ps::maze

@@ -1,0 +1,56 @@
+// The maze session log (docs/maze.md, "The session log"): JSON lines, one object per line, each
+// with a "type". Every line is written whole by one write(2) on an O_APPEND descriptor and then
+// fsync'd, so a process killed at any moment leaves a file of complete lines up to the last one
+// written (never half a line, never a line lost once append() returned). Lines are few (one per
+// room entered and left, one per pass), so the fsync costs nothing the session would notice.
+#pragma once
+
+#include <string>
+
+#include "core/result.h"
+#include "maze/maze_track.h"
+
+namespace ps::maze {
+
+inline constexpr const char* kLogSchema = "pseudoshadow-maze/1";
+
+struct SessionInfo {
+  std::string participant;
+  bool cues = true;
+  std::uint64_t seed = 0;
+  std::string maze_path;     // the description
+  std::string device;        // as given: trajectory:FILE, playback:FILE, mouse, ...
+  std::string device_log;    // the device stream's file name, next to the log
+  int max_passes = 10;
+  // Which session of this participant: 1 the first, 2 a retest "after a short time" (seed 003
+  // §VII), ... `maze summarize` compares a participant's sessions.
+  int session = 1;
+};
+
+class SessionLog {
+ public:
+  // Creates `path` (its directory must exist); an existing file is an error, never truncated.
+  static Result<SessionLog> open(const std::string& path);
+  SessionLog(SessionLog&& o) noexcept : fd_(o.fd_), path_(std::move(o.path_)), lines_(o.lines_) { o.fd_ = -1; }
+  SessionLog(const SessionLog&) = delete;
+  SessionLog& operator=(const SessionLog&) = delete;
+  SessionLog& operator=(SessionLog&&) = delete;
+  ~SessionLog();
+
+  Status session_start(const SessionInfo& info, const Route& route);
+  Status pass_start(int pass, const std::array<Cue, kRoomsPerPass>& order, double time_s);
+  Status event(const SessionInfo& info, const TrackEvent& e);
+  // reason: "criterion", "max_passes", "device_ended" or "quit".
+  Status session_end(const std::string& reason, int passes, int trials_to_criterion, double time_s);
+  const std::string& path() const { return path_; }
+  int lines() const { return lines_; }
+
+ private:
+  SessionLog(int fd, std::string path) : fd_(fd), path_(std::move(path)) {}
+  Status append(const std::string& json_line);
+  int fd_ = -1;
+  std::string path_;
+  int lines_ = 0;
+};
+
+}  // namespace ps::maze

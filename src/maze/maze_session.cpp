@@ -1,0 +1,113 @@
+#include "maze/maze_session.h"
+
+#include <chrono>
+#include <cmath>
+#include <thread>
+
+#include "devices/sample_log.h"
+
+namespace ps::maze {
+
+Result<std::shared_ptr<const world::HapticScene>> build_haptic(const MazeScene& scene) {
+  auto hs = world::HapticScene::build(scene.scene);
+  if (!hs) return hs.error();
+  return std::make_shared<const world::HapticScene>(std::move(hs.value()));
+}
+
+int contact_kind(const MazeScene& scene, const HapticState& state) {
+  if (!state.in_contact || state.contact_surface < 0 || static_cast<std::size_t>(state.contact_surface) >= scene.kinds.size())
+    return -1;
+  return static_cast<int>(scene.kinds[static_cast<std::size_t>(state.contact_surface)]);
+}
+
+Result<std::unique_ptr<SessionCore>> SessionCore::open(const SessionOptions& o) {
+  auto scene = generate_scene(o.desc, o.route, o.info.cues, 0);
+  if (!scene) return scene.error();
+  auto haptic = build_haptic(scene.value());
+  if (!haptic) return haptic.error();
+  auto log = SessionLog::open(o.log_path);
+  if (!log) return log.error();
+  std::unique_ptr<SessionCore> core(
+      new SessionCore(o, std::move(log.value()), std::move(scene.value()), std::move(haptic.value())));
+  if (Status s = core->log_.session_start(o.info, o.route); !s) return s.error();
+  if (Status s = core->log_.pass_start(0, o.route.order(0), 0.0); !s) return s.error();
+  return core;
+}
+
+Status SessionCore::step(const HapticState& st, HapticLoop& loop, const ScoreFn& on_score) {
+  const ProbeStep step{st.time_s, st.proxy_mm, st.force_n, st.field_force_n, contact_kind(scene_, st)};
+  const std::vector<TrackEvent> events = tracker_.feed(step);
+  for (const TrackEvent& e : events) {
+    if (Status s = log_.event(options_.info, e); !s) return s;
+    if (e.kind == TrackEvent::Kind::kPassEnd) {
+      result_.scores.push_back(e.score);
+      if (on_score)
+        if (Status s = on_score(e.score); !s) return s;
+    }
+    if (e.kind == TrackEvent::Kind::kFinished) {
+      result_.reason = e.criterion ? "criterion" : "max_passes";
+      end_time_s_ = st.time_s;
+      if (e.criterion) result_.trials_to_criterion = static_cast<int>(result_.scores.size());
+    }
+  }
+  if (events.empty() || tracker_.finished() || events.back().kind != TrackEvent::Kind::kPassEnd) return ok_status();
+  auto next = generate_scene(options_.desc, options_.route, options_.info.cues, tracker_.pass());
+  if (!next) return next.error();
+  auto hs = build_haptic(next.value());
+  if (!hs) return hs.error();
+  scene_ = std::move(next.value());
+  haptic_ = hs.value();
+  loop.replace_scene(haptic_, "maze pass " + std::to_string(tracker_.pass() + 1));
+  scene_changed_ = true;
+  return log_.pass_start(tracker_.pass(), options_.route.order(tracker_.pass()), st.time_s);
+}
+
+Result<SessionResult> SessionCore::finish(double time_s, const std::string& reason_if_open) {
+  if (result_.reason.empty()) result_.reason = reason_if_open;
+  result_.passes = static_cast<int>(result_.scores.size());
+  result_.time_s = time_s;
+  if (Status s = log_.session_end(result_.reason, result_.passes, result_.trials_to_criterion, time_s); !s)
+    return s.error();
+  return result_;
+}
+
+Result<SessionResult> run_session(Device& device, const SessionOptions& o, const FrameFn& on_frame,
+                                  const ScoreFn& on_score) {
+  auto opened = SessionCore::open(o);
+  if (!opened) return opened.error();
+  SessionCore& core = *opened.value();
+  FakeClock clock;
+  HapticLoop loop(device, clock, o.haptics, core.haptic().get());
+  SampleRecorder recorder(o.record_path);
+  if (!o.record_path.empty()) loop.set_recorder(&recorder);
+  const double rate = o.haptics.rate_hz;
+  const auto ticks = static_cast<std::uint64_t>(std::floor(std::max(0.0, device.duration_s()) * rate + 1e-9)) + 1;
+  const auto wall_start = std::chrono::steady_clock::now();
+  int frame = 0;
+  HapticState st;
+  std::uint64_t done = 0;
+  for (std::uint64_t k = 0; k < ticks && !core.finished(); ++k) {
+    loop.run_ticks(1);
+    st = loop.state().read();
+    if (Status s = core.step(st, loop, on_score); !s) return s.error();
+    done = k + 1;
+    // Frame i shows the state after the tick at (or before) i / fps, as in `replay`.
+    if (on_frame && o.fps > 0.0 && k == static_cast<std::uint64_t>(std::floor(frame / o.fps * rate + 1e-9))) {
+      const FrameView view{frame, st, core.scene(), core.take_scene_changed(), core.label()};
+      if (Status s = on_frame(view); !s) return s.error();
+      ++frame;
+    }
+    if (!o.record_path.empty() && (k + 1) % static_cast<std::uint64_t>(rate) == 0)
+      if (Status s = recorder.flush(); !s) return s.error();  // once per second of session time
+    if (o.pace > 0.0 && k % 10 == 0)
+      std::this_thread::sleep_until(wall_start + std::chrono::duration<double>(st.time_s / o.pace));
+  }
+  auto result = core.finish(st.time_s, "device_ended");
+  if (!result) return result.error();
+  result->ticks = done;
+  if (!o.record_path.empty())
+    if (Status s = recorder.close(); !s) return s.error();
+  return result;
+}
+
+}  // namespace ps::maze

@@ -1,0 +1,99 @@
+// A maze session driven by a device log, deterministically: the haptic loop on a fake clock,
+// every tick's proxy fed to the tracker (branches at 1 ms resolution), the log written as
+// things happen, the scene of the next pass handed to the loop when a pass ends. The caller
+// renders (or not) in on_frame, at a fixed frame rate of session time, exactly like `replay`.
+// No GL here.
+#pragma once
+
+#include <functional>
+#include <memory>
+#include <string>
+#include <utility>
+
+#include "core/result.h"
+#include "devices/device.h"
+#include "haptics/haptic_loop.h"
+#include "maze/maze_log.h"
+#include "maze/maze_track.h"
+#include "world/haptic_scene.h"
+
+namespace ps::maze {
+
+struct SessionOptions {
+  MazeDesc desc;
+  Route route;
+  SessionInfo info;           // info.cues is the condition
+  std::string log_path;       // the JSON-lines session log (required)
+  std::string record_path;    // the device stream in the recording format ("" = none)
+  HapticLoopParams haptics;
+  double fps = 30.0;          // frames per second of session time given to on_frame
+  double pace = 0.0;          // > 0: session time runs at `pace` x real time (1: as live)
+};
+
+struct FrameView {
+  int index = 0;
+  const HapticState& state;
+  const MazeScene& scene;      // the scene of the pass in progress
+  bool scene_changed = false;  // a new pass began since the last frame: make a new renderer
+  std::string label;           // the room label to show (empty with cues on)
+};
+
+struct SessionResult {
+  std::string reason;  // "criterion", "max_passes", "device_ended"
+  int passes = 0;
+  int trials_to_criterion = 0;  // the pass (from 1) that had every room right; 0: none
+  double time_s = 0.0;
+  std::uint64_t ticks = 0;
+  std::vector<PassScore> scores;
+};
+
+using FrameFn = std::function<Status(const FrameView&)>;
+using ScoreFn = std::function<Status(const PassScore&)>;
+
+// The haptic scene a loop collides with, shared so a pass switch can hand it over.
+Result<std::shared_ptr<const world::HapticScene>> build_haptic(const MazeScene& scene);
+
+// What a session does with each state of the haptic loop, whoever drives it: run_session()
+// below once per tick, the window (app/maze_window.cpp) once per frame. Owns the log, the
+// tracker and the scene of the pass in progress.
+class SessionCore {
+ public:
+  // Generates pass 1, opens the log and writes its first lines.
+  static Result<std::unique_ptr<SessionCore>> open(const SessionOptions& options);
+  const MazeScene& scene() const { return scene_; }
+  const std::shared_ptr<const world::HapticScene>& haptic() const { return haptic_; }
+  // Feeds one state to the tracker and logs what happened; at the end of a pass the score goes
+  // to on_score and, unless the session is over, the next pass's scene to the loop (adopted at
+  // its next tick; seamless: the new scene holds the room the probe is in).
+  Status step(const HapticState& state, HapticLoop& loop, const ScoreFn& on_score);
+  bool finished() const { return tracker_.finished(); }
+  // True once after each pass switch: the caller draws with a new renderer.
+  bool take_scene_changed() { return std::exchange(scene_changed_, false); }
+  std::string label() const { return room_label_text(tracker_.room(), options_.info.cues); }
+  const Tracker& tracker() const { return tracker_; }
+  // The session time of the tick at which the tracker finished (the criterion or max_passes).
+  double end_time_s() const { return end_time_s_; }
+  // Writes session_end (`reason_if_open` when the tracker has not finished: device_ended, quit).
+  Result<SessionResult> finish(double time_s, const std::string& reason_if_open);
+
+ private:
+  SessionCore(const SessionOptions& o, SessionLog log, MazeScene scene, std::shared_ptr<const world::HapticScene> h)
+      : options_(o), log_(std::move(log)), tracker_(o.desc, o.route, o.desc.max_passes), scene_(std::move(scene)),
+        haptic_(std::move(h)) {}
+  SessionOptions options_;
+  SessionLog log_;
+  Tracker tracker_;
+  MazeScene scene_;
+  std::shared_ptr<const world::HapticScene> haptic_;
+  bool scene_changed_ = true;
+  double end_time_s_ = 0.0;
+  SessionResult result_;
+};
+
+Result<SessionResult> run_session(Device& device, const SessionOptions& options, const FrameFn& on_frame,
+                                  const ScoreFn& on_score);
+
+// The surface kind the loop touches in `state` (-1: none), for the tracker.
+int contact_kind(const MazeScene& scene, const HapticState& state);
+
+}  // namespace ps::maze
