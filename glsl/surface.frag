@@ -76,14 +76,88 @@ vec2 probe_height(vec2 uv) {
   return w_sum > 0.0 ? vec2(h_sum / w_sum, w_sum) : vec2(kFar, 0.0);
 }
 
+// d along the surface's own normal n (render.shadow_distance = "surface_normal"): the first
+// s >= 0 where the ray p + s n reaches the probe's underside as the depth map holds it (a height
+// field over the reference plane, the probe filling the column above it). Only the ray's stretch
+// inside the depth-map window and between the probe's lowest and highest heights can meet it,
+// and only up to the influence distance (beyond, the intensity is 0). Steps of half the gap
+// left (at least a quarter texel, at most two texels sideways; two texels sideways where no
+// probe is below, so a ray may graze past a corner of the footprint), then 10 bisections.
+// The probe fills the column above its underside: a ray that enters that column through its
+// side (the probe's silhouette) meets it there. On a receiver tilted steeply against the
+// reference plane, rays graze the silhouette and the footprint's far edge comes out ragged
+// (docs/architecture.md, "Distance on curved receivers"). Returns
+// (d mm, coverage) like probe_height; (kFar, 0) when the ray misses or the surface faces away.
+float gap_along(vec2 uv0, vec2 dir, float h0, float dz, float s, out float coverage) {
+  vec2 h = probe_height(uv0 + s * dir);
+  coverage = h.y;
+  return h.x >= kFar ? kFar : h.x - (h0 + s * dz);
+}
+
+vec2 normal_distance(vec3 p, vec3 n, vec2 uv0) {
+  float h0 = dot(p, u_ref_n.xyz);
+  vec2 hc = probe_height(uv0);
+  float dz = dot(n, u_ref_n.xyz);
+  vec2 dir = vec2(dot(n, u_ref_t.xyz), dot(n, u_ref_b.xyz));
+  // Within 1e-6 rad of the reference normal (a plane facing the probe, to float rounding): the
+  // ray moves < 1e-5 mm sideways over 10 mm, so it is the reference-plane distance, bit for bit.
+  if (dot(dir, dir) < 1e-12) return hc.x >= kFar ? hc : vec2(hc.x - h0, hc.y);
+  if (hc.x < kFar && hc.x - h0 <= 0.0) return vec2(hc.x - h0, hc.y);  // inside the probe already
+  if (dz <= 0.0) return vec2(kFar, 0.0);
+  float texel = 2.0 * u_window.z / u_window.w, hor = length(dir);
+  float s_in = 0.0, s_out = u_intensity.w;
+  for (int k = 0; k < 2; ++k) {
+    float lo = u_window[k] - u_window.z, hi = u_window[k] + u_window.z;
+    if (abs(dir[k]) < 1e-12) {
+      if (uv0[k] < lo || uv0[k] > hi) return vec2(kFar, 0.0);
+      continue;
+    }
+    float a = (lo - uv0[k]) / dir[k], b = (hi - uv0[k]) / dir[k];
+    s_in = max(s_in, min(a, b));
+    s_out = min(s_out, max(a, b));
+  }
+  // Below the probe's lowest height the ray cannot meet it; above its highest, over the probe,
+  // it has (the column above the underside is the probe's).
+  s_in = max(s_in, (u_ref_t.w - h0) / dz);
+  s_out = min(s_out, max(0.0, (u_ref_b.w - h0) / dz) + 2.0 * texel);
+  if (s_in > s_out) return vec2(kFar, 0.0);
+  float s = s_in, s_prev = s_in, cov = 0.0;
+  for (int i = 0; i < 256; ++i) {
+    float g = gap_along(uv0, dir, h0, dz, s, cov);
+    if (g <= 0.0) {
+      float a = s_prev, b = s, cov_b = cov, c;
+      for (int j = 0; j < 10; ++j) {
+        float m = 0.5 * (a + b);
+        if (gap_along(uv0, dir, h0, dz, m, c) <= 0.0) {
+          b = m;
+          cov_b = c;
+        } else {
+          a = m;
+        }
+      }
+      return vec2(0.5 * (a + b), cov_b);
+    }
+    if (s >= s_out) break;
+    s_prev = s;
+    s = min(s_out, s + (g >= kFar ? 2.0 * texel / hor : clamp(0.5 * g, 0.25 * texel, 2.0 * texel / hor)));
+  }
+  return vec2(kFar, 0.0);
+}
+
 void main() {
   vec3 n = normalize(gl_FrontFacing ? v_normal : -v_normal);
   vec3 rgb = shade_surface(n);
   float intensity = 0.0, d = kFar, tex_sigmas = 0.0;
 #if PS_SHADOW
   vec2 uv = vec2(dot(v_world, u_ref_t.xyz), dot(v_world, u_ref_b.xyz));
-  vec2 hc = probe_height(uv);
-  d = hc.x >= kFar ? kFar : hc.x - dot(v_world, u_ref_n.xyz);
+  vec2 hc;
+  if (u_ref_n.w > 0.5) {
+    hc = normal_distance(v_world, n, uv);
+    d = hc.x;
+  } else {
+    hc = probe_height(uv);
+    d = hc.x >= kFar ? kFar : hc.x - dot(v_world, u_ref_n.xyz);
+  }
   IntensityCurve curve = IntensityCurve(u_intensity.x, u_intensity.y, u_intensity.z, u_intensity.w);
   intensity = hc.y * shadow_intensity(curve, d);
   float s = 0.0;  // texture in [-1, 1] contrasts; 0 = untextured

@@ -10,9 +10,9 @@ layout(std140, binding = 0) uniform SurfaceBlock {
   mat4 u_view_proj;
   vec4 u_light_dir;      // xyz: direction the light travels (unit); w: ambient
   vec4 u_light_color;    // rgb; a: output gamma (1/2.2 encodes for PNG)
-  vec4 u_ref_n;          // reference plane normal; w: unused
-  vec4 u_ref_t;          // reference plane tangent (u axis)
-  vec4 u_ref_b;          // reference plane bitangent (v axis)
+  vec4 u_ref_n;          // reference plane normal; w: 1 = d along the surface's own normal (else the reference's)
+  vec4 u_ref_t;          // reference plane tangent (u axis); w: lowest height of the probe's bounds along u_ref_n
+  vec4 u_ref_b;          // reference plane bitangent (v axis); w: highest height of the probe's bounds
   vec4 u_window;         // xy: depth-map window centre (u, v) mm; z: half size mm; w: depth map texels
   vec4 u_albedo;         // rgb albedo; a: 1 when an albedo texture is bound
   vec4 u_albedo_scale;   // x: world size of one albedo texture repeat, mm; yz: world (x, y) of a repeat's corner; w: unused

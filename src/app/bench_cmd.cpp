@@ -38,6 +38,7 @@ struct BenchArgs {
   bool first_image = false;  // time to the first image only (bench_first_image.h)
   int reps = 3;
   bool shadow_cost = false;  // only the pseudo-shadow's cost over plain shading; prints, writes nothing
+  bool shadow_distance = false;  // only surface_normal against reference_plane distances; prints
 };
 
 void declare(cli::Command& cmd, BenchArgs& a) {
@@ -75,6 +76,9 @@ void declare(cli::Command& cmd, BenchArgs& a) {
   app.add_flag("--shadow-cost", a.shadow_cost,
                "only measure the pseudo-shadow frame of the default scene against the plain shading of the "
                "same view (probe out of reach) at 512x512 and 1024x1024, and print the table; writes no files");
+  app.add_flag("--shadow-distance", a.shadow_distance,
+               "only measure render.shadow_distance = surface_normal against reference_plane on the curved "
+               "shipped scenes (Suzanne, the torus) at 512x512, and print the table; writes no files");
   cli::add_quiet_option(app, a.quiet);
 }
 
@@ -143,6 +147,26 @@ Status shadow_cost_only(const BenchArgs& a) {
   return ok_status();
 }
 
+// --shadow-distance: what the distance along each point's own normal costs (about 20 s).
+Status shadow_distance_only(const BenchArgs& a) {
+  gl::ContextDesc desc;
+  desc.backend = a.backend;
+  auto ctx = gl::create_context(desc);
+  if (!ctx) return ctx.error();
+  bench::BenchOptions o;
+  o.timed_frames = a.frames;
+  std::printf("| scene | size | frame, reference_plane | frame, surface_normal | ratio | surface pass ratio |\n"
+              "| --- | --- | --- | --- | --- | --- |\n");
+  for (const char* scene : {"table5_1_monkey_head.toml", "torus_capsule.toml"}) {
+    if (!a.quiet) std::fprintf(stderr, "shadow distance on %s ...\n", scene);
+    auto c = bench::run_distance_cost(o, default_scene_base_dir() + "/" + scene, 512);
+    if (!c) return c.error();
+    std::printf("| %s | %d^2 | %.2f ms | %.2f ms | %.2fx | %.2fx |\n", c->scene.c_str(), c->size, c->plane_frame_ms,
+                c->normal_frame_ms, c->ratio, c->surface_ratio);
+  }
+  return ok_status();
+}
+
 // --plot-only: the plots are the whole job here, so a missing gnuplot is an error, not a warning.
 Status plot_only(const BenchArgs& a) {
   const std::string csv = a.out_dir + "/bench.csv";
@@ -182,6 +206,7 @@ int run_and_report(const cli::Command& cmd, const BenchArgs& a) {
   const Status s = a.plot_only     ? plot_only(a)
                    : a.first_image ? first_image(a)
                    : a.shadow_cost ? shadow_cost_only(a)
+                   : a.shadow_distance ? shadow_distance_only(a)
                                    : run(a);
   return s ? cli::kExitOk : cmd.fail(s.error());
 }

@@ -11,6 +11,7 @@
 #include <time.h>
 
 #include <algorithm>
+#include <filesystem>
 #include <map>
 #include <memory>
 
@@ -96,6 +97,45 @@ Result<ShadowCost> run_shadow_cost(const BenchOptions& o, int size) {
     c.shadow_pass_ms.emplace_back(pass, median_of(shadow_passes[pass]));
   c.plain_surface_ms = median_of(plain_passes["surface"]);
   c.shadow_pixels = rs.stats().shadow_pixels;
+  return c;
+}
+
+Result<DistanceCost> run_distance_cost(const BenchOptions& o, const std::string& scene_path, int size) {
+  auto parsed = load_scene(scene_path, {"render.size=[" + std::to_string(size) + "," + std::to_string(size) + "]"});
+  if (!parsed) return parsed.error();
+  Scene plane = parsed.value();
+  Scene normal = plane;
+  plane.render.shadow_distance = ShadowDistance::kReferencePlane;
+  normal.render.shadow_distance = ShadowDistance::kSurfaceNormal;
+  auto made_plane = Renderer::create(plane, {});
+  if (!made_plane) return made_plane.error();
+  RendererOptions share;
+  share.reuse_tiles_from = made_plane.value().get();
+  auto made_normal = Renderer::create(normal, share);
+  if (!made_normal) return made_normal.error();
+  std::map<std::string, std::vector<double>> plane_passes, normal_passes, warm;
+  std::vector<double> plane_frames, normal_frames, cpu, unused;
+  for (int i = 0; i < std::max(o.warm_frames, 2); ++i) {
+    if (Status st = timed_frame(*made_plane.value(), plane, warm, unused, cpu); !st) return st.error();
+    if (Status st = timed_frame(*made_normal.value(), normal, warm, unused, cpu); !st) return st.error();
+  }
+  const int rounds = std::max(o.rounds, 5), per_round = std::max(o.timed_frames, 4);
+  for (int round = 0; round < rounds; ++round)
+    for (int k = 0; k < 2 * per_round; ++k) {
+      const bool first = (k % 2 == 0) == (round % 2 == 0);
+      Status st = first ? timed_frame(*made_plane.value(), plane, plane_passes, plane_frames, cpu)
+                        : timed_frame(*made_normal.value(), normal, normal_passes, normal_frames, cpu);
+      if (!st) return st.error();
+    }
+  DistanceCost c;
+  c.scene = std::filesystem::path(scene_path).stem().string();
+  c.size = size;
+  c.plane_frame_ms = median_of(plane_frames);
+  c.normal_frame_ms = median_of(normal_frames);
+  c.ratio = c.normal_frame_ms / c.plane_frame_ms;
+  c.plane_surface_ms = median_of(plane_passes["surface"]);
+  c.normal_surface_ms = median_of(normal_passes["surface"]);
+  c.surface_ratio = c.normal_surface_ms / c.plane_surface_ms;
   return c;
 }
 

@@ -72,6 +72,17 @@ struct ShadowCost {
 };
 Result<ShadowCost> run_shadow_cost(const BenchOptions& o, int size);
 
+// render.shadow_distance = "surface_normal" against "reference_plane" on one shipped scene at
+// size^2, frames alternated in rounds (app/bench_shadow_cost.cpp): what the distance along each
+// point's own normal costs.
+struct DistanceCost {
+  std::string scene;
+  int size = 0;
+  double plane_frame_ms = 0.0, normal_frame_ms = 0.0, ratio = 0.0;        // medians; ratio of them
+  double plane_surface_ms = 0.0, normal_surface_ms = 0.0, surface_ratio = 0.0;
+};
+Result<DistanceCost> run_distance_cost(const BenchOptions& o, const std::string& scene_path, int size);
+
 struct SkipRatios {
   double beyond_influence = 0.0;  // frame with probe far / its plain shading (surface) pass
   double untextured = 0.0;        // PS_TEXTURED=0 frame / textured frame with no textured pixel

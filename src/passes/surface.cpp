@@ -24,9 +24,9 @@ SurfaceBlock make_surface_block(const SurfaceFrame& fr, const Material& m, const
   b.view_proj = glm::mat4(fr.view_proj);
   b.light_dir = v4(glm::normalize(fr.light->direction), fr.light->ambient);
   b.light_color = v4(fr.light->color, fr.gamma);
-  b.ref_n = v4(fr.plane.n);
-  b.ref_t = v4(fr.plane.t);
-  b.ref_b = v4(fr.plane.b);
+  b.ref_n = v4(fr.plane.n, fr.surface_normal_distance ? 1.0 : 0.0);
+  b.ref_t = v4(fr.plane.t, fr.probe_height_lo_mm);
+  b.ref_b = v4(fr.plane.b, fr.probe_height_hi_mm);
   b.window = v4(fr.window_center_uv.x, fr.window_center_uv.y, fr.window_half_mm, fr.depth_map_size);
   b.albedo = v4(m.albedo, has_albedo_tex ? 1.0 : 0.0);
   b.albedo_scale = v4(m.albedo_texture_scale_mm, m.albedo_texture_offset_mm.x, m.albedo_texture_offset_mm.y, 0.0);

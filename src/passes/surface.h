@@ -67,6 +67,10 @@ struct SurfaceFrame {
   const Light* light = nullptr;
   double gamma = 1.0 / 2.2;
   double contrast_sigmas = 2.5;  // texture shown as 0.5 +- 0.5 * value / contrast_sigmas
+  bool surface_normal_distance = false;  // ShadowDistance::kSurfaceNormal
+  // The probe's heights along the reference normal lie within [lo, hi] (its bounding sphere):
+  // where a surface_normal ray may start and by when it must have met the probe.
+  double probe_height_lo_mm = 0.0, probe_height_hi_mm = 0.0;
 };
 
 // `gabor`: the material's texture as make_gabor_block() packed it (with its baked tile, if any).

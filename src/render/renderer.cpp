@@ -393,6 +393,10 @@ std::vector<SurfaceDraw> Renderer::surface_draws(const FramePlan& plan) {
   fr.depth_map_size = scene_.render.depth_map_size;
   fr.light = &scene_.light;
   fr.contrast_sigmas = options_.contrast_sigmas;
+  fr.surface_normal_distance = scene_.render.shadow_distance == ShadowDistance::kSurfaceNormal;
+  const BoundingSphere probe = current_probe_bounds();
+  fr.probe_height_lo_mm = glm::dot(probe.center, frame_.n) - probe.radius;
+  fr.probe_height_hi_mm = glm::dot(probe.center, frame_.n) + probe.radius;
   const std::vector<SphereCaster> bodies = body_casters();
   std::vector<SurfaceDraw> draws;
   bool gain_recorded = false;

@@ -151,6 +151,11 @@ struct Probe {
 
 enum class DisplacementMethod { kWeightedAverage, kExactMax };
 
+// How a surface point's distance d to the probe is measured (docs/rendering.md, "Distance on
+// curved receivers"): along the one reference normal for the whole footprint (the thesis, §5.1),
+// or along the surface's own normal (a ray through the probe depth map's height field).
+enum class ShadowDistance { kReferencePlane, kSurfaceNormal };
+
 struct RenderSettings {
   int width = 512, height = 512;
   int frames = 1;
@@ -158,6 +163,7 @@ struct RenderSettings {
   glm::dvec3 background{0.18, 0.19, 0.22};
   DisplacementMethod displacement = DisplacementMethod::kWeightedAverage;
   double weight_exponent = 20.0;    // c in weight = (1 - d)^c (thesis §4.5.4)
+  ShadowDistance shadow_distance = ShadowDistance::kReferencePlane;
   std::uint32_t seed = 1;           // Gabor impulse seed
 };
 

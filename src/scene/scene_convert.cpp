@@ -21,6 +21,7 @@ constexpr int kMaxResolution = 1024;        // 1024^2 * 2 triangles stays under 
 constexpr std::array kProjections = {"perspective"sv, "orthographic"sv};
 constexpr std::array kProbeShapes = {"sphere"sv, "capsule"sv, "mesh"sv};
 constexpr std::array kDisplacements = {"weighted_average"sv, "exact_max"sv};
+constexpr std::array kShadowDistances = {"reference_plane"sv, "surface_normal"sv};
 constexpr std::array kGaborStrategies = {"naive"sv, "stratified"sv, "baked"sv, "auto"sv, "baked_linear"sv};
 // Same order as SurfaceType.
 constexpr std::array kSurfaceTypes = {"plane"sv, "sphere"sv, "torus"sv, "heightfield"sv,
@@ -126,6 +127,7 @@ Status read_render(const ParseContext& ctx, const toml::table* table, RenderSett
                 ")");
   r.vec3("background", out.background, kUnit);
   read_enum(r, "displacement", out.displacement, kDisplacements);
+  read_enum(r, "shadow_distance", out.shadow_distance, kShadowDistances);
   r.number("weight_exponent", out.weight_exponent, Range::positive(1000.0));
   r.seed("seed", out.seed);
   return r.status();
