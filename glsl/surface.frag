@@ -30,6 +30,7 @@ layout(binding = 2) uniform sampler2D u_gabor_tile;  // baked tile: RGBA32F (1),
 
 layout(location = 0) in vec3 v_world;
 layout(location = 1) in vec3 v_normal;
+layout(location = 2) in vec3 v_color;  // per-vertex colour (4D depth on fourd surfaces), else 1
 
 layout(location = 0) out vec4 o_color;
 layout(location = 1) out vec4 o_normal;
@@ -43,7 +44,7 @@ const float kFar = 1.0e30;
 float no_probe_distance() { return uintBitsToFloat(0x7fc00000u); }
 
 vec3 shade_surface(vec3 n) {
-  vec3 albedo = u_albedo.rgb;
+  vec3 albedo = u_albedo.rgb * v_color;
   if (u_albedo.a > 0.5) albedo *= texture(u_albedo_tex, (v_world.xy - u_albedo_scale.yz) / u_albedo_scale.x).rgb;
   float lambert = max(dot(n, -u_light_dir.xyz), 0.0);
   return albedo * u_light_color.rgb * (u_light_dir.w + (1.0 - u_light_dir.w) * lambert);

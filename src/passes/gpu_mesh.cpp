@@ -7,11 +7,13 @@ namespace ps {
 GpuMesh GpuMesh::upload(const Mesh& mesh) {
   GpuMesh g;
   std::vector<float> interleaved;
-  interleaved.reserve(mesh.positions.size() * 6);
+  interleaved.reserve(mesh.positions.size() * 9);
   for (size_t i = 0; i < mesh.positions.size(); ++i) {
     const glm::vec3 p = mesh.positions[i];
     const glm::vec3 n = i < mesh.normals.size() ? mesh.normals[i] : glm::vec3(0.0f, 0.0f, 1.0f);
-    interleaved.insert(interleaved.end(), {p.x, p.y, p.z, n.x, n.y, n.z});
+    // White (exactly 1.0) when the mesh has no colours: albedo * 1.0 leaves every image as it was.
+    const glm::vec3 c = i < mesh.colors.size() ? mesh.colors[i] : glm::vec3(1.0f);
+    interleaved.insert(interleaved.end(), {p.x, p.y, p.z, n.x, n.y, n.z, c.x, c.y, c.z});
   }
   g.vertices = gl::make_buffer(static_cast<GLsizeiptr>(interleaved.size() * sizeof(float)),
                                interleaved.data(), 0);
@@ -20,9 +22,9 @@ GpuMesh GpuMesh::upload(const Mesh& mesh) {
   g.index_count = static_cast<GLsizei>(mesh.indices.size());
   g.vao = gl::make_vertex_array();
   const GLuint vao = g.vao.id();
-  glVertexArrayVertexBuffer(vao, 0, g.vertices.id(), 0, 6 * sizeof(float));
+  glVertexArrayVertexBuffer(vao, 0, g.vertices.id(), 0, 9 * sizeof(float));
   glVertexArrayElementBuffer(vao, g.indices.id());
-  for (GLuint attr = 0; attr < 2; ++attr) {
+  for (GLuint attr = 0; attr < 3; ++attr) {
     glEnableVertexArrayAttrib(vao, attr);
     glVertexArrayAttribFormat(vao, attr, 3, GL_FLOAT, GL_FALSE, attr * 3 * sizeof(float));
     glVertexArrayAttribBinding(vao, attr, 0);

@@ -9,6 +9,7 @@
 
 #include <glm/glm.hpp>
 
+#include "fourd/spec.h"
 #include "scene/haptic_material.h"
 
 namespace ps {
@@ -83,7 +84,7 @@ struct Material {
   HapticMaterial haptic;  // how it feels (scene/haptic_material.h)
 };
 
-enum class SurfaceType { kPlane, kSphere, kTorus, kHeightField, kMesh, kBox };
+enum class SurfaceType { kPlane, kSphere, kTorus, kHeightField, kMesh, kBox, kFourd };
 
 struct Surface {
   SurfaceType type = SurfaceType::kPlane;
@@ -117,6 +118,9 @@ struct Surface {
   // It gets its own material, `field_map_material` (a white copy of `material`).
   bool field_map = false;
   int field_map_material = -1;
+  // fourd: a surface embedded in R^4, rotated in 4D and projected to 3D (docs/fourd.md); `scale`
+  // is mm per 4D unit of its 3D image, `center` and `rotation_deg` place that image as usual.
+  fourd::Spec fourd;
   int button = -1;           // >= 0: the plate the scene's [[buttons]] #button adds (not in the file)
   int line = 0;              // line in the scene file, for error messages
 };

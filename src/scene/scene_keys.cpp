@@ -48,7 +48,13 @@ constexpr std::array kSurfaceKeys = {"type"sv,      "material"sv,        "center
                                      "minor_radius_mm"sv, "heightmap"sv, "height_mm"sv,
                                      "mesh_file"sv, "scale"sv,           "resolution"sv,
                                      "visible"sv,   "touchable"sv,       "visual_stretch"sv,
-                                     "field_map"sv};
+                                     "field_map"sv,
+                                     // type = "fourd" (scene_fourd.cpp, docs/fourd.md)
+                                     "fourd"sv, "fourd_projection"sv, "fourd_eye_distance"sv,
+                                     "fourd_rotation_xy_deg"sv, "fourd_rotation_xz_deg"sv,
+                                     "fourd_rotation_xw_deg"sv, "fourd_rotation_yz_deg"sv,
+                                     "fourd_rotation_yw_deg"sv, "fourd_rotation_zw_deg"sv,
+                                     "fourd_grid"sv, "fourd_twists"sv, "fourd_local_model"sv};
 
 constexpr std::array kFieldKeys = {"type"sv,          "acceleration_mm_s2"sv, "force_n"sv,
                                    "fluctuation_n"sv, "frequency_hz"sv,       "viscosity_n_s_per_mm"sv,

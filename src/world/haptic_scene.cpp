@@ -42,7 +42,8 @@ HapticScene::Shape HapticScene::make_shape(const Surface& s, int index) {
       shape.bound_mm = s.radius_mm + s.minor_radius_mm;
       break;
     case SurfaceType::kHeightField:
-    case SurfaceType::kMesh: break;
+    case SurfaceType::kMesh:
+    case SurfaceType::kFourd: break;
   }
   return shape;
 }
@@ -65,7 +66,8 @@ Result<HapticScene> HapticScene::build(const Scene& scene) {
     out.materials_.push_back(m < scene.materials.size() ? scene.materials[m].haptic : HapticMaterial{});
     const HapticMaterial& feel = out.materials_.back();
     if (!s.touchable) continue;  // seen only
-    const bool analytic = s.type != SurfaceType::kMesh && s.type != SurfaceType::kHeightField;
+    const bool analytic = s.type != SurfaceType::kMesh && s.type != SurfaceType::kHeightField &&
+                          s.type != SurfaceType::kFourd;  // fourd: its projected triangles
     if (feel.penetrable) {
       // A penetrable material (water, thick fluid) lets the proxy through: it acts by its
       // viscosity inside (medium_at), not as a constraint. A plane has no inside; a mesh would
@@ -103,7 +105,8 @@ bool HapticScene::inside(const Shape& s, const glm::dvec3& p) {
     }
     case SurfaceType::kPlane:
     case SurfaceType::kHeightField:
-    case SurfaceType::kMesh: break;
+    case SurfaceType::kMesh:
+    case SurfaceType::kFourd: break;
   }
   assert(false && "HapticScene::inside: only spheres, boxes and tori are kept as volumes");
   return false;
@@ -125,7 +128,8 @@ Contact HapticScene::closest_analytic(const Shape& s, const glm::dvec3& p) const
     case SurfaceType::kBox: sp = closest_on_box(local, s.size); break;
     case SurfaceType::kTorus: sp = closest_on_torus(local, s.size.x, s.size.y); break;
     case SurfaceType::kHeightField:
-    case SurfaceType::kMesh: assert(false && "HapticScene::closest_analytic: meshes live in the BVH"); break;
+    case SurfaceType::kMesh:
+    case SurfaceType::kFourd: assert(false && "HapticScene::closest_analytic: meshes live in the BVH"); break;
   }
   Contact c;
   c.hit = true;
