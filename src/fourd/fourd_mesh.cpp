@@ -78,7 +78,7 @@ Result<FourdMesh> build_fourd_mesh(const Spec& spec) {
   m.nv = spec.nv > 0 ? spec.nv : grid.y;
   if (m.nu < 3 || m.nv < 3) return make_error("fourd: the grid needs at least 3 x 3 cells");
   const KnottedArc arc = (spec.kind == SurfaceKind::kSpunTrefoil || spec.kind == SurfaceKind::kTwistSpunTrefoil)
-                             ? KnottedArc::make()
+                             ? KnottedArc::make(spec.kind == SurfaceKind::kTwistSpunTrefoil)
                              : KnottedArc{};
   const glm::dmat4 rotation = rotation_from_deg(spec.rotation_deg);
   m.w_min = 1e300;

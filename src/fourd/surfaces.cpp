@@ -22,10 +22,6 @@ void line_to(std::vector<glm::dvec3>& pts, const glm::dvec3& to, double step) {
   for (int i = 1; i <= n; ++i) pts.push_back(from + (to - from) * (static_cast<double>(i) / n));
 }
 
-// Every 4D coordinate of the spun surfaces is divided by this: the arc's points lie within
-// about 6.5 of the twist axis, so the surface fits in [-1.3, 1.3]^4.
-constexpr double kArcScale = 5.0;
-
 }  // namespace
 
 glm::ivec2 default_grid(SurfaceKind kind) {
@@ -48,54 +44,59 @@ const char* surface_name(SurfaceKind kind) {
   return "?";
 }
 
-// The trefoil cut open at its lowest point P = T(pi/6) (a gap of +-delta in t) and made a long
-// knot along the vertical line l through P: one end drops straight to the bottom pole on l;
-// the other drops below every strand (z = -1.3), runs under the knot to radius 3.5 (outside
-// every strand), rises there above every strand (z = 1.3) and comes back to l, then up to the
-// top pole. Closing it along l far away gives the trefoil again (no path crosses a strand).
-// The parts beyond the poles are fixed by the twist: from the bottom pole straight down l to
-// the plane; from the top pole up, out to 6.5 from l (beyond the knotted part's reach of ~5.8
-// however it turns) and down to the plane. c = z + 2, so c > 0 except at the two ends.
-KnottedArc KnottedArc::make() {
+// The trefoil cut open at its leftmost point P = T(t0) (least x; a gap of +-delta in t) and
+// made a long knot along the line l through P parallel to x: one end runs left along l to the
+// left pole; the other drops below every strand (z = -1.3), runs under the knot past its
+// rightmost point and rises there to l, the right pole. Closing it along l far away gives the
+// trefoil again (no path crosses a strand). From each pole a short lead continues along l,
+// then drops straight to the plane c = 0. Untwisted the plane lies just below the knot
+// (z = -1.6); twisted, the knotted part turns about l, so the plane lies below everything it
+// sweeps (its largest distance from l, + 0.3) and the drops lie beyond its ends along x.
+KnottedArc KnottedArc::make(bool twisted) {
   constexpr double kDense = 0.01;   // polyline step before resampling
   constexpr double kDelta = 0.25;   // half the gap in t where the trefoil is cut
-  const double t0 = M_PI / 6.0;
+  double t0 = 0.0;
+  for (double t = 0.0; t < kTwoPi; t += 1e-4)
+    if (trefoil(t).x < trefoil(t0).x) t0 = t;
   const glm::dvec3 p = trefoil(t0);
-  const glm::dvec3 axis(p.x, p.y, 0.0);  // l: (p.x, p.y, z)
-  std::vector<glm::dvec3> pts{axis + glm::dvec3(0, 0, -2.0)};
-  line_to(pts, axis + glm::dvec3(0, 0, -1.6), kDense);  // bottom pole
-  const std::size_t twist_first = pts.size() - 1;
+  double x_max = p.x;
+  for (double t = 0.0; t < kTwoPi; t += 1e-3) x_max = std::max(x_max, trefoil(t).x);
+  std::vector<glm::dvec3> pts{{p.x - 0.3, p.y, p.z}};  // left pole
   line_to(pts, trefoil(t0 + kDelta), kDense);
   for (double t = t0 + kDelta; t <= t0 + kTwoPi - kDelta; t += 0.002) pts.push_back(trefoil(t));
   const glm::dvec3 end = trefoil(t0 + kTwoPi - kDelta);
   line_to(pts, end, kDense);
   line_to(pts, {end.x, end.y, -1.3}, kDense);
-  // Under the knot along the backward tangent until outside every strand (radius 3 at most).
-  const glm::dvec3 tangent = trefoil(t0 - 1e-3) - trefoil(t0 + 1e-3);
-  const glm::dvec2 dir = glm::normalize(glm::dvec2(tangent));
-  glm::dvec2 q(end);
-  while (glm::length(q) < 3.5) q += 0.01 * dir;
-  line_to(pts, {q.x, q.y, -1.3}, kDense);
-  line_to(pts, {q.x, q.y, 1.3}, kDense);
-  line_to(pts, axis + glm::dvec3(0, 0, 1.3), kDense);
-  line_to(pts, axis + glm::dvec3(0, 0, 1.5), kDense);  // top pole
-  const std::size_t twist_last = pts.size() - 1;
-  line_to(pts, axis + glm::dvec3(0, 0, 1.8), kDense);
-  const glm::dvec2 out = glm::normalize(glm::dvec2(axis));
-  const glm::dvec3 far = axis + glm::dvec3(6.5 * out, 1.8);
-  line_to(pts, far, kDense);
-  line_to(pts, {far.x, far.y, -2.0}, kDense);
-  // Cumulative arc length, then (a, b, c) = (x - p.x, y - p.y, z + 2).
+  line_to(pts, {x_max + 0.3, p.y, -1.3}, kDense);
+  line_to(pts, {x_max + 0.3, p.y, p.z}, kDense);
+  line_to(pts, {x_max + 0.6, p.y, p.z}, kDense);  // right pole
+  // The knotted part's reach from l, which the twist sweeps around l.
+  double reach = 0.0;
+  for (const glm::dvec3& q : pts) reach = std::max(reach, std::hypot(q.y - p.y, q.z - p.z));
+  const double plane_z = twisted ? p.z - reach - 0.3 : -1.6;
+  // Leads along l and the drops to the plane.
+  std::vector<glm::dvec3> left{{p.x - 0.6, p.y, plane_z}};
+  line_to(left, {p.x - 0.6, p.y, p.z}, kDense);
+  const std::size_t twist_first = left.size();  // index of the left pole once joined
+  left.insert(left.end(), pts.begin(), pts.end());
+  const std::size_t twist_last = left.size() - 1;
+  line_to(left, {x_max + 0.9, p.y, p.z}, kDense);
+  line_to(left, {x_max + 0.9, p.y, plane_z}, kDense);
+  // Cumulative arc length, then (a, b, c) = (x - mid x, y - p.y, z - plane_z).
   KnottedArc arc;
-  std::vector<double> len(pts.size(), 0.0);
-  for (std::size_t i = 1; i < pts.size(); ++i) len[i] = len[i - 1] + glm::length(pts[i] - pts[i - 1]);
-  for (std::size_t i = 0; i < pts.size(); ++i) {
-    arc.points.push_back(pts[i] - axis + glm::dvec3(0, 0, 2.0));
+  std::vector<double> len(left.size(), 0.0);
+  for (std::size_t i = 1; i < left.size(); ++i) len[i] = len[i - 1] + glm::length(left[i] - left[i - 1]);
+  const glm::dvec3 origin(0.5 * (p.x - 0.6 + x_max + 0.9), p.y, plane_z);
+  for (std::size_t i = 0; i < left.size(); ++i) {
+    arc.points.push_back(left[i] - origin);
     arc.s.push_back(len[i] / len.back());
+    arc.extent = std::max({arc.extent, std::abs(arc.points.back().x), std::abs(arc.points.back().y),
+                           std::abs(arc.points.back().z)});
   }
   arc.points.front().z = arc.points.back().z = 0.0;  // exactly on the spinning plane
   arc.twist_begin = arc.s[twist_first];
   arc.twist_end = arc.s[twist_last];
+  arc.axis_c = p.z - plane_z;
   return arc;
 }
 
@@ -129,11 +130,12 @@ glm::dvec4 surface_point(SurfaceKind kind, double u, double v, int twists, const
       glm::dvec3 k = arc->at(u);
       const double theta = kTwoPi * v;
       if (kind == SurfaceKind::kTwistSpunTrefoil && u > arc->twist_begin && u < arc->twist_end) {
-        const double turn = twists * theta;  // the knotted part turns about the c axis
-        const double c = std::cos(turn), s = std::sin(turn);
-        k = {c * k.x - s * k.y, s * k.x + c * k.y, k.z};
+        const double turn = twists * theta;  // the knotted part turns about l: b = 0, c = axis_c
+        const double c = std::cos(turn), s = std::sin(turn), dc = k.z - arc->axis_c;
+        k = {k.x, c * k.y - s * dc, arc->axis_c + s * k.y + c * dc};
       }
-      return glm::dvec4(k.x, k.y, k.z * std::cos(theta), k.z * std::sin(theta)) / kArcScale;
+      // Scaled so the surface fits in [-1, 1]^4.
+      return glm::dvec4(k.x, k.y, k.z * std::cos(theta), k.z * std::sin(theta)) / arc->extent;
     }
   }
   return glm::dvec4(0.0);

@@ -23,13 +23,16 @@ glm::ivec2 default_grid(SurfaceKind kind);
 const char* surface_name(SurfaceKind kind);
 
 // The knotted arc both spun surfaces are made of: a long trefoil in the half-space c >= 0 with
-// its two ends on the plane c = 0, resampled by arc length. Coordinates (a, b, c); the twist
-// axis is the c axis (a = b = 0), which the knotted part's two ends lie on.
+// its two ends on the plane c = 0, sampled densely with its arc length. Coordinates (a, b, c);
+// the twist axis l is the line b = 0, c = axis_c along a, which the knotted part's two ends
+// (the poles) lie on. `twisted`: the plane lies below all the twist sweeps.
 struct KnottedArc {
   std::vector<glm::dvec3> points;  // by arc length, first and last on c = 0
   std::vector<double> s;           // arc length fraction of each point, 0 .. 1
   double twist_begin = 0.0, twist_end = 1.0;  // arc fractions of the knotted part's two ends
-  static KnottedArc make();
+  double axis_c = 0.0;             // height of the twist axis l above the plane
+  double extent = 0.0;             // largest |coordinate|: the surface is divided by it
+  static KnottedArc make(bool twisted);
   glm::dvec3 at(double s) const;   // linear between samples
 };
 

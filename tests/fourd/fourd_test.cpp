@@ -146,15 +146,34 @@ TEST(FourdSurfaceTest, RomanSurfaceCrossesItselfAlongItsThreeDoubleLines) {
 }
 
 // The spun surfaces are closed (every facet has three neighbours: the arc's ends on the
-// spinning plane close the sphere) and their arc's ends lie on c = 0 while the rest is above.
+// spinning plane close the sphere); their arc's ends lie on c = 0 and the rest above it; the
+// knotted part's ends (the poles) lie on the twist axis l; and, twisted, whatever the knotted
+// part sweeps about l stays above the plane and clear of the fixed drops to it (which lie
+// beyond its ends along a): the twist-spun surface is embedded.
 TEST(FourdSurfaceTest, SpunTrefoilsAreClosedSpheres) {
-  const KnottedArc arc = KnottedArc::make();
-  EXPECT_EQ(arc.points.front().z, 0.0);
-  EXPECT_EQ(arc.points.back().z, 0.0);
-  for (std::size_t i = 1; i + 1 < arc.points.size(); ++i) ASSERT_GT(arc.points[i].z, 0.0) << i;
-  // The knotted part's two ends (the twist's fixed points) are on the twist axis.
-  EXPECT_NEAR(glm::length(glm::dvec2(arc.at(arc.twist_begin))), 0.0, 1e-9);
-  EXPECT_NEAR(glm::length(glm::dvec2(arc.at(arc.twist_end))), 0.0, 1e-9);
+  for (bool twisted : {false, true}) {
+    const KnottedArc arc = KnottedArc::make(twisted);
+    EXPECT_EQ(arc.points.front().z, 0.0);
+    EXPECT_EQ(arc.points.back().z, 0.0);
+    for (std::size_t i = 1; i + 1 < arc.points.size(); ++i) ASSERT_GT(arc.points[i].z, 0.0) << i;
+    for (double pole : {arc.twist_begin, arc.twist_end}) {
+      EXPECT_NEAR(arc.at(pole).y, 0.0, 1e-9);
+      EXPECT_NEAR(arc.at(pole).z, arc.axis_c, 1e-9);
+    }
+    if (!twisted) continue;
+    double a_lo = 1e9, a_hi = -1e9;
+    for (std::size_t i = 0; i < arc.points.size(); ++i) {
+      if (arc.s[i] <= arc.twist_begin || arc.s[i] >= arc.twist_end) continue;
+      const glm::dvec3 q = arc.points[i];
+      EXPECT_LT(std::hypot(q.y, q.z - arc.axis_c), arc.axis_c) << i;  // its circle about l stays above c = 0
+      a_lo = std::min(a_lo, q.x);
+      a_hi = std::max(a_hi, q.x);
+    }
+    for (std::size_t i = 0; i < arc.points.size(); ++i)
+      if (arc.s[i] < arc.twist_begin || arc.s[i] > arc.twist_end)
+        EXPECT_TRUE(arc.points[i].x < a_lo || arc.points[i].x > a_hi || std::abs(arc.points[i].z - arc.axis_c) < 1e-12)
+            << i;
+  }
   for (SurfaceKind kind : {SurfaceKind::kSpunTrefoil, SurfaceKind::kTwistSpunTrefoil}) {
     Spec spec;
     spec.kind = kind;

@@ -113,7 +113,7 @@ TEST(FourdLocalModelTest, LocalModelIsASmallPartOfTheSurface) {
     ASSERT_TRUE(mesh) << mesh.error().message;
     LocalModel model(mesh.value(), s.scale, euler_xyz_deg(s.rotation_deg), s.center);
     const glm::dmat4 r = rotation_from_deg(s.fourd.rotation_deg);
-    const KnottedArc arc = KnottedArc::make();
+    const KnottedArc arc = KnottedArc::make(s.fourd.kind == SurfaceKind::kTwistSpunTrefoil);
     double mean[2] = {0.0, 0.0};
     const LocalModelKind kinds[2] = {LocalModelKind::kContinuity, LocalModelKind::kAdjacency};
     for (int k = 0; k < 2; ++k) {
