@@ -311,6 +311,7 @@ void HapticLoop::tick(Clock::Ns now) {
     local_.force_n = f.force_n;
     local_.penetration_mm = f.penetration_mm;
     local_.in_contact = f.in_contact;
+    if (!god_ || !god_->sheet(local_.sheet_surface, local_.sheet_w4)) local_.sheet_surface = -1;
     device_.write_force(f.force_n);
   }
   local_.time_s = t;

@@ -87,6 +87,10 @@ struct HapticState {
   int button_pressed = -1;           // haptic scene: the button the probe presses (-1: none)
   double button_depth_mm = 0.0;      // and how far it is in
   std::uint32_t flags = 0;           // haptic scene: bit i = Scene::flags[i], toggled by buttons
+  // haptic scene: the sheet of a surface embedded in 4D the proxy keeps to (docs/fourd.md):
+  // its surface index (-1: none) and the 4D depth w there
+  int sheet_surface = -1;
+  double sheet_w4 = 0.0;
   bool have_sample = false, in_contact = false;
   double rate_hz = 0.0;              // over the last second
   double jitter_p99_us = 0.0;        // |period - nominal|, p99 over the last second

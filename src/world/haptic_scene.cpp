@@ -8,6 +8,7 @@
 
 #include <glm/gtc/matrix_transform.hpp>
 
+#include "fourd/fourd_mesh.h"
 #include "scene/mesh.h"
 #include "world/shapes.h"
 
@@ -80,9 +81,18 @@ Result<HapticScene> HapticScene::build(const Scene& scene) {
       out.shapes_.push_back(make_shape(s, index));
       continue;
     }
+    const std::string where = scene.path + ":" + std::to_string(s.line) + ": ";
+    if (s.type == SurfaceType::kFourd) {
+      Result<fourd::FourdMesh> f = fourd::build_fourd_mesh(s.fourd);
+      if (!f) return make_error(where + f.error().message);
+      // "adjacency" needs the walk of fourd/local_model.h, not run on the haptic thread yet:
+      // it keeps to the sheet by continuity here (docs/fourd.md).
+      out.fourd_.push_back({index, s.fourd.local_model != fourd::LocalModelKind::kNearest,
+                            fourd::FourdTouch(f.value(), s.scale, euler_xyz_deg(s.rotation_deg), s.center)});
+      continue;
+    }
     // Height field: the rendered triangles, an image has no closed form. Mesh: the triangles.
     Result<Mesh> mesh = build_surface_mesh(s);
-    const std::string where = scene.path + ":" + std::to_string(s.line) + ": ";
     if (!mesh) return make_error(where + mesh.error().message);
     if (Status st = out.meshes_.add_mesh(mesh.value()); !st) return make_error(where + st.error().message);
     out.mesh_surface_.push_back(index);
@@ -184,6 +194,24 @@ Contact HapticScene::closest(const glm::dvec3& p, double max_distance_mm, const 
     best.normal = h.face_normal;
     best.shaded_normal = h.shaded_normal;
     best.distance_mm = h.distance_mm;
+    limit = h.distance_mm;
+  }
+  for (const FourdShape& f : fourd_) {
+    fourd::WWindow window;
+    if (f.continuity && hint != nullptr && hint->has_w4 && hint->surface == f.surface)
+      window = f.touch.window(hint->w4, hint->w4_pre);
+    const fourd::TouchHit t = f.touch.closest(p, limit, window);
+    best.facets_visited += t.visited;
+    if (!t.hit || t.distance_mm > limit || in_hole(t.point)) continue;
+    best.hit = true;
+    best.surface = f.surface;
+    best.point = t.point;
+    best.normal = t.normal;
+    best.shaded_normal = t.shaded_normal;
+    best.distance_mm = t.distance_mm;
+    best.has_w4 = true;
+    best.w4 = t.w;
+    limit = t.distance_mm;
   }
   return best;
 }

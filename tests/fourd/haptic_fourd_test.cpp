@@ -1,0 +1,97 @@
+// The haptic loop on a surface embedded in 4D (docs/fourd.md): the god-object proxy, fed by a
+// scripted device across the Roman surface's double line, keeps to its sheet (w continuous,
+// it slides through the other sheet) with fourd_local_model = "continuity"; with "nearest" the
+// other sheet stops it like a wall and the proxy's w jumps to that sheet's. No GL.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdio>
+
+#include "devices/sample_log.h"
+#include "haptics/haptic_loop.h"
+#include "scene/scene_io.h"
+#include "world/haptic_scene.h"
+
+namespace ps {
+namespace {
+
+constexpr double kScaleMm = 40.0;  // scenes/fourd/roman.toml's scale
+
+glm::dvec3 roman_mm(const glm::dvec3& s) {
+  const glm::dvec3 p = glm::normalize(s);
+  return kScaleMm * glm::dvec3(2 * p.y * p.z, 2 * p.x * p.z, 2 * p.x * p.y);
+}
+
+struct SheetRun {
+  double max_dw = 0.0;        // largest |w change| of the proxy's sheet in one tick
+  double w_first = 0.0, w_last = 0.0;
+  double max_lag_mm = 0.0;    // largest distance from the proxy to the device's surface point + R
+  int sheet_ticks = 0;
+};
+
+// The device follows the sheet through the sphere points (s, cos 15deg, sin 15deg), s from -0.3
+// to 0.3 over 0.6 s, 1 mm inside the sheet (pressed in, on the side of the normal n): the proxy
+// (radius 3 mm) rests on the sheet. At s = 0 the path crosses the first double line (x = 20 mm)
+// where the other sheet meets this one at w = -cos 30 against +cos 30.
+SheetRun run(const std::string& model, double side) {
+  auto scene = load_scene(std::string(PS_SOURCE_DIR) + "/scenes/fourd/roman.toml",
+                          {"surfaces.0.fourd_local_model=\"" + model + "\""});
+  EXPECT_TRUE(scene) << scene.error().message;
+  auto hs = world::HapticScene::build(scene.value());
+  EXPECT_TRUE(hs) << hs.error().message;
+  const double y0 = std::cos(M_PI / 12), z0 = std::sin(M_PI / 12);
+  std::vector<DeviceSample> samples;
+  const int steps = 60;
+  for (int i = 0; i <= steps; ++i) {
+    const double s = -0.3 + 0.6 * i / steps;
+    const glm::dvec3 sp(s, y0, z0), h(1e-4, 0, 0), k(0, -1e-4 * z0, 1e-4 * y0);
+    const glm::dvec3 n = side * glm::normalize(glm::cross(roman_mm(sp + h) - roman_mm(sp - h), roman_mm(sp + k) - roman_mm(sp - k)));
+    // Start 5 mm off the sheet so the proxy lands on it, then 1 mm inside it.
+    const double t = 0.1 + 0.6 * i / steps;
+    if (i == 0) samples.push_back({0.0, roman_mm(sp) + 5.0 * n, 0, true});
+    samples.push_back({t, roman_mm(sp) - 1.0 * n, 0, true});
+  }
+  LogDevice device(samples, true, "across the double line");
+  FakeClock clock;
+  HapticLoop loop(device, clock, HapticLoopParams{}, &hs.value());
+  SheetRun out;
+  bool have = false;
+  double last = 0.0;
+  for (int tick = 0; tick < 700; ++tick) {
+    loop.run_ticks(1);
+    const HapticState st = loop.state().read();
+    if (st.sheet_surface < 0) continue;
+    if (have) out.max_dw = std::max(out.max_dw, std::abs(st.sheet_w4 - last));
+    if (!have) out.w_first = st.sheet_w4;
+    have = true;
+    last = out.w_last = st.sheet_w4;
+    ++out.sheet_ticks;
+  }
+  return out;
+}
+
+// Continuity: the proxy's w goes from the sheet's w at s = -0.3 (cos 30 / 1.09 ~ 0.79) to the
+// same at s = +0.3 with no step above 0.05 a tick (one facet's w range, fourd/local_model.h);
+// had it left its sheet, w would be near -0.8. Nearest: on the side where the other sheet
+// blocks the way, the proxy lands on it: a step of more than 1 in w (30 times the bound).
+TEST(FourdHapticLoopTest, ProxySlidesThroughTheOtherSheetOnlyWithContinuity) {
+  for (double side : {1.0, -1.0}) {
+    const SheetRun c = run("continuity", side);
+    std::printf("continuity, side %+.0f: %d ticks on a sheet, w %.3f -> %.3f, max |dw| per tick %.4f\n", side,
+                c.sheet_ticks, c.w_first, c.w_last, c.max_dw);
+    EXPECT_GT(c.sheet_ticks, 500);
+    EXPECT_LT(c.max_dw, 0.05);
+    EXPECT_GT(c.w_first, 0.7);
+    EXPECT_GT(c.w_last, 0.7);
+  }
+  double nearest_dw = 0.0;
+  for (double side : {1.0, -1.0}) {
+    const SheetRun n = run("nearest", side);
+    std::printf("nearest, side %+.0f: w %.3f -> %.3f, max |dw| per tick %.4f\n", side, n.w_first, n.w_last, n.max_dw);
+    nearest_dw = std::max(nearest_dw, n.max_dw);
+  }
+  EXPECT_GT(nearest_dw, 1.0);
+}
+
+}  // namespace
+}  // namespace ps
