@@ -31,6 +31,7 @@ layout(binding = 2) uniform sampler2D u_gabor_tile;  // baked tile: RGBA32F (1),
 layout(location = 0) in vec3 v_world;
 layout(location = 1) in vec3 v_normal;
 layout(location = 2) in vec3 v_color;  // per-vertex colour (4D depth on fourd surfaces), else 1
+layout(location = 3) in float v_w4;    // 4D depth w (fourd surfaces), else 0
 
 layout(location = 0) out vec4 o_color;
 layout(location = 1) out vec4 o_normal;
@@ -84,6 +85,9 @@ void main() {
 #if PS_SHADOW
   vec2 uv = vec2(dot(v_world, u_ref_t.xyz), dot(v_world, u_ref_b.xyz));
   vec2 hc = probe_height(uv);
+  // A surface embedded in 4D: the pseudo-shadow falls on the probe's sheet only; where another
+  // sheet crosses it in the image (another w), that sheet is "no probe here" (docs/fourd.md).
+  if (u_sheet.x > 0.5 && abs(v_w4 - u_sheet.y) > u_sheet.z) hc = vec2(kFar, 0.0);
   d = hc.x >= kFar ? kFar : hc.x - dot(v_world, u_ref_n.xyz);
   IntensityCurve curve = IntensityCurve(u_intensity.x, u_intensity.y, u_intensity.z, u_intensity.w);
   intensity = hc.y * shadow_intensity(curve, d);

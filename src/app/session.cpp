@@ -13,6 +13,7 @@ Status drive_frame(Renderer& renderer, HapticLoop& loop, std::uint64_t frame, Ha
   const glm::dvec3 shown = state.have_sample ? visual_position(renderer.scene(), state.proxy_mm) : probe.position;
   if (state.have_sample) renderer.set_probe_state(shown, state.velocity_mm_s);
   if (state.have_sample) renderer.set_device_position(state.device_mm);
+  renderer.set_probe_sheet(state.sheet_surface, state.sheet_w4);
   const std::span<const glm::dvec3> bodies(state.body_mm.data(), static_cast<std::size_t>(state.body_count));
   renderer.set_body_positions(bodies);
   const LiveCharges live = loop.live_charges().read();

@@ -146,6 +146,14 @@ Status Renderer::upload_surfaces() {
     if (!mesh) return mesh.error();
     if (s.visual_stretch != glm::dvec3(1.0)) stretch_mesh(mesh.value(), s);
     geometry_.surface_bounds.push_back(mesh_bounds(mesh.value()));
+    Geometry::Sheets sheets;
+    if (!mesh->w4.empty()) {
+      sheets.positions = mesh->positions;
+      sheets.w4 = mesh->w4;
+      sheets.w_min = *std::min_element(sheets.w4.begin(), sheets.w4.end());
+      sheets.w_max = *std::max_element(sheets.w4.begin(), sheets.w4.end());
+    }
+    geometry_.surface_sheets.push_back(std::move(sheets));
     geometry_.surface_meshes.push_back(GpuMesh::upload(mesh.value()));
   }
   return ok_status();
@@ -360,6 +368,23 @@ std::vector<SurfaceDraw> Renderer::surface_draws(const FramePlan& plan) {
     d.albedo = ms.albedo ? &ms.albedo : nullptr;
     d.gabor_tile = ms.gabor_tile.get();
     d.gabor_tile_linear = ms.bake_plan.linear;
+    const Geometry::Sheets& sheets = geometry_.surface_sheets[i];
+    if (!sheets.w4.empty()) {
+      // The probe's sheet: the haptic proxy's (set_probe_sheet), else the nearest vertex's. The
+      // band is 15 % of the surface's w range: wide enough for the sheet's own w change across
+      // the shadow window (a few mm), far narrower than the w gap where sheets cross.
+      double w = sheet_w4_;
+      if (sheet_surface_ != static_cast<int>(i)) {
+        float best = std::numeric_limits<float>::infinity();
+        const glm::vec3 probe(scene_.probe.position);
+        for (std::size_t v = 0; v < sheets.positions.size(); ++v) {
+          const glm::vec3 dv = sheets.positions[v] - probe;
+          const float d2 = glm::dot(dv, dv);
+          if (d2 < best) best = d2, w = sheets.w4[v];
+        }
+      }
+      d.block.sheet = glm::vec4(1.0f, static_cast<float>(w), 0.15f * (sheets.w_max - sheets.w_min), 0.0f);
+    }
     draws.push_back(std::move(d));
   }
   return draws;

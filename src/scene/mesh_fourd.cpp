@@ -13,6 +13,7 @@ Result<Mesh> make_fourd_mesh(const Surface& s) {
   for (std::size_t i = 0; i < f.vertices.size(); ++i) {
     mesh.positions.emplace_back(s.scale * f.vertices[i].p3);
     mesh.normals.emplace_back(f.normals[i]);
+    mesh.w4.push_back(static_cast<float>(f.vertices[i].w));
     mesh.colors.emplace_back(fourd::depth_colour(range > 0.0 ? (f.vertices[i].w - f.w_min) / range : 0.5));
   }
   for (const glm::uvec3& t : f.triangles) mesh.indices.insert(mesh.indices.end(), {t.x, t.y, t.z});
