@@ -95,6 +95,47 @@ FourdTouch::FourdTouch(const FourdMesh& mesh, double scale_mm, const glm::dmat3&
   }
 }
 
+FourdTouch::OtherSheet FourdTouch::other_sheet(const glm::dvec3& p, double max_distance_mm,
+                                               const WWindow& window) const {
+  OtherSheet out;
+  double limit = max_distance_mm;
+  const glm::ivec3 lo = cell_of(p - glm::dvec3(max_distance_mm)), hi = cell_of(p + glm::dvec3(max_distance_mm));
+  for (int z = lo.z; z <= hi.z; ++z)
+    for (int y = lo.y; y <= hi.y; ++y)
+      for (int x = lo.x; x <= hi.x; ++x) {
+        const std::size_t c = static_cast<std::size_t>((z * dims_.y + y) * dims_.x + x);
+        for (std::uint32_t i = cell_start_[c]; i < cell_start_[c + 1]; ++i) {
+          const Tri& t = tris_[cell_facets_[i]];
+          if (glm::max(t.cell_lo, lo) != glm::ivec3(x, y, z)) continue;  // tested in its first cell
+          if (!(t.w_max < window.lo || t.w_min > window.hi)) continue;   // the proxy's own sheet
+          glm::dvec3 bary;
+          const glm::dvec3 a = positions_[t.v.x], b = positions_[t.v.y], cc = positions_[t.v.z];
+          const glm::dvec3 q = closest_on_triangle(p, a, b, cc, bary);
+          const double d = glm::length(p - q);
+          if (d > limit) continue;
+          const glm::dvec3 n = glm::cross(b - a, cc - a);
+          const double len = glm::length(n);
+          if (len < 1e-300) continue;
+          limit = d;
+          out.hit = true;
+          out.facet = static_cast<int>(cell_facets_[i]);
+          out.signed_mm = glm::dot(p - a, n / len);
+          out.w = bary.x * w_[t.v.x] + bary.y * w_[t.v.y] + bary.z * w_[t.v.z];
+        }
+      }
+  return out;
+}
+
+bool FourdTouch::facets_touch(int a, int b) const {
+  if (a < 0 || b < 0) return false;
+  if (a == b) return true;
+  const glm::uvec3 ta = tris_[static_cast<std::size_t>(a)].v, tb = tris_[static_cast<std::size_t>(b)].v;
+  for (int i = 0; i < 3; ++i)
+    for (int j = 0; j < 3; ++j)
+      if (ta[i] == tb[j] || positions_[ta[i]] == positions_[tb[j]]) return true;
+  return false;
+}
+
 glm::ivec3 FourdTouch::cell_of(const glm::dvec3& p) const {
   return glm::clamp(glm::ivec3(glm::floor((p - origin_) / cell_mm_)), glm::ivec3(0), dims_ - 1);
 }

@@ -41,6 +41,19 @@ class FourdTouch {
   // The window of eq. 4 around w_cur: half-width |w_cur - w_pre| + w_slack().
   WWindow window(double w_cur, double w_pre) const;
   double w_slack() const { return w_slack_; }
+
+  // The nearest facet within max_distance_mm of p whose w range misses `window` (another
+  // sheet), p's signed distance from its plane along its face normal (the parameter grid's
+  // winding, not turned toward p: the sign says which side p is on), and the w there.
+  struct OtherSheet {
+    bool hit = false;
+    int facet = -1;
+    double signed_mm = 0.0;
+    double w = 0.0;
+  };
+  OtherSheet other_sheet(const glm::dvec3& p, double max_distance_mm, const WWindow& window) const;
+  // The same facet, or two facets sharing a vertex of the image (for the crossing detector).
+  bool facets_touch(int a, int b) const;
   std::size_t facet_count() const { return tris_.size(); }
 
  private:

@@ -29,6 +29,7 @@
 #include "haptics/loop_stats.h"
 #include "world/bodies.h"
 #include "world/buttons.h"
+#include "fourd/crossing.h"
 #include "world/god_object.h"
 
 namespace ps {
@@ -158,6 +159,8 @@ class HapticLoop {
   void adopt_pending_scene(Clock::Ns now);  // haptic thread, at a tick's start
   glm::dvec3 world_forces(double t, double dt);  // fields + bodies on the probe (haptic scene)
   std::optional<world::GodObject> god_;  // set when a haptic scene is given
+  fourd::CrossingDetector crossing_;     // sheet crossings on a surface embedded in 4D
+  void detect_crossing(double t);        // after the proxy moved: a sheet_crossing event?
   world::BodySet bodies_;                // the scene's bodies (reset with each scene)
   world::ButtonSet buttons_;             // the scene's buttons (reset with each scene)
   void press_buttons(const glm::dvec3& anchor, double t, glm::dvec3& force);

@@ -76,6 +76,7 @@ double GodObject::gap(const glm::dvec3& p, double limit, Contact& c, std::uint32
     hint_.w4 = c.w4;
     hint_.has_w4 = true;
     hint_.surface = c.surface;
+    hint_.point = c.point;
   }
   return c.hit ? c.distance_mm - radius_ : std::numeric_limits<double>::infinity();
 }

@@ -58,10 +58,12 @@ class GodObject {
   double radius_mm() const { return radius_; }
   // The sheet of a surface embedded in 4D the proxy keeps to (docs/fourd.md): false when it
   // touches none; else its surface index and the 4D depth w at the last contact.
-  bool sheet(int& surface, double& w4) const {
+  // `point`: if given, the contact point on that sheet, mm.
+  bool sheet(int& surface, double& w4, glm::dvec3* point = nullptr) const {
     if (!hint_.has_w4) return false;
     surface = hint_.surface;
     w4 = hint_.w4;
+    if (point != nullptr) *point = hint_.point;
     return true;
   }
 

@@ -76,6 +76,12 @@ class HapticScene {
   std::size_t analytic_count() const { return shapes_.size(); }
   std::size_t triangle_count() const { return meshes_.triangle_count(); }  // overall model
   const MeshBvh& meshes() const { return meshes_; }
+  // The haptic geometry of surface `surface` if it is embedded in 4D (type fourd), else null.
+  const fourd::FourdTouch* fourd_touch(int surface) const {
+    for (const FourdShape& f : fourd_)
+      if (f.surface == surface) return &f.touch;
+    return nullptr;
+  }
 
  private:
   struct Shape {

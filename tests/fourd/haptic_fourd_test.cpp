@@ -95,3 +95,56 @@ TEST(FourdHapticLoopTest, ProxySlidesThroughTheOtherSheetOnlyWithContinuity) {
 
 }  // namespace
 }  // namespace ps
+
+namespace ps {
+namespace {
+
+// Sheet crossings through the loop (seed 000 §5): following the sheet through (s, cos 15,
+// sin 15) (w = +0.87) across the double line, the proxy passes the other sheet (w = -0.87) once,
+// in front of it (+1); following that other sheet, through (s, sin 15, cos 15), it passes the
+// first once, behind it (-1). The device reaches s = 0 (x = 20 mm) at t = 0.4 s, tick 400; the
+// event comes within 30 ticks of it: the device moves ~0.1 mm a tick, the Kalman filter and the
+// 3 mm proxy riding on the curved sheet put its contact point up to ~2 mm behind or ahead.
+std::vector<HapticEvent> crossings(bool first_sheet) {
+  auto scene = load_scene(std::string(PS_SOURCE_DIR) + "/scenes/fourd/roman.toml");
+  EXPECT_TRUE(scene) << scene.error().message;
+  auto hs = world::HapticScene::build(scene.value());
+  EXPECT_TRUE(hs) << hs.error().message;
+  const double c = std::cos(M_PI / 12), s15 = std::sin(M_PI / 12);
+  const double y0 = first_sheet ? c : s15, z0 = first_sheet ? s15 : c;
+  std::vector<DeviceSample> samples;
+  for (int i = 0; i <= 60; ++i) {
+    const double s = -0.3 + 0.6 * i / 60;
+    const glm::dvec3 sp(s, y0, z0), h(1e-4, 0, 0), k(0, -1e-4 * z0, 1e-4 * y0);
+    const glm::dvec3 n = glm::normalize(glm::cross(roman_mm(sp + h) - roman_mm(sp - h), roman_mm(sp + k) - roman_mm(sp - k)));
+    if (i == 0) samples.push_back({0.0, roman_mm(sp) + 5.0 * n, 0, true});
+    samples.push_back({0.1 + 0.6 * i / 60, roman_mm(sp) - 1.0 * n, 0, true});
+  }
+  LogDevice device(samples, true, "across the double line");
+  FakeClock clock;
+  HapticLoop loop(device, clock, HapticLoopParams{}, &hs.value());
+  std::vector<HapticEvent> out;
+  for (int tick = 0; tick < 700; ++tick) {
+    loop.run_ticks(1);
+    loop.events().drain([&](const HapticEvent& e) {
+      if (e.kind == EventKind::sheet_crossing) out.push_back(e);
+    });
+  }
+  return out;
+}
+
+TEST(FourdHapticLoopTest, CrossingEventsFireOnceWithInFrontOrBehind) {
+  const std::vector<HapticEvent> front = crossings(true), behind = crossings(false);
+  for (const HapticEvent& e : front) std::printf("first sheet: crossing at tick %llu, value %+.0f\n", static_cast<unsigned long long>(e.tick), e.value);
+  for (const HapticEvent& e : behind) std::printf("other sheet: crossing at tick %llu, value %+.0f\n", static_cast<unsigned long long>(e.tick), e.value);
+  ASSERT_EQ(front.size(), 1u);
+  ASSERT_EQ(behind.size(), 1u);
+  EXPECT_EQ(front[0].value, 1.0);
+  EXPECT_EQ(behind[0].value, -1.0);
+  EXPECT_NEAR(static_cast<double>(front[0].tick), 400.0, 30.0);
+  EXPECT_NEAR(static_cast<double>(behind[0].tick), 400.0, 30.0);
+  EXPECT_NEAR(front[0].position_mm.x, 20.0, 1.0);  // on the double line: x = 2 sin 15 cos 15 x 40 mm
+}
+
+}  // namespace
+}  // namespace ps
