@@ -30,6 +30,10 @@ struct Spec {
   int nu = 0, nv = 0;
   int twists = 2;  // twist-spun trefoil: turns of the knotted ball per spin (Zeeman's k)
   LocalModelKind local_model = LocalModelKind::kContinuity;
+  // Force suggestions (eq. 5, fourd/suggestion.h): K_p N/mm, K_v N s/mm, look-ahead s; 0 = off.
+  double suggest_kp_n_per_mm = 0.0;
+  double suggest_kv_n_s_per_mm = 0.0;
+  double suggest_lookahead_s = 0.05;
   bool operator==(const Spec&) const = default;
 };
 

@@ -277,6 +277,25 @@ void HapticLoop::detect_crossing(double t) {
   events_.push(e);
 }
 
+glm::dvec3 HapticLoop::suggestion_force(double dt) {
+  glm::dvec3 point(0.0);
+  int surface = -1;
+  double w = 0.0;
+  if (!god_ || !god_->sheet(surface, w, &point)) {
+    have_sheet_point_ = false;
+    return glm::dvec3(0.0);
+  }
+  const fourd::SuggestionParams p = god_->scene().fourd_suggestion(surface);
+  const glm::dvec3 v = have_sheet_point_ && dt > 0.0 ? (point - last_sheet_point_) / dt : glm::dvec3(0.0);
+  last_sheet_point_ = point;
+  have_sheet_point_ = true;
+  if (!p.on()) return glm::dvec3(0.0);
+  const glm::dvec3 n = glm::normalize(local_.proxy_mm - point);  // the facet's normal on the proxy's side
+  glm::dvec3 p_des, v_des;
+  fourd::desired_state(p, point, local_.velocity_mm_s, n, p_des, v_des);
+  return fourd::force_suggestion_n(p, p_des, point, v_des, v, n);
+}
+
 void HapticLoop::tick(Clock::Ns now) {
   if (swap_pending_.load(std::memory_order_acquire)) adopt_pending_scene(now);
   // T of the filter = the measured tick period: after a preemption sleep_until() runs the
@@ -338,7 +357,8 @@ void HapticLoop::tick(Clock::Ns now) {
     local_.in_contact = f.in_contact;
     if (!god_ || !god_->sheet(local_.sheet_surface, local_.sheet_w4)) local_.sheet_surface = -1;
     detect_crossing(t);
-    device_.write_force(f.force_n);
+    if (f.in_contact) local_.force_n += suggestion_force(dt);
+    device_.write_force(local_.force_n);
   }
   local_.time_s = t;
   local_.rejected = sanitizer_.counts();

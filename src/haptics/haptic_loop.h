@@ -161,6 +161,11 @@ class HapticLoop {
   std::optional<world::GodObject> god_;  // set when a haptic scene is given
   fourd::CrossingDetector crossing_;     // sheet crossings on a surface embedded in 4D
   void detect_crossing(double t);        // after the proxy moved: a sheet_crossing event?
+  // Eq. 5's force suggestion on a fourd sheet (zero when off or off the sheet); keeps the
+  // contact point to difference its velocity.
+  glm::dvec3 suggestion_force(double dt);
+  glm::dvec3 last_sheet_point_{0.0};
+  bool have_sheet_point_ = false;
   world::BodySet bodies_;                // the scene's bodies (reset with each scene)
   world::ButtonSet buttons_;             // the scene's buttons (reset with each scene)
   void press_buttons(const glm::dvec3& anchor, double t, glm::dvec3& force);

@@ -88,7 +88,8 @@ Result<HapticScene> HapticScene::build(const Scene& scene) {
       // "adjacency" needs the walk of fourd/local_model.h, not run on the haptic thread yet:
       // it keeps to the sheet by continuity here (docs/fourd.md).
       out.fourd_.push_back({index, s.fourd.local_model != fourd::LocalModelKind::kNearest,
-                            fourd::FourdTouch(f.value(), s.scale, euler_xyz_deg(s.rotation_deg), s.center)});
+                            fourd::FourdTouch(f.value(), s.scale, euler_xyz_deg(s.rotation_deg), s.center),
+                            {s.fourd.suggest_kp_n_per_mm, s.fourd.suggest_kv_n_s_per_mm, s.fourd.suggest_lookahead_s}});
       continue;
     }
     // Height field: the rendered triangles, an image has no closed form. Mesh: the triangles.

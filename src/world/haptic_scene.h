@@ -24,6 +24,7 @@
 #include "world/buttons.h"
 #include "world/fields.h"
 #include "world/mesh_bvh.h"
+#include "fourd/suggestion.h"
 #include "fourd/touch.h"
 
 namespace ps::world {
@@ -82,6 +83,12 @@ class HapticScene {
       if (f.surface == surface) return &f.touch;
     return nullptr;
   }
+  // Its force-suggestion gains (eq. 5); off for any other surface.
+  fourd::SuggestionParams fourd_suggestion(int surface) const {
+    for (const FourdShape& f : fourd_)
+      if (f.surface == surface) return f.suggestion;
+    return {};
+  }
 
  private:
   struct Shape {
@@ -103,6 +110,7 @@ class HapticScene {
     int surface;
     bool continuity;  // fourd_local_model: "continuity" keeps to the sheet; "nearest" does not
     fourd::FourdTouch touch;
+    fourd::SuggestionParams suggestion;  // eq. 5 (fourd/suggestion.h)
   };
   std::vector<FourdShape> fourd_;
   std::vector<Shape> shapes_;

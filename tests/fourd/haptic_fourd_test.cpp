@@ -148,3 +148,54 @@ TEST(FourdHapticLoopTest, CrossingEventsFireOnceWithInFrontOrBehind) {
 
 }  // namespace
 }  // namespace ps
+
+namespace ps {
+namespace {
+
+// Eq. 5 in the loop: the same stroke with suggestions on and off (the scripted device ignores
+// forces, so the proxy moves alike): the difference of the two force outputs is the suggestion,
+// and it pushes along the hand's motion (K_p lookahead V_des dominates K_v's small term) on at
+// least 90 % of the contact ticks. (That it lies in the facet's plane is FourdSuggestionTest's.)
+TEST(FourdHapticLoopTest, ForceSuggestionPushesAlongTheMotionInTheFacet) {
+  auto forces = [](bool on, std::vector<HapticState>& states) {
+    std::vector<std::string> sets;
+    if (on) sets = {"surfaces.0.fourd_suggest_kp_n_per_mm=0.5", "surfaces.0.fourd_suggest_kv_n_s_per_mm=0.001"};
+    auto scene = load_scene(std::string(PS_SOURCE_DIR) + "/scenes/fourd/roman.toml", sets);
+    EXPECT_TRUE(scene) << scene.error().message;
+    auto hs = world::HapticScene::build(scene.value());
+    EXPECT_TRUE(hs) << hs.error().message;
+    const double y0 = std::cos(M_PI / 12), z0 = std::sin(M_PI / 12);
+    std::vector<DeviceSample> samples;
+    for (int i = 0; i <= 60; ++i) {
+      const double s = -0.3 + 0.6 * i / 60;
+      const glm::dvec3 sp(s, y0, z0), h(1e-4, 0, 0), k(0, -1e-4 * z0, 1e-4 * y0);
+      const glm::dvec3 n = glm::normalize(glm::cross(roman_mm(sp + h) - roman_mm(sp - h), roman_mm(sp + k) - roman_mm(sp - k)));
+      if (i == 0) samples.push_back({0.0, roman_mm(sp) + 5.0 * n, 0, true});
+      samples.push_back({0.1 + 0.6 * i / 60, roman_mm(sp) - 1.0 * n, 0, true});
+    }
+    LogDevice device(samples, true, "stroke");
+    FakeClock clock;
+    HapticLoop loop(device, clock, HapticLoopParams{}, &hs.value());
+    for (int tick = 0; tick < 700; ++tick) {
+      loop.run_ticks(1);
+      states.push_back(loop.state().read());
+    }
+  };
+  std::vector<HapticState> off, on;
+  forces(false, off);
+  forces(true, on);
+  int ticks = 0, along = 0;
+  for (std::size_t i = 200; i < 650; ++i) {  // in contact, the hand moving (0.2 .. 0.65 s)
+    if (!on[i].in_contact || !off[i].in_contact || on[i].sheet_surface < 0) continue;
+    ASSERT_EQ(on[i].proxy_mm, off[i].proxy_mm) << i;  // the same motion
+    const glm::dvec3 d = on[i].force_n - off[i].force_n;
+    ++ticks;
+    along += glm::dot(d, on[i].velocity_mm_s) > 0.0;
+  }
+  std::printf("suggestion: %d contact ticks, %d push along the motion\n", ticks, along);
+  EXPECT_GT(ticks, 300);
+  EXPECT_GT(along, ticks * 9 / 10);
+}
+
+}  // namespace
+}  // namespace ps
