@@ -1,5 +1,7 @@
 #include "render/renderer.h"
 
+#include "fourd/fourd_mesh.h"  // depth_colour: the probe path on 4D sheets
+
 #include "render/button_pictures.h"
 #include "render/field_map.h"
 
@@ -470,7 +472,7 @@ Status Renderer::render_frame() {
     run_probe_view();
     timer.lap("probe_view");
   }
-  if (!body_positions_.empty() || !markers_.empty() || show_device_) {
+  if (!body_positions_.empty() || !markers_.empty() || show_device_ || !path_.empty()) {
     run_world_view();
     timer.lap("world_view");
   }
@@ -511,6 +513,22 @@ std::vector<SphereCaster> Renderer::body_casters() const {
   return out;
 }
 
+void Renderer::set_probe_sheet(int surface, double w4) {
+  sheet_surface_ = surface;
+  sheet_w4_ = w4;
+  if (!show_path_ || surface < 0 || static_cast<std::size_t>(surface) >= geometry_.surface_sheets.size()) return;
+  const Geometry::Sheets& sheets = geometry_.surface_sheets[static_cast<std::size_t>(surface)];
+  if (sheets.w4.empty()) return;
+  const double range = sheets.w_max - sheets.w_min;
+  const glm::dvec3 colour = fourd::depth_colour(range > 0.0 ? (w4 - sheets.w_min) / range : 0.5);
+  const glm::dvec3 p = scene_.probe.position;
+  // A tube from the last point: a new piece when the probe jumped (lifted and put down).
+  constexpr double kPathRadiusMm = 0.6, kBreakMm = 5.0;
+  const bool joined = !path_.empty() && glm::length(p - path_.back().b) < kBreakMm;
+  if (joined && glm::length(p - path_.back().b) < 0.25) return;  // closer than a segment is worth
+  path_.push_back({joined ? path_.back().b : p, p, kPathRadiusMm, colour});
+}
+
 void show_world_at_start(Renderer& renderer) {
   const Scene& sc = renderer.scene();
   const std::vector<glm::dvec3> bodies = start_positions(sc);
@@ -534,12 +552,13 @@ void Renderer::run_world_view() {
     in.color = m < scene_.materials.size() ? scene_.materials[m].albedo : ProbeViewPass::kColor;
     body_view_.run(in);
   }
-  for (const WorldMarker& m : markers_) {
-    in.probe = ProbeInput{};
-    in.probe.capsule = CapsuleShape{m.a, m.b, m.radius_mm};
-    in.color = m.color;
-    body_view_.run(in);
-  }
+  for (const std::vector<WorldMarker>* list : {&path_, &markers_})
+    for (const WorldMarker& m : *list) {
+      in.probe = ProbeInput{};
+      in.probe.capsule = CapsuleShape{m.a, m.b, m.radius_mm};
+      in.color = m.color;
+      body_view_.run(in);
+    }
   if (show_device_) {
     // The probe's shape at the device, faint: where the hand is, against where the proxy is drawn.
     in.probe = probe_input();

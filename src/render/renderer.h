@@ -121,10 +121,11 @@ class Renderer {
   // sheet_w4): that surface shows the pseudo-shadow on this sheet only (docs/fourd.md).
   // surface -1 (the default, and `render` without haptics): the sheet of the vertex nearest
   // the probe.
-  void set_probe_sheet(int surface, double w4) {
-    sheet_surface_ = surface;
-    sheet_w4_ = w4;
-  }
+  // With set_show_path(true), each call on a sheet also adds the probe's position (as last set
+  // by set_probe_state) to its path, drawn after the pseudo-shadow as a tube coloured by w
+  // (fourd::depth_colour over the surface's w range; seed 000 Fig. 5c).
+  void set_probe_sheet(int surface, double w4);
+  void set_show_path(bool show) { show_path_ = show; }
   void set_show_device(bool show) { show_device_ = show; }
   bool show_device() const { return show_device_; }
   // The frame's colour target (RGBA8, padded to a power of two; the image is the
@@ -213,6 +214,8 @@ class Renderer {
   bool show_probe_ = false;
   int sheet_surface_ = -1;  // set_probe_sheet
   double sheet_w4_ = 0.0;
+  bool show_path_ = false;
+  std::vector<WorldMarker> path_;  // the probe's path on 4D sheets: segments coloured by w
   void run_world_view();           // bodies and the device ghost, over the colour image
   ProbeViewPass body_view_, ghost_view_;  // initialised on first use (own mesh caches)
   bool world_view_ready_ = false;
