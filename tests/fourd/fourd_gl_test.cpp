@@ -42,6 +42,50 @@ TEST_P(FourdGLTest, PseudoShadowStaysOnTheProbesSheet) {
   EXPECT_NE(other, own);
 }
 
+// The probe's path coloured by w (seed 000 Fig. 5c): with the surface hidden, a path laid at the
+// surface's smallest w is drawn bluish (blue > red in its pixels), one at its largest w reddish,
+// and without set_show_path nothing is drawn. The camera looks at the path from the side, so
+// its tube (0.6 mm) covers a few pixels of each of its 128^2.
+TEST_P(FourdGLTest, ProbePathIsColouredByDepth) {
+  auto scene = load_scene(std::string(PS_SOURCE_DIR) + "/scenes/fourd/roman.toml",
+                          {"render.size=[128,128]", "surfaces.0.visible=false", "camera.position=[0,-60,0]",
+                           "camera.target=[0,0,0]", "probe.position=[0,0,200]"});
+  ASSERT_TRUE(scene) << scene.error().message;
+  // The Roman surface's w spans [-1, 1] (y^2 - z^2 on the unit sphere).
+  auto path_colour = [&](bool show, double w, int& pixels) {
+    auto r = Renderer::create(scene.value(), {});
+    EXPECT_TRUE(r) << r.error().message;
+    r.value()->set_show_path(show);
+    for (int i = 0; i <= 20; ++i) {
+      r.value()->set_probe_state(glm::dvec3(-10.0 + i, 0.0, 0.0), glm::dvec3(0.0));
+      r.value()->set_probe_sheet(0, w);
+    }
+    EXPECT_TRUE(r.value()->render_frame());
+    const Image im = r.value()->read_color();
+    glm::dvec3 sum(0.0);
+    pixels = 0;
+    const glm::dvec3 bg(im.at(0, 0, 0), im.at(0, 0, 1), im.at(0, 0, 2));  // a corner: background
+    for (int y = 0; y < im.height; ++y)
+      for (int x = 0; x < im.width; ++x) {
+        const glm::dvec3 c(im.at(x, y, 0), im.at(x, y, 1), im.at(x, y, 2));
+        if (glm::length(c - bg) < 0.02) continue;
+        sum += c;
+        ++pixels;
+      }
+    return pixels > 0 ? sum / static_cast<double>(pixels) : sum;
+  };
+  int none = 0, far_pixels = 0, near_pixels = 0;
+  path_colour(false, 0.0, none);
+  const glm::dvec3 far = path_colour(true, -1.0, far_pixels), near = path_colour(true, 1.0, near_pixels);
+  std::printf("path pixels: hidden %d, far %d (rgb %.2f %.2f %.2f), near %d (rgb %.2f %.2f %.2f)\n", none, far_pixels,
+              far.r, far.g, far.b, near_pixels, near.r, near.g, near.b);
+  EXPECT_EQ(none, 0);
+  EXPECT_GT(far_pixels, 20);
+  EXPECT_GT(near_pixels, 20);
+  EXPECT_GT(far.b, far.r);
+  EXPECT_GT(near.r, near.b);
+}
+
 PS_INSTANTIATE_HEADLESS_BACKENDS(FourdGLTest);
 
 }  // namespace
