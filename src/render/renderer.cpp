@@ -516,15 +516,20 @@ std::vector<SphereCaster> Renderer::body_casters() const {
 void Renderer::set_probe_sheet(int surface, double w4) {
   sheet_surface_ = surface;
   sheet_w4_ = w4;
-  if (!show_path_ || surface < 0 || static_cast<std::size_t>(surface) >= geometry_.surface_sheets.size()) return;
+  const bool on_sheet = surface >= 0 && static_cast<std::size_t>(surface) < geometry_.surface_sheets.size() &&
+                        !geometry_.surface_sheets[static_cast<std::size_t>(surface)].w4.empty();
+  if (!show_path_ || !on_sheet) {
+    path_break_ = true;  // off every sheet (lifted): the path starts a new piece
+    return;
+  }
   const Geometry::Sheets& sheets = geometry_.surface_sheets[static_cast<std::size_t>(surface)];
-  if (sheets.w4.empty()) return;
   const double range = sheets.w_max - sheets.w_min;
   const glm::dvec3 colour = fourd::depth_colour(range > 0.0 ? (w4 - sheets.w_min) / range : 0.5);
   const glm::dvec3 p = scene_.probe.position;
-  // A tube from the last point: a new piece when the probe jumped (lifted and put down).
-  constexpr double kPathRadiusMm = 0.6, kBreakMm = 5.0;
-  const bool joined = !path_.empty() && glm::length(p - path_.back().b) < kBreakMm;
+  // A tube from the last point, unless the probe left the sheet since (lifted and put down).
+  constexpr double kPathRadiusMm = 0.6;
+  const bool joined = !path_.empty() && !path_break_;
+  path_break_ = false;
   if (joined && glm::length(p - path_.back().b) < 0.25) return;  // closer than a segment is worth
   path_.push_back({joined ? path_.back().b : p, p, kPathRadiusMm, colour});
 }

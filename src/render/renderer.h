@@ -215,6 +215,7 @@ class Renderer {
   int sheet_surface_ = -1;  // set_probe_sheet
   double sheet_w4_ = 0.0;
   bool show_path_ = false;
+  bool path_break_ = true;
   std::vector<WorldMarker> path_;  // the probe's path on 4D sheets: segments coloured by w
   void run_world_view();           // bodies and the device ghost, over the colour image
   ProbeViewPass body_view_, ghost_view_;  // initialised on first use (own mesh caches)
