@@ -274,6 +274,7 @@ std::string screenshot_state(const TuneSession& tune) {
 }
 
 void edit_live_charges(Session& s, bool add);  // below, with the reload
+void turn_fourd_surfaces(Session& s, int (&steps)[6]);  // below: keys 1-6, a 4D turn
 
 Status handle_keys(Session& s, int w, int h) {
   WindowInput& in = s.input;
@@ -305,6 +306,7 @@ Status handle_keys(Session& s, int w, int h) {
     s.going_back = true;
   }
   in.add_charge = in.remove_charge = false;
+  turn_fourd_surfaces(s, in.turn4);
   Camera cam = s.tune->renderer().scene().camera;
   apply_orbit_zoom(in, cam);
   s.tune->renderer().set_camera(cam);
@@ -359,6 +361,22 @@ void edit_live_charges(Session& s, bool add) {
     --c.count;
   }
   s.loop->live_charges().publish(c);
+}
+
+void reload_haptic_scene(Session& s);
+
+// Keys 1-6 (Shift: back): the fourd surfaces turn 5 degrees in a 4D plane; the renderer and the
+// haptic scene are rebuilt with the new orientation (the 3D image reprojected, the proxy kept).
+void turn_fourd_surfaces(Session& s, int (&steps)[6]) {
+  const auto edits = fourd_turn_edits(s.tune->renderer().scene(), steps);
+  for (int& n : steps) n = 0;
+  if (edits.empty()) return;
+  for (const auto& [key, value] : edits)
+    if (Status st = s.tune->set(key, value); !st) {
+      std::fprintf(stderr, "4D turn: %s\n", st.error().message.c_str());
+      return;
+    }
+  reload_haptic_scene(s);
 }
 
 // A reloaded scene may feel different too (surfaces, materials' haptic keys, fields, bodies):
