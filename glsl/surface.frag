@@ -78,7 +78,21 @@ vec2 probe_height(vec2 uv) {
   return w_sum > 0.0 ? vec2(h_sum / w_sum, w_sum) : vec2(kFar, 0.0);
 }
 
+// Cutaway (seed 000 §6.3): a fragment of another sheet than the probe's, within u_cutaway.w of
+// the segment from the eye to the probe and in front of the probe, is not drawn.
+bool cut_away() {
+  if (u_cutaway.w <= 0.0 || abs(v_w4 - u_sheet.y) <= u_sheet.z) return false;
+  vec3 probe = u_cutaway.xyz;
+  vec3 dir = u_eye.w > 0.5 ? probe - u_eye.xyz : u_eye.xyz;  // eye -> probe
+  float len2 = dot(dir, dir);
+  if (len2 <= 0.0) return false;
+  float t = dot(v_world - probe, dir) / len2;  // < 0: between the eye and the probe
+  if (t >= 0.0 || (u_eye.w > 0.5 && t < -1.0)) return false;
+  return length(v_world - (probe + t * dir)) < u_cutaway.w;
+}
+
 void main() {
+  if (cut_away()) discard;
   vec3 n = normalize(gl_FrontFacing ? v_normal : -v_normal);
   vec3 rgb = shade_surface(n);
   float intensity = 0.0, d = kFar, tex_sigmas = 0.0;

@@ -34,6 +34,9 @@ struct Spec {
   double suggest_kp_n_per_mm = 0.0;
   double suggest_kv_n_s_per_mm = 0.0;
   double suggest_lookahead_s = 0.05;
+  // Cutaway (seed 000 §6.3): other sheets within this radius of the line from the eye to the
+  // probe, between them, are not drawn, so the probe and its shadow stay in view; 0 = off. mm.
+  double cutaway_mm = 0.0;
   bool operator==(const Spec&) const = default;
 };
 

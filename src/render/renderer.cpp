@@ -386,6 +386,14 @@ std::vector<SurfaceDraw> Renderer::surface_draws(const FramePlan& plan) {
         }
       }
       d.block.sheet = glm::vec4(1.0f, static_cast<float>(w), 0.15f * (sheets.w_max - sheets.w_min), 0.0f);
+      const double cut = scene_.surfaces[i].fourd.cutaway_mm;
+      if (cut > 0.0) {
+        const Camera& cam = scene_.camera;
+        const bool persp = cam.projection == Projection::kPerspective;
+        d.block.cutaway = glm::vec4(glm::vec3(scene_.probe.position), static_cast<float>(cut));
+        d.block.eye = persp ? glm::vec4(glm::vec3(cam.position), 1.0f)
+                            : glm::vec4(glm::vec3(glm::normalize(cam.target - cam.position)), 0.0f);
+      }
     }
     draws.push_back(std::move(d));
   }
