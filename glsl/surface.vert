@@ -17,5 +17,13 @@ void main() {
   v_normal = a_normal;
   v_color = a_color;
   v_w4 = a_w4;
-  gl_Position = u_view_proj * vec4(a_position, 1.0);
+  // Crossing diagram (fourd): drawn nearer the eye along the line of sight by u_sheet.w mm per
+  // unit of w, so the sheet nearer the 4D eye wins where two cross; the picture does not move
+  // and the shading keeps the true position.
+  vec3 drawn = a_position;
+  if (u_sheet.w > 0.0) {
+    vec3 toward_eye = u_eye.w > 0.5 ? normalize(u_eye.xyz - a_position) : -u_eye.xyz;
+    drawn += toward_eye * (u_sheet.w * a_w4);
+  }
+  gl_Position = u_view_proj * vec4(drawn, 1.0);
 }

@@ -37,6 +37,11 @@ struct Spec {
   // Cutaway (seed 000 §6.3): other sheets within this radius of the line from the eye to the
   // probe, between them, are not drawn, so the probe and its shadow stay in view; 0 = off. mm.
   double cutaway_mm = 0.0;
+  // Crossing diagram (seed 000 §3, Fig. 3b): each vertex is drawn this many mm nearer the eye
+  // per unit of w (along its line of sight, so the picture does not move): where two sheets
+  // cross, the one nearer the 4D eye wins a band along the crossing and is seen continuous,
+  // the other interrupted. 0 = off (plain 3D depth).
+  double crossing_diagram_mm = 0.0;
   bool operator==(const Spec&) const = default;
 };
 

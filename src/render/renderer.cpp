@@ -386,11 +386,12 @@ std::vector<SurfaceDraw> Renderer::surface_draws(const FramePlan& plan) {
         }
       }
       d.block.sheet = glm::vec4(1.0f, static_cast<float>(w), 0.15f * (sheets.w_max - sheets.w_min), 0.0f);
-      const double cut = scene_.surfaces[i].fourd.cutaway_mm;
-      if (cut > 0.0) {
+      const fourd::Spec& spec = scene_.surfaces[i].fourd;
+      d.block.sheet.w = static_cast<float>(spec.crossing_diagram_mm);
+      if (spec.cutaway_mm > 0.0 || spec.crossing_diagram_mm > 0.0) {
         const Camera& cam = scene_.camera;
         const bool persp = cam.projection == Projection::kPerspective;
-        d.block.cutaway = glm::vec4(glm::vec3(scene_.probe.position), static_cast<float>(cut));
+        d.block.cutaway = glm::vec4(glm::vec3(scene_.probe.position), static_cast<float>(spec.cutaway_mm));
         d.block.eye = persp ? glm::vec4(glm::vec3(cam.position), 1.0f)
                             : glm::vec4(glm::vec3(glm::normalize(cam.target - cam.position)), 0.0f);
       }

@@ -108,6 +108,35 @@ TEST_P(FourdGLTest, CutawayOpensTheOtherSheetsInFrontOfTheProbe) {
   EXPECT_GT(open, 100u);
 }
 
+// Crossing diagram (seed 000 Fig. 3b): where the Roman surface's sheets cross, the one nearer
+// the 4D eye (larger w: red) is drawn over the other (blue) in a band along the crossing: with
+// fourd_crossing_diagram_mm = 10 more pixels are red-dominant and fewer blue-dominant than with
+// plain 3D depth (measured: red 3144 -> 4440 pixels, blue 2984 -> 1852).
+TEST_P(FourdGLTest, CrossingDiagramDrawsTheSheetNearerThe4DEyeOnTop) {
+  auto count = [](double k, int& red, int& blue) {
+    auto scene = load_scene(std::string(PS_SOURCE_DIR) + "/scenes/fourd/roman.toml",
+                            {"render.size=[128,128]", "camera.position=[60,-110,60]", "camera.target=[20,0,0]",
+                             "surfaces.0.fourd_crossing_diagram_mm=" + std::to_string(k)});
+    EXPECT_TRUE(scene) << scene.error().message;
+    auto r = Renderer::create(scene.value(), {});
+    EXPECT_TRUE(r) << r.error().message;
+    EXPECT_TRUE(r.value()->render_frame());
+    const Image im = r.value()->read_color();
+    red = blue = 0;
+    for (int y = 0; y < im.height; ++y)
+      for (int x = 0; x < im.width; ++x) {
+        red += im.at(x, y, 0) > im.at(x, y, 2) + 0.2f;
+        blue += im.at(x, y, 2) > im.at(x, y, 0) + 0.2f;
+      }
+  };
+  int red0 = 0, blue0 = 0, red1 = 0, blue1 = 0;
+  count(0.0, red0, blue0);
+  count(10.0, red1, blue1);
+  std::printf("red / blue pixels: plain depth %d / %d, crossing diagram %d / %d\n", red0, blue0, red1, blue1);
+  EXPECT_GT(red1, red0 + 100);
+  EXPECT_LT(blue1, blue0 - 100);
+}
+
 PS_INSTANTIATE_HEADLESS_BACKENDS(FourdGLTest);
 
 }  // namespace
