@@ -363,10 +363,9 @@ void edit_live_charges(Session& s, bool add) {
   s.loop->live_charges().publish(c);
 }
 
-void reload_haptic_scene(Session& s);
-
-// Keys 1-6 (Shift: back): the fourd surfaces turn 5 degrees in a 4D plane; the renderer and the
-// haptic scene are rebuilt with the new orientation (the 3D image reprojected, the proxy kept).
+// Keys 1-6 (Shift: back): the fourd surfaces turn 5 degrees in a 4D plane; the renderer is
+// rebuilt with the new orientation (the 3D image reprojected) and, like after a panel edit, the
+// frame loop hands the haptic thread a haptic scene built with it (the proxy kept).
 void turn_fourd_surfaces(Session& s, int (&steps)[6]) {
   const auto edits = fourd_turn_edits(s.tune->renderer().scene(), steps);
   for (int& n : steps) n = 0;
@@ -376,7 +375,6 @@ void turn_fourd_surfaces(Session& s, int (&steps)[6]) {
       std::fprintf(stderr, "4D turn: %s\n", st.error().message.c_str());
       return;
     }
-  reload_haptic_scene(s);
 }
 
 // A reloaded scene may feel different too (surfaces, materials' haptic keys, fields, bodies):
