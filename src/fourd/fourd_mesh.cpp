@@ -115,6 +115,47 @@ Result<FourdMesh> build_fourd_mesh(const Spec& spec) {
   return m;
 }
 
+glm::dvec3 closest_on_triangle(const glm::dvec3& p, const glm::dvec3& a, const glm::dvec3& b, const glm::dvec3& c,
+                               glm::dvec3& bary) {
+  const glm::dvec3 ab = b - a, ac = c - a, ap = p - a;
+  const double d1 = glm::dot(ab, ap), d2 = glm::dot(ac, ap);
+  if (d1 <= 0.0 && d2 <= 0.0) return bary = {1, 0, 0}, a;
+  const glm::dvec3 bp = p - b;
+  const double d3 = glm::dot(ab, bp), d4 = glm::dot(ac, bp);
+  if (d3 >= 0.0 && d4 <= d3) return bary = {0, 1, 0}, b;
+  const double vc = d1 * d4 - d3 * d2;
+  if (vc <= 0.0 && d1 >= 0.0 && d3 <= 0.0) {
+    const double v = d1 / (d1 - d3);
+    return bary = {1 - v, v, 0}, a + v * ab;
+  }
+  const glm::dvec3 cp = p - c;
+  const double d5 = glm::dot(ab, cp), d6 = glm::dot(ac, cp);
+  if (d6 >= 0.0 && d5 <= d6) return bary = {0, 0, 1}, c;
+  const double vb = d5 * d2 - d1 * d6;
+  if (vb <= 0.0 && d2 >= 0.0 && d6 <= 0.0) {
+    const double w = d2 / (d2 - d6);
+    return bary = {1 - w, 0, w}, a + w * ac;
+  }
+  const double va = d3 * d6 - d5 * d4;
+  if (va <= 0.0 && (d4 - d3) >= 0.0 && (d5 - d6) >= 0.0) {
+    const double w = (d4 - d3) / ((d4 - d3) + (d5 - d6));
+    return bary = {0, 1 - w, w}, b + w * (c - b);
+  }
+  const double denom = 1.0 / (va + vb + vc);
+  const double v = vb * denom, w = vc * denom;
+  return bary = {1 - v - w, v, w}, a + ab * v + ac * w;
+}
+
+
+double auto_w_slack(const FourdMesh& mesh) {
+  std::vector<double> dw;
+  for (const glm::uvec3& t : mesh.triangles)
+    for (int k = 0; k < 3; ++k) dw.push_back(std::abs(mesh.vertices[t[k]].w - mesh.vertices[t[(k + 1) % 3]].w));
+  if (dw.empty()) return 0.0;
+  std::nth_element(dw.begin(), dw.begin() + static_cast<long>(dw.size() / 2), dw.end());
+  return 2.0 * dw[dw.size() / 2];
+}
+
 glm::dvec3 depth_colour(double t) {
   static constexpr std::array<glm::dvec3, 5> kStops = {
       glm::dvec3(0.15, 0.30, 0.90), glm::dvec3(0.15, 0.75, 0.85), glm::dvec3(0.35, 0.80, 0.30),

@@ -43,6 +43,15 @@ struct FourdMesh {
 // vertex with w >= 0.95 eye_distance; the message gives the surface's largest w), grid too small.
 Result<FourdMesh> build_fourd_mesh(const Spec& spec);
 
+// Twice the median |w change| along a mesh edge: the default w_slack of the local models
+// (fourd/local_model.h says why).
+double auto_w_slack(const FourdMesh& mesh);
+
+// Closest point on triangle abc to p (Ericson, Real-Time Collision Detection §5.1.5); `bary`
+// gets its barycentric coordinates.
+glm::dvec3 closest_on_triangle(const glm::dvec3& p, const glm::dvec3& a, const glm::dvec3& b, const glm::dvec3& c,
+                               glm::dvec3& bary);
+
 // The documented colour map of 4D depth (docs/fourd.md): t = (w - w_min) / (w_max - w_min)
 // from 0 (farthest from the 4D eye) to 1 (nearest): blue, cyan, green, yellow, red.
 glm::dvec3 depth_colour(double t);

@@ -8,42 +8,6 @@
 #include <tuple>
 
 namespace ps::fourd {
-namespace {
-
-// Closest point on triangle abc to p with its barycentric coordinates (Ericson, Real-Time
-// Collision Detection §5.1.5).
-std::pair<glm::dvec3, glm::dvec3> closest_on_triangle(const glm::dvec3& p, const glm::dvec3& a,
-                                                      const glm::dvec3& b, const glm::dvec3& c) {
-  const glm::dvec3 ab = b - a, ac = c - a, ap = p - a;
-  const double d1 = glm::dot(ab, ap), d2 = glm::dot(ac, ap);
-  if (d1 <= 0.0 && d2 <= 0.0) return {a, {1, 0, 0}};
-  const glm::dvec3 bp = p - b;
-  const double d3 = glm::dot(ab, bp), d4 = glm::dot(ac, bp);
-  if (d3 >= 0.0 && d4 <= d3) return {b, {0, 1, 0}};
-  const double vc = d1 * d4 - d3 * d2;
-  if (vc <= 0.0 && d1 >= 0.0 && d3 <= 0.0) {
-    const double v = d1 / (d1 - d3);
-    return {a + v * ab, {1 - v, v, 0}};
-  }
-  const glm::dvec3 cp = p - c;
-  const double d5 = glm::dot(ab, cp), d6 = glm::dot(ac, cp);
-  if (d6 >= 0.0 && d5 <= d6) return {c, {0, 0, 1}};
-  const double vb = d5 * d2 - d1 * d6;
-  if (vb <= 0.0 && d2 >= 0.0 && d6 <= 0.0) {
-    const double w = d2 / (d2 - d6);
-    return {a + w * ac, {1 - w, 0, w}};
-  }
-  const double va = d3 * d6 - d5 * d4;
-  if (va <= 0.0 && (d4 - d3) >= 0.0 && (d5 - d6) >= 0.0) {
-    const double w = (d4 - d3) / ((d4 - d3) + (d5 - d6));
-    return {b + w * (c - b), {0, 1 - w, w}};
-  }
-  const double denom = 1.0 / (va + vb + vc);
-  const double v = vb * denom, w = vc * denom;
-  return {a + ab * v + ac * w, {1 - v - w, v, w}};
-}
-
-}  // namespace
 
 LocalModel::LocalModel(const FourdMesh& mesh, double scale_mm, const glm::dmat3& rotation,
                        const glm::dvec3& center_mm)
@@ -54,22 +18,15 @@ LocalModel::LocalModel(const FourdMesh& mesh, double scale_mm, const glm::dmat3&
   box_max_.resize(n);
   glm::dvec3 lo(std::numeric_limits<double>::infinity()), hi(-std::numeric_limits<double>::infinity());
   double edge_sum = 0.0;
-  std::vector<double> edge_dw;
   for (std::size_t f = 0; f < n; ++f) {
     const glm::uvec3 t = mesh.triangles[f];
     box_min_[f] = glm::min(glm::min(positions_[t.x], positions_[t.y]), positions_[t.z]);
     box_max_[f] = glm::max(glm::max(positions_[t.x], positions_[t.y]), positions_[t.z]);
     lo = glm::min(lo, box_min_[f]);
     hi = glm::max(hi, box_max_[f]);
-    for (int k = 0; k < 3; ++k) {
-      edge_dw.push_back(std::abs(mesh.vertices[t[k]].w - mesh.vertices[t[(k + 1) % 3]].w));
-      edge_sum += glm::length(positions_[t[k]] - positions_[t[(k + 1) % 3]]);
-    }
+    for (int k = 0; k < 3; ++k) edge_sum += glm::length(positions_[t[k]] - positions_[t[(k + 1) % 3]]);
   }
-  if (!edge_dw.empty()) {
-    std::nth_element(edge_dw.begin(), edge_dw.begin() + static_cast<long>(edge_dw.size() / 2), edge_dw.end());
-    auto_w_slack_ = 2.0 * edge_dw[edge_dw.size() / 2];
-  }
+  auto_w_slack_ = fourd::auto_w_slack(mesh);
   // Facets whose boxes touch (grown by 1 % of a mean edge: shared edges touch exactly), found
   // through a uniform grid of cells about a mean edge wide.
   const double edge = n > 0 ? edge_sum / (3.0 * static_cast<double>(n)) : 1.0;
@@ -114,7 +71,8 @@ bool LocalModel::within(int f, const glm::dvec3& c, double r) const {
 
 LocalModel::FacetPoint LocalModel::closest_on_facet(int f, const glm::dvec3& p) const {
   const glm::uvec3 t = mesh_.triangles[static_cast<std::size_t>(f)];
-  const auto [point, bary] = closest_on_triangle(p, positions_[t.x], positions_[t.y], positions_[t.z]);
+  glm::dvec3 bary;
+  const glm::dvec3 point = closest_on_triangle(p, positions_[t.x], positions_[t.y], positions_[t.z], bary);
   const double w = bary.x * mesh_.vertices[t.x].w + bary.y * mesh_.vertices[t.y].w + bary.z * mesh_.vertices[t.z].w;
   return {point, w, glm::length(p - point)};
 }

@@ -9,38 +9,6 @@ namespace {
 
 constexpr int kMaxCellsPerAxis = 48;  // 48^3 cells: a few MB of indices at most
 
-// Closest point on triangle abc and its barycentric coordinates (Ericson §5.1.5).
-glm::dvec3 closest_on_triangle(const glm::dvec3& p, const glm::dvec3& a, const glm::dvec3& b, const glm::dvec3& c,
-                               glm::dvec3& bary) {
-  const glm::dvec3 ab = b - a, ac = c - a, ap = p - a;
-  const double d1 = glm::dot(ab, ap), d2 = glm::dot(ac, ap);
-  if (d1 <= 0.0 && d2 <= 0.0) return bary = {1, 0, 0}, a;
-  const glm::dvec3 bp = p - b;
-  const double d3 = glm::dot(ab, bp), d4 = glm::dot(ac, bp);
-  if (d3 >= 0.0 && d4 <= d3) return bary = {0, 1, 0}, b;
-  const double vc = d1 * d4 - d3 * d2;
-  if (vc <= 0.0 && d1 >= 0.0 && d3 <= 0.0) {
-    const double v = d1 / (d1 - d3);
-    return bary = {1 - v, v, 0}, a + v * ab;
-  }
-  const glm::dvec3 cp = p - c;
-  const double d5 = glm::dot(ab, cp), d6 = glm::dot(ac, cp);
-  if (d6 >= 0.0 && d5 <= d6) return bary = {0, 0, 1}, c;
-  const double vb = d5 * d2 - d1 * d6;
-  if (vb <= 0.0 && d2 >= 0.0 && d6 <= 0.0) {
-    const double w = d2 / (d2 - d6);
-    return bary = {1 - w, 0, w}, a + w * ac;
-  }
-  const double va = d3 * d6 - d5 * d4;
-  if (va <= 0.0 && (d4 - d3) >= 0.0 && (d5 - d6) >= 0.0) {
-    const double w = (d4 - d3) / ((d4 - d3) + (d5 - d6));
-    return bary = {0, 1 - w, w}, b + w * (c - b);
-  }
-  const double denom = 1.0 / (va + vb + vc);
-  const double v = vb * denom, w = vc * denom;
-  return bary = {1 - v - w, v, w}, a + ab * v + ac * w;
-}
-
 }  // namespace
 
 FourdTouch::FourdTouch(const FourdMesh& mesh, double scale_mm, const glm::dmat3& rotation,
@@ -53,18 +21,10 @@ FourdTouch::FourdTouch(const FourdMesh& mesh, double scale_mm, const glm::dmat3&
     lo = glm::min(lo, positions_.back());
     hi = glm::max(hi, positions_.back());
   }
-  std::vector<double> edge_dw;
   double edge_sum = 0.0;
-  for (const glm::uvec3& t : mesh.triangles) {
-    for (int k = 0; k < 3; ++k) {
-      edge_dw.push_back(std::abs(w_[t[k]] - w_[t[(k + 1) % 3]]));
-      edge_sum += glm::length(positions_[t[k]] - positions_[t[(k + 1) % 3]]);
-    }
-  }
-  if (!edge_dw.empty()) {  // the same default as LocalModel (local_model.h says why)
-    std::nth_element(edge_dw.begin(), edge_dw.begin() + static_cast<long>(edge_dw.size() / 2), edge_dw.end());
-    w_slack_ = 2.0 * edge_dw[edge_dw.size() / 2];
-  }
+  for (const glm::uvec3& t : mesh.triangles)
+    for (int k = 0; k < 3; ++k) edge_sum += glm::length(positions_[t[k]] - positions_[t[(k + 1) % 3]]);
+  w_slack_ = auto_w_slack(mesh);
   // Cells about two mean edges wide, at most kMaxCellsPerAxis along any axis.
   const double edge = mesh.triangles.empty() ? 1.0 : edge_sum / (3.0 * static_cast<double>(mesh.triangles.size()));
   const glm::dvec3 extent = glm::max(hi - lo, glm::dvec3(1e-9));
