@@ -75,7 +75,12 @@ class HapticScene {
   const std::vector<std::string>& flags() const { return flags_; }
   double probe_radius_mm() const { return probe_radius_mm_; }
   std::size_t analytic_count() const { return shapes_.size(); }
-  std::size_t triangle_count() const { return meshes_.triangle_count(); }  // overall model
+  // Overall model: the BVH's triangles and those of the surfaces embedded in 4D.
+  std::size_t triangle_count() const {
+    std::size_t n = meshes_.triangle_count();
+    for (const FourdShape& f : fourd_) n += f.touch.facet_count();
+    return n;
+  }
   const MeshBvh& meshes() const { return meshes_; }
   // The haptic geometry of surface `surface` if it is embedded in 4D (type fourd), else null.
   const fourd::FourdTouch* fourd_touch(int surface) const {
