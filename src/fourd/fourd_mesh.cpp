@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <cstdio>
 #include <map>
 #include <string>
 #include <utility>
@@ -93,10 +94,14 @@ Result<FourdMesh> build_fourd_mesh(const Spec& spec) {
       m.w_max = std::max(m.w_max, v.w);
       m.vertices.push_back(v);
     }
-  if (spec.projection == Projection4::kPerspective && m.w_max >= 0.95 * spec.eye_distance)
-    return make_error("fourd: the 4D eye (eye_distance " + std::to_string(spec.eye_distance) +
-                      ") is inside or too near the surface, whose largest w is " + std::to_string(m.w_max) +
-                      "; make fourd_eye_distance larger than " + std::to_string(m.w_max / 0.95));
+  if (spec.projection == Projection4::kPerspective && m.w_max >= 0.95 * spec.eye_distance) {
+    char text[256];
+    std::snprintf(text, sizeof text,
+                  "puts the 4D eye (at w = %g) inside or too near the rotated surface, whose largest w is %.3g; "
+                  "make fourd_eye_distance larger than %.3g (e.g. fourd_eye_distance = %g)",
+                  spec.eye_distance, m.w_max, m.w_max / 0.95, std::ceil(m.w_max / 0.95 + 0.5));
+    return make_error(text);
+  }
   for (Vertex4& v : m.vertices) v.p3 = project(v.p4, spec.projection, spec.eye_distance).p3;
   auto index = [&m](int i, int j) { return static_cast<std::uint32_t>(j * (m.nu + 1) + i); };
   auto add = [&m](std::uint32_t a, std::uint32_t b, std::uint32_t c) {

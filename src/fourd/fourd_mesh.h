@@ -40,7 +40,8 @@ struct FourdMesh {
 };
 
 // Tessellates, rotates and projects. Errors: a perspective eye inside the rotated surface (a
-// vertex with w >= 0.95 eye_distance; the message gives the surface's largest w), grid too small.
+// vertex with w >= 0.95 eye_distance; the message, worded to follow "'fourd_eye_distance' ",
+// gives the surface's largest w and a value that works), grid too small.
 Result<FourdMesh> build_fourd_mesh(const Spec& spec);
 
 // Twice the median |w change| along a mesh edge: the default w_slack of the local models

@@ -225,6 +225,11 @@ TEST(FourdSceneTest, BadKeysAreErrors) {
   auto c = parse_scene(head + "type = \"fourd\"\nfourd = \"klein\"\n", "c.toml", ".");
   ASSERT_FALSE(c);
   EXPECT_NE(c.error().message.find("c.toml:"), std::string::npos) << c.error().message;
+  // The eye inside the flat torus (it reaches w = 1): the file and the surface's line, the fix.
+  auto d = parse_scene(head + "type = \"fourd\"\nfourd = \"flat_torus\"\nfourd_eye_distance = 1.0\n", "d.toml", ".");
+  ASSERT_FALSE(d);
+  EXPECT_NE(d.error().message.find("d.toml:6: 'fourd_eye_distance'"), std::string::npos) << d.error().message;
+  EXPECT_NE(d.error().message.find("make fourd_eye_distance larger than"), std::string::npos) << d.error().message;
 }
 
 }  // namespace
