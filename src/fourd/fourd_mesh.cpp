@@ -60,7 +60,31 @@ void compute_normals(FourdMesh& m) {
   }
 }
 
+Status eye_error(const Spec& spec, double w_max) {
+  if (spec.projection != Projection4::kPerspective || w_max < 0.95 * spec.eye_distance) return ok_status();
+  char text[256];
+  std::snprintf(text, sizeof text,
+                "puts the 4D eye (at w = %g) inside or too near the rotated surface, whose largest w is %.3g; "
+                "make fourd_eye_distance larger than %.3g (e.g. fourd_eye_distance = %g)",
+                spec.eye_distance, w_max, w_max / 0.95, std::ceil(w_max / 0.95 + 0.5));
+  return make_error(text);
+}
+
 }  // namespace
+
+Status check_eye(const Spec& spec) {
+  const glm::ivec2 grid = default_grid(spec.kind);
+  const int nu = spec.nu > 0 ? spec.nu : grid.x, nv = spec.nv > 0 ? spec.nv : grid.y;
+  const KnottedArc arc = (spec.kind == SurfaceKind::kSpunTrefoil || spec.kind == SurfaceKind::kTwistSpunTrefoil)
+                             ? KnottedArc::make(spec.kind == SurfaceKind::kTwistSpunTrefoil)
+                             : KnottedArc{};
+  const glm::dmat4 rotation = rotation_from_deg(spec.rotation_deg);
+  double w_max = -1e300;
+  for (int j = 0; j <= nv; ++j)
+    for (int i = 0; i <= nu; ++i)
+      w_max = std::max(w_max, (rotation * surface_point(spec.kind, double(i) / nu, double(j) / nv, spec.twists, &arc)).w);
+  return eye_error(spec, w_max);
+}
 
 double FourdMesh::tri_w_min(std::size_t f) const {
   const glm::uvec3 t = triangles[f];
@@ -94,14 +118,7 @@ Result<FourdMesh> build_fourd_mesh(const Spec& spec) {
       m.w_max = std::max(m.w_max, v.w);
       m.vertices.push_back(v);
     }
-  if (spec.projection == Projection4::kPerspective && m.w_max >= 0.95 * spec.eye_distance) {
-    char text[256];
-    std::snprintf(text, sizeof text,
-                  "puts the 4D eye (at w = %g) inside or too near the rotated surface, whose largest w is %.3g; "
-                  "make fourd_eye_distance larger than %.3g (e.g. fourd_eye_distance = %g)",
-                  spec.eye_distance, m.w_max, m.w_max / 0.95, std::ceil(m.w_max / 0.95 + 0.5));
-    return make_error(text);
-  }
+  if (Status eye = eye_error(spec, m.w_max); !eye) return eye.error();
   for (Vertex4& v : m.vertices) v.p3 = project(v.p4, spec.projection, spec.eye_distance).p3;
   auto index = [&m](int i, int j) { return static_cast<std::uint32_t>(j * (m.nu + 1) + i); };
   auto add = [&m](std::uint32_t a, std::uint32_t b, std::uint32_t c) {

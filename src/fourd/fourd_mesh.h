@@ -43,6 +43,9 @@ struct FourdMesh {
 // vertex with w >= 0.95 eye_distance; the message, worded to follow "'fourd_eye_distance' ",
 // gives the surface's largest w and a value that works), grid too small.
 Result<FourdMesh> build_fourd_mesh(const Spec& spec);
+// Only that check, without building triangles or neighbours (cheap at any grid: the scene
+// reader runs it).
+Status check_eye(const Spec& spec);
 
 // Twice the median |w change| along a mesh edge: the default w_slack of the local models
 // (fourd/local_model.h says why).

@@ -54,11 +54,11 @@ void read_fourd_keys(TableReader& r, Surface& out) {
             "\"twist_spun_trefoil\" (e.g. fourd = \"roman\")");
   r.require(f.kind == fourd::SurfaceKind::kTwistSpunTrefoil || !r.has("fourd_twists"), "fourd_twists",
             "applies only to fourd = \"twist_spun_trefoil\"");
-  // A perspective eye inside the rotated surface is found only by building it (a few ms): here,
+  // A perspective eye inside the rotated surface is found only by sampling it (a few ms): here,
   // so the error names this file and line instead of surfacing later from the renderer.
   if (r.ok() && f.projection == fourd::Projection4::kPerspective) {
-    const Result<fourd::FourdMesh> mesh = fourd::build_fourd_mesh(f);
-    if (!mesh) r.fail("fourd_eye_distance", mesh.error().message);
+    const Status eye = fourd::check_eye(f);
+    if (!eye) r.fail("fourd_eye_distance", eye.error().message);
   }
 }
 
