@@ -30,6 +30,8 @@ layout(binding = 2) uniform sampler2D u_gabor_tile;  // baked tile: RGBA32F (1),
 
 layout(location = 0) in vec3 v_world;
 layout(location = 1) in vec3 v_normal;
+layout(location = 2) in vec3 v_color;  // per-vertex colour (4D depth on fourd surfaces), else 1
+layout(location = 3) in float v_w4;    // 4D depth w (fourd surfaces), else 0
 
 layout(location = 0) out vec4 o_color;
 layout(location = 1) out vec4 o_normal;
@@ -43,7 +45,7 @@ const float kFar = 1.0e30;
 float no_probe_distance() { return uintBitsToFloat(0x7fc00000u); }
 
 vec3 shade_surface(vec3 n) {
-  vec3 albedo = u_albedo.rgb;
+  vec3 albedo = u_albedo.rgb * v_color;
   if (u_albedo.a > 0.5) albedo *= texture(u_albedo_tex, (v_world.xy - u_albedo_scale.yz) / u_albedo_scale.x).rgb;
   float lambert = max(dot(n, -u_light_dir.xyz), 0.0);
   return albedo * u_light_color.rgb * (u_light_dir.w + (1.0 - u_light_dir.w) * lambert);
@@ -144,7 +146,21 @@ vec2 normal_distance(vec3 p, vec3 n, vec2 uv0) {
   return vec2(kFar, 0.0);
 }
 
+// Cutaway (seed 000 §6.3): a fragment of another sheet than the probe's, within u_cutaway.w of
+// the segment from the eye to the probe and in front of the probe, is not drawn.
+bool cut_away() {
+  if (u_cutaway.w <= 0.0 || abs(v_w4 - u_sheet.y) <= u_sheet.z) return false;
+  vec3 probe = u_cutaway.xyz;
+  vec3 dir = u_eye.w > 0.5 ? probe - u_eye.xyz : u_eye.xyz;  // eye -> probe
+  float len2 = dot(dir, dir);
+  if (len2 <= 0.0) return false;
+  float t = dot(v_world - probe, dir) / len2;  // < 0: between the eye and the probe
+  if (t >= 0.0 || (u_eye.w > 0.5 && t < -1.0)) return false;
+  return length(v_world - (probe + t * dir)) < u_cutaway.w;
+}
+
 void main() {
+  if (cut_away()) discard;
   vec3 n = normalize(gl_FrontFacing ? v_normal : -v_normal);
   vec3 rgb = shade_surface(n);
   float intensity = 0.0, d = kFar, tex_sigmas = 0.0;
@@ -153,9 +169,15 @@ void main() {
   vec2 hc;
   if (u_ref_n.w > 0.5) {
     hc = normal_distance(v_world, n, uv);
-    d = hc.x;
   } else {
     hc = probe_height(uv);
+  }
+  // A surface embedded in 4D: the pseudo-shadow falls on the probe's sheet only; where another
+  // sheet crosses it in the image (another w), that sheet is "no probe here" (docs/fourd.md).
+  if (u_sheet.x > 0.5 && abs(v_w4 - u_sheet.y) > u_sheet.z) hc = vec2(kFar, 0.0);
+  if (u_ref_n.w > 0.5) {
+    d = hc.x;
+  } else {
     d = hc.x >= kFar ? kFar : hc.x - dot(v_world, u_ref_n.xyz);
   }
   IntensityCurve curve = IntensityCurve(u_intensity.x, u_intensity.y, u_intensity.z, u_intensity.w);

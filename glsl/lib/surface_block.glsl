@@ -21,4 +21,10 @@ layout(std140, binding = 0) uniform SurfaceBlock {
   GaborBlock u_gabor;    // the material's texture (lib/gabor_block.glsl)
   vec4 u_body_spheres[kMaxBodyCasters];  // bodies casting on this surface: centre mm, radius mm
   uvec4 u_body_count;    // x: how many of u_body_spheres are set (lib/body_shadow.glsl)
+  vec4 u_sheet;          // x: 1 = pseudo-shadow on one sheet of a surface embedded in 4D only;
+                         // y: that sheet's w; z: the band of w around y that is that sheet;
+                         // w: crossing diagram, mm nearer the eye per unit of w (0: off)
+  vec4 u_cutaway;        // xyz: the probe's centre mm; w: cutaway radius mm (0: off), fourd only
+  vec4 u_eye;            // xyz: the camera position mm (perspective) or its view direction
+                         // (orthographic); w: 1 perspective, 0 orthographic
 };

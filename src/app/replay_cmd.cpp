@@ -31,7 +31,7 @@ struct ReplayArgs {
   std::string events, audio;  // docs/sound.md
   long long every = 1;
   double fps = 30.0;
-  bool quiet = false, show_probe = false, show_device = false;
+  bool quiet = false, show_probe = false, show_device = false, show_path = false;
 };
 
 void declare(cli::Command& cmd, ReplayArgs& a) {
@@ -64,6 +64,8 @@ void declare(cli::Command& cmd, ReplayArgs& a) {
   app.add_flag("--show-probe", a.show_probe, "also draw the probe itself (the haptic proxy) in the frames");
   app.add_flag("--show-device", a.show_device,
                "also draw the device's own position faintly (the gap to the proxy is the pseudo-haptic feedback)");
+  app.add_flag("--show-path", a.show_path,
+               "on a surface embedded in 4D, also draw the probe's path coloured by its 4D depth (docs/fourd.md)");
   cli::add_quiet_option(app, a.quiet, "no progress");
   cmd.usage("pseudoshadow replay --log FILE --out DIR [options]");
 }
@@ -93,6 +95,7 @@ Result<std::unique_ptr<Renderer>> make_renderer(const ReplayArgs& a, const Scene
   if (!renderer) return renderer.error();
   renderer.value()->set_show_probe(a.show_probe);
   renderer.value()->set_show_device(a.show_device);
+  renderer.value()->set_show_path(a.show_path);
   return std::move(renderer.value());
 }
 

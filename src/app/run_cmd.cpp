@@ -275,6 +275,7 @@ std::string screenshot_state(const TuneSession& tune) {
 }
 
 void edit_live_charges(Session& s, bool add);  // below, with the reload
+void turn_fourd_surfaces(Session& s, int (&steps)[6]);  // below: keys 1-6, a 4D turn
 
 Status handle_keys(Session& s, int w, int h) {
   WindowInput& in = s.input;
@@ -306,6 +307,7 @@ Status handle_keys(Session& s, int w, int h) {
     s.going_back = true;
   }
   in.add_charge = in.remove_charge = false;
+  turn_fourd_surfaces(s, in.turn4);
   Camera cam = s.tune->renderer().scene().camera;
   apply_orbit_zoom(in, cam);
   s.tune->renderer().set_camera(cam);
@@ -360,6 +362,20 @@ void edit_live_charges(Session& s, bool add) {
     --c.count;
   }
   s.loop->live_charges().publish(c);
+}
+
+// Keys 1-6 (Shift: back): the fourd surfaces turn 5 degrees in a 4D plane; the renderer is
+// rebuilt with the new orientation (the 3D image reprojected) and, like after a panel edit, the
+// frame loop hands the haptic thread a haptic scene built with it (the proxy kept).
+void turn_fourd_surfaces(Session& s, int (&steps)[6]) {
+  const auto edits = fourd_turn_edits(s.tune->renderer().scene(), steps);
+  for (int& n : steps) n = 0;
+  if (edits.empty()) return;
+  for (const auto& [key, value] : edits)
+    if (Status st = s.tune->set(key, value); !st) {
+      std::fprintf(stderr, "4D turn: %s\n", st.error().message.c_str());
+      return;
+    }
 }
 
 // A reloaded scene may feel different too (surfaces, materials' haptic keys, fields, bodies):

@@ -18,6 +18,7 @@ constexpr RunKey kRunKeys[] = {
     {"right drag", "orbit camera"},
     {"Shift+scroll", "zoom"},
     {"C, Shift+C", "charge +/-"},
+    {"1-6 / Shift", "4D turn +/-5"},
     {"Bksp", "back a scene"},
     {"M", "grab mouse"},
     {"P / D", "probe / hand"},

@@ -21,6 +21,7 @@ Status drive_frame(Renderer& renderer, HapticLoop& loop, std::uint64_t frame, Ha
   if (state.have_sample) renderer.advance_deformation(state.time_s);
   renderer.set_view_offset(state.view_offset_mm);
   if (state.have_sample) renderer.set_device_position(state.device_mm);
+  renderer.set_probe_sheet(state.sheet_surface, state.sheet_w4);
   const std::span<const glm::dvec3> bodies(state.body_mm.data(), static_cast<std::size_t>(state.body_count));
   renderer.set_body_positions(bodies);
   const LiveCharges live = loop.live_charges().read();

@@ -154,7 +154,9 @@ bool TunePanel::has_world_knobs(const Scene& scene) {
     if (scene.surfaces[i].visual_stretch != glm::dvec3(1.0) &&
         std::find(stretched_.begin(), stretched_.end(), static_cast<int>(i)) == stretched_.end())
       stretched_.push_back(static_cast<int>(i));
-  return !stretched_.empty() || !scene.bodies.empty();
+  const bool fourd = std::any_of(scene.surfaces.begin(), scene.surfaces.end(),
+                                 [](const Surface& s) { return s.type == SurfaceType::kFourd; });
+  return !stretched_.empty() || !scene.bodies.empty() || fourd;
 }
 
 void TunePanel::world_section(TuneSession& session) {
@@ -166,6 +168,25 @@ void TunePanel::world_section(TuneSession& session) {
     const std::string key = "surfaces." + std::to_string(i) + ".visual_stretch";
     if (slider("surface " + std::to_string(i) + " drawn stretch", key, v, 3, 0.25f, 4.f, true))
       apply(session, key, vec_text(v));
+  }
+  // Surfaces embedded in 4D (docs/fourd.md): the six 4D rotation angles (the image reprojected
+  // at each edit, like keys 1-6) and the force suggestions' gains (0 and 0: off).
+  static constexpr const char* kPlanes[6] = {"xy", "xz", "xw", "yz", "yw", "zw"};  // fourd::kRotationPlanes
+  for (std::size_t i = 0; i < scene.surfaces.size(); ++i) {
+    const Surface& s = scene.surfaces[i];
+    if (s.type != SurfaceType::kFourd) continue;
+    const std::string prefix = "surfaces." + std::to_string(i) + ".";
+    for (int p = 0; p < 6; ++p) {
+      float a = static_cast<float>(s.fourd.rotation_deg[static_cast<std::size_t>(p)]);
+      const std::string key = prefix + "fourd_rotation_" + kPlanes[p] + "_deg";
+      if (slider("4D turn " + std::string(kPlanes[p]) + " (deg)", key, &a, 1, -180.f, 180.f, false))
+        apply(session, key, number(a));
+    }
+    float kp = static_cast<float>(s.fourd.suggest_kp_n_per_mm), kv = static_cast<float>(s.fourd.suggest_kv_n_s_per_mm);
+    if (slider("suggestion K_p (N/mm, 0: off)", prefix + "fourd_suggest_kp_n_per_mm", &kp, 1, 0.f, 2.f, false))
+      apply(session, prefix + "fourd_suggest_kp_n_per_mm", number(kp));
+    if (slider("suggestion K_v (N s/mm)", prefix + "fourd_suggest_kv_n_s_per_mm", &kv, 1, 0.f, 0.05f, false))
+      apply(session, prefix + "fourd_suggest_kv_n_s_per_mm", number(kv));
   }
   for (std::size_t b = 0; b < scene.bodies.size(); ++b) {
     float t = static_cast<float>(scene.bodies[b].time_scale);

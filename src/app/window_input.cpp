@@ -1,5 +1,9 @@
 #include "app/window_input.h"
 
+#include "scene/scene.h"
+
+#include <cstdio>
+
 #define GLFW_INCLUDE_NONE
 #include <GLFW/glfw3.h>
 
@@ -62,6 +66,25 @@ void handle_key(WindowInput& in, int key, int action, int mods) {
   if (key == GLFW_KEY_BACKSPACE) in.back = true;
   if (key == GLFW_KEY_C) ((mods & GLFW_MOD_SHIFT) ? in.remove_charge : in.add_charge) = true;
   if (key == GLFW_KEY_ESCAPE || key == GLFW_KEY_Q) in.quit = true;
+  if (key >= GLFW_KEY_1 && key <= GLFW_KEY_6) in.turn4[key - GLFW_KEY_1] += (mods & GLFW_MOD_SHIFT) ? -1 : 1;
+}
+
+std::vector<std::pair<std::string, std::string>> fourd_turn_edits(const Scene& scene, const int steps[6],
+                                                                  double step_deg) {
+  static constexpr const char* kPlanes[6] = {"xy", "xz", "xw", "yz", "yw", "zw"};  // fourd::kRotationPlanes
+  std::vector<std::pair<std::string, std::string>> out;
+  for (std::size_t i = 0; i < scene.surfaces.size(); ++i) {
+    if (scene.surfaces[i].type != SurfaceType::kFourd) continue;
+    for (int p = 0; p < 6; ++p) {
+      if (steps[p] == 0) continue;
+      // Kept within (-360, 360]: the scene key's range is +-3600 and a long session could pass it.
+      const double deg = std::fmod(scene.surfaces[i].fourd.rotation_deg[static_cast<std::size_t>(p)] + steps[p] * step_deg, 360.0);
+      char value[32];
+      std::snprintf(value, sizeof value, "%.6g", deg);
+      out.emplace_back("surfaces." + std::to_string(i) + ".fourd_rotation_" + kPlanes[p] + "_deg", value);
+    }
+  }
+  return out;
 }
 
 void handle_scroll(WindowInput& in, double dy, bool shift) {

@@ -4,11 +4,17 @@
 // so the key handling is testable headless.
 #pragma once
 
+#include <string>
+#include <utility>
+#include <vector>
+
 #include "scene/scene.h"
 
 struct GLFWwindow;
 
 namespace ps {
+
+struct Scene;
 
 struct WindowInput {
   double scroll_zoom = 0.0;     // accumulated Shift+scroll steps (camera zoom)
@@ -29,7 +35,17 @@ struct WindowInput {
   bool dragging = false;        // right button held
   double last_x = 0.0, last_y = 0.0;
   double orbit_dx = 0.0, orbit_dy = 0.0;  // accumulated drag, pixels
+  // 1 ... 6 (Shift: the other way): steps of a 4D turn of the scene's fourd surfaces in the xy,
+  // xz, xw, yz, yw, zw plane (docs/fourd.md), not handled yet
+  int turn4[6] = {0, 0, 0, 0, 0, 0};
 };
+
+// The scene edits (--set KEY, VALUE) that turn every fourd surface of `scene` by
+// steps[i] x step_deg in plane i (fourd::kRotationPlanes order); none when no step is set or
+// the scene has no fourd surface. `run` applies them like panel edits (renderer and haptic
+// scene rebuilt), so the 3D image is reprojected live.
+std::vector<std::pair<std::string, std::string>> fourd_turn_edits(const Scene& scene, const int steps[6],
+                                                                  double step_deg = 5.0);
 
 // A key event (GLFW key, action, mods): presses and, for the height keys, repeats count.
 void handle_key(WindowInput& input, int key, int action, int mods);

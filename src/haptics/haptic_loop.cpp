@@ -149,6 +149,7 @@ void HapticLoop::adopt_pending_scene(Clock::Ns now) {
   const bool had_proxy = god_ && god_->initialized();
   const glm::dvec3 proxy = local_.proxy_mm;
   god_.emplace(*pending_);  // GodObject holds no heap memory: nothing is freed on this thread
+  crossing_.reset();
   if (had_proxy) god_->reset(proxy);
   // The new scene's bodies start afresh (a rare event: the vectors' old storage is freed here).
   bodies_ = world::BodySet(pending_->bodies(), pending_->fields().gravity_mm_s2());
@@ -270,6 +271,49 @@ glm::dvec3 HapticLoop::navigate(double dt) {
   return -nav.wall_n_per_mm * past;
 }
 
+// Seed 000 §5: a cue each time the proxy's contact point on a surface embedded in 4D passes
+// through another sheet of it (docs/fourd.md); value +1 in front of it, -1 behind it.
+void HapticLoop::detect_crossing(double t) {
+  glm::dvec3 point(0.0);
+  int surface = -1;
+  double w = 0.0;
+  const fourd::FourdTouch* touch = nullptr;
+  if (god_ && god_->sheet(surface, w, &point)) touch = god_->scene().fourd_touch(surface);
+  if (touch == nullptr) {
+    crossing_.reset();
+    return;
+  }
+  const int c = crossing_.update(*touch, point, w, touch->window(w, w));
+  if (c == 0) return;
+  HapticEvent e;
+  e.kind = EventKind::sheet_crossing;
+  e.tick = local_.tick;
+  e.time_s = t;
+  e.surface = surface;
+  e.value = c;
+  e.position_mm = point;
+  events_.push(e);
+}
+
+glm::dvec3 HapticLoop::suggestion_force(double dt) {
+  glm::dvec3 point(0.0);
+  int surface = -1;
+  double w = 0.0;
+  if (!god_ || !god_->sheet(surface, w, &point)) {
+    have_sheet_point_ = false;
+    return glm::dvec3(0.0);
+  }
+  const fourd::SuggestionParams p = god_->scene().fourd_suggestion(surface);
+  const glm::dvec3 v = have_sheet_point_ && dt > 0.0 ? (point - last_sheet_point_) / dt : glm::dvec3(0.0);
+  last_sheet_point_ = point;
+  have_sheet_point_ = true;
+  if (!p.on()) return glm::dvec3(0.0);
+  const glm::dvec3 n = glm::normalize(local_.proxy_mm - point);  // the facet's normal on the proxy's side
+  glm::dvec3 p_des, v_des;
+  fourd::desired_state(p, point, local_.velocity_mm_s, n, p_des, v_des);
+  return fourd::force_suggestion_n(p, p_des, point, v_des, v, n);
+}
+
 void HapticLoop::tick(Clock::Ns now) {
   if (swap_pending_.load(std::memory_order_acquire)) adopt_pending_scene(now);
   // T of the filter = the measured tick period: after a preemption sleep_until() runs the
@@ -330,7 +374,10 @@ void HapticLoop::tick(Clock::Ns now) {
     local_.force_n = f.force_n;
     local_.penetration_mm = f.penetration_mm;
     local_.in_contact = f.in_contact;
-    device_.write_force(f.force_n);
+    if (!god_ || !god_->sheet(local_.sheet_surface, local_.sheet_w4)) local_.sheet_surface = -1;
+    detect_crossing(t);
+    if (f.in_contact) local_.force_n += suggestion_force(dt);
+    device_.write_force(local_.force_n);
   }
   local_.time_s = t;
   local_.rejected = sanitizer_.counts();

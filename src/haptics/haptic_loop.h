@@ -29,6 +29,7 @@
 #include "haptics/loop_stats.h"
 #include "world/bodies.h"
 #include "world/buttons.h"
+#include "fourd/crossing.h"
 #include "world/god_object.h"
 
 namespace ps {
@@ -91,6 +92,10 @@ struct HapticState {
   // workspace's origin). position_mm, device_mm and proxy_mm are world positions (the device's
   // own plus this offset); the renderer moves its camera by it.
   glm::dvec3 view_offset_mm{0.0};
+  // haptic scene: the sheet of a surface embedded in 4D the proxy keeps to (docs/fourd.md):
+  // its surface index (-1: none) and the 4D depth w there
+  int sheet_surface = -1;
+  double sheet_w4 = 0.0;
   bool have_sample = false, in_contact = false;
   double rate_hz = 0.0;              // over the last second
   double jitter_p99_us = 0.0;        // |period - nominal|, p99 over the last second
@@ -163,6 +168,13 @@ class HapticLoop {
   glm::dvec3 navigate(double dt);
   glm::dvec3 view_offset_{0.0};
   std::optional<world::GodObject> god_;  // set when a haptic scene is given
+  fourd::CrossingDetector crossing_;     // sheet crossings on a surface embedded in 4D
+  void detect_crossing(double t);        // after the proxy moved: a sheet_crossing event?
+  // Eq. 5's force suggestion on a fourd sheet (zero when off or off the sheet); keeps the
+  // contact point to difference its velocity.
+  glm::dvec3 suggestion_force(double dt);
+  glm::dvec3 last_sheet_point_{0.0};
+  bool have_sheet_point_ = false;
   world::BodySet bodies_;                // the scene's bodies (reset with each scene)
   world::ButtonSet buttons_;             // the scene's buttons (reset with each scene)
   void press_buttons(const glm::dvec3& anchor, double t, glm::dvec3& force);

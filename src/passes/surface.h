@@ -47,8 +47,16 @@ struct SurfaceBlock {
   GaborBlock gabor;
   glm::vec4 body_spheres[kMaxSceneBodies]{};  // bodies casting on this surface: centre, radius (mm)
   glm::uvec4 body_count{0u};                  // x: how many body_spheres are set
+  // x: 1 = the pseudo-shadow falls on one sheet of a surface embedded in 4D only (fourd: the
+  // probe's sheet); y: that sheet's w; z: half-width of the band of w that counts as it.
+  glm::vec4 sheet{0.0f};
+  // Cutaway of the other sheets between the eye and the probe (seed 000 §6.3): xyz the probe's
+  // centre, w the radius (0: off); eye: xyz the camera position (perspective, w = 1) or its
+  // view direction (orthographic, w = 0).
+  glm::vec4 cutaway{0.0f};
+  glm::vec4 eye{0.0f};
 };
-static_assert(sizeof(SurfaceBlock) == 64 + 10 * 16 + sizeof(GaborBlock) + (kMaxSceneBodies + 1) * 16,
+static_assert(sizeof(SurfaceBlock) == 64 + 10 * 16 + sizeof(GaborBlock) + (kMaxSceneBodies + 4) * 16,
               "SurfaceBlock must match std140 layout");
 
 // The distance AOV's value (aov().y) wherever no probe is above the pixel: outside the probe's

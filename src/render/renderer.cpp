@@ -1,5 +1,7 @@
 #include "render/renderer.h"
 
+#include "fourd/fourd_mesh.h"  // depth_colour: the probe path on 4D sheets
+
 #include "render/button_pictures.h"
 #include "render/field_map.h"
 
@@ -147,6 +149,14 @@ Status Renderer::upload_surfaces() {
     if (!mesh) return mesh.error();
     if (s.visual_stretch != glm::dvec3(1.0)) stretch_mesh(mesh.value(), s);
     geometry_.surface_bounds.push_back(mesh_bounds(mesh.value()));
+    Geometry::Sheets sheets;
+    if (!mesh->w4.empty()) {
+      sheets.positions = mesh->positions;
+      sheets.w4 = mesh->w4;
+      sheets.w_min = *std::min_element(sheets.w4.begin(), sheets.w4.end());
+      sheets.w_max = *std::max_element(sheets.w4.begin(), sheets.w4.end());
+    }
+    geometry_.surface_sheets.push_back(std::move(sheets));
     if (s.deform.enabled) {
       Deformed d;
       d.surface = static_cast<int>(geometry_.surface_meshes.size());
@@ -420,6 +430,32 @@ std::vector<SurfaceDraw> Renderer::surface_draws(const FramePlan& plan) {
     d.albedo = ms.albedo ? &ms.albedo : nullptr;
     d.gabor_tile = ms.gabor_tile.get();
     d.gabor_tile_linear = ms.bake_plan.linear;
+    const Geometry::Sheets& sheets = geometry_.surface_sheets[i];
+    if (!sheets.w4.empty()) {
+      // The probe's sheet: the haptic proxy's (set_probe_sheet), else the nearest vertex's. The
+      // band is 15 % of the surface's w range: wide enough for the sheet's own w change across
+      // the shadow window (a few mm), far narrower than the w gap where sheets cross.
+      double w = sheet_w4_;
+      if (sheet_surface_ != static_cast<int>(i)) {
+        float best = std::numeric_limits<float>::infinity();
+        const glm::vec3 probe(scene_.probe.position);
+        for (std::size_t v = 0; v < sheets.positions.size(); ++v) {
+          const glm::vec3 dv = sheets.positions[v] - probe;
+          const float d2 = glm::dot(dv, dv);
+          if (d2 < best) best = d2, w = sheets.w4[v];
+        }
+      }
+      d.block.sheet = glm::vec4(1.0f, static_cast<float>(w), 0.15f * (sheets.w_max - sheets.w_min), 0.0f);
+      const fourd::Spec& spec = scene_.surfaces[i].fourd;
+      d.block.sheet.w = static_cast<float>(spec.crossing_diagram_mm);
+      if (spec.cutaway_mm > 0.0 || spec.crossing_diagram_mm > 0.0) {
+        const Camera& cam = scene_.camera;
+        const bool persp = cam.projection == Projection::kPerspective;
+        d.block.cutaway = glm::vec4(glm::vec3(scene_.probe.position), static_cast<float>(spec.cutaway_mm));
+        d.block.eye = persp ? glm::vec4(glm::vec3(cam.position), 1.0f)
+                            : glm::vec4(glm::vec3(glm::normalize(cam.target - cam.position)), 0.0f);
+      }
+    }
     draws.push_back(std::move(d));
   }
   return draws;
@@ -506,7 +542,7 @@ Status Renderer::render_frame() {
     run_probe_view();
     timer.lap("probe_view");
   }
-  if (!body_positions_.empty() || !markers_.empty() || show_device_) {
+  if (!body_positions_.empty() || !markers_.empty() || show_device_ || !path_.empty()) {
     run_world_view();
     timer.lap("world_view");
   }
@@ -547,6 +583,27 @@ std::vector<SphereCaster> Renderer::body_casters() const {
   return out;
 }
 
+void Renderer::set_probe_sheet(int surface, double w4) {
+  sheet_surface_ = surface;
+  sheet_w4_ = w4;
+  const bool on_sheet = surface >= 0 && static_cast<std::size_t>(surface) < geometry_.surface_sheets.size() &&
+                        !geometry_.surface_sheets[static_cast<std::size_t>(surface)].w4.empty();
+  if (!show_path_ || !on_sheet) {
+    path_break_ = true;  // off every sheet (lifted): the path starts a new piece
+    return;
+  }
+  const Geometry::Sheets& sheets = geometry_.surface_sheets[static_cast<std::size_t>(surface)];
+  const double range = sheets.w_max - sheets.w_min;
+  const glm::dvec3 colour = fourd::depth_colour(range > 0.0 ? (w4 - sheets.w_min) / range : 0.5);
+  const glm::dvec3 p = scene_.probe.position;
+  // A tube from the last point, unless the probe left the sheet since (lifted and put down).
+  constexpr double kPathRadiusMm = 0.6;
+  const bool joined = !path_.empty() && !path_break_;
+  path_break_ = false;
+  if (joined && glm::length(p - path_.back().b) < 0.25) return;  // closer than a segment is worth
+  path_.push_back({joined ? path_.back().b : p, p, kPathRadiusMm, colour});
+}
+
 void show_world_at_start(Renderer& renderer) {
   const Scene& sc = renderer.scene();
   const std::vector<glm::dvec3> bodies = start_positions(sc);
@@ -570,12 +627,13 @@ void Renderer::run_world_view() {
     in.color = m < scene_.materials.size() ? scene_.materials[m].albedo : ProbeViewPass::kColor;
     body_view_.run(in);
   }
-  for (const WorldMarker& m : markers_) {
-    in.probe = ProbeInput{};
-    in.probe.capsule = CapsuleShape{m.a, m.b, m.radius_mm};
-    in.color = m.color;
-    body_view_.run(in);
-  }
+  for (const std::vector<WorldMarker>* list : {&path_, &markers_})
+    for (const WorldMarker& m : *list) {
+      in.probe = ProbeInput{};
+      in.probe.capsule = CapsuleShape{m.a, m.b, m.radius_mm};
+      in.color = m.color;
+      body_view_.run(in);
+    }
   if (show_device_) {
     // The probe's shape at the device, faint: where the hand is, against where the proxy is drawn.
     in.probe = probe_input();

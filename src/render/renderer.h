@@ -134,6 +134,15 @@ class Renderer {
   // The device's own position, drawn as a faint ghost of the probe when shown, so the gap
   // between hand and proxy (pseudo-haptic coupling) can be seen. Off by default.
   void set_device_position(const glm::dvec3& position) { device_position_ = position; }
+  // The sheet of a surface embedded in 4D the probe keeps to (HapticState::sheet_surface and
+  // sheet_w4): that surface shows the pseudo-shadow on this sheet only (docs/fourd.md).
+  // surface -1 (the default, and `render` without haptics): the sheet of the vertex nearest
+  // the probe.
+  // With set_show_path(true), each call on a sheet also adds the probe's position (as last set
+  // by set_probe_state) to its path, drawn after the pseudo-shadow as a tube coloured by w
+  // (fourd::depth_colour over the surface's w range; seed 000 Fig. 5c).
+  void set_probe_sheet(int surface, double w4);
+  void set_show_path(bool show) { show_path_ = show; }
   void set_show_device(bool show) { show_device_ = show; }
   bool show_device() const { return show_device_; }
   // Seed 002 §6's bendable polygons (world/deformable.h): moves every deformable surface's
@@ -163,6 +172,14 @@ class Renderer {
   struct Geometry {
     std::vector<GpuMesh> surface_meshes;  // index = Scene::surfaces
     std::vector<Aabb> surface_bounds;     // the same surfaces' world bounds (the plan's input)
+    // Surfaces embedded in 4D: the vertices and their w (empty for other surfaces), to find the
+    // probe's sheet without haptics.
+    struct Sheets {
+      std::vector<glm::vec3> positions;
+      std::vector<float> w4;
+      float w_min = 0.0f, w_max = 0.0f;
+    };
+    std::vector<Sheets> surface_sheets;   // index = Scene::surfaces
     GpuMesh probe_mesh;                   // mesh probes only
     Aabb probe_mesh_bounds;               // model space, scaled
   };
@@ -231,6 +248,11 @@ class Renderer {
   ProbeViewPass probe_view_;
   bool show_probe_ = false;
   glm::dvec3 view_offset_{0.0};
+  int sheet_surface_ = -1;  // set_probe_sheet
+  double sheet_w4_ = 0.0;
+  bool show_path_ = false;
+  bool path_break_ = true;
+  std::vector<WorldMarker> path_;  // the probe's path on 4D sheets: segments coloured by w
   void run_world_view();           // bodies and the device ghost, over the colour image
   ProbeViewPass body_view_, ghost_view_;  // initialised on first use (own mesh caches)
   bool world_view_ready_ = false;

@@ -43,6 +43,7 @@ double felt_radius(const Surface& s) {
     case SurfaceType::kPlane:
     case SurfaceType::kHeightField: return 0.5 * glm::length(s.size_mm) + std::abs(s.height_mm);
     case SurfaceType::kMesh: return 100.0 * s.scale;  // unknown without loading it: generous
+    case SurfaceType::kFourd: return 3.0 * s.scale;    // the shipped surfaces' images lie within ~2 units
   }
   return 0.0;
 }

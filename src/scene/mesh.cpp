@@ -19,6 +19,7 @@ Result<Mesh> local_mesh(const Surface& s) {
       return mesh_detail::make_height_field(s.heightmap, s.size_mm, s.height_mm, s.resolution);
     case SurfaceType::kMesh: return load_mesh_file(s.mesh_file);
     case SurfaceType::kBox: return mesh_detail::make_box(s.box_size_mm);
+    case SurfaceType::kFourd: return mesh_detail::make_fourd_mesh(s);
   }
   return make_error("build_surface_mesh: unknown surface type");
 }

@@ -16,6 +16,12 @@ struct Mesh {
   std::vector<glm::vec3> positions;  // mm, world space
   std::vector<glm::vec3> normals;    // unit, outward
   std::vector<std::uint32_t> indices;  // triangles, counter-clockwise seen from outside
+  // Optional per-vertex colour multiplying the material's albedo (linear RGB); empty = white.
+  // Surfaces embedded in 4D carry their 4D-depth colour here (docs/fourd.md).
+  std::vector<glm::vec3> colors;
+  // Optional per-vertex 4D depth w of a surface embedded in 4D (docs/fourd.md); empty = none.
+  // The renderer keeps the pseudo-shadow to the probe's sheet with it.
+  std::vector<float> w4;
   glm::dvec3 bounds_min{0.0}, bounds_max{0.0};  // world-space AABB
 };
 

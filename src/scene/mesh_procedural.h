@@ -19,6 +19,10 @@ Mesh make_box(glm::dvec3 size_mm);
 Result<Mesh> make_height_field(const std::string& image_path, glm::dvec2 size_mm,
                                double height_mm, int resolution);
 
+// type = "fourd": the 3D image of the surface embedded in R^4 (fourd/fourd_mesh.h) times
+// `scale`, each vertex coloured by its 4D depth (fourd::depth_colour).
+Result<Mesh> make_fourd_mesh(const Surface& surface);
+
 void compute_bounds(Mesh& mesh);
 
 }  // namespace ps::mesh_detail

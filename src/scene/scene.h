@@ -9,6 +9,7 @@
 
 #include <glm/glm.hpp>
 
+#include "fourd/spec.h"
 #include "scene/haptic_material.h"
 
 namespace ps {
@@ -83,7 +84,7 @@ struct Material {
   HapticMaterial haptic;  // how it feels (scene/haptic_material.h)
 };
 
-enum class SurfaceType { kPlane, kSphere, kTorus, kHeightField, kMesh, kBox };
+enum class SurfaceType { kPlane, kSphere, kTorus, kHeightField, kMesh, kBox, kFourd };
 
 // Seed 002 §6's bendable polygons (world/deformable.h): the drawn vertices on springs to their
 // rest positions and to their neighbours, dented by the probe; the felt shape stays at rest.
@@ -132,6 +133,9 @@ struct Surface {
   bool field_map = false;
   int field_map_material = -1;
   DeformParams deform;       // deformable + deform_* keys
+  // fourd: a surface embedded in R^4, rotated in 4D and projected to 3D (docs/fourd.md); `scale`
+  // is mm per 4D unit of its 3D image, `center` and `rotation_deg` place that image as usual.
+  fourd::Spec fourd;
   int button = -1;           // >= 0: the plate the scene's [[buttons]] #button adds (not in the file)
   int line = 0;              // line in the scene file, for error messages
 };

@@ -25,7 +25,7 @@ constexpr std::array kShadowDistances = {"reference_plane"sv, "surface_normal"sv
 constexpr std::array kGaborStrategies = {"naive"sv, "stratified"sv, "baked"sv, "auto"sv, "baked_linear"sv};
 // Same order as SurfaceType.
 constexpr std::array kSurfaceTypes = {"plane"sv, "sphere"sv, "torus"sv, "heightfield"sv,
-                                      "mesh"sv,  "box"sv};
+                                      "mesh"sv,  "box"sv,    "fourd"sv};
 
 const Range kLength = Range::positive(kMaxLengthMm);
 const Range kCoordinate = Range::closed(-kMaxLengthMm, kMaxLengthMm);
@@ -212,6 +212,7 @@ Status read_surface(const ParseContext& ctx, const toml::table& table, int index
   r.boolean("touchable", out.touchable);
   r.vec3("visual_stretch", out.visual_stretch, Range::closed(0.1, 10.0));
   r.boolean("field_map", out.field_map);
+  read_fourd_keys(r, out);
   r.require(!out.field_map || out.type == SurfaceType::kPlane || out.type == SurfaceType::kBox, "field_map",
             "needs a plane or a box (the map lies on its top, along world X and Y)");
   r.boolean("deformable", out.deform.enabled);

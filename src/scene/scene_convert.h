@@ -25,6 +25,9 @@ Status read_haptic(const ParseContext& ctx, const toml::table* table, const std:
 Status read_surface(const ParseContext& ctx, const toml::table& table, int index,
                     const std::vector<std::string>& material_names, Surface& out);
 
+// The fourd_* keys of a surface (scene_fourd.cpp); they apply only to type = "fourd".
+void read_fourd_keys(TableReader& r, Surface& out);
+
 // [[fields]] #index and [[bodies]] #index (scene_world.cpp); a body's material resolves like a
 // surface's (empty: material 0).
 Status read_field(const ParseContext& ctx, const toml::table& table, int index, Field& out);

@@ -52,7 +52,15 @@ constexpr std::array kSurfaceKeys = {"type"sv,      "material"sv,        "center
                                      "visible"sv,   "touchable"sv,       "visual_stretch"sv,
                                      "field_map"sv, "deformable"sv,      "deform_base_n_per_mm"sv,
                                      "deform_neighbour_n_per_mm"sv, "deform_damping_n_s_per_mm"sv,
-                                     "deform_mass_g"sv, "deform_max_mm"sv, "deform_max_edge_mm"sv};
+                                     "deform_mass_g"sv, "deform_max_mm"sv, "deform_max_edge_mm"sv,
+                                     // type = "fourd" (scene_fourd.cpp, docs/fourd.md)
+                                     "fourd"sv, "fourd_projection"sv, "fourd_eye_distance"sv,
+                                     "fourd_rotation_xy_deg"sv, "fourd_rotation_xz_deg"sv,
+                                     "fourd_rotation_xw_deg"sv, "fourd_rotation_yz_deg"sv,
+                                     "fourd_rotation_yw_deg"sv, "fourd_rotation_zw_deg"sv,
+                                     "fourd_grid"sv, "fourd_twists"sv, "fourd_local_model"sv,
+                                     "fourd_suggest_kp_n_per_mm"sv, "fourd_suggest_kv_n_s_per_mm"sv,
+                                     "fourd_suggest_lookahead_s"sv, "fourd_cutaway_mm"sv, "fourd_crossing_diagram_mm"sv};
 
 constexpr std::array kFieldKeys = {"type"sv,          "acceleration_mm_s2"sv, "force_n"sv,
                                    "fluctuation_n"sv, "frequency_hz"sv,       "viscosity_n_s_per_mm"sv,

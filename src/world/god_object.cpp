@@ -14,6 +14,7 @@ GodObject::GodObject(const HapticScene& scene, const GodObjectParams& params)
 void GodObject::reset(const glm::dvec3& device_mm) {
   proxy_ = device_mm;
   initialized_ = true;
+  hint_.has_w4 = false;  // no sheet of a 4D surface yet: the next touch picks one
   // Up to a few passes: pushing out of one surface can push into a neighbour.
   for (int pass = 0; pass < 4; ++pass) {
     const Contact c = scene_.closest(proxy_, radius_);
@@ -68,6 +69,15 @@ double GodObject::gap(const glm::dvec3& p, double limit, Contact& c, std::uint32
   c = scene_.closest(p, radius_ + limit, &hint_);
   facets += c.facets_visited;
   if (c.mesh_hit.hit) hint_.mesh_hit = c.mesh_hit;
+  // A surface embedded in 4D, touched (within the query margin): the proxy keeps to this sheet
+  // from now on (eq. 3: the w before this query becomes w_pre).
+  if (c.hit && c.has_w4 && c.distance_mm - radius_ <= params_.query_margin_mm) {
+    hint_.w4_pre = hint_.has_w4 && hint_.surface == c.surface ? hint_.w4 : c.w4;
+    hint_.w4 = c.w4;
+    hint_.has_w4 = true;
+    hint_.surface = c.surface;
+    hint_.point = c.point;
+  }
   return c.hit ? c.distance_mm - radius_ : std::numeric_limits<double>::infinity();
 }
 
@@ -139,6 +149,12 @@ ProxyStep GodObject::move(const glm::dvec3& goal_mm) {
   proxy_ = p;
   out.proxy_mm = p;
   out.planes = count;
+  if (hint_.has_w4 && !touched.hit) {
+    // Clear of its 4D surface's sheet by more than R: let go of it, so the next touch may
+    // land on any sheet (a proxy lifted off and put down elsewhere).
+    Contact c;
+    if (gap(p, radius_, c, out.facets_visited) > radius_) hint_.has_w4 = false;
+  }
   if (touched.hit && glm::length(goal_mm - p) > 1e-9) {
     out.in_contact = true;
     out.surface = touched.surface;

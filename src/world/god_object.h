@@ -56,6 +56,16 @@ class GodObject {
   const HapticScene& scene() const { return scene_; }
   bool initialized() const { return initialized_; }
   double radius_mm() const { return radius_; }
+  // The sheet of a surface embedded in 4D the proxy keeps to (docs/fourd.md): false when it
+  // touches none; else its surface index and the 4D depth w at the last contact.
+  // `point`: if given, the contact point on that sheet, mm.
+  bool sheet(int& surface, double& w4, glm::dvec3* point = nullptr) const {
+    if (!hint_.has_w4) return false;
+    surface = hint_.surface;
+    w4 = hint_.w4;
+    if (point != nullptr) *point = hint_.point;
+    return true;
+  }
 
  private:
   struct Plane {

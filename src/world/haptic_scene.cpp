@@ -8,6 +8,7 @@
 
 #include <glm/gtc/matrix_transform.hpp>
 
+#include "fourd/fourd_mesh.h"
 #include "scene/mesh.h"
 #include "world/shapes.h"
 
@@ -42,7 +43,8 @@ HapticScene::Shape HapticScene::make_shape(const Surface& s, int index) {
       shape.bound_mm = s.radius_mm + s.minor_radius_mm;
       break;
     case SurfaceType::kHeightField:
-    case SurfaceType::kMesh: break;
+    case SurfaceType::kMesh:
+    case SurfaceType::kFourd: break;
   }
   return shape;
 }
@@ -66,7 +68,8 @@ Result<HapticScene> HapticScene::build(const Scene& scene) {
     out.materials_.push_back(m < scene.materials.size() ? scene.materials[m].haptic : HapticMaterial{});
     const HapticMaterial& feel = out.materials_.back();
     if (!s.touchable) continue;  // seen only
-    const bool analytic = s.type != SurfaceType::kMesh && s.type != SurfaceType::kHeightField;
+    const bool analytic = s.type != SurfaceType::kMesh && s.type != SurfaceType::kHeightField &&
+                          s.type != SurfaceType::kFourd;  // fourd: its projected triangles
     if (feel.penetrable) {
       // A penetrable material (water, thick fluid) lets the proxy through: it acts by its
       // viscosity inside (medium_at), not as a constraint. A plane has no inside; a mesh would
@@ -79,9 +82,19 @@ Result<HapticScene> HapticScene::build(const Scene& scene) {
       out.shapes_.push_back(make_shape(s, index));
       continue;
     }
+    const std::string where = scene.path + ":" + std::to_string(s.line) + ": ";
+    if (s.type == SurfaceType::kFourd) {
+      Result<fourd::FourdMesh> f = fourd::build_fourd_mesh(s.fourd);
+      if (!f) return make_error(where + f.error().message);
+      // "adjacency" needs the walk of fourd/local_model.h, not run on the haptic thread yet:
+      // it keeps to the sheet by continuity here (docs/fourd.md).
+      out.fourd_.push_back({index, s.fourd.local_model != fourd::LocalModelKind::kNearest,
+                            fourd::FourdTouch(f.value(), s.scale, euler_xyz_deg(s.rotation_deg), s.center),
+                            {s.fourd.suggest_kp_n_per_mm, s.fourd.suggest_kv_n_s_per_mm, s.fourd.suggest_lookahead_s}});
+      continue;
+    }
     // Height field: the rendered triangles, an image has no closed form. Mesh: the triangles.
     Result<Mesh> mesh = build_surface_mesh(s);
-    const std::string where = scene.path + ":" + std::to_string(s.line) + ": ";
     if (!mesh) return make_error(where + mesh.error().message);
     if (Status st = out.meshes_.add_mesh(mesh.value()); !st) return make_error(where + st.error().message);
     out.mesh_surface_.push_back(index);
@@ -104,7 +117,8 @@ bool HapticScene::inside(const Shape& s, const glm::dvec3& p) {
     }
     case SurfaceType::kPlane:
     case SurfaceType::kHeightField:
-    case SurfaceType::kMesh: break;
+    case SurfaceType::kMesh:
+    case SurfaceType::kFourd: break;
   }
   assert(false && "HapticScene::inside: only spheres, boxes and tori are kept as volumes");
   return false;
@@ -126,7 +140,8 @@ Contact HapticScene::closest_analytic(const Shape& s, const glm::dvec3& p) const
     case SurfaceType::kBox: sp = closest_on_box(local, s.size); break;
     case SurfaceType::kTorus: sp = closest_on_torus(local, s.size.x, s.size.y); break;
     case SurfaceType::kHeightField:
-    case SurfaceType::kMesh: assert(false && "HapticScene::closest_analytic: meshes live in the BVH"); break;
+    case SurfaceType::kMesh:
+    case SurfaceType::kFourd: assert(false && "HapticScene::closest_analytic: meshes live in the BVH"); break;
   }
   Contact c;
   c.hit = true;
@@ -181,6 +196,24 @@ Contact HapticScene::closest(const glm::dvec3& p, double max_distance_mm, const 
     best.normal = h.face_normal;
     best.shaded_normal = h.shaded_normal;
     best.distance_mm = h.distance_mm;
+    limit = h.distance_mm;
+  }
+  for (const FourdShape& f : fourd_) {
+    fourd::WWindow window;
+    if (f.continuity && hint != nullptr && hint->has_w4 && hint->surface == f.surface)
+      window = f.touch.window(hint->w4, hint->w4_pre);
+    const fourd::TouchHit t = f.touch.closest(p, limit, window);
+    best.facets_visited += t.visited;
+    if (!t.hit || t.distance_mm > limit || in_hole(t.point)) continue;
+    best.hit = true;
+    best.surface = f.surface;
+    best.point = t.point;
+    best.normal = t.normal;
+    best.shaded_normal = t.shaded_normal;
+    best.distance_mm = t.distance_mm;
+    best.has_w4 = true;
+    best.w4 = t.w;
+    limit = t.distance_mm;
   }
   return best;
 }

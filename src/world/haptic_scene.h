@@ -24,6 +24,8 @@
 #include "world/buttons.h"
 #include "world/fields.h"
 #include "world/mesh_bvh.h"
+#include "fourd/suggestion.h"
+#include "fourd/touch.h"
 
 namespace ps::world {
 
@@ -36,6 +38,11 @@ struct Contact {
   double distance_mm = 0.0;
   std::uint32_t facets_visited = 0;  // mesh triangles examined by this query (local model)
   MeshHit mesh_hit;                  // the mesh hit (a hint for the next query nearby)
+  // A surface embedded in 4D (type = "fourd", docs/fourd.md): the 4D depth w at `point`. As a
+  // hint, with `surface` the fourd surface the proxy keeps to: the next query of that surface
+  // sees only facets whose w meets eq. 4's window around w4 (w4_pre: the w before it).
+  bool has_w4 = false;
+  double w4 = 0.0, w4_pre = 0.0;
 };
 
 // Shapes are rotated with scene/mesh.h's euler_xyz_deg, the renderer's own convention, so an
@@ -69,8 +76,25 @@ class HapticScene {
   const Navigation& navigation() const { return navigation_; }  // [navigation] (Field's box)
   double probe_radius_mm() const { return probe_radius_mm_; }
   std::size_t analytic_count() const { return shapes_.size(); }
-  std::size_t triangle_count() const { return meshes_.triangle_count(); }  // overall model
+  // Overall model: the BVH's triangles and those of the surfaces embedded in 4D.
+  std::size_t triangle_count() const {
+    std::size_t n = meshes_.triangle_count();
+    for (const FourdShape& f : fourd_) n += f.touch.facet_count();
+    return n;
+  }
   const MeshBvh& meshes() const { return meshes_; }
+  // The haptic geometry of surface `surface` if it is embedded in 4D (type fourd), else null.
+  const fourd::FourdTouch* fourd_touch(int surface) const {
+    for (const FourdShape& f : fourd_)
+      if (f.surface == surface) return &f.touch;
+    return nullptr;
+  }
+  // Its force-suggestion gains (eq. 5); off for any other surface.
+  fourd::SuggestionParams fourd_suggestion(int surface) const {
+    for (const FourdShape& f : fourd_)
+      if (f.surface == surface) return f.suggestion;
+    return {};
+  }
 
  private:
   struct Shape {
@@ -86,6 +110,15 @@ class HapticScene {
   Contact closest_analytic(const Shape& s, const glm::dvec3& p) const;
   static bool inside(const Shape& s, const glm::dvec3& p);
 
+  // type = "fourd": its projected triangles with their 4D depth (fourd/touch.h), kept out of
+  // the BVH so a query can see only the proxy's own sheet (continuity: eq. 4's window).
+  struct FourdShape {
+    int surface;
+    bool continuity;  // fourd_local_model: "continuity" keeps to the sheet; "nearest" does not
+    fourd::FourdTouch touch;
+    fourd::SuggestionParams suggestion;  // eq. 5 (fourd/suggestion.h)
+  };
+  std::vector<FourdShape> fourd_;
   std::vector<Shape> shapes_;
   std::vector<Shape> volumes_;  // penetrable spheres, boxes, tori: felt by medium_at()
   MeshBvh meshes_;

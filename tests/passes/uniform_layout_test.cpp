@@ -99,6 +99,9 @@ TEST(UniformLayoutTest, SurfaceBlockMatches) {
   EXPECT_GABOR_BLOCK(o, "u_gabor", SurfaceBlock, gabor);
   EXPECT_MEMBER(o, "u_body_spheres", SurfaceBlock, body_spheres);
   EXPECT_MEMBER(o, "u_body_count", SurfaceBlock, body_count);
+  EXPECT_MEMBER(o, "u_sheet", SurfaceBlock, sheet);
+  EXPECT_MEMBER(o, "u_cutaway", SurfaceBlock, cutaway);
+  EXPECT_MEMBER(o, "u_eye", SurfaceBlock, eye);
 }
 
 // The bodies' casters are read in every variant, also with the probe's shadow compiled out
