@@ -127,14 +127,19 @@ Status run(const BenchArgs& a) {
   return ok_status();
 }
 
-// --shadow-cost: one measurement of the full bench, printed (about 20 s).
-Status shadow_cost_only(const BenchArgs& a) {
+// The context and options of the printing-only measurements (--shadow-cost, --shadow-distance).
+Result<std::unique_ptr<gl::Context>> bench_context(const BenchArgs& a, bench::BenchOptions& o) {
   gl::ContextDesc desc;
   desc.backend = a.backend;
-  auto ctx = gl::create_context(desc);
-  if (!ctx) return ctx.error();
-  bench::BenchOptions o;
   o.timed_frames = a.frames;
+  return gl::create_context(desc);
+}
+
+// --shadow-cost: one measurement of the full bench, printed (about 20 s).
+Status shadow_cost_only(const BenchArgs& a) {
+  bench::BenchOptions o;
+  auto ctx = bench_context(a, o);
+  if (!ctx) return ctx.error();
   std::vector<bench::ShadowCost> costs;
   for (int size : {512, 1024}) {
     if (!a.quiet) std::fprintf(stderr, "pseudo-shadow cost at %d^2 ...\n", size);
@@ -149,12 +154,9 @@ Status shadow_cost_only(const BenchArgs& a) {
 
 // --shadow-distance: what the distance along each point's own normal costs (about 20 s).
 Status shadow_distance_only(const BenchArgs& a) {
-  gl::ContextDesc desc;
-  desc.backend = a.backend;
-  auto ctx = gl::create_context(desc);
-  if (!ctx) return ctx.error();
   bench::BenchOptions o;
-  o.timed_frames = a.frames;
+  auto ctx = bench_context(a, o);
+  if (!ctx) return ctx.error();
   std::printf("| scene | size | frame, reference_plane | frame, surface_normal | ratio | surface pass ratio |\n"
               "| --- | --- | --- | --- | --- | --- |\n");
   for (const char* scene : {"table5_1_monkey_head.toml", "torus_capsule.toml"}) {

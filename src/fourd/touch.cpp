@@ -55,34 +55,42 @@ FourdTouch::FourdTouch(const FourdMesh& mesh, double scale_mm, const glm::dmat3&
   }
 }
 
-FourdTouch::OtherSheet FourdTouch::other_sheet(const glm::dvec3& p, double max_distance_mm,
-                                               const WWindow& window) const {
-  OtherSheet out;
-  double limit = max_distance_mm;
-  const glm::ivec3 lo = cell_of(p - glm::dvec3(max_distance_mm)), hi = cell_of(p + glm::dvec3(max_distance_mm));
+template <class Visit>
+void FourdTouch::for_each_facet_near(const glm::dvec3& p, double r, Visit&& visit) const {
+  const glm::ivec3 lo = cell_of(p - glm::dvec3(r)), hi = cell_of(p + glm::dvec3(r));
   for (int z = lo.z; z <= hi.z; ++z)
     for (int y = lo.y; y <= hi.y; ++y)
       for (int x = lo.x; x <= hi.x; ++x) {
         const std::size_t c = static_cast<std::size_t>((z * dims_.y + y) * dims_.x + x);
         for (std::uint32_t i = cell_start_[c]; i < cell_start_[c + 1]; ++i) {
           const Tri& t = tris_[cell_facets_[i]];
-          if (glm::max(t.cell_lo, lo) != glm::ivec3(x, y, z)) continue;  // tested in its first cell
-          if (!(t.w_max < window.lo || t.w_min > window.hi)) continue;   // the proxy's own sheet
-          glm::dvec3 bary;
-          const glm::dvec3 a = positions_[t.v.x], b = positions_[t.v.y], cc = positions_[t.v.z];
-          const glm::dvec3 q = closest_on_triangle(p, a, b, cc, bary);
-          const double d = glm::length(p - q);
-          if (d > limit) continue;
-          const glm::dvec3 n = glm::cross(b - a, cc - a);
-          const double len = glm::length(n);
-          if (len < 1e-300) continue;
-          limit = d;
-          out.hit = true;
-          out.facet = static_cast<int>(cell_facets_[i]);
-          out.signed_mm = glm::dot(p - a, n / len);
-          out.w = bary.x * w_[t.v.x] + bary.y * w_[t.v.y] + bary.z * w_[t.v.z];
+          // A facet in several cells is tested once: in the first of them the query visits.
+          if (glm::max(t.cell_lo, lo) != glm::ivec3(x, y, z)) continue;
+          visit(cell_facets_[i], t);
         }
       }
+}
+
+FourdTouch::OtherSheet FourdTouch::other_sheet(const glm::dvec3& p, double max_distance_mm,
+                                               const WWindow& window) const {
+  OtherSheet out;
+  double limit = max_distance_mm;
+  for_each_facet_near(p, max_distance_mm, [&](std::uint32_t f, const Tri& t) {
+    if (!(t.w_max < window.lo || t.w_min > window.hi)) return;  // the proxy's own sheet
+    glm::dvec3 bary;
+    const glm::dvec3 a = positions_[t.v.x], b = positions_[t.v.y], cc = positions_[t.v.z];
+    const glm::dvec3 q = closest_on_triangle(p, a, b, cc, bary);
+    const double d = glm::length(p - q);
+    if (d > limit) return;
+    const glm::dvec3 n = glm::cross(b - a, cc - a);
+    const double len = glm::length(n);
+    if (len < 1e-300) return;
+    limit = d;
+    out.hit = true;
+    out.facet = static_cast<int>(f);
+    out.signed_mm = glm::dot(p - a, n / len);
+    out.w = bary.x * w_[t.v.x] + bary.y * w_[t.v.y] + bary.z * w_[t.v.z];
+  });
   return out;
 }
 
@@ -108,30 +116,20 @@ WWindow FourdTouch::window(double w_cur, double w_pre) const {
 TouchHit FourdTouch::closest(const glm::dvec3& p, double max_distance_mm, const WWindow& window) const {
   TouchHit best;
   double limit = max_distance_mm;
-  const glm::ivec3 lo = cell_of(p - glm::dvec3(max_distance_mm)), hi = cell_of(p + glm::dvec3(max_distance_mm));
-  for (int z = lo.z; z <= hi.z; ++z)
-    for (int y = lo.y; y <= hi.y; ++y)
-      for (int x = lo.x; x <= hi.x; ++x) {
-        const std::size_t c = static_cast<std::size_t>((z * dims_.y + y) * dims_.x + x);
-        for (std::uint32_t i = cell_start_[c]; i < cell_start_[c + 1]; ++i) {
-          const Tri& t = tris_[cell_facets_[i]];
-          // A facet in several cells is tested once: in the first of them the query visits.
-          const glm::ivec3 first = glm::max(t.cell_lo, lo);
-          if (first != glm::ivec3(x, y, z)) continue;
-          if (window.active && (t.w_max < window.lo || t.w_min > window.hi)) continue;
-          ++best.visited;
-          glm::dvec3 bary;
-          const glm::dvec3 q = closest_on_triangle(p, positions_[t.v.x], positions_[t.v.y], positions_[t.v.z], bary);
-          const double d = glm::length(p - q);
-          if (d > limit) continue;
-          limit = d;
-          best.hit = true;
-          best.facet = static_cast<int>(cell_facets_[i]);
-          best.point = q;
-          best.distance_mm = d;
-          best.w = bary.x * w_[t.v.x] + bary.y * w_[t.v.y] + bary.z * w_[t.v.z];
-        }
-      }
+  for_each_facet_near(p, max_distance_mm, [&](std::uint32_t f, const Tri& t) {
+    if (window.active && (t.w_max < window.lo || t.w_min > window.hi)) return;
+    ++best.visited;
+    glm::dvec3 bary;
+    const glm::dvec3 q = closest_on_triangle(p, positions_[t.v.x], positions_[t.v.y], positions_[t.v.z], bary);
+    const double d = glm::length(p - q);
+    if (d > limit) return;
+    limit = d;
+    best.hit = true;
+    best.facet = static_cast<int>(f);
+    best.point = q;
+    best.distance_mm = d;
+    best.w = bary.x * w_[t.v.x] + bary.y * w_[t.v.y] + bary.z * w_[t.v.z];
+  });
   if (!best.hit) return best;
   // Two-sided: both normals on the query point's side (the image has no outside).
   const Tri& t = tris_[static_cast<std::size_t>(best.facet)];

@@ -63,6 +63,10 @@ class FourdTouch {
     glm::ivec3 cell_lo, cell_hi;  // grid cells its box overlaps
   };
   glm::ivec3 cell_of(const glm::dvec3& p) const;
+  // Calls visit(facet index, its Tri) once for every facet whose grid cells overlap the box of
+  // half size r around p (a facet in several cells: in the first of them the walk meets).
+  template <class Visit>
+  void for_each_facet_near(const glm::dvec3& p, double r, Visit&& visit) const;
 
   std::vector<glm::dvec3> positions_, normals_;
   std::vector<double> w_;
