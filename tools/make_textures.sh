@@ -10,6 +10,7 @@ python3 "$root/tools/make_textures.py" "$tmp"
 mkdir -p "$root/textures"
 for f in "$tmp"/*.ppm "$tmp"/*.pgm; do
   name="$(basename "${f%.*}")"
-  oiiotool "$f" -d uint8 -o "$root/textures/$name.png"
+  # --nosoftwareattrib: no command line (with this machine's paths) in the PNG's metadata
+  oiiotool --nosoftwareattrib "$f" -d uint8 -o "$root/textures/$name.png"
   echo "wrote textures/$name.png"
 done

@@ -42,5 +42,5 @@ for world in panel illusion weight field poly; do
   [ -f "${work}/${world}/screenshot_0000.png" ] || { echo "universe_live: no screenshot of ${world}" >&2; exit 1; }
   shots+=("${work}/${world}/screenshot_0000.png" --resize 200x200)
 done
-oiiotool "${shots[@]}" --mosaic:pad=4 5x1 -o "${out}"
+oiiotool --nosoftwareattrib "${shots[@]}" --mosaic:pad=4 5x1 -o "${out}"
 echo "universe_live: ${out}"
