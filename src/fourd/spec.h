@@ -42,6 +42,9 @@ struct Spec {
   // cross, the one nearer the 4D eye wins a band along the crossing and is seen continuous,
   // the other interrupted. 0 = off (plain 3D depth).
   double crossing_diagram_mm = 0.0;
+  // Wireframe (seed 000 Fig. 5c): the surface drawn as the edges of its triangles, so the probe's
+  // w-coloured path (replay --show-path) and the sheets behind show through it.
+  bool wireframe = false;
   bool operator==(const Spec&) const = default;
 };
 

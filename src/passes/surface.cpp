@@ -154,7 +154,9 @@ Status SurfacePass::draw_all(const std::vector<SurfaceDraw>& draws, bool shadow)
     glBindTextureUnit(1, d.albedo ? d.albedo->id() : dummy_.id());
     glBindTextureUnit(2, d.gabor_tile ? d.gabor_tile->id() : dummy_.id());
     glBindBufferRange(GL_UNIFORM_BUFFER, 0, ubo_.id(), static_cast<GLintptr>(i) * ubo_stride_, sizeof(SurfaceBlock));
+    if (d.wireframe) glPolygonMode(GL_FRONT_AND_BACK, GL_LINE);
     d.mesh->draw();
+    if (d.wireframe) glPolygonMode(GL_FRONT_AND_BACK, GL_FILL);
   }
   return ok_status();
 }

@@ -97,6 +97,7 @@ struct SurfaceDraw {
   const gl::Texture* albedo = nullptr;
   const gl::Texture* gabor_tile = nullptr;  // set: PS_GABOR_BAKED variant reads this tile
   bool gabor_tile_linear = false;           // the tile is values only, read bilinearly (PS_GABOR_BAKED 2)
+  bool wireframe = false;                   // the triangles' edges only (glPolygonMode GL_LINE)
 };
 
 struct SurfacePass {

@@ -447,6 +447,7 @@ std::vector<SurfaceDraw> Renderer::surface_draws(const FramePlan& plan) {
       }
       d.block.sheet = glm::vec4(1.0f, static_cast<float>(w), 0.15f * (sheets.w_max - sheets.w_min), 0.0f);
       const fourd::Spec& spec = scene_.surfaces[i].fourd;
+      d.wireframe = spec.wireframe;
       d.block.sheet.w = static_cast<float>(spec.crossing_diagram_mm);
       if (spec.cutaway_mm > 0.0 || spec.crossing_diagram_mm > 0.0) {
         const Camera& cam = scene_.camera;

@@ -43,6 +43,7 @@ void read_fourd_keys(TableReader& r, Surface& out) {
   r.number("fourd_suggest_lookahead_s", f.suggest_lookahead_s, Range::closed(0.0, 1.0));
   r.number("fourd_cutaway_mm", f.cutaway_mm, Range::closed(0.0, 1e4));
   r.number("fourd_crossing_diagram_mm", f.crossing_diagram_mm, Range::closed(0.0, 1e4));
+  r.boolean("fourd_wireframe", f.wireframe);
   if (!r.ok()) return;
   if (out.type != SurfaceType::kFourd) {
     for (std::string_view k : known_keys(Section::kSurface))
