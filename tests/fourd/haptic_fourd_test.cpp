@@ -105,11 +105,10 @@ namespace {
 // first once, behind it (-1). The device reaches s = 0 (x = 20 mm) at t = 0.4 s, tick 400; the
 // event comes within 30 ticks of it: the device moves ~0.1 mm a tick, the Kalman filter and the
 // 3 mm proxy riding on the curved sheet put its contact point up to ~2 mm behind or ahead.
-std::vector<HapticEvent> crossings(bool first_sheet) {
-  auto scene = load_scene(std::string(PS_SOURCE_DIR) + "/scenes/fourd/roman.toml");
-  EXPECT_TRUE(scene) << scene.error().message;
-  auto hs = world::HapticScene::build(scene.value());
-  EXPECT_TRUE(hs) << hs.error().message;
+// The hand 1 mm into one sheet of the Roman surface (the one with y0 = cos 15, z0 = sin 15 on
+// the sphere, or the other with them swapped), stroked across the double line from s = -0.3 to
+// 0.3 in 0.6 s after 0.1 s of approach from 5 mm out.
+std::vector<DeviceSample> stroke_across_double_line(bool first_sheet) {
   const double c = std::cos(M_PI / 12), s15 = std::sin(M_PI / 12);
   const double y0 = first_sheet ? c : s15, z0 = first_sheet ? s15 : c;
   std::vector<DeviceSample> samples;
@@ -120,7 +119,15 @@ std::vector<HapticEvent> crossings(bool first_sheet) {
     if (i == 0) samples.push_back({0.0, roman_mm(sp) + 5.0 * n, 0, true});
     samples.push_back({0.1 + 0.6 * i / 60, roman_mm(sp) - 1.0 * n, 0, true});
   }
-  LogDevice device(samples, true, "across the double line");
+  return samples;
+}
+
+std::vector<HapticEvent> crossings(bool first_sheet) {
+  auto scene = load_scene(std::string(PS_SOURCE_DIR) + "/scenes/fourd/roman.toml");
+  EXPECT_TRUE(scene) << scene.error().message;
+  auto hs = world::HapticScene::build(scene.value());
+  EXPECT_TRUE(hs) << hs.error().message;
+  LogDevice device(stroke_across_double_line(first_sheet), true, "across the double line");
   FakeClock clock;
   HapticLoop loop(device, clock, HapticLoopParams{}, &hs.value());
   std::vector<HapticEvent> out;
@@ -164,16 +171,7 @@ TEST(FourdHapticLoopTest, ForceSuggestionPushesAlongTheMotionInTheFacet) {
     EXPECT_TRUE(scene) << scene.error().message;
     auto hs = world::HapticScene::build(scene.value());
     EXPECT_TRUE(hs) << hs.error().message;
-    const double y0 = std::cos(M_PI / 12), z0 = std::sin(M_PI / 12);
-    std::vector<DeviceSample> samples;
-    for (int i = 0; i <= 60; ++i) {
-      const double s = -0.3 + 0.6 * i / 60;
-      const glm::dvec3 sp(s, y0, z0), h(1e-4, 0, 0), k(0, -1e-4 * z0, 1e-4 * y0);
-      const glm::dvec3 n = glm::normalize(glm::cross(roman_mm(sp + h) - roman_mm(sp - h), roman_mm(sp + k) - roman_mm(sp - k)));
-      if (i == 0) samples.push_back({0.0, roman_mm(sp) + 5.0 * n, 0, true});
-      samples.push_back({0.1 + 0.6 * i / 60, roman_mm(sp) - 1.0 * n, 0, true});
-    }
-    LogDevice device(samples, true, "stroke");
+    LogDevice device(stroke_across_double_line(true), true, "stroke");
     FakeClock clock;
     HapticLoop loop(device, clock, HapticLoopParams{}, &hs.value());
     for (int tick = 0; tick < 700; ++tick) {
