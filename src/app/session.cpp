@@ -19,7 +19,7 @@ Status drive_frame(Renderer& renderer, HapticLoop& loop, std::uint64_t frame, Ha
   const glm::dvec3 shown = state.have_sample ? visual_position(renderer.scene(), pressed) : probe.position;
   if (state.have_sample) renderer.set_probe_state(shown, state.velocity_mm_s);
   if (state.have_sample) renderer.advance_deformation(state.time_s);
-  renderer.set_view_offset(state.view_offset_mm);
+  renderer.set_view_pose(state.view_offset_mm, state.view_rotation);
   if (state.have_sample) renderer.set_device_position(state.device_mm);
   renderer.set_probe_sheet(state.sheet_surface, state.sheet_w4);
   const std::span<const glm::dvec3> bodies(state.body_mm.data(), static_cast<std::size_t>(state.body_count));
@@ -29,6 +29,8 @@ Status drive_frame(Renderer& renderer, HapticLoop& loop, std::uint64_t frame, Ha
   for (int i = 0; i < live.count; ++i) charges.push_back({live.position[i], live.charge_n_mm2[i]});
   renderer.set_markers(world_markers(renderer.scene(), shown, bodies, charges, state.field_force_n));
   if (Status s = renderer.render_frame(); !s) return s;
+  // The camera this frame drew with, as the workspace sees it: the rolling manifold's centre.
+  loop.view_axes().publish({true, world::view_axes_of(renderer.workspace_camera())});
   const FrameStats& st = renderer.stats();
   // The render thread is the only writer of surface(), so reading back its own last value is safe.
   const SurfaceModel model = update_surface_model(loop.surface().read(), st.reference_normal, shown,
@@ -47,10 +49,8 @@ PointerView pointer_view(const Renderer& renderer, const PlaneAxes& plane, glm::
   const Scene& sc = renderer.scene();
   PointerView v;
   // The pointer moves the hand in the device's workspace: through the camera as it was before
-  // any [navigation] moved the view (the haptic loop adds the view's offset itself).
-  v.camera = sc.camera;
-  v.camera.position -= renderer.view_offset();
-  v.camera.target -= renderer.view_offset();
+  // any [navigation] moved or rolling turned the view (the haptic loop maps the hand itself).
+  v.camera = renderer.workspace_camera();
   v.aspect = static_cast<double>(sc.render.width) / sc.render.height;
   v.window_size = window_size.x > 0.0 && window_size.y > 0.0 ? window_size : glm::dvec2(sc.render.width, sc.render.height);
   v.plane = plane;

@@ -5,6 +5,8 @@
 
 #include <array>
 
+#include "fourd/rolling.h"
+
 namespace ps::fourd {
 
 // The seed's four surfaces (seed 000 Table 1), parametrisations in docs/fourd.md.
@@ -45,6 +47,9 @@ struct Spec {
   // Wireframe (seed 000 Fig. 5c): the surface drawn as the edges of its triangles, so the probe's
   // w-coloured path (replay --show-path) and the sheets behind show through it.
   bool wireframe = false;
+  // The rolling manifold (seed 000 §6, fourd/rolling.h): the view turns and glides with the
+  // proxy's walk over this surface; the tether pulls the hand toward the screen centre.
+  RollParams roll;
   bool operator==(const Spec&) const = default;
 };
 

@@ -149,4 +149,11 @@ TouchHit FourdTouch::closest(const glm::dvec3& p, double max_distance_mm, const 
   return best;
 }
 
+glm::dvec3 FourdTouch::facet_normal(int f) const {
+  const Tri& t = tris_[static_cast<std::size_t>(f)];
+  const glm::dvec3 n = glm::cross(positions_[t.v.y] - positions_[t.v.x], positions_[t.v.z] - positions_[t.v.x]);
+  const double len = glm::length(n);
+  return len > 1e-300 ? n / len : glm::dvec3(0.0, 0.0, 1.0);
+}
+
 }  // namespace ps::fourd

@@ -55,6 +55,8 @@ class FourdTouch {
   // The same facet, or two facets sharing a vertex of the image (for the crossing detector).
   bool facets_touch(int a, int b) const;
   std::size_t facet_count() const { return tris_.size(); }
+  // Facet f's unit normal by the parameter grid's winding (either side of the image), mm space.
+  glm::dvec3 facet_normal(int f) const;
 
  private:
   struct Tri {

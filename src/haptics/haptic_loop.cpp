@@ -155,7 +155,8 @@ void HapticLoop::adopt_pending_scene(Clock::Ns now) {
   bodies_ = world::BodySet(pending_->bodies(), pending_->fields().gravity_mm_s2());
   buttons_ = world::ButtonSet(pending_->button_shapes(), pending_->probe_radius_mm());
   local_.flags = 0;  // flags are the scene's: a new scene starts with all of them off
-  view_offset_ = glm::dvec3(0.0);  // and its own view
+  view_ = fourd::ViewPose{};  // and its own view
+  roll_.reset();
   retired_ = std::move(scene_owned_);
   scene_owned_ = std::move(pending_);
   HapticEvent e;
@@ -255,20 +256,48 @@ glm::dvec3 HapticLoop::world_forces(double t, double dt) {
 }
 
 glm::dvec3 HapticLoop::navigate(double dt) {
-  const Navigation& nav = god_->scene().navigation();
-  if (!nav.enabled) return glm::dvec3(0.0);
+  const world::HapticScene& scene = god_->scene();
+  const Navigation& nav = scene.navigation();
+  if (!nav.enabled && !scene.any_fourd_roll()) return glm::dvec3(0.0);  // workspace = world
   const glm::dvec3 hand = local_.position_mm;  // workspace
-  const glm::dvec3 half = 0.5 * nav.box_size_mm;
-  const glm::dvec3 past = hand - glm::clamp(hand, nav.box_center - half, nav.box_center + half);
-  glm::dvec3 v = nav.speed_mm_s_per_mm * past;
-  const double speed = glm::length(v);
-  if (speed > nav.max_speed_mm_s) v *= nav.max_speed_mm_s / speed;
-  view_offset_ += v * dt;
-  local_.view_offset_mm = view_offset_;
-  local_.position_mm = hand + view_offset_;
-  local_.device_mm = last_fed_.position_mm + view_offset_;
-  local_.velocity_mm_s += v;  // the hand's speed over the world: the texture sees the craft move
-  return -nav.wall_n_per_mm * past;
+  glm::dvec3 v(0.0), wall(0.0);
+  if (nav.enabled) {
+    const glm::dvec3 half = 0.5 * nav.box_size_mm;
+    const glm::dvec3 past = hand - glm::clamp(hand, nav.box_center - half, nav.box_center + half);
+    v = nav.speed_mm_s_per_mm * past;
+    const double speed = glm::length(v);
+    if (speed > nav.max_speed_mm_s) v *= nav.max_speed_mm_s / speed;
+    view_.offset += view_.rotation * v * dt;
+    wall = -nav.wall_n_per_mm * past;
+  }
+  local_.view_offset_mm = view_.offset;
+  local_.view_rotation = view_.rotation;
+  local_.position_mm = view_.to_world(hand);
+  local_.device_mm = view_.to_world(last_fed_.position_mm);
+  // The hand's speed over the world: the texture sees the craft move.
+  local_.velocity_mm_s = view_.rotation * (local_.velocity_mm_s + v);
+  return view_.rotation * wall;
+}
+
+glm::dvec3 HapticLoop::roll(double dt) {
+  if (!god_->scene().any_fourd_roll()) return glm::dvec3(0.0);
+  const world::Contact* c = god_->sheet_contact();
+  const fourd::RollParams p = c != nullptr ? god_->scene().fourd_roll(c->surface) : fourd::RollParams{};
+  fourd::RollContact rc;
+  if (c != nullptr && p.on) {
+    rc.on_sheet = true;
+    rc.facet = c->fourd_facet;
+    rc.point = c->point;
+    rc.normal = c->normal;
+  }
+  const PublishedViewAxes published = view_axes_.read();
+  const fourd::ViewAxes& axes = published.valid ? published.axes : god_->scene().view_axes();
+  roll_.step(p, axes, rc, dt, view_);
+  local_.view_offset_mm = view_.offset;
+  local_.view_rotation = view_.rotation;
+  local_.roll_facet = roll_.facet();
+  if (!rc.on_sheet) return glm::dvec3(0.0);
+  return fourd::RollingManifold::tether_force(p, axes, view_, local_.proxy_mm);
 }
 
 // Seed 000 §5: a cue each time the proxy's contact point on a surface embedded in 4D passes
@@ -377,7 +406,9 @@ void HapticLoop::tick(Clock::Ns now) {
     if (!god_ || !god_->sheet(local_.sheet_surface, local_.sheet_w4)) local_.sheet_surface = -1;
     detect_crossing(t);
     if (f.in_contact) local_.force_n += suggestion_force(dt);
-    device_.write_force(local_.force_n);
+    if (god_) local_.force_n += roll(dt);
+    // The device feels the force in its own workspace.
+    device_.write_force(glm::transpose(view_.rotation) * local_.force_n);
   }
   local_.time_s = t;
   local_.rejected = sanitizer_.counts();

@@ -30,6 +30,7 @@
 #include "world/bodies.h"
 #include "world/buttons.h"
 #include "fourd/crossing.h"
+#include "fourd/rolling.h"
 #include "world/god_object.h"
 
 namespace ps {
@@ -69,6 +70,14 @@ struct LiveCharges {
   double softening_mm = 2.0;
 };
 
+// The camera the renderer draws with, in the device's workspace (published once per frame by the
+// render thread): the rolling manifold's screen centre and direction toward the viewer. Until
+// one is published the loop uses the scene file's camera.
+struct PublishedViewAxes {
+  bool valid = false;
+  fourd::ViewAxes axes;
+};
+
 struct HapticState {
   std::uint64_t tick = 0;
   double time_s = 0.0;               // session time of this tick
@@ -92,6 +101,10 @@ struct HapticState {
   // workspace's origin). position_mm, device_mm and proxy_mm are world positions (the device's
   // own plus this offset); the renderer moves its camera by it.
   glm::dvec3 view_offset_mm{0.0};
+  // haptic scene with a rolling fourd surface (fourd/rolling.h): the workspace also turns,
+  // world = view_rotation * workspace + view_offset_mm; the renderer turns its camera with it.
+  glm::dmat3 view_rotation{1.0};
+  int roll_facet = -1;               // the rolling manifold's interest facet (-1: none)
   // haptic scene: the sheet of a surface embedded in 4D the proxy keeps to (docs/fourd.md):
   // its surface index (-1: none) and the 4D depth w there
   int sheet_surface = -1;
@@ -139,6 +152,8 @@ class HapticLoop {
   Snapshot<SurfaceModel>& surface() { return surface_; }
   // Written by one thread (the render thread), read by the haptic thread every tick.
   Snapshot<LiveCharges>& live_charges() { return live_charges_; }
+  // Written by the render thread once per frame, read by the haptic thread (rolling manifold).
+  Snapshot<PublishedViewAxes>& view_axes() { return view_axes_; }
   // After stop() (or between run_ticks): measured periods in microseconds.
   const std::vector<double>& periods_us() const { return periods_us_.values(); }
   Percentiles period_stats() const { return percentiles(periods_us_.values()); }
@@ -163,10 +178,14 @@ class HapticLoop {
   bool have_fed_ = false;
   void adopt_pending_scene(Clock::Ns now);  // haptic thread, at a tick's start
   glm::dvec3 world_forces(double t, double dt);  // fields + bodies on the probe (haptic scene)
-  // [navigation]: moves the view by the hand's push past its box's walls and turns the hand's
-  // workspace position (local_.position_mm) into a world one; returns the walls' force.
+  // [navigation]: moves the view by the hand's push past its box's walls; then (with
+  // navigation or a rolling surface) turns the hand's workspace position, velocity and device
+  // position (local_) into world ones through view_. Returns the walls' force (world).
   glm::dvec3 navigate(double dt);
-  glm::dvec3 view_offset_{0.0};
+  fourd::ViewPose view_;            // workspace -> world (navigation's offset, rolling's turn)
+  fourd::RollingManifold roll_;     // seed 000 §6 on a fourd surface with fourd_roll
+  // After the proxy moved: the rolling manifold's step and its tether's force (world, N).
+  glm::dvec3 roll(double dt);
   std::optional<world::GodObject> god_;  // set when a haptic scene is given
   fourd::CrossingDetector crossing_;     // sheet crossings on a surface embedded in 4D
   void detect_crossing(double t);        // after the proxy moved: a sheet_crossing event?
@@ -192,6 +211,7 @@ class HapticLoop {
   EventQueue events_;
   Snapshot<SurfaceModel> surface_;
   Snapshot<LiveCharges> live_charges_;
+  Snapshot<PublishedViewAxes> view_axes_;
   LiveCharges adopted_charges_;  // haptic thread: the set in force, to diff the next one against
   void adopt_live_charges(double t);
   std::string priority_ = "normal";

@@ -369,11 +369,28 @@ void Renderer::set_probe_state(const glm::dvec3& position, const glm::dvec3& vel
   scene_.probe.velocity = velocity;
 }
 
-void Renderer::set_view_offset(const glm::dvec3& offset) {
-  const glm::dvec3 by = offset - view_offset_;
-  scene_.camera.position += by;
-  scene_.camera.target += by;
+void Renderer::set_view_pose(const glm::dvec3& offset, const glm::dmat3& rotation) {
+  if (offset == view_offset_ && rotation == view_rotation_) return;
+  // From the old view to the new one: x -> R_new R_old^T (x - t_old) + t_new.
+  const glm::dmat3 turn = rotation * glm::transpose(view_rotation_);
+  auto point = [&](const glm::dvec3& x) { return turn * (x - view_offset_) + offset; };
+  scene_.camera.position = point(scene_.camera.position);
+  scene_.camera.target = point(scene_.camera.target);
+  if (rotation != view_rotation_) {
+    scene_.camera.up = turn * scene_.camera.up;
+    scene_.light.direction = turn * scene_.light.direction;
+  }
   view_offset_ = offset;
+  view_rotation_ = rotation;
+}
+
+Camera Renderer::workspace_camera() const {
+  Camera c = scene_.camera;
+  const glm::dmat3 back = glm::transpose(view_rotation_);
+  c.position = back * (c.position - view_offset_);
+  c.target = back * (c.target - view_offset_);
+  c.up = back * c.up;
+  return c;
 }
 
 BoundingSphere Renderer::current_probe_bounds() const {

@@ -116,8 +116,15 @@ class Renderer {
   void set_camera(const Camera& camera) { scene_.camera = camera; }  // orbit/zoom in the window
   // [navigation]: the view has moved by `offset` (HapticState::view_offset_mm) since the scene
   // opened; the camera (as set, orbits included) moves with it. scene().camera is the moved one.
-  void set_view_offset(const glm::dvec3& offset);
+  void set_view_offset(const glm::dvec3& offset) { set_view_pose(offset, view_rotation_); }
   const glm::dvec3& view_offset() const { return view_offset_; }
+  // A rolling fourd surface (fourd/rolling.h): the view has also turned, world = rotation *
+  // workspace + offset (HapticState::view_rotation, view_offset_mm). The camera (orbits
+  // included) and the light turn with it, so the surface rolls under a light fixed to the viewer.
+  void set_view_pose(const glm::dvec3& offset, const glm::dmat3& rotation);
+  const glm::dmat3& view_rotation() const { return view_rotation_; }
+  // The camera as the device's workspace sees it (before the view's offset and turn).
+  Camera workspace_camera() const;
   // Draw the probe (the displayed proxy) over the image after the pseudo-shadow; off by default.
   // Changes the colour image only, never the AOVs, the reference plane or the displacement.
   void set_show_probe(bool show) { show_probe_ = show; }
@@ -248,6 +255,7 @@ class Renderer {
   ProbeViewPass probe_view_;
   bool show_probe_ = false;
   glm::dvec3 view_offset_{0.0};
+  glm::dmat3 view_rotation_{1.0};
   int sheet_surface_ = -1;  // set_probe_sheet
   double sheet_w4_ = 0.0;
   bool show_path_ = false;

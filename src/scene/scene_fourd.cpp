@@ -44,6 +44,11 @@ void read_fourd_keys(TableReader& r, Surface& out) {
   r.number("fourd_cutaway_mm", f.cutaway_mm, Range::closed(0.0, 1e4));
   r.number("fourd_crossing_diagram_mm", f.crossing_diagram_mm, Range::closed(0.0, 1e4));
   r.boolean("fourd_wireframe", f.wireframe);
+  r.boolean("fourd_roll", f.roll.on);
+  r.number("fourd_roll_turn_s", f.roll.turn_s, Range::closed(0.0, 10.0));
+  r.number("fourd_roll_centre_s", f.roll.centre_s, Range::closed(0.0, 100.0));
+  r.number("fourd_roll_tether_n_per_mm4", f.roll.tether_alpha_n_per_mm4, Range::closed(0.0, 1.0));
+  r.number("fourd_roll_tether_max_n", f.roll.tether_max_n, Range::closed(0.0, 20.0));
   if (!r.ok()) return;
   if (out.type != SurfaceType::kFourd) {
     for (std::string_view k : known_keys(Section::kSurface))

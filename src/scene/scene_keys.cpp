@@ -61,7 +61,9 @@ constexpr std::array kSurfaceKeys = {"type"sv,      "material"sv,        "center
                                      "fourd_grid"sv, "fourd_twists"sv, "fourd_local_model"sv,
                                      "fourd_suggest_kp_n_per_mm"sv, "fourd_suggest_kv_n_s_per_mm"sv,
                                      "fourd_suggest_lookahead_s"sv, "fourd_cutaway_mm"sv, "fourd_crossing_diagram_mm"sv,
-                                     "fourd_wireframe"sv};
+                                     "fourd_wireframe"sv,
+                                     "fourd_roll"sv, "fourd_roll_turn_s"sv, "fourd_roll_centre_s"sv,
+                                     "fourd_roll_tether_n_per_mm4"sv, "fourd_roll_tether_max_n"sv};
 
 constexpr std::array kFieldKeys = {"type"sv,          "acceleration_mm_s2"sv, "force_n"sv,
                                    "fluctuation_n"sv, "frequency_hz"sv,       "viscosity_n_s_per_mm"sv,

@@ -77,6 +77,8 @@ double GodObject::gap(const glm::dvec3& p, double limit, Contact& c, std::uint32
     hint_.has_w4 = true;
     hint_.surface = c.surface;
     hint_.point = c.point;
+    hint_.normal = c.normal;
+    hint_.fourd_facet = c.fourd_facet;
   }
   return c.hit ? c.distance_mm - radius_ : std::numeric_limits<double>::infinity();
 }

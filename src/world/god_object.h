@@ -66,6 +66,9 @@ class GodObject {
     if (point != nullptr) *point = hint_.point;
     return true;
   }
+  // That sheet's last contact (point, facet normal turned toward the proxy, fourd_facet), or
+  // null when the proxy keeps to no sheet.
+  const Contact* sheet_contact() const { return hint_.has_w4 ? &hint_ : nullptr; }
 
  private:
   struct Plane {

@@ -49,6 +49,15 @@ HapticScene::Shape HapticScene::make_shape(const Surface& s, int index) {
   return shape;
 }
 
+fourd::ViewAxes view_axes_of(const Camera& camera) {
+  fourd::ViewAxes a;
+  a.centre_ws = camera.target;
+  const glm::dvec3 back = camera.position - camera.target;
+  const double len = glm::length(back);
+  if (len > 0.0 && std::isfinite(len)) a.toward_viewer_ws = back / len;
+  return a;
+}
+
 Result<HapticScene> HapticScene::build(const Scene& scene) {
   HapticScene out;
   out.probe_radius_mm_ = scene.probe.radius_mm;
@@ -57,6 +66,7 @@ Result<HapticScene> HapticScene::build(const Scene& scene) {
   out.buttons_ = scene.buttons;
   out.flags_ = scene.flags;
   out.navigation_ = scene.navigation;
+  out.view_axes_ = view_axes_of(scene.camera);
   for (std::size_t i = 0; i < scene.surfaces.size(); ++i) {
     const int b = scene.surfaces[i].button;
     if (b >= 0) out.button_shapes_.push_back(ButtonShape::make(scene.buttons[static_cast<std::size_t>(b)], static_cast<int>(i)));
@@ -90,7 +100,8 @@ Result<HapticScene> HapticScene::build(const Scene& scene) {
       // it keeps to the sheet by continuity here (docs/fourd.md).
       out.fourd_.push_back({index, s.fourd.local_model != fourd::LocalModelKind::kNearest,
                             fourd::FourdTouch(f.value(), s.scale, euler_xyz_deg(s.rotation_deg), s.center),
-                            {s.fourd.suggest_kp_n_per_mm, s.fourd.suggest_kv_n_s_per_mm, s.fourd.suggest_lookahead_s}});
+                            {s.fourd.suggest_kp_n_per_mm, s.fourd.suggest_kv_n_s_per_mm, s.fourd.suggest_lookahead_s},
+                            s.fourd.roll});
       continue;
     }
     // Height field: the rendered triangles, an image has no closed form. Mesh: the triangles.
@@ -213,6 +224,7 @@ Contact HapticScene::closest(const glm::dvec3& p, double max_distance_mm, const 
     best.distance_mm = t.distance_mm;
     best.has_w4 = true;
     best.w4 = t.w;
+    best.fourd_facet = t.facet;
     limit = t.distance_mm;
   }
   return best;

@@ -24,6 +24,7 @@
 #include "world/buttons.h"
 #include "world/fields.h"
 #include "world/mesh_bvh.h"
+#include "fourd/rolling.h"
 #include "fourd/suggestion.h"
 #include "fourd/touch.h"
 
@@ -43,11 +44,16 @@ struct Contact {
   // sees only facets whose w meets eq. 4's window around w4 (w4_pre: the w before it).
   bool has_w4 = false;
   double w4 = 0.0, w4_pre = 0.0;
+  int fourd_facet = -1;  // the fourd surface's facet (fourd::FourdTouch) the point lies on
 };
 
 // Shapes are rotated with scene/mesh.h's euler_xyz_deg, the renderer's own convention, so an
 // analytic shape sits exactly where its render mesh is drawn (tests/world checks both agree).
 using ps::euler_xyz_deg;
+
+// The rolling manifold's screen centre and direction toward the viewer for a camera (its
+// target; from the target toward its eye, orthographic cameras alike).
+fourd::ViewAxes view_axes_of(const Camera& camera);
 
 class HapticScene {
  public:
@@ -95,6 +101,21 @@ class HapticScene {
       if (f.surface == surface) return f.suggestion;
     return {};
   }
+  // Its rolling manifold (seed 000 §6, fourd/rolling.h); off for any other surface.
+  fourd::RollParams fourd_roll(int surface) const {
+    for (const FourdShape& f : fourd_)
+      if (f.surface == surface) return f.roll;
+    return {};
+  }
+  bool any_fourd_roll() const {
+    for (const FourdShape& f : fourd_)
+      if (f.roll.on) return true;
+    return false;
+  }
+  // The scene file's camera as the device's workspace sees it: the screen centre and the
+  // direction toward the viewer (the rolling manifold's default until the renderer publishes
+  // the camera it draws with).
+  const fourd::ViewAxes& view_axes() const { return view_axes_; }
 
  private:
   struct Shape {
@@ -117,7 +138,9 @@ class HapticScene {
     bool continuity;  // fourd_local_model: "continuity" keeps to the sheet; "nearest" does not
     fourd::FourdTouch touch;
     fourd::SuggestionParams suggestion;  // eq. 5 (fourd/suggestion.h)
+    fourd::RollParams roll;              // seed 000 §6 (fourd/rolling.h)
   };
+  fourd::ViewAxes view_axes_;
   std::vector<FourdShape> fourd_;
   std::vector<Shape> shapes_;
   std::vector<Shape> volumes_;  // penetrable spheres, boxes, tori: felt by medium_at()
