@@ -187,6 +187,10 @@ void TunePanel::world_section(TuneSession& session) {
       apply(session, prefix + "fourd_suggest_kp_n_per_mm", number(kp));
     if (slider("suggestion K_v (N s/mm)", prefix + "fourd_suggest_kv_n_s_per_mm", &kv, 1, 0.f, 0.05f, false))
       apply(session, prefix + "fourd_suggest_kv_n_s_per_mm", number(kv));
+    // The rolling manifold (seed 000 §6): the view turns with the proxy's walk over the surface.
+    bool roll = s.fourd.roll.on;
+    if (ImGui::Checkbox(("rolling manifold##" + prefix).c_str(), &roll))
+      apply(session, prefix + "fourd_roll", roll ? "true" : "false");
   }
   for (std::size_t b = 0; b < scene.bodies.size(); ++b) {
     float t = static_cast<float>(scene.bodies[b].time_scale);

@@ -230,6 +230,17 @@ TEST(FourdSceneTest, BadKeysAreErrors) {
   ASSERT_FALSE(d);
   EXPECT_NE(d.error().message.find("d.toml:6: 'fourd_eye_distance'"), std::string::npos) << d.error().message;
   EXPECT_NE(d.error().message.find("make fourd_eye_distance larger than"), std::string::npos) << d.error().message;
+  // The rolling manifold's keys: a negative time constant, a tether on a plane.
+  auto e = parse_scene(head + "type = \"fourd\"\nfourd = \"roman\"\nfourd_roll = true\nfourd_roll_turn_s = -1\n", "e.toml", ".");
+  ASSERT_FALSE(e);
+  EXPECT_NE(e.error().message.find("e.toml:7: 'fourd_roll_turn_s'"), std::string::npos) << e.error().message;
+  auto f = parse_scene(head + "type = \"plane\"\nfourd_roll_tether_n_per_mm4 = 1e-4\n", "f.toml", ".");
+  ASSERT_FALSE(f);
+  EXPECT_NE(f.error().message.find("applies only to type = \"fourd\""), std::string::npos) << f.error().message;
+  auto g = parse_scene(head + "type = \"fourd\"\nfourd = \"roman\"\nfourd_roll = true\nfourd_roll_centre_s = 0\n", "g.toml", ".");
+  ASSERT_TRUE(g) << g.error().message;
+  EXPECT_TRUE(g.value().surfaces[0].fourd.roll.on);
+  EXPECT_EQ(g.value().surfaces[0].fourd.roll.centre_s, 0.0);
 }
 
 }  // namespace

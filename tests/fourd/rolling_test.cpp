@@ -136,6 +136,8 @@ RollRun roll_run(const std::vector<std::string>& extra) {
   const world::Contact c0 = hs0.value().closest(base.value().probe.position, 20.0);
   EXPECT_TRUE(c0.hit);
   const glm::dvec3 n0 = glm::normalize(base.value().probe.position - c0.point);
+  if (std::getenv("ROLL_DEBUG"))
+    std::printf("c0 %.3f %.3f %.3f n0 %.5f %.5f %.5f\n", c0.point.x, c0.point.y, c0.point.z, n0.x, n0.y, n0.z);
   auto vec = [](const glm::dvec3& v) {
     char b[128];
     std::snprintf(b, sizeof b, "[%.17g,%.17g,%.17g]", v.x, v.y, v.z);
@@ -177,6 +179,11 @@ RollRun roll_run(const std::vector<std::string>& extra) {
                   fourd::rotation_angle_between(last_rotation, st.view_rotation), st.roll_facet, int(st.in_contact));
     if (have) out.max_proxy_step_ws = std::max(out.max_proxy_step_ws, glm::length(ws - last_ws));
     if (have) out.max_turn = std::max(out.max_turn, fourd::rotation_angle_between(last_rotation, st.view_rotation));
+    if (std::getenv("ROLL_DEBUG") && tick % 250 == 0) {
+      const glm::dvec3 hand = glm::transpose(st.view_rotation) * (st.position_mm - st.view_offset_mm);
+      std::printf("t %.2f hand_ws (%.1f %.1f %.1f) proxy_ws (%.1f %.1f %.1f) contact %d facet %d\n", tick * 1e-3, hand.x,
+                  hand.y, hand.z, ws.x, ws.y, ws.z, int(st.in_contact), st.roll_facet);
+    }
     last_ws = ws;
     last_rotation = st.view_rotation;
     have = true;
