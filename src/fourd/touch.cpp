@@ -1,6 +1,7 @@
 #include "fourd/touch.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <limits>
 
@@ -44,6 +45,8 @@ FourdTouch::FourdTouch(const FourdMesh& mesh, double scale_mm, const glm::dmat3&
         for (int x = tri.cell_lo.x; x <= tri.cell_hi.x; ++x) ++count[cell_index(x, y, z) + 1];
     tris_.push_back(tri);
   }
+  neighbours_ = mesh.neighbours;
+  for (const glm::uvec3& t : mesh.triangles) centroid_.push_back((positions_[t.x] + positions_[t.y] + positions_[t.z]) / 3.0);
   for (std::size_t i = 1; i < count.size(); ++i) count[i] += count[i - 1];
   cell_start_ = count;
   cell_facets_.resize(count.back());
@@ -130,8 +133,13 @@ TouchHit FourdTouch::closest(const glm::dvec3& p, double max_distance_mm, const 
     best.distance_mm = d;
     best.w = bary.x * w_[t.v.x] + bary.y * w_[t.v.y] + bary.z * w_[t.v.z];
   });
-  if (!best.hit) return best;
-  // Two-sided: both normals on the query point's side (the image has no outside).
+  finish(best, p);
+  return best;
+}
+
+// The hit's normals: both on the query point's side (the image has no outside).
+void FourdTouch::finish(TouchHit& best, const glm::dvec3& p) const {
+  if (!best.hit) return;
   const Tri& t = tris_[static_cast<std::size_t>(best.facet)];
   const glm::dvec3 a = positions_[t.v.x], b = positions_[t.v.y], c = positions_[t.v.z];
   glm::dvec3 n = glm::cross(b - a, c - a);
@@ -146,6 +154,62 @@ TouchHit FourdTouch::closest(const glm::dvec3& p, double max_distance_mm, const 
   if (glm::dot(s, n) < 0.0) s = -s;
   best.normal = n;
   best.shaded_normal = s;
+}
+
+TouchHit FourdTouch::closest_adjacent(const glm::dvec3& p, double max_distance_mm, int start_facet,
+                                      const glm::dvec3& start_point, double radius_mm) const {
+  TouchHit best;
+  if (start_facet < 0 || static_cast<std::size_t>(start_facet) >= tris_.size()) return best;
+  // Breadth-first over shared mesh edges, each facet with its path length along the surface
+  // (start point to centroid, then centroid to centroid); a facet reached too far stays
+  // unvisited, so a shorter path found later still admits it. Fixed storage on the stack: the
+  // haptic thread allocates nothing; at kMaxAdjacent facets the walk stops.
+  std::array<int, kMaxAdjacent> queue;
+  std::array<double, kMaxAdjacent> path;
+  std::array<int, 2 * kMaxAdjacent> seen;  // open addressing, -1 = empty
+  seen.fill(-1);
+  auto mark = [&](int f) {  // false if already there
+    std::size_t h = (static_cast<std::size_t>(f) * 2654435761u) % seen.size();
+    while (seen[h] >= 0) {
+      if (seen[h] == f) return false;
+      h = (h + 1) % seen.size();
+    }
+    seen[h] = f;
+    return true;
+  };
+  std::size_t count = 0;
+  const auto push = [&](int f, double d) {
+    if (count == kMaxAdjacent || !mark(f)) return;
+    queue[count] = f;
+    path[count] = d;
+    ++count;
+  };
+  push(start_facet, glm::length(centroid_[static_cast<std::size_t>(start_facet)] - start_point));
+  double limit = max_distance_mm;
+  for (std::size_t head = 0; head < count; ++head) {
+    const int f = queue[head];
+    const auto fu = static_cast<std::size_t>(f);
+    const Tri& t = tris_[fu];
+    ++best.visited;
+    glm::dvec3 bary;
+    const glm::dvec3 q = closest_on_triangle(p, positions_[t.v.x], positions_[t.v.y], positions_[t.v.z], bary);
+    const double d = glm::length(p - q);
+    if (d <= limit) {
+      limit = d;
+      best.hit = true;
+      best.facet = f;
+      best.point = q;
+      best.distance_mm = d;
+      best.w = bary.x * w_[t.v.x] + bary.y * w_[t.v.y] + bary.z * w_[t.v.z];
+    }
+    for (int k = 0; k < 3; ++k) {
+      const int g = neighbours_[fu][k];
+      if (g < 0) continue;
+      const double along = path[head] + glm::length(centroid_[static_cast<std::size_t>(g)] - centroid_[fu]);
+      if (along <= radius_mm) push(g, along);
+    }
+  }
+  finish(best, p);
   return best;
 }
 

@@ -38,6 +38,14 @@ class FourdTouch {
   FourdTouch(const FourdMesh& mesh, double scale_mm, const glm::dmat3& rotation, const glm::dvec3& center_mm);
 
   TouchHit closest(const glm::dvec3& p, double max_distance_mm, const WWindow& window = {}) const;
+  // The local model by mesh adjacency (seed 000 §4.2's alternative, fourd_local_model =
+  // "adjacency"): only the facets reached from `start_facet` through shared mesh edges within
+  // `radius_mm` along the surface (from `start_point`, then centroid to centroid), at most
+  // kMaxAdjacent of them. A sheet that crosses this one in the 3D image is near in space but
+  // far along the surface: it is not there. Allocation-free (fixed storage on the stack).
+  static constexpr std::size_t kMaxAdjacent = 1024;
+  TouchHit closest_adjacent(const glm::dvec3& p, double max_distance_mm, int start_facet,
+                            const glm::dvec3& start_point, double radius_mm) const;
   // The window of eq. 4 around w_cur: half-width |w_cur - w_pre| + w_slack().
   WWindow window(double w_cur, double w_pre) const;
   double w_slack() const { return w_slack_; }
@@ -70,7 +78,10 @@ class FourdTouch {
   template <class Visit>
   void for_each_facet_near(const glm::dvec3& p, double r, Visit&& visit) const;
 
+  void finish(TouchHit& hit, const glm::dvec3& p) const;  // the hit's normals, on p's side
   std::vector<glm::dvec3> positions_, normals_;
+  std::vector<glm::ivec3> neighbours_;  // per facet, across its edges (FourdMesh::neighbours)
+  std::vector<glm::dvec3> centroid_;    // per facet, mm
   std::vector<double> w_;
   std::vector<Tri> tris_;
   glm::dvec3 origin_{0.0};

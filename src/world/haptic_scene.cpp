@@ -96,9 +96,7 @@ Result<HapticScene> HapticScene::build(const Scene& scene) {
     if (s.type == SurfaceType::kFourd) {
       Result<fourd::FourdMesh> f = fourd::build_fourd_mesh(s.fourd);
       if (!f) return make_error(where + f.error().message);
-      // "adjacency" needs the walk of fourd/local_model.h, not run on the haptic thread yet:
-      // it keeps to the sheet by continuity here (docs/fourd.md).
-      out.fourd_.push_back({index, s.fourd.local_model != fourd::LocalModelKind::kNearest,
+      out.fourd_.push_back({index, s.fourd.local_model,
                             fourd::FourdTouch(f.value(), s.scale, euler_xyz_deg(s.rotation_deg), s.center),
                             {s.fourd.suggest_kp_n_per_mm, s.fourd.suggest_kv_n_s_per_mm, s.fourd.suggest_lookahead_s},
                             s.fourd.roll});
@@ -210,10 +208,18 @@ Contact HapticScene::closest(const glm::dvec3& p, double max_distance_mm, const 
     limit = h.distance_mm;
   }
   for (const FourdShape& f : fourd_) {
-    fourd::WWindow window;
-    if (f.continuity && hint != nullptr && hint->has_w4 && hint->surface == f.surface)
-      window = f.touch.window(hint->w4, hint->w4_pre);
-    const fourd::TouchHit t = f.touch.closest(p, limit, window);
+    const bool on_sheet = hint != nullptr && hint->has_w4 && hint->surface == f.surface;
+    fourd::TouchHit t;
+    if (on_sheet && f.model == fourd::LocalModelKind::kAdjacency && hint->fourd_facet >= 0) {
+      // Mesh adjacency: the walk from the sheet's last facet must reach every facet of the
+      // sheet this query could return (within max_distance of p), hence at least twice that.
+      t = f.touch.closest_adjacent(p, limit, hint->fourd_facet, hint->point,
+                                   std::max(kAdjacencyRadiusMm, 2.0 * max_distance_mm));
+    } else {
+      fourd::WWindow window;
+      if (on_sheet && f.model == fourd::LocalModelKind::kContinuity) window = f.touch.window(hint->w4, hint->w4_pre);
+      t = f.touch.closest(p, limit, window);
+    }
     best.facets_visited += t.visited;
     if (!t.hit || t.distance_mm > limit || in_hole(t.point)) continue;
     best.hit = true;

@@ -135,12 +135,17 @@ class HapticScene {
   // the BVH so a query can see only the proxy's own sheet (continuity: eq. 4's window).
   struct FourdShape {
     int surface;
-    bool continuity;  // fourd_local_model: "continuity" keeps to the sheet; "nearest" does not
+    // fourd_local_model: "continuity" keeps to the sheet by eq. 4's w window, "adjacency" by the
+    // mesh walk (FourdTouch::closest_adjacent); "nearest" does not keep to it.
+    fourd::LocalModelKind model;
     fourd::FourdTouch touch;
     fourd::SuggestionParams suggestion;  // eq. 5 (fourd/suggestion.h)
     fourd::RollParams roll;              // seed 000 §6 (fourd/rolling.h)
   };
   fourd::ViewAxes view_axes_;
+  // "adjacency": how far along the surface the walk from the sheet's facet goes at least (the
+  // local models' radius, fourd/local_model.h).
+  static constexpr double kAdjacencyRadiusMm = 20.0;
   std::vector<FourdShape> fourd_;
   std::vector<Shape> shapes_;
   std::vector<Shape> volumes_;  // penetrable spheres, boxes, tori: felt by medium_at()
