@@ -268,6 +268,8 @@ std::string screenshot_state(const TuneSession& tune) {
   state["camera.position"] = cli::override_value(sc.camera.position);
   state["camera.target"] = cli::override_value(sc.camera.target);
   state["camera.up"] = cli::override_value(sc.camera.up);
+  // A rolling view turned the light with the camera (Renderer::set_view_pose).
+  if (r.view_rotation() != glm::dmat3(1.0)) state["light.direction"] = cli::override_value(sc.light.direction);
   // The frame was drawn before its displacement moved the probe.
   state["probe.position"] = cli::override_value(sc.probe.position - r.stats().displacement);
   state["probe.velocity"] = cli::override_value(sc.probe.velocity);
