@@ -189,17 +189,24 @@ DeformationStats Renderer::step_deformation(double dt_s) {
   // a mesh probe's bounding sphere would dent far more than the mesh touches, so it does not press.
   const Probe& p = scene_.probe;
   const glm::dvec3 centre = p.shape == ProbeShape::kMesh ? glm::dvec3(std::nan("")) : p.position;
+  bool moved = false;
   for (Deformed& d : deformed_) {
     const world::DeformStep step = d.sim->step(dt_s, centre, p.radius_mm);
-    d.sim->write(d.mesh);
-    geometry_.surface_meshes[static_cast<std::size_t>(d.surface)].update(d.mesh);
+    // At rest with the probe away the step simulates no vertex (none displaced, none near the
+    // probe), so nothing changed since the last upload: no re-upload, no new normals.
+    if (d.sim->active_count() > 0) {
+      d.sim->write(d.mesh);
+      geometry_.surface_meshes[static_cast<std::size_t>(d.surface)].update(d.mesh);
+      moved = true;
+      ++st.uploaded;
+    }
     st.substeps = std::max(st.substeps, step.substeps);
     st.constrained += step.constrained;
     st.max_displacement_mm = std::max(st.max_displacement_mm, step.max_displacement_mm);
     st.finite = st.finite && d.sim->finite();
   }
   // The normal target's mean holds only while the surfaces do not move.
-  normal_mean_.valid = false;
+  if (moved) normal_mean_.valid = false;
   deform_stats_ = st;
   return st;
 }

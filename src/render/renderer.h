@@ -38,6 +38,7 @@ struct DeformationStats {
   int constrained = 0;            // vertices held on the probe's surface
   double max_displacement_mm = 0.0;
   bool finite = true;
+  int uploaded = 0;               // surfaces whose vertices changed and were uploaded this step
 };
 
 struct RendererOptions {

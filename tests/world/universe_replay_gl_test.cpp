@@ -139,6 +139,11 @@ TEST_P(UniverseReplayGLTest, PolyDentsUnderTheProbeAndSpringsBack) {
   EXPECT_GT(last.t, 2.2);
   EXPECT_FALSE(last.state.in_contact);
   EXPECT_EQ(last.deformation.max_displacement_mm, 0.0);
+  // While dented the surface is uploaded every frame; once back at rest with the probe away,
+  // nothing is (no vertex moved: Renderer::step_deformation skips the upload).
+  for (const PolyFrame& f : run.frames)
+    if (f.t >= 0.6 && f.t <= 1.0) EXPECT_EQ(f.deformation.uploaded, 1) << f.t;
+  EXPECT_EQ(last.deformation.uploaded, 0);
 
   // The same drawn probe over Suzanne undented.
   World rigid = open_world("poly.toml", {"render.size=[96,96]", "render.depth_map_size=64", "surfaces.0.deformable=false"});
