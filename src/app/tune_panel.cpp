@@ -62,6 +62,13 @@ struct ActiveEdit {
   float value[3] = {0, 0, 0};
 };
 ActiveEdit g_active;  // the single item ImGui can have active; render thread only
+std::map<std::string, UiRect>* g_rects = nullptr;  // the drawing panel's knob_rects_
+
+void record_rect(const std::string& key) {
+  if (g_rects == nullptr) return;
+  const ImVec2 a = ImGui::GetItemRectMin(), b = ImGui::GetItemRectMax();
+  (*g_rects)[key] = {a.x, a.y, b.x, b.y};
+}
 
 // The label on its own line (wrapped, never cut), the slider below it across the panel.
 bool slider(const std::string& label, const std::string& key, float* v, int n, float lo, float hi, bool log) {
@@ -72,6 +79,7 @@ bool slider(const std::string& label, const std::string& key, float* v, int n, f
   const ImGuiSliderFlags flags = log ? ImGuiSliderFlags_Logarithmic : 0;
   if (n == 1) ImGui::SliderFloat(id.c_str(), v, lo, hi, "%.4g", flags);
   else ImGui::DragFloat3(id.c_str(), v, (hi - lo) / 400.f, lo, hi, "%.3g");
+  record_rect(key);
   if (ImGui::IsItemActive()) {
     g_active.key = key;
     std::copy(v, v + n, g_active.value);
@@ -189,8 +197,9 @@ void TunePanel::world_section(TuneSession& session) {
       apply(session, prefix + "fourd_suggest_kv_n_s_per_mm", number(kv));
     // The rolling manifold (seed 000 §6): the view turns with the proxy's walk over the surface.
     bool roll = s.fourd.roll.on;
-    if (ImGui::Checkbox(("rolling manifold##" + prefix).c_str(), &roll))
-      apply(session, prefix + "fourd_roll", roll ? "true" : "false");
+    const bool toggled = ImGui::Checkbox(("rolling manifold##" + prefix).c_str(), &roll);
+    record_rect(prefix + "fourd_roll");
+    if (toggled) apply(session, prefix + "fourd_roll", roll ? "true" : "false");
   }
   for (std::size_t b = 0; b < scene.bodies.size(); ++b) {
     float t = static_cast<float>(scene.bodies[b].time_scale);
@@ -229,9 +238,12 @@ UiRect TunePanel::draw(TuneSession& session, const UiRect& dock) {
   // Taller content than the window scrolls inside the strip (a 512-pixel window cannot show
   // every section at once), so the curves and the save button stay reachable.
   const bool open = ImGui::Begin("parameters (F1)", nullptr, kDocked);
+  knob_rects_.clear();
+  g_rects = &knob_rects_;
   collapsed_ = ImGui::IsWindowCollapsed();
   const ImVec2 pos = ImGui::GetWindowPos(), size = ImGui::GetWindowSize();
   if (open) contents(session);
+  g_rects = nullptr;
   ImGui::End();
   return UiRect::at(pos.x, pos.y, size.x, size.y);
 }

@@ -13,6 +13,7 @@
 // same frame as the readouts and the help.
 #pragma once
 
+#include <map>
 #include <memory>
 #include <string>
 #include <vector>
@@ -38,6 +39,9 @@ class TunePanel {
   // Inside an ImGui frame: builds the panel in `dock` (window pixels) and applies edits to
   // `session`. Returns the rectangle it covers (its title bar only when collapsed).
   UiRect draw(TuneSession& session, const UiRect& dock);
+  // Where each knob was drawn in the last frame (window pixels), by the scene key it edits:
+  // lets a test drive the panel with mouse events as a person would (tests/app/tune_panel_gl_test).
+  const std::map<std::string, UiRect>& knob_rects() const { return knob_rects_; }
 
  private:
   void contents(TuneSession& session);
@@ -55,6 +59,7 @@ class TunePanel {
   int material_ = 0;
   std::vector<int> stretched_;  // surfaces seen stretched: their slider stays, also at 1
   std::string status_;
+  std::map<std::string, UiRect> knob_rects_;
 };
 
 }  // namespace ps
