@@ -27,7 +27,13 @@ Status drive_frame(Renderer& renderer, HapticLoop& loop, std::uint64_t frame, Ha
   const LiveCharges live = loop.live_charges().read();
   std::vector<ChargeMarker> charges;
   for (int i = 0; i < live.count; ++i) charges.push_back({live.position[i], live.charge_n_mm2[i]});
-  renderer.set_markers(world_markers(renderer.scene(), shown, bodies, charges, state.field_force_n));
+  std::vector<WorldMarker> markers = world_markers(renderer.scene(), shown, bodies, charges, state.field_force_n);
+  // The rolling manifold's rubber band, while the view rolls with a tether on (docs/fourd.md).
+  const std::vector<Surface>& surfaces = renderer.scene().surfaces;
+  if (state.roll_facet >= 0 && state.sheet_surface >= 0 && static_cast<std::size_t>(state.sheet_surface) < surfaces.size() &&
+      surfaces[static_cast<std::size_t>(state.sheet_surface)].fourd.roll.tether_alpha_n_per_mm4 > 0.0)
+    markers.push_back(rubber_band_marker(shown, renderer.scene().camera));
+  renderer.set_markers(std::move(markers));
   if (Status s = renderer.render_frame(); !s) return s;
   // The camera this frame drew with, as the workspace sees it: the rolling manifold's centre.
   loop.view_axes().publish({true, world::view_axes_of(renderer.workspace_camera())});

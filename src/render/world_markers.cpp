@@ -69,4 +69,12 @@ std::vector<glm::dvec3> start_positions(const Scene& scene) {
   return out;
 }
 
+WorldMarker rubber_band_marker(const glm::dvec3& probe_mm, const Camera& camera) {
+  glm::dvec3 axis = camera.position - camera.target;
+  const double len = glm::length(axis);
+  axis = len > 0.0 ? axis / len : glm::dvec3(0.0, 0.0, 1.0);
+  const glm::dvec3 on_line = camera.target + glm::dot(probe_mm - camera.target, axis) * axis;
+  return {probe_mm, on_line, kRubberBandRadiusMm, glm::dvec3(0.95, 0.85, 0.35)};
+}
+
 }  // namespace ps

@@ -46,6 +46,13 @@ std::vector<WorldMarker> world_markers(const Scene& scene, const glm::dvec3& pro
 glm::dvec3 visual_position(const Scene& scene, const glm::dvec3& felt_mm);
 inline constexpr double kStretchReachMarginMm = 10.0, kStretchFadeMm = 20.0;
 
+// The rolling manifold's rubber band (seed 000 §6.4, docs/fourd.md): from the probe to the
+// nearest point of the line of sight through the screen centre of `camera` (the world camera a
+// frame draws with), the line the tether pulls toward; a == b when the probe is on that line.
+// Drawn so a mouse, which feels no force, still sees the band.
+WorldMarker rubber_band_marker(const glm::dvec3& probe_mm, const Camera& camera);
+inline constexpr double kRubberBandRadiusMm = 0.35;
+
 // The bodies where the scene starts them (Body::position): what `render` shows.
 std::vector<glm::dvec3> start_positions(const Scene& scene);
 

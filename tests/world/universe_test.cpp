@@ -242,3 +242,27 @@ TEST(UniverseTest, FieldsBoxMovesTheViewWhileTheHandPushesAWall) {
 
 }  // namespace
 }  // namespace ps::world
+
+namespace ps {
+namespace {
+
+// The rolling manifold's rubber band (docs/fourd.md): from the probe to the nearest point of the
+// camera's line of sight through the screen centre, so perpendicular to that line (1e-12 mm:
+// a handful of double products of ~100 mm values).
+TEST(RubberBandMarkerTest, RunsFromTheProbeSquarelyToTheLineOfSight) {
+  Camera cam;
+  cam.position = {10.0, -100.0, 120.0};
+  cam.target = {3.0, 4.0, -2.0};
+  const glm::dvec3 axis = glm::normalize(cam.position - cam.target);
+  for (const glm::dvec3 probe : {glm::dvec3(10.0, 5.0, 3.0), glm::dvec3(-40.0, 7.0, 12.0), cam.target + 30.0 * axis}) {
+    const WorldMarker m = rubber_band_marker(probe, cam);
+    EXPECT_EQ(m.a, probe);
+    EXPECT_LT(glm::length(glm::cross(m.b - cam.target, axis)), 1e-12) << "b on the line of sight";
+    EXPECT_NEAR(glm::dot(m.a - m.b, axis), 0.0, 1e-12) << "square to it";
+  }
+  EXPECT_LT(glm::length(rubber_band_marker(cam.target + 30.0 * axis, cam).b - (cam.target + 30.0 * axis)), 1e-12)
+      << "on the line: no band";
+}
+
+}  // namespace
+}  // namespace ps
