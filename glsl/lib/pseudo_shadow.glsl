@@ -8,11 +8,43 @@ struct IntensityCurve {
   float influence_mm;  // no pseudo-shadow at or beyond this distance
 };
 
-// 1 at contact (d <= 0), floor + scale / (d + offset) above, 0 beyond the influence distance.
+#ifndef PS_INTENSITY_LUT
+#define PS_INTENSITY_LUT 0
+#endif
+
+#if PS_INTENSITY_LUT
+// The material's intensity_lut (src/scene/lut.h) replaces floor + scale / (d + offset): its rows
+// as texels (x = distance mm, y = intensity), read exactly (texelFetch) and interpolated here as
+// lut_eval() does on the CPU: linear between rows, the end rows' value outside them.
+layout(binding = 5) uniform sampler2D u_intensity_lut;  // RG32F, rows x 1
+
+float intensity_lut(float d) {
+  int n = textureSize(u_intensity_lut, 0).x;
+  vec2 first = texelFetch(u_intensity_lut, ivec2(0, 0), 0).xy;
+  vec2 last = texelFetch(u_intensity_lut, ivec2(n - 1, 0), 0).xy;
+  if (!(d > first.x)) return first.y;
+  if (d >= last.x) return last.y;
+  int lo = 0, hi = n - 1;  // x[lo] <= d < x[hi]: at most log2(256) = 8 steps
+  while (hi - lo > 1) {
+    int mid = (lo + hi) / 2;
+    if (texelFetch(u_intensity_lut, ivec2(mid, 0), 0).x <= d) lo = mid; else hi = mid;
+  }
+  vec2 a = texelFetch(u_intensity_lut, ivec2(lo, 0), 0).xy;
+  vec2 b = texelFetch(u_intensity_lut, ivec2(hi, 0), 0).xy;
+  return a.y + (d - a.x) / (b.x - a.x) * (b.y - a.y);
+}
+#endif
+
+// 1 at contact (d <= 0), floor + scale / (d + offset) above (or the material's lookup table),
+// 0 beyond the influence distance.
 float shadow_intensity(IntensityCurve c, float d) {
   if (!(d < c.influence_mm)) return 0.0;
   if (d <= 0.0) return 1.0;
+#if PS_INTENSITY_LUT
+  return clamp(intensity_lut(d), 0.0, 1.0);
+#else
   return clamp(c.floor_ + c.scale / (d + c.offset_mm), 0.0, 1.0);
+#endif
 }
 
 // Darkening (fraction of the surface's light removed, in [0, 1]) of the pseudo-shadow with the
@@ -32,7 +64,11 @@ float pseudo_shadow_darkening(IntensityCurve c, float d, float coverage, float o
   if (i <= 0.0) return 0.0;
   float amp = 0.0;
   if (d <= 0.0) {
+#if PS_INTENSITY_LUT
+    float half_gap = 0.5 * (1.0 - clamp(intensity_lut(0.0), 0.0, 1.0));
+#else
     float half_gap = 0.5 * (1.0 - clamp(c.floor_ + c.scale / c.offset_mm, 0.0, 1.0));
+#endif
     i = 1.0 - gain * half_gap;
     amp = gain * half_gap;
   } else if (d < onset_mm) {

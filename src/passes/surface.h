@@ -14,7 +14,8 @@
 //   exact only for power-of-two RGBA32F on llvmpipe, docs/gl-stack.md); the viewport covers the
 //   image, the padding stays cleared and drops out of every ratio computed from the mips.
 // Shaders: glsl/surface.{vert,frag}; variants PS_SHADOW, PS_TEXTURED, PS_GABOR_STRATIFIED,
-// PS_GABOR_BAKED.
+// PS_GABOR_BAKED, PS_INTENSITY_LUT (the material's intensity_lut, an RG32F texture at unit 5,
+// make_intensity_lut_texture; without it the source is byte-identical to before).
 #pragma once
 
 #include <limits>
@@ -98,7 +99,12 @@ struct SurfaceDraw {
   const gl::Texture* gabor_tile = nullptr;  // set: PS_GABOR_BAKED variant reads this tile
   bool gabor_tile_linear = false;           // the tile is values only, read bilinearly (PS_GABOR_BAKED 2)
   bool wireframe = false;                   // the triangles' edges only (glPolygonMode GL_LINE)
+  const gl::Texture* intensity_lut = nullptr;  // set: PS_INTENSITY_LUT variant reads this table
 };
+
+// The rows of a distance -> intensity table (scene/lut.h) as an RG32F texture of rows x 1 texels
+// (x = distance mm, y = intensity), read by texelFetch in glsl/lib/pseudo_shadow.glsl.
+gl::Texture make_intensity_lut_texture(const Lut& lut);
 
 struct SurfacePass {
   struct Params {
@@ -127,7 +133,7 @@ struct SurfacePass {
  private:
   // baked: 0 none, 1 Hermite lookup, 2 bilinear lookup (the PS_GABOR_BAKED value).
   Result<const gl::Program*> program(bool shadow, bool textured, bool stratified = false,
-                                     int baked = 0);
+                                     int baked = 0, bool intensity_lut = false);
 
   std::string glsl_root_;
   Params params_;
@@ -137,7 +143,7 @@ struct SurfacePass {
   // with their PS_SHADOW=0 variant.
   Status draw_all(const std::vector<SurfaceDraw>& draws, bool shadow);
 
-  std::map<std::tuple<bool, bool, bool, int>, gl::Program> programs_;
+  std::map<std::tuple<bool, bool, bool, int, bool>, gl::Program> programs_;
   gl::Texture color_, normal_, aov_, dummy_;
   gl::Renderbuffer depth_;
   gl::Framebuffer fbo_;
