@@ -23,7 +23,8 @@ namespace {
 constexpr int kSide = 512;              // each stimulus, pixels
 constexpr double kProbeRadiusMm = 8.0;  // the probe: a sphere as in the thesis's figures
 constexpr double kSpeedGapMm = 1.0;     // speed trials: the probe this far above (texture shown)
-constexpr double kSweepMm = 20.0;       // speed trials: the probe crosses this much of the view, then wraps
+constexpr double kWrapMm = 1000.0;      // speed trials: the probe (and the view with it) starts over after this
+constexpr double kPlaneMm = 4000.0;     // the plane: wide enough for kWrapMm either side
 
 // A plane of `m` seen from above (orthographic, 40 mm across) under a sphere probe.
 Scene stimulus_scene(const Scene& from, const Material& m) {
@@ -42,7 +43,7 @@ Scene stimulus_scene(const Scene& from, const Material& m) {
   Surface p;
   p.type = SurfaceType::kPlane;
   p.material = m.name;
-  p.size_mm = {200.0, 200.0};
+  p.size_mm = {kPlaneMm, kPlaneMm};
   p.resolution = 4;
   s.surfaces.push_back(p);
   s.probe.shape = ProbeShape::kSphere;
@@ -81,14 +82,17 @@ struct Answers {
   }
 };
 
-// The probe of one stimulus at time t: over the plane at the distance, or crossing it at the speed.
+// The probe of one stimulus `t_s` seconds into the trial: over the plane at the distance, or
+// gliding along +x at the speed with the view following it, so the shadow stays in the middle and
+// the texture it reveals slides through it (the texture is what moves on screen).
 void place_probe(Renderer& r, calibrate::CurveKind kind, double x, double t_s) {
   if (kind == calibrate::CurveKind::kDistance) {
     r.set_probe_state({0.0, 0.0, kProbeRadiusMm + x}, {0.0, 0.0, 0.0});
     return;
   }
-  const double along = std::fmod(x * t_s, kSweepMm) - 0.5 * kSweepMm;
+  const double along = std::fmod(x * t_s, kWrapMm);
   r.set_probe_state({along, 0.0, kProbeRadiusMm + kSpeedGapMm}, {x, 0.0, 0.0});
+  r.set_view_offset({along, 0.0, 0.0});
 }
 
 // Both stimuli into one RGBA8 image, left then right, bottom row first (GL's order).
@@ -105,6 +109,31 @@ Status draw_pair(Renderer& left, Renderer& right, std::vector<std::uint8_t>& rgb
               static_cast<std::uint8_t>(std::lround(255.0f * img.at(x, y, c)));
   }
   return ok_status();
+}
+
+// One frame: the pair of stimuli across the window (the texture's first row is the bottom one,
+// so v is flipped) and the question above it.
+void present(GLFWwindow* win, const gl::Texture& pair, const char* question, std::size_t trial) {
+  int fw = 0, fh = 0;
+  glfwGetFramebufferSize(win, &fw, &fh);
+  glBindFramebuffer(GL_FRAMEBUFFER, 0);
+  glViewport(0, 0, fw, fh);
+  glClearColor(0.0f, 0.0f, 0.0f, 1.0f);
+  glClear(GL_COLOR_BUFFER_BIT);
+  ImGui_ImplOpenGL3_NewFrame();
+  ImGui_ImplGlfw_NewFrame();
+  ImGui::NewFrame();
+  ImGui::GetBackgroundDrawList()->AddImage(reinterpret_cast<ImTextureID>(static_cast<std::intptr_t>(pair.id())),
+                                           ImVec2(0, 0), ImGui::GetIO().DisplaySize, ImVec2(0, 1), ImVec2(1, 0));
+  ImGui::SetNextWindowPos(ImVec2(10, 10));
+  ImGui::SetNextWindowBgAlpha(0.7f);
+  ImGui::Begin("question", nullptr, ImGuiWindowFlags_NoDecoration | ImGuiWindowFlags_AlwaysAutoResize | ImGuiWindowFlags_NoInputs);
+  ImGui::Text("%s  Left / Right arrow.  Esc stops.", question);
+  ImGui::Text("trial %zu", trial);
+  ImGui::End();
+  ImGui::Render();
+  ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
+  glfwSwapBuffers(win);
 }
 
 }  // namespace
@@ -132,7 +161,7 @@ Status run_calibrate_window(calibrate::Calibration& cal, const CalibrateWindowPa
   const calibrate::CurveKind kind = cal.spec().kind;
   const char* question = kind == calibrate::CurveKind::kDistance ? "Which pseudo-shadow is closer?"
                                                                  : "Which texture is moving faster?";
-  const double start = glfwGetTime();
+  double trial_start = glfwGetTime();
   while (!cal.done() && !glfwWindowShouldClose(win)) {
     glfwPollEvents();
     if (answers.quit) break;
@@ -143,35 +172,15 @@ Status run_calibrate_window(calibrate::Calibration& cal, const CalibrateWindowPa
       answers.left.clear();
       if (Status st = write_file_atomic(p.log_path, calibrate::format_trial_log(cal)); !st) return st;
       if (cal.done()) break;
+      trial_start = glfwGetTime();
     }
     const calibrate::Trial& t = cal.current();
-    const double now = glfwGetTime() - start;
+    const double now = glfwGetTime() - trial_start;
     place_probe(*left.value(), kind, t.comparison_left ? t.comparison : t.reference, now);
     place_probe(*right.value(), kind, t.comparison_left ? t.reference : t.comparison, now);
     if (Status st = draw_pair(*left.value(), *right.value(), rgba); !st) return st;
     glTextureSubImage2D(pair.id(), 0, 0, 0, 2 * kSide, kSide, GL_RGBA, GL_UNSIGNED_BYTE, rgba.data());
-    int fw = 0, fh = 0;
-    glfwGetFramebufferSize(win, &fw, &fh);
-    glBindFramebuffer(GL_FRAMEBUFFER, 0);
-    glViewport(0, 0, fw, fh);
-    glClearColor(0.0f, 0.0f, 0.0f, 1.0f);
-    glClear(GL_COLOR_BUFFER_BIT);
-    ImGui_ImplOpenGL3_NewFrame();
-    ImGui_ImplGlfw_NewFrame();
-    ImGui::NewFrame();
-    const ImVec2 size = ImGui::GetIO().DisplaySize;
-    // The texture's first row is the bottom one: flip v.
-    ImGui::GetBackgroundDrawList()->AddImage(reinterpret_cast<ImTextureID>(static_cast<std::intptr_t>(pair.id())),
-                                             ImVec2(0, 0), size, ImVec2(0, 1), ImVec2(1, 0));
-    ImGui::SetNextWindowPos(ImVec2(10, 10));
-    ImGui::SetNextWindowBgAlpha(0.7f);
-    ImGui::Begin("question", nullptr, ImGuiWindowFlags_NoDecoration | ImGuiWindowFlags_AlwaysAutoResize | ImGuiWindowFlags_NoInputs);
-    ImGui::Text("%s  Left / Right arrow.  Esc stops.", question);
-    ImGui::Text("trial %zu", cal.trials().size() + 1);
-    ImGui::End();
-    ImGui::Render();
-    ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
-    glfwSwapBuffers(win);
+    present(win, pair, question, cal.trials().size() + 1);
   }
   return ok_status();
 }
