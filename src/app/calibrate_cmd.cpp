@@ -115,47 +115,78 @@ calibrate::CurveFn shown_curve(const Material& m, CurveKind kind) {
   return [m](double v) { return amplitude_gain(m, v); };
 }
 
+// The material named by --material (default the scene's first); null when there is none.
+const Material* find_material(const Scene& scene, const std::string& name) {
+  if (name.empty()) return scene.materials.empty() ? nullptr : &scene.materials.front();
+  for (const Material& m : scene.materials)
+    if (m.name == name) return &m;
+  return nullptr;
+}
+
+// The staircases' spec from the options: references and range (defaults per curve), steps.
+Result<calibrate::Spec> make_spec(const CalibrateArgs& a, const Material& m, double& range) {
+  calibrate::Spec spec;
+  spec.kind = a.curve == "distance" ? CurveKind::kDistance : CurveKind::kSpeed;
+  const double first_peak = m.peak_hz * std::min(m.gabor.lambda_min_mm, m.gabor.lambda_max_mm);
+  spec.references = spec.kind == CurveKind::kDistance
+                        ? std::vector<double>{1.0, 2.0, 4.0, 8.0}
+                        : std::vector<double>{0.2 * first_peak, 0.4 * first_peak, 0.6 * first_peak, 0.8 * first_peak};
+  if (!a.references.empty()) {
+    auto r = parse_references(a.references);
+    if (!r) return r.error();
+    spec.references = r.value();
+  }
+  const double last = spec.references.back();
+  range = a.range > 0.0 ? a.range : spec.kind == CurveKind::kDistance ? 1.25 * last : first_peak;
+  if (range <= last)
+    return make_error("--range (" + number(range) + ") must exceed the last reference (" + number(last) +
+                      "), e.g. --range " + number(1.25 * last));
+  spec.seed = static_cast<std::uint64_t>(a.seed);
+  spec.staircase.start_delta = 0.25 * spec.references.front() + 0.05 * range;
+  spec.staircase.max_delta = range;
+  spec.staircase.reversals = static_cast<int>(a.reversals);
+  spec.staircase.average_last = static_cast<int>(a.average_last);
+  return spec;
+}
+
+// The equalising table with the JNDs in its comments (and on stdout unless quiet).
+Status write_table(const CalibrateArgs& a, const calibrate::Calibration& cal, const Material& m,
+                   const calibrate::CurveFn& shown, double range) {
+  const calibrate::Spec& spec = cal.spec();
+  const bool distance = spec.kind == CurveKind::kDistance;
+  const std::vector<double> jnds = cal.jnds();
+  const Lut lut = calibrate::equalising_lut(spec.kind, shown, spec.references, jnds, range,
+                                            distance ? m.influence_distance_mm : 4.0 * range);
+  std::vector<std::string> comments = {"pseudoshadow calibrate --curve " + a.curve + ", material " + m.name + ", " +
+                                       std::to_string(cal.trials().size()) + " trials, observer " + a.observer};
+  const std::string unit = distance ? "mm" : "mm/s";
+  for (std::size_t i = 0; i < jnds.size(); ++i) {
+    comments.push_back("JND at " + number(spec.references[i]) + " " + unit + ": " + number(jnds[i]) + " " + unit +
+                       " (" + std::to_string(cal.reversals()[i]) + " reversals)");
+    if (!a.quiet) std::printf("%s\n", comments.back().c_str());
+  }
+  comments.push_back("equal steps over [0, " + number(range) + "] " + unit + "; the material's curve beyond");
+  if (Status s = write_lut(a.out, lut, comments); !s) return s;
+  if (!a.quiet) std::printf("calibrate: %zu trials; table %s (%zu rows)\n", cal.trials().size(), a.out.c_str(), lut.points.size());
+  return ok_status();
+}
+
 int calibrate_main(const cli::Command& cmd, const CalibrateArgs& a) {
   if (a.curve.empty() || a.out.empty())
     return cmd.usage_error(make_error("--curve and --out are required (e.g. --curve distance --out textures/mine.lut)"));
   auto scene = cli::load_scene_or_default(a.scene);
   if (!scene) return cmd.fail(scene.error(), cli::scene_exit_code(scene.error()));
-  const Material* m = scene->materials.empty() ? nullptr : &scene->materials.front();
-  if (!a.material.empty()) {
-    m = nullptr;
-    for (const Material& x : scene->materials)
-      if (x.name == a.material) m = &x;
-    if (!m) return cmd.usage_error(make_error("--material: the scene has no material '" + a.material + "'"));
-  }
-  if (!m) return cmd.fail(make_error("the scene has no material to calibrate"));
-  const CurveKind kind = a.curve == "distance" ? CurveKind::kDistance : CurveKind::kSpeed;
-  const double first_peak = m->peak_hz * std::min(m->gabor.lambda_min_mm, m->gabor.lambda_max_mm);
-  std::vector<double> refs = kind == CurveKind::kDistance
-                                 ? std::vector<double>{1.0, 2.0, 4.0, 8.0}
-                                 : std::vector<double>{0.2 * first_peak, 0.4 * first_peak, 0.6 * first_peak, 0.8 * first_peak};
-  if (!a.references.empty()) {
-    auto r = parse_references(a.references);
-    if (!r) return cmd.usage_error(r.error());
-    refs = r.value();
-  }
-  const double range = a.range > 0.0 ? a.range : kind == CurveKind::kDistance ? 1.25 * refs.back() : first_peak;
-  if (range <= refs.back())
-    return cmd.usage_error(make_error("--range (" + number(range) + ") must exceed the last reference (" +
-                                      number(refs.back()) + "), e.g. --range " + number(1.25 * refs.back())));
-  calibrate::Spec spec;
-  spec.kind = kind;
-  spec.references = refs;
-  spec.seed = static_cast<std::uint64_t>(a.seed);
-  spec.staircase.start_delta = 0.25 * refs.front() + 0.05 * range;
-  spec.staircase.max_delta = range;
-  spec.staircase.reversals = static_cast<int>(a.reversals);
-  spec.staircase.average_last = static_cast<int>(a.average_last);
+  const Material* m = find_material(scene.value(), a.material);
+  if (!m) return cmd.usage_error(make_error("--material: the scene has no material '" + a.material + "'"));
+  double range = 0.0;
+  auto spec = make_spec(a, *m, range);
+  if (!spec) return cmd.usage_error(spec.error());
   const std::string log_path = a.log.empty() ? std::filesystem::path(a.out).replace_extension(".trials.csv").string() : a.log;
   for (const std::string& p : {a.out, log_path})
     if (Status s = prepare_output_dir(p); !s) return cmd.fail(s.error());
 
-  const calibrate::CurveFn shown = shown_curve(*m, kind);
-  calibrate::Calibration cal(spec);
+  const calibrate::CurveFn shown = shown_curve(*m, spec->kind);
+  calibrate::Calibration cal(spec.value());
   if (a.observer == "simulated") {
     calibrate::SimulatedObserver o(shown, {a.observer_jnd, a.observer_weber, static_cast<std::uint64_t>(a.seed) + 1});
     calibrate::run_simulated(cal, o);
@@ -168,24 +199,8 @@ int calibrate_main(const cli::Command& cmd, const CalibrateArgs& a) {
     std::printf("calibrate: stopped after %zu trials; no table written; trials in %s\n", cal.trials().size(), log_path.c_str());
     return cli::kExitOk;
   }
-  const std::vector<double> jnds = cal.jnds();
-  const double tail = kind == CurveKind::kDistance ? m->influence_distance_mm : 4.0 * range;
-  Lut lut = calibrate::equalising_lut(kind, shown, refs, jnds, range, tail);
-  std::vector<std::string> comments = {"pseudoshadow calibrate --curve " + a.curve + ", material " + m->name + ", " +
-                                       std::to_string(cal.trials().size()) + " trials, observer " + a.observer};
-  const char* unit = kind == CurveKind::kDistance ? "mm" : "mm/s";
-  for (std::size_t i = 0; i < refs.size(); ++i) {
-    char line[160];
-    std::snprintf(line, sizeof line, "JND at %.6g %s: %.6g %s (%d reversals)", refs[i], unit, jnds[i], unit,
-                  cal.reversals()[i]);
-    comments.push_back(line);
-    if (!a.quiet) std::printf("%s\n", line);
-  }
-  comments.push_back("equal steps over [0, " + number(range) + "] " + unit + "; the material's curve beyond");
-  if (Status s = write_lut(a.out, lut, comments); !s) return cmd.fail(s.error());
-  if (!a.quiet)
-    std::printf("calibrate: %zu trials; table %s (%zu rows), trials %s\n", cal.trials().size(), a.out.c_str(),
-                lut.points.size(), log_path.c_str());
+  if (Status s = write_table(a, cal, *m, shown, range); !s) return cmd.fail(s.error());
+  if (!a.quiet) std::printf("calibrate: trials %s\n", log_path.c_str());
   return cli::kExitOk;
 }
 
