@@ -39,19 +39,23 @@ SurfaceBlock make_surface_block(const SurfaceFrame& fr, const Material& m, const
   return b;
 }
 
-gl::Texture make_intensity_lut_texture(const Lut& lut) {
-  assert(!lut.empty() && "make_intensity_lut_texture: empty table (draw without PS_INTENSITY_LUT)");
-  std::vector<float> rg;
-  for (const LutPoint& p : lut.points) {
-    rg.push_back(static_cast<float>(p.x));
-    rg.push_back(static_cast<float>(p.y));
+IntensityLutBlock make_intensity_lut_block(const Lut& lut) {
+  assert(lut.points.size() >= 2 && lut.points.size() <= static_cast<std::size_t>(kMaxLutRows) &&
+         "make_intensity_lut_block: 2..kMaxLutRows rows (draw without PS_INTENSITY_LUT when empty)");
+  IntensityLutBlock b;
+  for (std::size_t i = 0; i < lut.points.size(); ++i) {
+    glm::vec4& pair = b.rows[i / 2];
+    const int at = i % 2 == 0 ? 0 : 2;
+    pair[at] = static_cast<float>(lut.points[i].x);
+    pair[at + 1] = static_cast<float>(lut.points[i].y);
   }
-  const GLsizei n = static_cast<GLsizei>(lut.points.size());
-  gl::Texture t = gl::make_texture_2d(n, 1, GL_RG32F);
-  glTextureSubImage2D(t.id(), 0, 0, 0, n, 1, GL_RG, GL_FLOAT, rg.data());
-  glTextureParameteri(t.id(), GL_TEXTURE_MIN_FILTER, GL_NEAREST);
-  glTextureParameteri(t.id(), GL_TEXTURE_MAG_FILTER, GL_NEAREST);
-  return t;
+  b.count = glm::uvec4(static_cast<unsigned>(lut.points.size()), 0u, 0u, 0u);
+  return b;
+}
+
+gl::Buffer make_intensity_lut_buffer(const Lut& lut) {
+  const IntensityLutBlock block = make_intensity_lut_block(lut);
+  return gl::make_buffer(sizeof block, &block, 0);
 }
 
 Status SurfacePass::init(const std::string& glsl_root, const Params& params) {
@@ -170,7 +174,7 @@ Status SurfacePass::draw_all(const std::vector<SurfaceDraw>& draws, bool shadow)
     glUseProgram(prog.value()->id());
     glBindTextureUnit(1, d.albedo ? d.albedo->id() : dummy_.id());
     glBindTextureUnit(2, d.gabor_tile ? d.gabor_tile->id() : dummy_.id());
-    if (d.intensity_lut) glBindTextureUnit(5, d.intensity_lut->id());
+    if (d.intensity_lut) glBindBufferBase(GL_UNIFORM_BUFFER, 1, d.intensity_lut->id());
     glBindBufferRange(GL_UNIFORM_BUFFER, 0, ubo_.id(), static_cast<GLintptr>(i) * ubo_stride_, sizeof(SurfaceBlock));
     if (d.wireframe) glPolygonMode(GL_FRONT_AND_BACK, GL_LINE);
     d.mesh->draw();

@@ -235,7 +235,7 @@ Status Renderer::load_materials() {
       if (!t) return t.error();
       ms.albedo = std::move(t.value());
     }
-    if (!m.intensity_lut.empty()) ms.intensity_lut = make_intensity_lut_texture(m.intensity_lut);
+    if (!m.intensity_lut.empty()) ms.intensity_lut = make_intensity_lut_buffer(m.intensity_lut);
     ms.gabor_setup = make_gabor_setup(m.gabor);
     if (m.textured) {
       // Less work than even the smallest tile auto could pick: decided before auto measures
