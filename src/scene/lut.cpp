@@ -7,6 +7,7 @@
 #include <cmath>
 #include <cstdio>
 #include <cstring>
+#include <filesystem>
 #include <fstream>
 #include <sstream>
 
@@ -110,6 +111,12 @@ Result<Lut> parse_lut(std::string_view text, const std::string& source_name) {
 }
 
 Result<Lut> read_lut(const std::string& path, LutAxis expected) {
+  // 256 rows of two numbers and comments fit in far less; a bigger file is not a table.
+  constexpr std::uintmax_t kMaxBytes = 1 << 20;
+  std::error_code ec;
+  if (const std::uintmax_t bytes = std::filesystem::file_size(path, ec); !ec && bytes > kMaxBytes)
+    return make_error(path + ": lookup table file is " + std::to_string(bytes) + " bytes, more than the limit of " +
+                      std::to_string(kMaxBytes));
   std::ifstream in(path, std::ios::binary);
   if (!in) return make_error(path + ": cannot open lookup table: " + std::strerror(errno));
   std::ostringstream ss;

@@ -70,6 +70,13 @@ TEST(LutTest, LinearBetweenRowsClampedOutside) {
   EXPECT_EQ(lut_eval(lut, 1e9), 0.0);  // after the last row: its value
 }
 
+TEST(LutTest, HugeFileIsRefusedBeforeReading) {
+  const std::string path = write_temp("huge.lut", "lut distance_mm intensity\n" + std::string(1 << 20, '#'));
+  auto lut = read_lut(path, LutAxis::kDistanceMm);
+  ASSERT_FALSE(lut.ok());
+  EXPECT_EQ(lut.error().message, path + ": lookup table file is 1048602 bytes, more than the limit of 1048576");
+}
+
 TEST(LutTest, WrittenTextReadsBack) {
   Lut lut;
   lut.axis = LutAxis::kSpeedMmS;
