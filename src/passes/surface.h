@@ -102,7 +102,7 @@ struct SurfaceDraw {
   const gl::Buffer* intensity_lut = nullptr;  // set: PS_INTENSITY_LUT variant reads this table
 };
 
-// std140 mirror of IntensityLutBlock in glsl/lib/pseudo_shadow.glsl: a distance -> intensity
+// std140 mirror of IntensityLutBlock in glsl/lib/intensity_lut.glsl: a distance -> intensity
 // table's rows (scene/lut.h), two per vec4 (row 2k in xy, row 2k + 1 in zw), and their count.
 struct IntensityLutBlock {
   glm::vec4 rows[kMaxLutRows / 2]{};

@@ -9,7 +9,7 @@
 // Headers: `lut distance_mm intensity` (materials.NAME.intensity_lut) and `lut speed_mm_s gain`
 // (materials.NAME.speed_gain_lut). Between rows the value is linear in x; before the first and
 // after the last row it is the end row's y (clamped ends). The GPU reads the same rows from a
-// uniform block (glsl/lib/pseudo_shadow.glsl, intensity_lut) and interpolates them the same way.
+// uniform block (glsl/lib/intensity_lut.glsl) and interpolates them the same way.
 #pragma once
 
 #include <string>

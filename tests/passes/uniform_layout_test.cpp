@@ -133,7 +133,7 @@ TEST(UniformLayoutTest, GaborBlockMatchesInEveryPassThatReadsIt) {
   }
 }
 
-// The intensity_lut variant (lib/pseudo_shadow.glsl) compiles, shadowed and not (the bodies'
+// The intensity_lut variant (lib/intensity_lut.glsl) compiles, shadowed and not (the bodies'
 // shadows read the table too), its table's block matches IntensityLutBlock, and the surface
 // block is as it was.
 TEST(UniformLayoutTest, IntensityLutBlockMatchesAndKeepsTheSurfaceBlock) {

@@ -1,4 +1,4 @@
-// A material's intensity_lut (scene/lut.h) on the GPU (PS_INTENSITY_LUT, glsl/lib/pseudo_shadow.glsl)
+// A material's intensity_lut (scene/lut.h) on the GPU (PS_INTENSITY_LUT, glsl/lib/intensity_lut.glsl)
 // against its CPU twin (reference/modulation.h), on flat_plane_scene: an untextured plane seen
 // from above under a sphere probe (r = 8 mm), a table that is far from the thesis curve (so a
 // shader still using the formula fails by > 0.1) and an influence distance inside the footprint.
