@@ -38,7 +38,7 @@ struct CalibrateArgs {
   std::string material, curve, references, out, log, observer = "human";
   double range = 0.0, observer_jnd = 0.01, observer_weber = 0.1;
   long long seed = 1, reversals = 16, average_last = 12;
-  bool quiet = false;
+  bool quiet = false, window = false;
 };
 
 void declare(cli::Command& cmd, CalibrateArgs& a) {
@@ -76,6 +76,9 @@ void declare(cli::Command& cmd, CalibrateArgs& a) {
                     "simulated observer: its JND in the shown quantity at 0 (default 0.01)");
   cli::add_positive(app, "--observer-weber", "W", a.observer_weber, 10.0, "0.1",
                     "simulated observer: its Weber fraction (default 0.1)");
+  app.add_flag("--window", a.window,
+               "with --observer simulated: show the trials in the window while the simulated observer answers "
+               "(the same trials, log and table as headless)");
   cli::add_int(app, "--seed", "N", a.seed, 0LL, 9'007'199'254'740'991LL,
                "order of the trials, sides, and the simulated observer's answers (default 1)");
   cli::add_int(app, "--reversals", "N", a.reversals, 2LL, 1000LL, "reversals per staircase before it ends (default 16)");
@@ -187,11 +190,13 @@ int calibrate_main(const cli::Command& cmd, const CalibrateArgs& a) {
 
   const calibrate::CurveFn shown = shown_curve(*m, spec->kind);
   calibrate::Calibration cal(spec.value());
-  if (a.observer == "simulated") {
-    calibrate::SimulatedObserver o(shown, {a.observer_jnd, a.observer_weber, static_cast<std::uint64_t>(a.seed) + 1});
-    calibrate::run_simulated(cal, o);
+  calibrate::SimulatedObserver observer(shown, {a.observer_jnd, a.observer_weber, static_cast<std::uint64_t>(a.seed) + 1});
+  const bool simulated = a.observer == "simulated";
+  if (simulated && !a.window) {
+    calibrate::run_simulated(cal, observer);
   } else {
-    CalibrateWindowParams wp{scene.value(), *m, log_path};
+    CalibrateWindowParams wp{scene.value(), *m, log_path, {}};
+    if (simulated) wp.script = [&](const calibrate::Trial& t) { return observer.answer_left(t, spec->kind); };
     if (Status s = run_calibrate_window(cal, wp); !s) return cmd.fail(s.error());
   }
   if (Status s = write_file_atomic(log_path, calibrate::format_trial_log(cal)); !s) return cmd.fail(s.error());

@@ -162,11 +162,14 @@ Status run_calibrate_window(calibrate::Calibration& cal, const CalibrateWindowPa
   const char* question = kind == calibrate::CurveKind::kDistance ? "Which pseudo-shadow is closer?"
                                                                  : "Which texture is moving faster?";
   double trial_start = glfwGetTime();
+  std::size_t shown = static_cast<std::size_t>(-1);  // the last trial drawn (index), none yet
   while (!cal.done() && !glfwWindowShouldClose(win)) {
     glfwPollEvents();
     if (answers.quit) break;
     // Each press answers the trial on screen when it was pressed (the first press; presses that
-    // came in the same frame after it would answer a trial never seen, so they are dropped).
+    // came in the same frame after it would answer a trial never seen, so they are dropped). A
+    // script answers a trial after its first frame.
+    if (p.script && shown == cal.trials().size()) answers.left.assign(1, p.script(cal.current()));
     if (!answers.left.empty()) {
       cal.answer(answers.left.front());
       answers.left.clear();
@@ -181,6 +184,7 @@ Status run_calibrate_window(calibrate::Calibration& cal, const CalibrateWindowPa
     if (Status st = draw_pair(*left.value(), *right.value(), rgba); !st) return st;
     glTextureSubImage2D(pair.id(), 0, 0, 0, 2 * kSide, kSide, GL_RGBA, GL_UNSIGNED_BYTE, rgba.data());
     present(win, pair, question, cal.trials().size() + 1);
+    shown = cal.trials().size();
   }
   return ok_status();
 }
