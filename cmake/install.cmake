@@ -18,7 +18,7 @@ install(TARGETS ps_image_oiio LIBRARY DESTINATION ${CMAKE_INSTALL_LIBDIR}/pseudo
 install(DIRECTORY glsl/ DESTINATION ${PS_DATA_INSTALL_DIR}/glsl
         FILES_MATCHING PATTERN "*.vert" PATTERN "*.frag" PATTERN "*.comp" PATTERN "*.glsl")
 install(DIRECTORY scenes/ DESTINATION ${PS_DATA_INSTALL_DIR}/scenes FILES_MATCHING PATTERN "*.toml")
-install(DIRECTORY textures/ DESTINATION ${PS_DATA_INSTALL_DIR}/textures FILES_MATCHING PATTERN "*.png")
+install(DIRECTORY textures/ DESTINATION ${PS_DATA_INSTALL_DIR}/textures FILES_MATCHING PATTERN "*.png" PATTERN "*.lut")
 
 # The C++ API and its CMake package: find_package(pseudoshadow CONFIG) gives pseudoshadow::pseudoshadow.
 install(TARGETS pseudoshadow_shared EXPORT pseudoshadowTargets

@@ -1,6 +1,6 @@
 // Pseudo-shadow formulas (thesis §4.3.2). CPU twin: src/reference/modulation.{h,cpp}.
 #pragma once
-
+#include "intensity_lut.glsl"
 struct IntensityCurve {
   float floor_;      // intensity far away (thesis 0.1)
   float scale;       // thesis 0.9
@@ -12,7 +12,11 @@ struct IntensityCurve {
 float shadow_intensity(IntensityCurve c, float d) {
   if (!(d < c.influence_mm)) return 0.0;
   if (d <= 0.0) return 1.0;
+#if PS_INTENSITY_LUT
+  return clamp(intensity_lut(d), 0.0, 1.0);
+#else
   return clamp(c.floor_ + c.scale / (d + c.offset_mm), 0.0, 1.0);
+#endif
 }
 
 // Darkening (fraction of the surface's light removed, in [0, 1]) of the pseudo-shadow with the
@@ -32,7 +36,11 @@ float pseudo_shadow_darkening(IntensityCurve c, float d, float coverage, float o
   if (i <= 0.0) return 0.0;
   float amp = 0.0;
   if (d <= 0.0) {
+#if PS_INTENSITY_LUT
+    float half_gap = 0.5 * (1.0 - clamp(intensity_lut(0.0), 0.0, 1.0));
+#else
     float half_gap = 0.5 * (1.0 - clamp(c.floor_ + c.scale / c.offset_mm, 0.0, 1.0));
+#endif
     i = 1.0 - gain * half_gap;
     amp = gain * half_gap;
   } else if (d < onset_mm) {

@@ -39,6 +39,7 @@ struct BenchArgs {
   int reps = 3;
   bool shadow_cost = false;  // only the pseudo-shadow's cost over plain shading; prints, writes nothing
   bool shadow_distance = false;  // only surface_normal against reference_plane distances; prints
+  bool lut_cost = false;  // only the thesis formula against the same curve as a lookup table; prints
 };
 
 void declare(cli::Command& cmd, BenchArgs& a) {
@@ -79,6 +80,10 @@ void declare(cli::Command& cmd, BenchArgs& a) {
   app.add_flag("--shadow-distance", a.shadow_distance,
                "only measure render.shadow_distance = surface_normal against reference_plane on the curved "
                "shipped scenes (Suzanne, the torus) at 512x512, and print the table; writes no files");
+  app.add_flag("--lut-cost", a.lut_cost,
+               "only measure the default scene's frame with its intensity curve read from a lookup table "
+               "(textures/intensity_thesis.lut) against the formula at 512x512 and 1024x1024, and print the "
+               "table; writes no files");
   cli::add_quiet_option(app, a.quiet);
 }
 
@@ -152,6 +157,22 @@ Status shadow_cost_only(const BenchArgs& a) {
   return ok_status();
 }
 
+// --lut-cost: the intensity curve read from a lookup table against the formula (about 20 s).
+Status lut_cost_only(const BenchArgs& a) {
+  bench::BenchOptions o;
+  auto ctx = bench_context(a, o);
+  if (!ctx) return ctx.error();
+  std::printf("| size | frame, formula | frame, intensity_lut | ratio | surface pass ratio |\n| --- | --- | --- | --- | --- |\n");
+  for (int size : {512, 1024}) {
+    if (!a.quiet) std::fprintf(stderr, "lookup table cost at %d^2 ...\n", size);
+    auto c = bench::run_lut_cost(o, default_scene_base_dir() + "/../textures/intensity_thesis.lut", size);
+    if (!c) return c.error();
+    std::printf("| %d^2 | %.2f ms | %.2f ms | %.3fx | %.3fx |\n", c->size, c->formula_frame_ms, c->lut_frame_ms, c->ratio,
+                c->surface_ratio);
+  }
+  return ok_status();
+}
+
 // --shadow-distance: what the distance along each point's own normal costs (about 20 s).
 Status shadow_distance_only(const BenchArgs& a) {
   bench::BenchOptions o;
@@ -209,6 +230,7 @@ int run_and_report(const cli::Command& cmd, const BenchArgs& a) {
                    : a.first_image ? first_image(a)
                    : a.shadow_cost ? shadow_cost_only(a)
                    : a.shadow_distance ? shadow_distance_only(a)
+                   : a.lut_cost ? lut_cost_only(a)
                                    : run(a);
   return s ? cli::kExitOk : cmd.fail(s.error());
 }

@@ -139,4 +139,42 @@ Result<DistanceCost> run_distance_cost(const BenchOptions& o, const std::string&
   return c;
 }
 
+Result<LutCost> run_lut_cost(const BenchOptions& o, const std::string& table, int size) {
+  const std::string size_set = "render.size=[" + std::to_string(size) + "," + std::to_string(size) + "]";
+  auto formula = parse_scene(default_scene_text(), "<embedded default>", default_scene_base_dir(), {size_set});
+  if (!formula) return formula.error();
+  auto lut = parse_scene(default_scene_text(), "<embedded default>", default_scene_base_dir(),
+                         {size_set, "materials.wood.intensity_lut=\"" + table + "\""});
+  if (!lut) return lut.error();
+  auto made_formula = Renderer::create(formula.value(), {});
+  if (!made_formula) return made_formula.error();
+  RendererOptions share;
+  share.reuse_tiles_from = made_formula.value().get();
+  auto made_lut = Renderer::create(lut.value(), share);
+  if (!made_lut) return made_lut.error();
+  std::map<std::string, std::vector<double>> formula_passes, lut_passes, warm;
+  std::vector<double> formula_frames, lut_frames, cpu, unused;
+  for (int i = 0; i < std::max(o.warm_frames, 2); ++i) {
+    if (Status st = timed_frame(*made_formula.value(), formula.value(), warm, unused, cpu); !st) return st.error();
+    if (Status st = timed_frame(*made_lut.value(), lut.value(), warm, unused, cpu); !st) return st.error();
+  }
+  const int rounds = std::max(o.rounds, 7), per_round = std::max(o.timed_frames, 8);
+  for (int round = 0; round < rounds; ++round)
+    for (int k = 0; k < 2 * per_round; ++k) {
+      const bool first = (k % 2 == 0) == (round % 2 == 0);
+      Status st = first ? timed_frame(*made_formula.value(), formula.value(), formula_passes, formula_frames, cpu)
+                        : timed_frame(*made_lut.value(), lut.value(), lut_passes, lut_frames, cpu);
+      if (!st) return st.error();
+    }
+  LutCost c;
+  c.size = size;
+  c.formula_frame_ms = median_of(formula_frames);
+  c.lut_frame_ms = median_of(lut_frames);
+  c.ratio = c.lut_frame_ms / c.formula_frame_ms;
+  c.formula_surface_ms = median_of(formula_passes["surface"]);
+  c.lut_surface_ms = median_of(lut_passes["surface"]);
+  c.surface_ratio = c.lut_surface_ms / c.formula_surface_ms;
+  return c;
+}
+
 }  // namespace ps::bench

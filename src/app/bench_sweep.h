@@ -83,6 +83,16 @@ struct DistanceCost {
 };
 Result<DistanceCost> run_distance_cost(const BenchOptions& o, const std::string& scene_path, int size);
 
+// The default scene's frame with the thesis intensity formula against the same curve read from a
+// lookup table (`table`, e.g. textures/intensity_thesis.lut: PS_INTENSITY_LUT) at size^2, frames
+// alternated in rounds (app/bench_shadow_cost.cpp): what reading a table costs.
+struct LutCost {
+  int size = 0;
+  double formula_frame_ms = 0.0, lut_frame_ms = 0.0, ratio = 0.0;          // medians; ratio of them
+  double formula_surface_ms = 0.0, lut_surface_ms = 0.0, surface_ratio = 0.0;
+};
+Result<LutCost> run_lut_cost(const BenchOptions& o, const std::string& table, int size);
+
 struct SkipRatios {
   double beyond_influence = 0.0;  // frame with probe far / its plain shading (surface) pass
   double untextured = 0.0;        // PS_TEXTURED=0 frame / textured frame with no textured pixel

@@ -16,6 +16,7 @@ int run_bench_haptics(int argc, char** argv);  // src/app/bench_haptics_cmd.cpp
 int run_bench(int argc, char** argv);          // src/app/bench_cmd.cpp
 int run_tune(int argc, char** argv);           // src/app/tune_cmd.cpp
 int run_maze(int argc, char** argv);           // src/app/maze_cmd.cpp
+int run_calibrate(int argc, char** argv);      // src/app/calibrate_cmd.cpp
 
 struct CommandInfo {
   std::string_view name;
@@ -32,6 +33,7 @@ inline constexpr CommandInfo kCommands[] = {
     {"bench", "sweep accuracy knobs: time vs error CSV + plot, skip ratios, peak RSS", run_bench},
     {"tune", "parameter sweeps into a labelled contact sheet, or a scripted console session", run_tune},
     {"maze", "the haptic cue maze of seed 003: run a participant, script one, summarize the logs", run_maze},
+    {"calibrate", "2AFC staircases measure JNDs along a curve; write a lookup table of equal-looking steps", run_calibrate},
 };
 
 }  // namespace ps

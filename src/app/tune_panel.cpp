@@ -209,7 +209,66 @@ void TunePanel::world_section(TuneSession& session) {
   }
 }
 
-void TunePanel::plots(const TuneSession& session) {
+// Under a curve's plot: its lookup table as a row of vertical sliders, one per row (the row's y;
+// its x in the tooltip), applied when released (TuneSession::set_curve, saved with the overrides
+// as a table file). Until edited, a button turns the curve into kEditRows rows sampled from it.
+void TunePanel::curve_editor(TuneSession& session, const Material& m, bool intensity, double x_max) {
+  constexpr int kEditRows = 12;  // enough to shape the curve, few enough to fit the strip
+  constexpr int kMaxSliders = 24;
+  const std::string key = "materials." + m.name + (intensity ? ".intensity_lut" : ".speed_gain_lut");
+  const Lut& scene_lut = intensity ? m.intensity_lut : m.speed_gain_lut;
+  const auto edited = session.curve_edits().find(key);
+  const Lut* cur = edited != session.curve_edits().end() ? &edited->second : scene_lut.empty() ? nullptr : &scene_lut;
+  ImGui::PushID(key.c_str());
+  if (!cur || static_cast<int>(cur->points.size()) > kMaxSliders) {
+    if (ImGui::Button(cur ? "resample the table to edit it" : "edit as a curve")) {
+      const LutAxis axis = intensity ? LutAxis::kDistanceMm : LutAxis::kSpeedMmS;
+      Lut lut = sample_lut(axis, x_max, kEditRows - (intensity ? 1 : 0), [&](double x) {
+        return intensity ? intensity_curve(m, x) : amplitude_gain(m, x);
+      });
+      // The intensity table's last row at the influence distance keeps the curve's tail.
+      if (intensity && m.influence_distance_mm > x_max) lut.points.push_back({m.influence_distance_mm, intensity_curve(m, m.influence_distance_mm)});
+      set_curve(session, key, lut);
+    }
+    ImGui::PopID();
+    return;
+  }
+  const int n = static_cast<int>(cur->points.size());
+  const float spacing = ImGui::GetStyle().ItemInnerSpacing.x;
+  const float w = std::max(6.f, (ImGui::GetContentRegionAvail().x - spacing * (n - 1)) / n);
+  for (int i = 0; i < n; ++i) {
+    if (i > 0) ImGui::SameLine(0.f, spacing);
+    const std::string id = key + "#" + std::to_string(i);
+    float y = static_cast<float>(cur->points[static_cast<std::size_t>(i)].y);
+    if (g_active.key == id) y = g_active.value[0];
+    ImGui::PushID(i);
+    ImGui::VSliderFloat("##row", ImVec2(w, 80.f), &y, 0.f, 1.f, "");
+    if (ImGui::IsItemActive()) g_active = {id, {y, 0.f, 0.f}};
+    if (ImGui::IsItemHovered() || ImGui::IsItemActive())
+      ImGui::SetTooltip("%s = %.4g %s\n%s %.3f", intensity ? "d" : "speed", cur->points[static_cast<std::size_t>(i)].x,
+                        intensity ? "mm" : "mm/s", intensity ? "intensity" : "gain", y);
+    if (ImGui::IsItemDeactivated() && g_active.key == id) g_active.key.clear();
+    if (ImGui::IsItemDeactivatedAfterEdit()) {
+      Lut lut = *cur;
+      lut.points[static_cast<std::size_t>(i)].y = y;
+      ImGui::PopID();
+      set_curve(session, key, lut);
+      ImGui::PopID();
+      return;  // `cur` may point into the edits just replaced
+    }
+    ImGui::PopID();
+  }
+  if (edited != session.curve_edits().end() && ImGui::SmallButton("back to the scene's curve")) set_curve(session, key, Lut{});
+  ImGui::PopID();
+}
+
+void TunePanel::set_curve(TuneSession& session, const std::string& key, const Lut& lut) {
+  const Status s = session.set_curve(key, lut);
+  status_ = s ? (lut.empty() ? "dropped the edit of " + key : "set " + key + " (" + std::to_string(lut.points.size()) + " rows)")
+              : s.error().message;
+}
+
+void TunePanel::plots(TuneSession& session) {
   const Scene& scene = session.renderer().scene();
   const Material& m = scene.materials[material_];
   constexpr int kSamples = 120;
@@ -225,8 +284,11 @@ void TunePanel::plots(const TuneSession& session) {
   char caption[96];
   std::snprintf(caption, sizeof caption, "intensity vs distance, -1..%.0f mm", d_max);
   curve("##intensity", intensity, kSamples, caption, -1.0, d_max, "d", "mm", "intensity");
+  curve_editor(session, m, true, d_max);
   std::snprintf(caption, sizeof caption, "amplitude gain vs speed, 0..%.0f mm/s", v_max);
   curve("##gain", gain, kSamples, caption, 0.0, v_max, "speed", "mm/s", "gain");
+  // The intensity editor may have rebuilt the renderer (and its scene): look the material up again.
+  curve_editor(session, session.renderer().scene().materials[material_], false, v_max);
   ImGui::Text("speed gain this frame: %.3f", session.renderer().stats().speed_gain);
 }
 
@@ -259,7 +321,7 @@ void TunePanel::contents(TuneSession& session) {
   if (ImGui::CollapsingHeader("probe and camera")) probe_camera_section(session);
   if (has_world_knobs(session.renderer().scene()) && ImGui::CollapsingHeader("world", ImGuiTreeNodeFlags_DefaultOpen))
     world_section(session);
-  ImGui::Text("%zu edited keys", session.edits().size());
+  ImGui::Text("%zu edited keys, %zu edited curves", session.edits().size(), session.curve_edits().size());
   if (ImGui::Button("Save overrides")) {
     const Status s = session.save_overrides();
     status_ = s ? "saved " + overrides_path_for(session.scene_path()) : s.error().message;

@@ -1,7 +1,8 @@
 // The parameter panel of `pseudoshadow run` (Dear ImGui, toggled with F1): every material
 // parameter with its unit and valid range, the probe and camera values, live plots of the
-// intensity curve and of the speed -> amplitude curve, the reload status, and "Save
-// overrides". Edits go through TuneSession::set, i.e. exactly a --set, and apply to the next
+// intensity curve and of the speed -> amplitude curve, each editable as a curve (a lookup
+// table's rows as vertical sliders, saved with the overrides as table files), the reload status,
+// and "Save overrides". Edits go through TuneSession::set, i.e. exactly a --set, and apply to the next
 // frame. Drawn after screenshots are taken, so it never appears in them.
 //
 // Docked: a full-height strip along one side of the window, whose place app/ui_layout.h picks
@@ -51,7 +52,10 @@ class TunePanel {
   // stretch (Illusion) and each body's time scale (Weight). Shown only for scenes that have them.
   void world_section(TuneSession& session);
   bool has_world_knobs(const Scene& scene);
-  void plots(const TuneSession& session);
+  void plots(TuneSession& session);
+  // The curve under a plot as editable lookup-table rows (intensity: true; speed gain: false).
+  void curve_editor(TuneSession& session, const Material& m, bool intensity, double x_max);
+  void set_curve(TuneSession& session, const std::string& key, const Lut& lut);
   void apply(TuneSession& session, const std::string& key, const std::string& value);
 
   bool visible_ = false;

@@ -39,6 +39,25 @@ SurfaceBlock make_surface_block(const SurfaceFrame& fr, const Material& m, const
   return b;
 }
 
+IntensityLutBlock make_intensity_lut_block(const Lut& lut) {
+  assert(lut.points.size() >= 2 && lut.points.size() <= static_cast<std::size_t>(kMaxLutRows) &&
+         "make_intensity_lut_block: 2..kMaxLutRows rows (draw without PS_INTENSITY_LUT when empty)");
+  IntensityLutBlock b;
+  for (std::size_t i = 0; i < lut.points.size(); ++i) {
+    glm::vec4& pair = b.rows[i / 2];
+    const int at = i % 2 == 0 ? 0 : 2;
+    pair[at] = static_cast<float>(lut.points[i].x);
+    pair[at + 1] = static_cast<float>(lut.points[i].y);
+  }
+  b.count = glm::uvec4(static_cast<unsigned>(lut.points.size()), 0u, 0u, 0u);
+  return b;
+}
+
+gl::Buffer make_intensity_lut_buffer(const Lut& lut) {
+  const IntensityLutBlock block = make_intensity_lut_block(lut);
+  return gl::make_buffer(sizeof block, &block, 0);
+}
+
 Status SurfacePass::init(const std::string& glsl_root, const Params& params) {
   glsl_root_ = glsl_root;
   params_ = params;
@@ -73,9 +92,9 @@ Status SurfacePass::init(const std::string& glsl_root, const Params& params) {
 }
 
 Result<const gl::Program*> SurfacePass::program(bool shadow, bool textured, bool stratified,
-                                                int baked) {
+                                                int baked, bool intensity_lut) {
   const bool tex = textured && shadow;
-  const auto key = std::make_tuple(shadow, tex, stratified && tex && baked == 0, tex ? baked : 0);
+  const auto key = std::make_tuple(shadow, tex, stratified && tex && baked == 0, tex ? baked : 0, intensity_lut);
   auto it = programs_.find(key);
   if (it != programs_.end()) return &it->second;
   gl::ProgramDesc desc{{"surface.vert", "surface.frag"},
@@ -83,6 +102,7 @@ Result<const gl::Program*> SurfacePass::program(bool shadow, bool textured, bool
   // Only the stratified variant gets the extra define: the naive source stays byte-identical.
   if (std::get<2>(key)) desc.defines.push_back({"PS_GABOR_STRATIFIED", "1"});
   if (std::get<3>(key)) desc.defines.push_back({"PS_GABOR_BAKED", std::to_string(std::get<3>(key))});
+  if (intensity_lut) desc.defines.push_back({"PS_INTENSITY_LUT", "1"});
   auto built = gl::build_program(desc, glsl_root_);
   if (!built) return built.error();
   return &programs_.emplace(key, std::move(built.value())).first->second;
@@ -148,11 +168,13 @@ Status SurfacePass::draw_all(const std::vector<SurfaceDraw>& draws, bool shadow)
   for (size_t i = 0; i < draws.size(); ++i) {
     const SurfaceDraw& d = draws[i];
     const bool own = shadow && d.shadow;
-    auto prog = program(own, d.textured, d.stratified, d.gabor_tile ? (d.gabor_tile_linear ? 2 : 1) : 0);
+    auto prog = program(own, d.textured, d.stratified, d.gabor_tile ? (d.gabor_tile_linear ? 2 : 1) : 0,
+                        d.intensity_lut != nullptr);
     if (!prog) return prog.error();
     glUseProgram(prog.value()->id());
     glBindTextureUnit(1, d.albedo ? d.albedo->id() : dummy_.id());
     glBindTextureUnit(2, d.gabor_tile ? d.gabor_tile->id() : dummy_.id());
+    if (d.intensity_lut) glBindBufferBase(GL_UNIFORM_BUFFER, 1, d.intensity_lut->id());
     glBindBufferRange(GL_UNIFORM_BUFFER, 0, ubo_.id(), static_cast<GLintptr>(i) * ubo_stride_, sizeof(SurfaceBlock));
     if (d.wireframe) glPolygonMode(GL_FRONT_AND_BACK, GL_LINE);
     d.mesh->draw();

@@ -14,7 +14,8 @@
 //   exact only for power-of-two RGBA32F on llvmpipe, docs/gl-stack.md); the viewport covers the
 //   image, the padding stays cleared and drops out of every ratio computed from the mips.
 // Shaders: glsl/surface.{vert,frag}; variants PS_SHADOW, PS_TEXTURED, PS_GABOR_STRATIFIED,
-// PS_GABOR_BAKED.
+// PS_GABOR_BAKED, PS_INTENSITY_LUT (the material's intensity_lut in IntensityLutBlock, uniform
+// binding 1, make_intensity_lut_buffer; without it the source is byte-identical to before).
 #pragma once
 
 #include <limits>
@@ -98,7 +99,20 @@ struct SurfaceDraw {
   const gl::Texture* gabor_tile = nullptr;  // set: PS_GABOR_BAKED variant reads this tile
   bool gabor_tile_linear = false;           // the tile is values only, read bilinearly (PS_GABOR_BAKED 2)
   bool wireframe = false;                   // the triangles' edges only (glPolygonMode GL_LINE)
+  const gl::Buffer* intensity_lut = nullptr;  // set: PS_INTENSITY_LUT variant reads this table
 };
+
+// std140 mirror of IntensityLutBlock in glsl/lib/intensity_lut.glsl: a distance -> intensity
+// table's rows (scene/lut.h), two per vec4 (row 2k in xy, row 2k + 1 in zw), and their count.
+struct IntensityLutBlock {
+  glm::vec4 rows[kMaxLutRows / 2]{};
+  glm::uvec4 count{0u};
+};
+static_assert(sizeof(IntensityLutBlock) == (kMaxLutRows / 2 + 1) * 16, "IntensityLutBlock must match std140 layout");
+
+IntensityLutBlock make_intensity_lut_block(const Lut& lut);
+// The block in a uniform buffer, made once per material (bound at binding 1 by its draws).
+gl::Buffer make_intensity_lut_buffer(const Lut& lut);
 
 struct SurfacePass {
   struct Params {
@@ -127,7 +141,7 @@ struct SurfacePass {
  private:
   // baked: 0 none, 1 Hermite lookup, 2 bilinear lookup (the PS_GABOR_BAKED value).
   Result<const gl::Program*> program(bool shadow, bool textured, bool stratified = false,
-                                     int baked = 0);
+                                     int baked = 0, bool intensity_lut = false);
 
   std::string glsl_root_;
   Params params_;
@@ -137,7 +151,7 @@ struct SurfacePass {
   // with their PS_SHADOW=0 variant.
   Status draw_all(const std::vector<SurfaceDraw>& draws, bool shadow);
 
-  std::map<std::tuple<bool, bool, bool, int>, gl::Program> programs_;
+  std::map<std::tuple<bool, bool, bool, int, bool>, gl::Program> programs_;
   gl::Texture color_, normal_, aov_, dummy_;
   gl::Renderbuffer depth_;
   gl::Framebuffer fbo_;

@@ -1,5 +1,7 @@
 #include "reference/body_shadow.h"
 
+#include "reference/modulation.h"
+
 #include <algorithm>
 #include <cmath>
 
@@ -30,7 +32,7 @@ double body_shadow_darkening(const Material& m, const SphereCaster& body, const 
   const double d = height - std::sqrt(std::max(r * r - rho_in * rho_in, 0.0));
   // The intensity curve without its influence cut: the disc already ends where d reaches it.
   const double intensity =
-      d <= 0.0 ? 1.0 : std::clamp(m.intensity_floor + m.intensity_scale / (d + m.intensity_offset_mm), 0.0, 1.0);
+      d <= 0.0 ? 1.0 : intensity_curve(m, d);
   return coverage * intensity;
 }
 

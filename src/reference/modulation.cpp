@@ -6,10 +6,15 @@
 
 namespace ps {
 
+double intensity_curve(const Material& m, double d) {
+  if (!m.intensity_lut.empty()) return std::clamp(lut_eval(m.intensity_lut, d), 0.0, 1.0);
+  return std::clamp(m.intensity_floor + m.intensity_scale / (d + m.intensity_offset_mm), 0.0, 1.0);
+}
+
 double shadow_intensity(const Material& m, double d) {
   if (!(d < m.influence_distance_mm)) return 0.0;  // also catches NaN
   if (d <= 0.0) return 1.0;
-  return std::clamp(m.intensity_floor + m.intensity_scale / (d + m.intensity_offset_mm), 0.0, 1.0);
+  return intensity_curve(m, d);
 }
 
 double pseudo_shadow_darkening(const Material& m, double d, double coverage, double gain,
@@ -18,8 +23,7 @@ double pseudo_shadow_darkening(const Material& m, double d, double coverage, dou
   if (i <= 0.0) return 0.0;
   double amp = 0.0;
   if (d <= 0.0) {
-    const double i_near =
-        std::clamp(m.intensity_floor + m.intensity_scale / m.intensity_offset_mm, 0.0, 1.0);
+    const double i_near = intensity_curve(m, 0.0);
     const double half_gap = 0.5 * (1.0 - i_near);
     i = 1.0 - gain * half_gap;
     amp = gain * half_gap;
@@ -41,6 +45,7 @@ double frequency_gap_hz(double speed, double lambda_min, double lambda_max, doub
 double amplitude_gain(const Material& m, double speed) {
   const GaborParams& g = m.gabor;
   if (!(speed >= 0.0) || !std::isfinite(speed)) return 0.0;
+  if (!m.speed_gain_lut.empty()) return lut_eval(m.speed_gain_lut, speed);
   const double gap = frequency_gap_hz(speed, g.lambda_min_mm, g.lambda_max_mm, m.peak_hz);
   if (m.bandwidth_hz <= 0.0) return gap == 0.0 ? 1.0 : 0.0;
   const double x = gap / m.bandwidth_hz;

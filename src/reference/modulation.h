@@ -11,6 +11,10 @@
 
 namespace ps {
 
+// The material's distance -> intensity curve in [0, 1] on its own, for d >= 0 (no contact jump, no
+// influence cut): its intensity_lut if it has one (scene/lut.h), else floor + scale / (d + offset).
+double intensity_curve(const Material& m, double distance_mm);
+
 // 1 where d <= 0 (contact), floor + scale / (d + offset) where 0 < d < influence, 0 beyond.
 double shadow_intensity(const Material& m, double distance_mm);
 
@@ -27,7 +31,7 @@ double pseudo_shadow_darkening(const Material& m, double distance_mm, double cov
 double frequency_gap_hz(double speed_mm_s, double lambda_min_mm, double lambda_max_mm,
                         double peak_hz);
 
-// exp(-(gap / bandwidth)^2) for one speed.
+// exp(-(gap / bandwidth)^2) for one speed, or the material's speed_gain_lut at that speed.
 double amplitude_gain(const Material& m, double speed_mm_s);
 
 // Blend (§4.5.3) of the gain for the speed along the mean texture direction and the gain for

@@ -242,6 +242,7 @@ Status Renderer::load_materials() {
       if (!t) return t.error();
       ms.albedo = std::move(t.value());
     }
+    if (!m.intensity_lut.empty()) ms.intensity_lut = make_intensity_lut_buffer(m.intensity_lut);
     ms.gabor_setup = make_gabor_setup(m.gabor);
     if (m.textured) {
       // Less work than even the smallest tile auto could pick: decided before auto measures
@@ -454,6 +455,7 @@ std::vector<SurfaceDraw> Renderer::surface_draws(const FramePlan& plan) {
     d.albedo = ms.albedo ? &ms.albedo : nullptr;
     d.gabor_tile = ms.gabor_tile.get();
     d.gabor_tile_linear = ms.bake_plan.linear;
+    d.intensity_lut = ms.intensity_lut ? &ms.intensity_lut : nullptr;
     const Geometry::Sheets& sheets = geometry_.surface_sheets[i];
     if (!sheets.w4.empty()) {
       // The probe's sheet: the haptic proxy's (set_probe_sheet), else the nearest vertex's. The

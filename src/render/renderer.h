@@ -175,6 +175,7 @@ class Renderer {
     GaborBlock gabor_block;     // the Gabor uniforms (with the tile plan), packed once
     gl::Texture albedo;         // empty: no albedo texture
     std::shared_ptr<gl::Texture> gabor_tile;  // null: none; shared with reuse_tiles_from
+    gl::Buffer intensity_lut;   // empty: no intensity_lut (the formula); passes/surface.h IntensityLutBlock
   };
   // The scene's meshes on the GPU.
   struct Geometry {

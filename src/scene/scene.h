@@ -11,6 +11,7 @@
 
 #include "fourd/spec.h"
 #include "scene/haptic_material.h"
+#include "scene/lut.h"
 
 namespace ps {
 
@@ -81,6 +82,10 @@ struct Material {
   // Speed modulation (thesis §4.3.1): amplitude *= exp(-(df/bandwidth)^2), df against peak.
   double peak_hz = 250.0;
   double bandwidth_hz = 100.0;
+  // Lookup tables replacing the two formulas above (scene/lut.h; empty: the formula, bit for
+  // bit): distance mm -> intensity for 0 < d < influence, speed mm/s -> amplitude gain.
+  Lut intensity_lut{LutAxis::kDistanceMm, {}, {}};
+  Lut speed_gain_lut{LutAxis::kSpeedMmS, {}, {}};
   HapticMaterial haptic;  // how it feels (scene/haptic_material.h)
 };
 

@@ -158,6 +158,16 @@ void read_gabor(TableReader& r, GaborParams& g) {
   check_min_max(r, "n_min", g.n_min, g.n_max, "n_max");
 }
 
+// A lookup table file (scene/lut.h); its own errors name the table's file:line.
+void read_lut_key(TableReader& r, std::string_view key, Lut& out) {
+  std::string path;
+  r.file(key, path);
+  if (!r.ok() || path.empty()) return;
+  auto lut = read_lut(path, out.axis);
+  if (!lut) return r.adopt(lut.error());
+  out = std::move(lut.value());
+}
+
 }  // namespace
 
 Status read_material(const ParseContext& ctx, const toml::table& table, const std::string& name,
@@ -180,6 +190,8 @@ Status read_material(const ParseContext& ctx, const toml::table& table, const st
   r.number("resistance", out.resistance, kUnit);
   r.number("peak_hz", out.peak_hz, Range::positive(1e6));
   r.number("bandwidth_hz", out.bandwidth_hz, Range::positive(1e6));
+  read_lut_key(r, "intensity_lut", out.intensity_lut);
+  read_lut_key(r, "speed_gain_lut", out.speed_gain_lut);
   const toml::table* haptic = r.sub_table("haptic");
   r.adopt(read_haptic(ctx, haptic, "materials." + name + ".haptic", out.haptic));
   return r.status();

@@ -35,7 +35,8 @@ constexpr std::array kMaterialKeys = {
     "gabor_strategy"sv,  "stratified_impulses"sv, "bake_samples_per_lambda"sv,
     "onset_distance_mm"sv, "influence_distance_mm"sv, "intensity_floor"sv,
     "intensity_scale"sv, "intensity_offset_mm"sv,   "resistance"sv,
-    "peak_hz"sv,         "bandwidth_hz"sv,          "haptic"sv};
+    "peak_hz"sv,         "bandwidth_hz"sv,          "haptic"sv,
+    "intensity_lut"sv,   "speed_gain_lut"sv};
 // [materials.NAME.haptic]: how the material feels (scene/haptic_material.h).
 constexpr std::array kHapticKeys = {
     "stiffness_n_per_mm"sv,   "stiffness_exponent"sv,     "damping_n_s_per_mm"sv,

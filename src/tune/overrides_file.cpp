@@ -1,11 +1,14 @@
 #include "tune/overrides_file.h"
 
+#include <cassert>
 #include <cerrno>
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
 #include <filesystem>
 #include <fstream>
+
+#include "core/file_io.h"
 
 namespace ps {
 
@@ -55,6 +58,32 @@ std::string format_overrides(const std::map<std::string, std::string>& edits, co
                      "# One `--set KEY=VALUE` per line; apply with --overrides THIS_FILE.\n";
   for (const auto& [key, value] : edits) text += key + " = " + override_value_text(value) + "\n";
   return text;
+}
+
+std::string curve_file_for(const std::string& overrides_path, const std::string& key) {
+  // "materials.wood.intensity_lut" -> "wood.intensity"; "a.overrides.toml" -> "a"
+  std::string rest = key.substr(std::string("materials.").size());
+  rest = rest.substr(0, rest.size() - std::string("_lut").size());
+  fs::path p(overrides_path);
+  std::string stem = p.filename().string();
+  if (const auto dot = stem.find(".overrides"); dot != std::string::npos) stem = stem.substr(0, dot);
+  else stem = p.stem().string();
+  return (p.parent_path() / (stem + "." + rest + ".lut")).string();
+}
+
+Status save_overrides_file(const std::string& path, const std::map<std::string, std::string>& edits,
+                           const std::map<std::string, Lut>& curves, const std::string& scene_name,
+                           const std::string& scene_dir) {
+  std::map<std::string, std::string> lines = edits;
+  for (const auto& [key, lut] : curves) {
+    assert(key.rfind("materials.", 0) == 0 && key.ends_with("_lut") && "save_overrides_file: not a curve key");
+    const std::string file = curve_file_for(path, key);
+    if (Status s = prepare_output_dir(file); !s) return s;
+    if (Status s = write_lut(file, lut, {"Edited in the tuning panel: " + key + " of " + scene_name}); !s) return s;
+    const fs::path rel = fs::absolute(file).lexically_normal().lexically_relative(fs::absolute(scene_dir).lexically_normal());
+    lines[key] = quoted(rel.empty() ? fs::absolute(file).string() : rel.generic_string());
+  }
+  return write_file_atomic(path, format_overrides(lines, scene_name));
 }
 
 Result<std::vector<std::string>> read_overrides(const std::string& path) {

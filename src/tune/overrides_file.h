@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "core/result.h"
+#include "scene/lut.h"
 
 namespace ps {
 
@@ -24,6 +25,19 @@ std::string override_value_text(const std::string& value);
 // The file text for `edits` (key -> value), sorted by key.
 std::string format_overrides(const std::map<std::string, std::string>& edits,
                              const std::string& scene_name);
+
+// Curves edited as lookup tables (the panel's curve editor): key "materials.NAME.intensity_lut"
+// or "materials.NAME.speed_gain_lut" -> the table. Saved as table files NEXT TO the override file
+// (curve_file_for) and one line each, KEY = "FILE" with FILE relative to `scene_dir` (relative
+// file values resolve against the scene's directory, docs/scene-format.md), so the override file
+// with its tables is what `--overrides` reads back, and the tables are plain files to review.
+std::string curve_file_for(const std::string& overrides_path, const std::string& key);
+
+// Writes the tables of `curves` (each atomically), then the override file for `edits` plus one
+// line per curve (atomically). A curve key must be a material's *_lut key (asserted).
+Status save_overrides_file(const std::string& path, const std::map<std::string, std::string>& edits,
+                           const std::map<std::string, Lut>& curves, const std::string& scene_name,
+                           const std::string& scene_dir);
 
 // Reads an override file into "KEY=VALUE" strings for parse_scene/load_scene.
 // Errors: "<path>: cannot open override file: <reason>", "<path>:<line>: expected KEY = VALUE".

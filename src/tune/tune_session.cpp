@@ -26,7 +26,30 @@ Result<std::unique_ptr<TuneSession>> TuneSession::open(TuneSource source, Scene 
 Result<Scene> TuneSession::load(const std::map<std::string, std::string>& edits) const {
   std::vector<std::string> sets = source_.overrides;
   for (const auto& [key, value] : edits) sets.push_back(key + "=" + value);
-  return load_scene_or_default(source_.scene_path, sets);
+  auto scene = load_scene_or_default(source_.scene_path, sets);
+  if (!scene) return scene;
+  // Edited curves: the tables themselves (no file until the overrides are saved).
+  for (const auto& [key, lut] : curve_edits_) {
+    bool found = false;
+    for (Material& m : scene->materials) {
+      const std::string prefix = "materials." + m.name + ".";
+      if (key == prefix + "intensity_lut") m.intensity_lut = lut;
+      else if (key == prefix + "speed_gain_lut") m.speed_gain_lut = lut;
+      else continue;
+      found = true;
+    }
+    if (!found) return make_error("curve " + key + ": no such material curve (materials.NAME.intensity_lut or speed_gain_lut)");
+  }
+  return scene;
+}
+
+Status TuneSession::set_curve(const std::string& key, const Lut& lut) {
+  const std::map<std::string, Lut> before = curve_edits_;
+  if (lut.empty()) curve_edits_.erase(key);
+  else curve_edits_[key] = lut;
+  const Status s = rebuild(edits_, false, true, true, load(edits_));
+  if (!s) curve_edits_ = before;
+  return s;
 }
 
 Status TuneSession::rebuild(const std::map<std::string, std::string>& edits, bool keep_probe, bool keep_tiles,
@@ -90,7 +113,10 @@ Status TuneSession::save_overrides(const std::string& path) const {
       return make_error("save: the built-in default scene has no file; give the override file's name");
     target = overrides_path_for(source_.scene_path);
   }
-  return write_file_atomic(target, format_overrides(edits_, scene_name));
+  const std::string scene_dir = source_.scene_path.empty()
+                                    ? default_scene_base_dir()
+                                    : std::filesystem::path(source_.scene_path).parent_path().string();
+  return save_overrides_file(target, edits_, curve_edits_, scene_name, scene_dir.empty() ? "." : scene_dir);
 }
 
 }  // namespace ps

@@ -51,7 +51,14 @@ class TuneSession {
   int generation() const { return generation_; }  // +1 per successful (re)build
   const std::string& scene_path() const { return source_.scene_path; }
 
-  // Writes edits() as an override file (atomically); path empty = overrides_path_for(scene).
+  // Replaces a material's curve by a lookup table and rebuilds; `key` is
+  // "materials.NAME.intensity_lut" or "materials.NAME.speed_gain_lut"; an empty table drops the
+  // edit (the scene's curve again). On failure the edit is dropped and the previous renderer stays.
+  Status set_curve(const std::string& key, const Lut& lut);
+  const std::map<std::string, Lut>& curve_edits() const { return curve_edits_; }
+
+  // Writes edits() and curve_edits() as an override file (atomically), each edited curve as a
+  // table file next to it (tune/overrides_file.h); path empty = overrides_path_for(scene).
   Status save_overrides(const std::string& path = {}) const;
 
  private:
@@ -63,6 +70,7 @@ class TuneSession {
   TuneSource source_;
   std::unique_ptr<Renderer> renderer_;
   std::map<std::string, std::string> edits_;
+  std::map<std::string, Lut> curve_edits_;  // applied to the loaded scene in load()
   FileWatch watch_;
   std::string last_error_;
   int generation_ = 0;

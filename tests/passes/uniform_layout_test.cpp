@@ -133,6 +133,20 @@ TEST(UniformLayoutTest, GaborBlockMatchesInEveryPassThatReadsIt) {
   }
 }
 
+// The intensity_lut variant (lib/intensity_lut.glsl) compiles, shadowed and not (the bodies'
+// shadows read the table too), its table's block matches IntensityLutBlock, and the surface
+// block is as it was.
+TEST(UniformLayoutTest, IntensityLutBlockMatchesAndKeepsTheSurfaceBlock) {
+  for (const char* shadow : {"0", "1"}) {
+    const auto o = block_offsets("surface.frag", EShLangFragment, {{"PS_INTENSITY_LUT", "1"}, {"PS_SHADOW", shadow}});
+    ASSERT_FALSE(o.empty()) << "PS_SHADOW " << shadow;
+    EXPECT_MEMBER(o, "u_lut_rows", IntensityLutBlock, rows);
+    EXPECT_MEMBER(o, "u_lut_count", IntensityLutBlock, count);
+    EXPECT_MEMBER(o, "u_intensity", SurfaceBlock, intensity);
+    EXPECT_MEMBER(o, "u_eye", SurfaceBlock, eye);
+  }
+}
+
 TEST(UniformLayoutTest, ProbeViewBlockMatches) {
   const auto o = block_offsets("probe_view.frag", EShLangFragment);
   ASSERT_FALSE(o.empty());

@@ -122,6 +122,41 @@ TEST_P(SpeedContrastGLTest, TextureContrastFollowsTheSpeedGain) {
   }
 }
 
+// A speed_gain_lut (scene/lut.h) replaces the formula: the contrast the image shows follows the
+// table, linear between its rows and flat beyond the last, through the same measurement.
+TEST_P(SpeedContrastGLTest, TextureContrastFollowsTheSpeedGainTable) {
+  Scene s = moving_probe_scene();
+  s.materials[0].speed_gain_lut.points = {{0.0, 0.9}, {100.0, 0.3}, {200.0, 1.0}};
+  RendererOptions opt;
+  opt.contrast_sigmas = kContrastSigmas;
+  auto rr = Renderer::create(s, opt);
+  ASSERT_TRUE(rr.ok()) << rr.error().message;
+  Renderer& r = *rr.value();
+  struct Case {
+    glm::dvec3 velocity;  // mm/s
+    double gain;          // the table at the in-plane speed (isotropic texture, so blend = 1)
+  } cases[] = {
+      {{0.0, 0.0, 0.0}, 0.9},
+      {{50.0, 0.0, 0.0}, 0.6},
+      {{-70.710678118654752, 70.710678118654752, 0.0}, 0.3},  // 100 mm/s diagonally: a row
+      {{0.0, 150.0, 0.0}, 0.65},
+      {{400.0, 0.0, 0.0}, 1.0},  // beyond the last row: its value
+  };
+  for (const Case& k : cases) {
+    r.set_probe_state(s.probe.position, k.velocity);
+    ASSERT_TRUE(r.render_frame().ok());
+    const Contrast c = measured_gain(r);
+    std::printf("[speed lut] v = (%g, %g, %g) mm/s: gain %.4f expected %.4f (stats %.4f, %d px)\n", k.velocity.x,
+                k.velocity.y, k.velocity.z, c.gain, k.gain, r.stats().speed_gain, c.pixels);
+    EXPECT_GT(c.pixels, 500);
+    // Interpolation in double (1e-12) and the diagonal's rounding to 100 mm/s (1e-14 relative).
+    EXPECT_NEAR(r.stats().speed_gain, k.gain, 1e-9);
+    // The same image measurement and bound as TextureContrastFollowsTheSpeedGain (the table's
+    // gains lie in the formula's range, so the 8-bit error does too).
+    EXPECT_NEAR(c.gain, k.gain, 0.008);
+  }
+}
+
 PS_INSTANTIATE_HEADLESS_BACKENDS(SpeedContrastGLTest);
 
 }  // namespace

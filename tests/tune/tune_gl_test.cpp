@@ -9,6 +9,7 @@
 
 #include "scene/scene_io.h"
 #include "support/gl_test.h"
+#include "tune/overrides_file.h"
 #include "tune/sweep.h"
 #include "tune/tune_session.h"
 
@@ -121,6 +122,47 @@ TEST_P(TuneGLTest, BadSetKeepsTheRendererAndNamesTheKey) {
   EXPECT_TRUE(s->edits().empty());
   ASSERT_TRUE(s->set("materials.table4_1_a.lambda_min", "1.0"));
   EXPECT_EQ(s->edits().size(), 1u);
+}
+
+// Curves edited in the panel (TuneSession::set_curve) are saved with the overrides as table files
+// next to them, and `--overrides` reads them back: the same tables, the same image, byte for byte.
+TEST_P(TuneGLTest, EditedCurvesRoundTripThroughTheOverrides) {
+  auto s = open_session();
+  ASSERT_TRUE(s);
+  Lut intensity{LutAxis::kDistanceMm, {{0.0, 0.9}, {2.0, 0.6}, {5.0, 0.25}, {50.0, 0.125}}, {}};
+  Lut gain{LutAxis::kSpeedMmS, {{0.0, 0.5}, {100.0, 1.0}, {400.0, 0.0625}}, {}};
+  ASSERT_TRUE(s->set("materials.table4_1_a.lambda_min", "1.0"));
+  ASSERT_TRUE(s->set_curve("materials.table4_1_a.intensity_lut", intensity));
+  ASSERT_TRUE(s->set_curve("materials.table4_1_a.speed_gain_lut", gain));
+  const Status bad = s->set_curve("materials.nope.intensity_lut", intensity);
+  ASSERT_FALSE(bad);
+  EXPECT_NE(bad.error().message.find("materials.nope.intensity_lut: no such material curve"), std::string::npos);
+  EXPECT_EQ(s->curve_edits().size(), 2u);
+  EXPECT_EQ(s->renderer().scene().materials[0].intensity_lut, intensity);
+  const Image before = frame(*s);
+  ASSERT_TRUE(s->save_overrides());
+
+  const fs::path overrides = dir_ / "scene.overrides.toml";
+  const std::string text = read_text(overrides);
+  EXPECT_NE(text.find("materials.table4_1_a.intensity_lut = \"scene.table4_1_a.intensity.lut\"\n"), std::string::npos) << text;
+  EXPECT_NE(text.find("materials.table4_1_a.speed_gain_lut = \"scene.table4_1_a.speed_gain.lut\"\n"), std::string::npos) << text;
+  EXPECT_TRUE(fs::is_regular_file(dir_ / "scene.table4_1_a.intensity.lut"));
+  auto lines = read_overrides(overrides.string());
+  ASSERT_TRUE(lines) << lines.error().message;
+  auto again = open_session(lines.value());
+  ASSERT_TRUE(again);
+  const Material& m = again->renderer().scene().materials[0];
+  // Rows with short decimal forms print (%.9g) and parse back to the same doubles: exact.
+  EXPECT_EQ(m.intensity_lut, intensity);
+  EXPECT_EQ(m.speed_gain_lut, gain);
+  EXPECT_EQ(m.gabor.lambda_min_mm, 1.0);
+  const Image after = frame(*again);
+  EXPECT_EQ(after.pixels, before.pixels);
+
+  // Dropping an edit restores the scene's curve (and the image changes: the table was in it).
+  ASSERT_TRUE(s->set_curve("materials.table4_1_a.intensity_lut", Lut{}));
+  EXPECT_TRUE(s->renderer().scene().materials[0].intensity_lut.empty());
+  EXPECT_NE(frame(*s).pixels, before.pixels);
 }
 
 // A 3x3 sweep: the sheet has the right size and each cell is exactly the single render.

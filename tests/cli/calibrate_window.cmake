@@ -1,0 +1,32 @@
+# `calibrate --observer simulated --window` under Xvfb shows every trial in the window while the
+# simulated observer answers: the trial log and the table must be byte-identical to the headless
+# run with the same seed (the window drives the same staircases; docs/calibrate.md).
+#   cmake -DXVFB=xvfb-run -DEXE=pseudoshadow -DOUT=<dir> -P calibrate_window.cmake
+file(REMOVE_RECURSE "${OUT}")
+file(MAKE_DIRECTORY "${OUT}")
+set(_args calibrate --curve speed --references 10,20 --reversals 3 --average-last 2 --observer simulated --seed 5 -q)
+execute_process(COMMAND ${XVFB} -a ${EXE} ${_args} --window --out ${OUT}/window.lut RESULT_VARIABLE rc_w
+                OUTPUT_VARIABLE out ERROR_VARIABLE err)
+message("${out}${err}")
+if(NOT rc_w EQUAL 0)
+  message(FATAL_ERROR "calibrate --window exited ${rc_w}")
+endif()
+execute_process(COMMAND ${EXE} ${_args} --out ${OUT}/headless.lut RESULT_VARIABLE rc_h)
+if(NOT rc_h EQUAL 0)
+  message(FATAL_ERROR "calibrate (headless) exited ${rc_h}")
+endif()
+foreach(pair "window.lut;headless.lut" "window.trials.csv;headless.trials.csv")
+  list(GET pair 0 a)
+  list(GET pair 1 b)
+  file(READ "${OUT}/${a}" ta)
+  file(READ "${OUT}/${b}" tb)
+  if(NOT ta STREQUAL tb)
+    message(FATAL_ERROR "${a} differs from ${b}")
+  endif()
+endforeach()
+file(STRINGS "${OUT}/window.trials.csv" _lines)
+list(LENGTH _lines _n)
+if(_n LESS 10)
+  message(FATAL_ERROR "only ${_n} log lines")
+endif()
+message("window and headless agree: ${_n} log lines")
