@@ -188,17 +188,18 @@ void main() {
 #if PS_GABOR_FILTER
   // The pixel's footprint in (u, v) (lib/gabor.glsl, analytic filtering): derivatives taken
   // here, in uniform control flow, not inside the branch below.
-  vec3 footprint = gabor_footprint(dFdx(uv), dFdy(uv), u_gabor.filtering.x, u_gabor.filtering.z);
+  mat2 duv = mat2(dFdx(uv), dFdy(uv));
 #endif
   // Only fragments inside the footprint and the onset distance pay for the Gabor sum.
   if (intensity > 0.0 && d < u_modulation.y) {
 #if PS_GABOR_BAKED && PS_GABOR_FILTER
-    tex_sigmas = gabor_noise_baked_filtered(u_gabor_tile, u_gabor.tile, u_gabor.filtering, uv, footprint) /
+    tex_sigmas = gabor_noise_baked_filtered(u_gabor_tile, u_gabor.tile, u_gabor.filtering,
+                                            u_gabor.amplitude_lambda.zw, uv, duv) /
                  u_gabor.kernel.w;
 #elif PS_GABOR_BAKED
     tex_sigmas = gabor_noise_baked(u_gabor_tile, u_gabor.tile, uv) / u_gabor.kernel.w;
 #elif PS_GABOR_FILTER
-    tex_sigmas = gabor_noise_filtered(gabor_material(u_gabor), uv, footprint) / u_gabor.kernel.w;
+    tex_sigmas = gabor_noise_pixel(gabor_material(u_gabor), u_gabor.filtering, uv, duv) / u_gabor.kernel.w;
 #else
     tex_sigmas = gabor_noise(gabor_material(u_gabor), uv) / u_gabor.kernel.w;
 #endif

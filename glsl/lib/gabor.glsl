@@ -164,11 +164,19 @@ float gabor_noise_filtered(GaborMaterial g, vec2 uv, vec3 S) {
   return sum;
 }
 
-// The pixel's footprint in (u, v): pixel_variance (px^2) * (du_dx du_dx^T + du_dy du_dy^T), its
-// eigenvalues capped at cap mm^2. CPU twin: footprint_from_derivatives, cap_footprint.
-vec3 gabor_footprint(vec2 du_dx, vec2 du_dy, float pixel_variance, float cap) {
-  vec3 S = pixel_variance * vec3(du_dx.x * du_dx.x + du_dy.x * du_dy.x, du_dx.x * du_dx.y + du_dy.x * du_dy.y,
-                                 du_dx.y * du_dx.y + du_dy.y * du_dy.y);
+// A pixel's box, split into k sub-boxes along its longer screen axis (k ~ the footprint's
+// anisotropy, at most filtering.w): sub-box i is centred at uv + major * ((i + 0.5) / k - 0.5),
+// and each is a Gaussian of covariance S = pixel_variance * (minor minor^T + major major^T / k^2),
+// its eigenvalues capped at filtering.z. One Gaussian for a long, thin footprint leaks
+// frequencies that the box kills (about 1 cycle per pixel along it): k Gaussians each 1/k as
+// long follow the box out to k cycles per pixel. duv = (d uv / dx, d uv / dy), mm per pixel.
+// CPU twin: gabor_pixel_split in src/reference/gabor.cpp.
+struct GaborPixelSplit {
+  vec2 major;  // the longer screen axis's (u, v) step over the whole pixel, mm
+  int k;
+  vec3 S;      // (xx, xy, yy) mm^2
+};
+vec3 gabor_cap_footprint(vec3 S, float cap) {
   float m = 0.5 * (S.x + S.z), h = 0.5 * (S.x - S.z);
   float rad = sqrt(h * h + S.y * S.y), l1 = m + rad, l2 = m - rad;
   if (l1 <= cap) return S;
@@ -176,6 +184,29 @@ vec3 gabor_footprint(vec2 du_dx, vec2 du_dy, float pixel_variance, float cap) {
   vec2 e = vec2(cos(a), sin(a));
   float m1 = min(l1, cap), m2 = min(l2, cap);
   return vec3(m1 * e.x * e.x + m2 * e.y * e.y, (m1 - m2) * e.x * e.y, m1 * e.y * e.y + m2 * e.x * e.x);
+}
+GaborPixelSplit gabor_pixel_split(mat2 duv, vec4 filtering) {
+  bool x_major = dot(duv[0], duv[0]) >= dot(duv[1], duv[1]);
+  vec2 major = x_major ? duv[0] : duv[1], minor = x_major ? duv[1] : duv[0];
+  float ratio = sqrt(dot(major, major) / max(dot(minor, minor), 1e-30));
+  GaborPixelSplit p;
+  p.major = major;
+  p.k = int(clamp(floor(ratio + 0.5), 1.0, max(filtering.w, 1.0)));
+  vec2 sub = major / float(p.k);
+  p.S = gabor_cap_footprint(filtering.x * vec3(minor.x * minor.x + sub.x * sub.x, minor.x * minor.y + sub.x * sub.y,
+                                               minor.y * minor.y + sub.y * sub.y), filtering.z);
+  return p;
+}
+vec2 gabor_sub_position(GaborPixelSplit p, vec2 uv, int i) {
+  return uv + p.major * ((float(i) + 0.5) / float(p.k) - 0.5);
+}
+
+// The texture filtered over the pixel whose (u, v) derivatives are duv.
+float gabor_noise_pixel(GaborMaterial g, vec4 filtering, vec2 uv, mat2 duv) {
+  GaborPixelSplit p = gabor_pixel_split(duv, filtering);
+  float sum = 0.0;
+  for (int i = 0; i < p.k; ++i) sum += gabor_noise_filtered(g, gabor_sub_position(p, uv, i), p.S);
+  return sum / float(p.k);
 }
 #endif
 
@@ -321,49 +352,39 @@ float gabor_tile_level(sampler2D tile_tex, vec4 tile, vec2 uv, int level) {
 #endif
 }
 
-// The texture filtered with the footprint S (mm^2) from the tile's levels. S's isotropic part s2
-// is read from the two levels around it, blended linearly in variance (beyond the last level,
-// towards 0, the texture's mean, at 4x its variance); the rest, along S's major axis e, by n
-// equally weighted taps spread over [-a, a] so their variance a^2 (n+1) / (3 (n-1)) is
-// l1 - s2; taps at most 1.5 sqrt(s2) apart (else s2 grows) so they blur into one Gaussian.
-// filt: x pixel variance, y kappa, z cap, w most taps (GaborBlock::filter).
-float gabor_noise_baked_filtered(sampler2D tile_tex, vec4 tile, vec4 filt, vec2 uv, vec3 S) {
-  float m = 0.5 * (S.x + S.z), h = 0.5 * (S.x - S.z), rad = sqrt(h * h + S.y * S.y);
-  float l1 = m + rad, l2 = max(m - rad, 0.0);
-  float a = 0.5 * atan(S.y, h);
-  vec2 e = vec2(cos(a), sin(a));
-  float s2 = l2, half_span = 0.0;
-  int n = 1;
-  if (l1 <= 1.5 * l2 || filt.w < 2.0) {
-    s2 = filt.w < 2.0 ? l1 : 0.5 * (l1 + l2);  // nearly isotropic: one tap
-  } else {
-    n = int(clamp(1.0 + ceil(2.31 * sqrt((l1 - l2) / max(l2, 1e-30))), 2.0, filt.w));
-    float nn = float(n);
-    // spacing^2 = 12 (l1 - s2) / (n^2 - 1) <= 2.25 s2
-    s2 = max(s2, 12.0 * l1 / (2.25 * (nn * nn - 1.0) + 12.0));
-    half_span = sqrt(max(l1 - s2, 0.0) * 3.0 * (nn - 1.0) / (nn + 1.0));
-  }
+// The texture filtered over the pixel from the tile's levels: the pixel split as in
+// gabor_noise_pixel; each sub-box's footprint, taken as isotropic with its mean variance s2,
+// read from the two levels around s2 (beyond the last level: it and 0, the texture's mean),
+// blended so that the blend attenuates the texture's mean frequency f0 = 2 / (lambda_min +
+// lambda_max) as a filter of variance s2 does, exp(-2 pi^2 s2 f0^2). (Blending linearly in
+// variance kept too much of the finer level: its unfiltered share aliases.) filtering:
+// GaborBlock::filtering (y: a level's sigma in its texels, kappa); lambda_mm: (min, max).
+float gabor_noise_baked_filtered(sampler2D tile_tex, vec4 tile, vec4 filtering, vec2 lambda_mm, vec2 uv,
+                                 mat2 duv) {
+  GaborPixelSplit p = gabor_pixel_split(duv, filtering);
+  float s2 = 0.5 * (p.S.x + p.S.z);
   int last = textureQueryLevels(tile_tex) - 1, lev = 0;
   float v_lo = 0.0, v_hi = 0.0;
   for (int L = 1; L <= last; ++L) {
-    float hl = filt.y * tile.x / float(textureSize(tile_tex, L).x);
-    if (hl * hl > s2) {
-      v_hi = hl * hl;
+    float sd = filtering.y * tile.x / float(textureSize(tile_tex, L).x);
+    if (sd * sd > s2) {
+      v_hi = sd * sd;
       break;
     }
     lev = L;
-    v_lo = hl * hl;
+    v_lo = sd * sd;
   }
   bool fade = v_hi == 0.0;  // past the last level: towards the mean
-  if (fade) v_hi = last == 0 ? 0.0 : 4.0 * v_lo;
-  float t = v_hi > v_lo ? clamp((s2 - v_lo) / (v_hi - v_lo), 0.0, 1.0) : 0.0;
+  float f0 = 2.0 / (lambda_mm.x + lambda_mm.y), c = -2.0 * kPi * kPi * f0 * f0;
+  float a_lo = exp(c * v_lo), a_hi = fade ? 0.0 : exp(c * v_hi);
+  float t = fade && last == 0 ? 0.0 : clamp((a_lo - exp(c * s2)) / max(a_lo - a_hi, 1e-30), 0.0, 1.0);
   float sum = 0.0;
-  for (int k = 0; k < n; ++k) {
-    vec2 p = uv + e * (n == 1 ? 0.0 : half_span * (2.0 * float(k) / float(n - 1) - 1.0));
-    float lo = gabor_tile_level(tile_tex, tile, p, lev);
-    float hi = fade ? 0.0 : gabor_tile_level(tile_tex, tile, p, lev + 1);
+  for (int i = 0; i < p.k; ++i) {
+    vec2 q = gabor_sub_position(p, uv, i);
+    float lo = gabor_tile_level(tile_tex, tile, q, lev);
+    float hi = fade ? 0.0 : gabor_tile_level(tile_tex, tile, q, lev + 1);
     sum += mix(lo, hi, t);
   }
-  return sum / float(n);
+  return sum / float(p.k);
 }
 #endif

@@ -158,6 +158,31 @@ Cov2 cap_footprint(const Cov2& c, double cap) {
   return {m1 * e1x * e1x + m2 * e1y * e1y, (m1 - m2) * e1x * e1y, m1 * e1y * e1y + m2 * e1x * e1x};
 }
 
+PixelSplit gabor_pixel_split(double dudx, double dvdx, double dudy, double dvdy, double pixel_variance,
+                             double cap, int max_subsamples) {
+  const bool x_major = dudx * dudx + dvdx * dvdx >= dudy * dudy + dvdy * dvdy;
+  const double mu = x_major ? dudx : dudy, mv = x_major ? dvdx : dvdy;
+  const double nu = x_major ? dudy : dudx, nv = x_major ? dvdy : dvdx;
+  const double ratio = std::sqrt((mu * mu + mv * mv) / std::max(nu * nu + nv * nv, 1e-30));
+  PixelSplit p;
+  p.major_u = mu, p.major_v = mv;
+  p.k = static_cast<int>(std::clamp(std::floor(ratio + 0.5), 1.0, std::max(1.0, static_cast<double>(max_subsamples))));
+  p.S = cap_footprint(footprint_from_derivatives(nu, nv, mu / p.k, mv / p.k, pixel_variance), cap);
+  return p;
+}
+
+double gabor_noise_pixel(const GaborParams& g, const GaborSetup& s, std::uint32_t seed, double u, double v,
+                         double dudx, double dvdx, double dudy, double dvdy) {
+  const PixelSplit p = gabor_pixel_split(dudx, dvdx, dudy, dvdy, g.filter_pixel_variance, footprint_cap_mm2(g),
+                                         kGaborFilterMaxSubsamples);
+  double sum = 0.0;
+  for (int i = 0; i < p.k; ++i) {
+    const double o = (i + 0.5) / p.k - 0.5;
+    sum += gabor_noise_filtered(g, s, seed, u + o * p.major_u, v + o * p.major_v, p.S);
+  }
+  return sum / p.k;
+}
+
 double footprint_cap_mm2(const GaborParams& g) {
   const double w_min = g.kernel_periods * std::min(g.lambda_min_mm, g.lambda_max_mm);
   return kFootprintCapOfEnvelope * 0.5 * w_min * w_min;
@@ -265,6 +290,7 @@ GaborBakePlan make_gabor_bake_plan(const GaborParams& g, const GaborSetup& s) {
   p.ok = true;
   if (g.filter == GaborParams::Filter::kAnalytic) {
     const double lambda_max = std::max(g.lambda_min_mm, g.lambda_max_mm);
+    // At the Hermite kappa (the smaller): a bilinear tile gets a level more than it needs.
     while (p.level_texels(p.filtered_levels + 1) >= 16 &&
            p.level_sigma2_mm2(p.filtered_levels) < lambda_max * lambda_max)
       ++p.filtered_levels;

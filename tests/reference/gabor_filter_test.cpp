@@ -150,7 +150,7 @@ TEST(GaborFilterTest, AnalyticFilterGivesTilesFilteredLevels) {
   ASSERT_GT(p.filtered_levels, 2);
   for (int l = 1; l <= p.filtered_levels; ++l) {
     EXPECT_GE(p.level_texels(l), 16);
-    EXPECT_NEAR(std::sqrt(p.level_sigma2_mm2(l)), kBakeLevelSigmaTexels * p.period_mm / (p.texels >> l), 1e-12);
+    EXPECT_NEAR(std::sqrt(p.level_sigma2_mm2(l)), p.level_sigma_texels() * p.period_mm / (p.texels >> l), 1e-12);
   }
   // The last level's filter reaches lambda (the texture is then gone, exp(-2 pi^2)) or the
   // tile's smallest size.
