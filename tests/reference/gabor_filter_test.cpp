@@ -143,6 +143,7 @@ TEST(GaborFilterTest, AnalyticFilterGivesTilesFilteredLevels) {
   g.lambda_min_mm = g.lambda_max_mm = 0.5;
   g.bake_samples_per_lambda = 24;
   const GaborSetup s = make_gabor_setup(g);
+  g.filter = GaborParams::Filter::kNone;
   EXPECT_EQ(make_gabor_bake_plan(g, s).filtered_levels, 0);
   g.filter = GaborParams::Filter::kAnalytic;
   const GaborBakePlan p = make_gabor_bake_plan(g, s);
