@@ -7,6 +7,8 @@
 //                  (PS_GABOR_BAKED 1, four texel fetches) works in texel units;
 //   "baked_linear" R16F target: the value f alone (the target keeps .x), read by one bilinear,
 //                  repeating texture fetch (PS_GABOR_BAKED 2).
+// Mip level L >= 1 (filtered levels, GaborBakePlan::filtered_levels) samples at its own texel
+// size h_L the texture filtered with an isotropic Gaussian of variance u_level.y.
 #define PS_GABOR_BAKE 1
 #include "lib/gabor_bake_block.glsl"
 
@@ -15,8 +17,10 @@ layout(location = 0) out vec4 o_sample;
 void main() {
   GaborMaterial g = gabor_material(u_gabor);
   vec2 ij = floor(gl_FragCoord.xy);
-  vec2 uv = -0.5 * u_gabor.tile.x + ij * u_gabor.tile.y;
-  vec4 s = gabor_noise_sample(g, uv, int(u_gabor.tile.w));
-  float h = u_gabor.tile.y;
+  float h = u_level.x;
+  vec2 uv = -0.5 * u_gabor.tile.x + ij * h;
+  // Level 0 unfiltered; levels >= 1 filtered analytically (never box-averaged texels).
+  vec4 s = u_level.y > 0.0 ? gabor_noise_sample_filtered(g, uv, int(u_gabor.tile.w), u_level.y)
+                           : gabor_noise_sample(g, uv, int(u_gabor.tile.w));
   o_sample = vec4(s.x, s.y * h, s.z * h, s.w * h * h);
 }

@@ -8,7 +8,8 @@
 //                       documented "no probe" value, src/render/renderer.h)
 // Variants: PS_SHADOW (0: probe beyond this surface's influence, pseudo-shadow compiled out),
 //           PS_TEXTURED (0: untextured material, Gabor compiled out), PS_GABOR_STRATIFIED,
-//           PS_GABOR_BAKED (the texture read from the material's baked tile).
+//           PS_GABOR_BAKED (the texture read from the material's baked tile), PS_GABOR_FILTER
+//           (the texture filtered over the pixel's footprint).
 // The bodies' pseudo-shadows (lib/body_shadow.glsl) darken the colour target only, in every
 // variant; the AOVs and the normal stay the probe's.
 #include "lib/surface_block.glsl"
@@ -184,10 +185,21 @@ void main() {
   intensity = hc.y * shadow_intensity(curve, d);
   float s = 0.0;  // texture in [-1, 1] contrasts; 0 = untextured
 #if PS_TEXTURED
+#if PS_GABOR_FILTER
+  // The pixel's footprint in (u, v) (lib/gabor.glsl, analytic filtering): derivatives taken
+  // here, in uniform control flow, not inside the branch below.
+  mat2 duv = mat2(dFdx(uv), dFdy(uv));
+#endif
   // Only fragments inside the footprint and the onset distance pay for the Gabor sum.
   if (intensity > 0.0 && d < u_modulation.y) {
-#if PS_GABOR_BAKED
+#if PS_GABOR_BAKED && PS_GABOR_FILTER
+    tex_sigmas = gabor_noise_baked_filtered(u_gabor_tile, u_gabor.tile, u_gabor.filtering,
+                                            u_gabor.amplitude_lambda.zw, uv, duv) /
+                 u_gabor.kernel.w;
+#elif PS_GABOR_BAKED
     tex_sigmas = gabor_noise_baked(u_gabor_tile, u_gabor.tile, uv) / u_gabor.kernel.w;
+#elif PS_GABOR_FILTER
+    tex_sigmas = gabor_noise_pixel(gabor_material(u_gabor), u_gabor.filtering, uv, duv) / u_gabor.kernel.w;
 #else
     tex_sigmas = gabor_noise(gabor_material(u_gabor), uv) / u_gabor.kernel.w;
 #endif

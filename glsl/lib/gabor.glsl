@@ -11,6 +11,9 @@
 #ifndef PS_GABOR_BAKED
 #define PS_GABOR_BAKED 0  // 1: gabor_noise_baked (Hermite lookup in the baked tile); 2: bilinear
 #endif
+#ifndef PS_GABOR_FILTER
+#define PS_GABOR_FILTER 0  // 1: analytic filtering over the pixel footprint (gabor_noise_filtered)
+#endif
 
 const float kPi = 3.14159265358979;
 const uint kLcgMultiplier = 3039177861u;  // r_{n+1} = 3039177861 r_n mod 2^32
@@ -96,6 +99,117 @@ float gabor_noise(GaborMaterial g, vec2 uv) {
   return sum;
 }
 
+#if PS_GABOR_FILTER || PS_GABOR_BAKE
+// A kernel convolved with the normalised Gaussian of covariance S = (xx, xy, yy) mm^2 (Lagae et
+// al. 2009 §5): amp exp(-d^T Q d / 2) cos(k . d + psi), Q = (C + S)^-1, C = (W^2/2) I,
+// k = Q C k0, amp = A sqrt(|C| / |C + S|) exp(-c (|k0|^2 - k0 . k) / 2). CPU twin:
+// filter_kernel in src/reference/gabor.cpp.
+struct GaborFilteredKernel {
+  float amp;
+  vec3 q;  // (Q_xx, Q_xy, Q_yy)
+  vec2 k;  // rad per mm
+};
+GaborFilteredKernel gabor_filter_kernel(GaborKernel kern, vec3 S) {
+  float c = 0.5 * kern.w * kern.w;
+  float a = c + S.x, b = S.y, d = c + S.z, det = a * d - b * b;
+  vec2 k0 = (2.0 * kPi / kern.lambda) * vec2(cos(kern.theta), sin(kern.theta));
+  GaborFilteredKernel f;
+  f.q = vec3(d, -b, a) / det;
+  f.k = c * vec2(f.q.x * k0.x + f.q.y * k0.y, f.q.y * k0.x + f.q.z * k0.y);
+  f.amp = kern.amp * c * inversesqrt(det) * exp(-0.5 * c * (dot(k0, k0) - dot(k0, f.k)));
+  return f;
+}
+#endif
+
+#if PS_GABOR_FILTER
+// gabor_cell with every kernel filtered by S, cut where its filtered envelope falls below the
+// truncation (S = 0: gabor_cell). CPU twin: cell_sum_filtered in src/reference/gabor.cpp.
+float gabor_cell_filtered(GaborMaterial g, ivec2 cell, vec2 p, vec3 S) {
+  uint r = gabor_cell_seed(cell, g.seed);
+#if PS_GABOR_STRATIFIED
+  int count = min(g.stratified_count, g.max_impulses);
+  int grid = int(ceil(sqrt(float(g.stratified_count))));
+  float inv_grid = 1.0 / float(grid);
+#else
+  float n = g.density.x + (g.density.y - g.density.x) * lcg_uniform(r);
+  float expected = n * (1.0 / kPi);
+  int count = clamp(int(floor(expected + lcg_uniform(r))), 0, g.max_impulses);
+#endif
+  float sum = 0.0;
+  for (int k = 0; k < count; ++k) {
+#if PS_GABOR_STRATIFIED
+    vec2 jitter = vec2(lcg_uniform(r), lcg_uniform(r));
+    vec2 d = p - (vec2(float(k % grid), float((k / grid) % grid)) + jitter) * inv_grid * g.cell_mm;
+#else
+    vec2 d = p - vec2(lcg_uniform(r), lcg_uniform(r)) * g.cell_mm;
+#endif
+    GaborKernel kern = gabor_draw_kernel(g, r);
+    if (kern.w <= 0.0) continue;
+    GaborFilteredKernel f = gabor_filter_kernel(kern, S);
+    float q = f.q.x * d.x * d.x + 2.0 * f.q.y * d.x * d.y + f.q.z * d.y * d.y;
+    if (q >= 2.0 * g.trunc_factor) continue;
+    sum += f.amp * exp(-0.5 * q) * cos(dot(f.k, d) + kern.psi);
+  }
+  return sum;
+}
+
+float gabor_noise_filtered(GaborMaterial g, vec2 uv, vec3 S) {
+  vec2 f = uv / g.cell_mm;
+  ivec2 c = ivec2(floor(f));
+  vec2 o = (f - vec2(c)) * g.cell_mm;
+  float sum = 0.0;
+  for (int j = -1; j <= 1; ++j)
+    for (int i = -1; i <= 1; ++i)
+      sum += gabor_cell_filtered(g, c + ivec2(i, j), o - vec2(i, j) * g.cell_mm, S);
+  return sum;
+}
+
+// A pixel's box, split into k sub-boxes along its longer screen axis (k ~ the footprint's
+// anisotropy, at most filtering.w): sub-box i is centred at uv + major * ((i + 0.5) / k - 0.5),
+// and each is a Gaussian of covariance S = pixel_variance * (minor minor^T + major major^T / k^2),
+// its eigenvalues capped at filtering.z. One Gaussian for a long, thin footprint leaks
+// frequencies that the box kills (about 1 cycle per pixel along it): k Gaussians each 1/k as
+// long follow the box out to k cycles per pixel. duv = (d uv / dx, d uv / dy), mm per pixel.
+// CPU twin: gabor_pixel_split in src/reference/gabor.cpp.
+struct GaborPixelSplit {
+  vec2 major;  // the longer screen axis's (u, v) step over the whole pixel, mm
+  int k;
+  vec3 S;      // (xx, xy, yy) mm^2
+};
+vec3 gabor_cap_footprint(vec3 S, float cap) {
+  float m = 0.5 * (S.x + S.z), h = 0.5 * (S.x - S.z);
+  float rad = sqrt(h * h + S.y * S.y), l1 = m + rad, l2 = m - rad;
+  if (l1 <= cap) return S;
+  float a = 0.5 * atan(S.y, h);
+  vec2 e = vec2(cos(a), sin(a));
+  float m1 = min(l1, cap), m2 = min(l2, cap);
+  return vec3(m1 * e.x * e.x + m2 * e.y * e.y, (m1 - m2) * e.x * e.y, m1 * e.y * e.y + m2 * e.x * e.x);
+}
+GaborPixelSplit gabor_pixel_split(mat2 duv, vec4 filtering) {
+  bool x_major = dot(duv[0], duv[0]) >= dot(duv[1], duv[1]);
+  vec2 major = x_major ? duv[0] : duv[1], minor = x_major ? duv[1] : duv[0];
+  float ratio = sqrt(dot(major, major) / max(dot(minor, minor), 1e-30));
+  GaborPixelSplit p;
+  p.major = major;
+  p.k = int(clamp(floor(ratio + 0.5), 1.0, max(filtering.w, 1.0)));
+  vec2 sub = major / float(p.k);
+  p.S = gabor_cap_footprint(filtering.x * vec3(minor.x * minor.x + sub.x * sub.x, minor.x * minor.y + sub.x * sub.y,
+                                               minor.y * minor.y + sub.y * sub.y), filtering.z);
+  return p;
+}
+vec2 gabor_sub_position(GaborPixelSplit p, vec2 uv, int i) {
+  return uv + p.major * ((float(i) + 0.5) / float(p.k) - 0.5);
+}
+
+// The texture filtered over the pixel whose (u, v) derivatives are duv.
+float gabor_noise_pixel(GaborMaterial g, vec4 filtering, vec2 uv, mat2 duv) {
+  GaborPixelSplit p = gabor_pixel_split(duv, filtering);
+  float sum = 0.0;
+  for (int i = 0; i < p.k; ++i) sum += gabor_noise_filtered(g, gabor_sub_position(p, uv, i), p.S);
+  return sum / float(p.k);
+}
+#endif
+
 #if PS_GABOR_BAKE
 // Baking (glsl/gabor_bake.frag): value and derivatives (f, df/du, df/dv, d2f/dudv) of the
 // periodic texture, cells hashed by their index wrapped into [-N/2, N/2). CPU twin:
@@ -128,6 +242,42 @@ vec4 gabor_cell_sample(GaborMaterial g, ivec2 cell, vec2 p) {
                     4.0 * d.x * d.y * iw2 * iw2 * c + 2.0 * d.x * iw2 * s * f * o.y +
                         2.0 * d.y * iw2 * s * f * o.x - c * f * f * o.x * o.y);
   }
+  return sum;
+}
+
+// The filtered levels (S = sigma2 I): value and derivatives of the filtered kernels, with
+// g = Q d: E_u = -g_u E, E_uv = (g_u g_v - Q_uv) E. CPU twin: cell_sample_filtered.
+vec4 gabor_cell_sample_filtered(GaborMaterial g, ivec2 cell, vec2 p, float sigma2) {
+  uint r = gabor_cell_seed(cell, g.seed);
+  float n = g.density.x + (g.density.y - g.density.x) * lcg_uniform(r);
+  float expected = n * (1.0 / kPi);
+  int count = clamp(int(floor(expected + lcg_uniform(r))), 0, g.max_impulses);
+  vec4 sum = vec4(0.0);
+  for (int k = 0; k < count; ++k) {
+    vec2 d = p - vec2(lcg_uniform(r), lcg_uniform(r)) * g.cell_mm;
+    GaborKernel kern = gabor_draw_kernel(g, r);
+    if (kern.w <= 0.0) continue;
+    GaborFilteredKernel f = gabor_filter_kernel(kern, vec3(sigma2, 0.0, sigma2));
+    vec2 gq = vec2(f.q.x * d.x + f.q.y * d.y, f.q.y * d.x + f.q.z * d.y);
+    float q = dot(d, gq);
+    if (q >= 2.0 * g.trunc_factor) continue;
+    float e = f.amp * exp(-0.5 * q), ph = dot(f.k, d) + kern.psi, c = cos(ph), s = sin(ph);
+    sum += e * vec4(c, -gq.x * c - s * f.k.x, -gq.y * c - s * f.k.y,
+                    (gq.x * gq.y - f.q.y) * c + gq.x * s * f.k.y + gq.y * s * f.k.x - c * f.k.x * f.k.y);
+  }
+  return sum;
+}
+
+vec4 gabor_noise_sample_filtered(GaborMaterial g, vec2 uv, int period_cells, float sigma2) {
+  vec2 f = uv / g.cell_mm;
+  ivec2 c = ivec2(floor(f));
+  vec2 o = (f - vec2(c)) * g.cell_mm;
+  vec4 sum = vec4(0.0);
+  for (int j = -1; j <= 1; ++j)
+    for (int i = -1; i <= 1; ++i) {
+      ivec2 cell = ivec2(gabor_wrap_cell(c.x + i, period_cells), gabor_wrap_cell(c.y + j, period_cells));
+      sum += gabor_cell_sample_filtered(g, cell, o - vec2(i, j) * g.cell_mm, sigma2);
+    }
   return sum;
 }
 
@@ -173,5 +323,68 @@ float gabor_noise_baked(sampler2D tile_tex, vec4 tile, vec2 uv) {
   f += dot(s01, vec4(h0.x * h1.y, h0.z * h1.y, h0.x * h1.w, h0.z * h1.w));
   f += dot(s11, vec4(h1.x * h1.y, h1.z * h1.y, h1.x * h1.w, h1.z * h1.w));
   return f;
+}
+#endif
+
+#if PS_GABOR_FILTER && PS_GABOR_BAKED
+// Filtered lookup in a tile with filtered levels (src/passes/gabor_bake.h): mip level L holds
+// the texture filtered with an isotropic Gaussian of variance v_L = (kappa h_L)^2 (v_0 = 0),
+// sampled at u_i = -period/2 + i h_L, h_L = period / (its texels). CPU twin of the levels:
+// gabor_noise_derivatives(..., sigma2) in src/reference/gabor.cpp. tile as in gabor_noise_baked.
+float gabor_tile_level(sampler2D tile_tex, vec4 tile, vec2 uv, int level) {
+  float n = float(textureSize(tile_tex, level).x), h = tile.x / n;
+  vec2 s = (uv + 0.5 * tile.x) / h;
+#if PS_GABOR_BAKED == 2
+  s = s - n * floor(s / n);
+  return textureLod(tile_tex, (s + 0.5) / n, float(level)).r;  // GL_LINEAR_MIPMAP_NEAREST, level exactly
+#else
+  // The Hermite lookup of gabor_noise_baked on this level (its slopes are stored times h_L).
+  vec2 i = floor(s), t = s - i;
+  ivec2 i0 = ivec2(mod(i, n)), i1 = ivec2(mod(i + 1.0, n));
+  vec4 h0 = vec4((1.0 + 2.0 * t) * (1.0 - t) * (1.0 - t), t * (1.0 - t) * (1.0 - t));
+  vec4 h1 = vec4(t * t * (3.0 - 2.0 * t), -t * t * (1.0 - t));
+  float f = 0.0;
+  f += dot(texelFetch(tile_tex, ivec2(i0.x, i0.y), level), vec4(h0.x * h0.y, h0.z * h0.y, h0.x * h0.w, h0.z * h0.w));
+  f += dot(texelFetch(tile_tex, ivec2(i1.x, i0.y), level), vec4(h1.x * h0.y, h1.z * h0.y, h1.x * h0.w, h1.z * h0.w));
+  f += dot(texelFetch(tile_tex, ivec2(i0.x, i1.y), level), vec4(h0.x * h1.y, h0.z * h1.y, h0.x * h1.w, h0.z * h1.w));
+  f += dot(texelFetch(tile_tex, ivec2(i1.x, i1.y), level), vec4(h1.x * h1.y, h1.z * h1.y, h1.x * h1.w, h1.z * h1.w));
+  return f;
+#endif
+}
+
+// The texture filtered over the pixel from the tile's levels: the pixel split as in
+// gabor_noise_pixel; each sub-box's footprint, taken as isotropic with its mean variance s2,
+// read from the two levels around s2 (beyond the last level: it and 0, the texture's mean),
+// blended so that the blend attenuates the texture's mean frequency f0 = 2 / (lambda_min +
+// lambda_max) as a filter of variance s2 does, exp(-2 pi^2 s2 f0^2). (Blending linearly in
+// variance kept too much of the finer level: its unfiltered share aliases.) filtering:
+// GaborBlock::filtering (y: a level's sigma in its texels, kappa); lambda_mm: (min, max).
+float gabor_noise_baked_filtered(sampler2D tile_tex, vec4 tile, vec4 filtering, vec2 lambda_mm, vec2 uv,
+                                 mat2 duv) {
+  GaborPixelSplit p = gabor_pixel_split(duv, filtering);
+  float s2 = 0.5 * (p.S.x + p.S.z);
+  int last = textureQueryLevels(tile_tex) - 1, lev = 0;
+  float v_lo = 0.0, v_hi = 0.0;
+  for (int L = 1; L <= last; ++L) {
+    float sd = filtering.y * tile.x / float(textureSize(tile_tex, L).x);
+    if (sd * sd > s2) {
+      v_hi = sd * sd;
+      break;
+    }
+    lev = L;
+    v_lo = sd * sd;
+  }
+  bool fade = v_hi == 0.0;  // past the last level: towards the mean
+  float f0 = 2.0 / (lambda_mm.x + lambda_mm.y), c = -2.0 * kPi * kPi * f0 * f0;
+  float a_lo = exp(c * v_lo), a_hi = fade ? 0.0 : exp(c * v_hi);
+  float t = fade && last == 0 ? 0.0 : clamp((a_lo - exp(c * s2)) / max(a_lo - a_hi, 1e-30), 0.0, 1.0);
+  float sum = 0.0;
+  for (int i = 0; i < p.k; ++i) {
+    vec2 q = gabor_sub_position(p, uv, i);
+    float lo = gabor_tile_level(tile_tex, tile, q, lev);
+    float hi = fade ? 0.0 : gabor_tile_level(tile_tex, tile, q, lev + 1);
+    sum += mix(lo, hi, t);
+  }
+  return sum / float(p.k);
 }
 #endif

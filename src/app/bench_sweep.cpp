@@ -148,6 +148,9 @@ Scene bench_scene(int size) {
   m.gabor.lambda_max_mm = 2.0;
   m.gabor.theta_max_rad = 1.0;
   m.onset_distance_mm = 100.0;  // the whole footprint is textured: the Gabor cost is visible
+  // The strategies' errors are against the point-sampled CPU twins; what filtering costs and
+  // buys is `bench --texture-filter` (bench_texture_filter.h).
+  m.gabor.filter = GaborParams::Filter::kNone;
   // The sweep's base is the naive sum (the thesis's method, the baseline every strategy is
   // judged against, and what the impulse and truncation knobs change); the scene default
   // "auto" is its own row of the gabor_strategy group.

@@ -8,8 +8,12 @@
 //   "baked_linear" R16F, GL_LINEAR: texel (i, j) = f alone, read by one bilinear, repeating
 //                  texture fetch (PS_GABOR_BAKED 2).
 // Both sample (-period/2 + i h, -period/2 + j h) and repeat (GL_REPEAT) with the period.
+// With filtering (plan.filtered_levels > 0) the tile has mip levels 1 .. filtered_levels, each
+// baked from the analytically filtered texture (GaborBakePlan, src/reference/gabor.h) at its
+// own texel size, in the same form; the sampler then reads levels exactly (textureLod,
+// texelFetch).
 //   inputs : the material's GaborBlock (make_gabor_block with its plan) and GaborBakePlan
-//   output : a new tile texture, plan.texels^2, in the plan's form
+//   output : a new tile texture, plan.texels^2 (plus its filtered levels), in the plan's form
 // The program is built once, in init(); run() once per tile, or make_tile() then run_rows()
 // over consecutive row bands (the window bakes one band between frames so frames keep coming;
 // a texel's value does not depend on the band it was drawn in, so the tile is the same).
@@ -28,8 +32,9 @@ namespace ps {
 // std140 mirror of glsl/lib/gabor_bake_block.glsl.
 struct GaborBakeBlock {
   GaborBlock gabor;
+  glm::vec4 level;  // x: the level's texel mm; y: its filter variance mm^2 (0 at level 0)
 };
-static_assert(sizeof(GaborBakeBlock) == sizeof(GaborBlock), "GaborBakeBlock must match std140 layout");
+static_assert(sizeof(GaborBakeBlock) == sizeof(GaborBlock) + 16, "GaborBakeBlock must match std140 layout");
 
 struct GaborBakePass {
   Status init(const std::string& glsl_root);
@@ -38,9 +43,10 @@ struct GaborBakePass {
   Result<gl::Texture> run(const GaborBlock& block, const GaborBakePlan& plan);
   // The tile texture for `plan`, sampler state set, contents undefined until every row is baked.
   static gl::Texture make_tile(const GaborBakePlan& plan);
-  // Bakes rows [row_begin, row_end) of `tile` (from make_tile(plan)), all columns.
+  // Bakes rows [row_begin, row_end) of mip level `level` of `tile` (from make_tile(plan)), all
+  // columns.
   Status run_rows(const gl::Texture& tile, const GaborBlock& block, const GaborBakePlan& plan,
-                  int row_begin, int row_end);
+                  int row_begin, int row_end, int level = 0);
 
  private:
   gl::Program program_;

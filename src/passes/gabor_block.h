@@ -18,8 +18,10 @@ struct GaborBlock {
   glm::vec4 kernel;            // kernel periods, cell mm, trunc factor, sigma_unit
   glm::vec4 tile;              // baked tile: period mm, texel mm, texels, period cells (0: none)
   glm::uvec4 counts;           // seed, max impulses per cell, stratified impulses per cell, 0
+  glm::vec4 filtering;         // pixel variance px^2, tile level sigma in its texels, footprint cap mm^2, most sub-boxes
 };
-static_assert(sizeof(GaborBlock) == 5 * 16, "GaborBlock must match std140 layout");
+static_assert(sizeof(GaborBlock) == 6 * 16, "GaborBlock must match std140 layout");
+
 
 // `plan`: the material's baked tile (plan.ok == false: none, tile stays zero).
 inline GaborBlock make_gabor_block(const GaborParams& g, const GaborSetup& s, const GaborBakePlan& plan,
@@ -31,6 +33,8 @@ inline GaborBlock make_gabor_block(const GaborParams& g, const GaborSetup& s, co
   b.tile = plan.ok ? glm::vec4(glm::dvec4(plan.period_mm, plan.texel_mm, plan.texels, plan.period_cells))
                    : glm::vec4(0.0f);
   b.counts = glm::uvec4(seed, static_cast<unsigned>(s.max_impulses), static_cast<unsigned>(s.stratified_count), 0u);
+  b.filtering = glm::vec4(glm::dvec4(g.filter_pixel_variance, plan.level_sigma_texels(), footprint_cap_mm2(g),
+                                     kGaborFilterMaxSubsamples));
   return b;
 }
 

@@ -92,9 +92,10 @@ Status SurfacePass::init(const std::string& glsl_root, const Params& params) {
 }
 
 Result<const gl::Program*> SurfacePass::program(bool shadow, bool textured, bool stratified,
-                                                int baked, bool intensity_lut) {
+                                                int baked, bool filtered, bool intensity_lut) {
   const bool tex = textured && shadow;
-  const auto key = std::make_tuple(shadow, tex, stratified && tex && baked == 0, tex ? baked : 0, intensity_lut);
+  const auto key =
+      std::make_tuple(shadow, tex, stratified && tex && baked == 0, tex ? baked : 0, filtered && tex, intensity_lut);
   auto it = programs_.find(key);
   if (it != programs_.end()) return &it->second;
   gl::ProgramDesc desc{{"surface.vert", "surface.frag"},
@@ -102,6 +103,7 @@ Result<const gl::Program*> SurfacePass::program(bool shadow, bool textured, bool
   // Only the stratified variant gets the extra define: the naive source stays byte-identical.
   if (std::get<2>(key)) desc.defines.push_back({"PS_GABOR_STRATIFIED", "1"});
   if (std::get<3>(key)) desc.defines.push_back({"PS_GABOR_BAKED", std::to_string(std::get<3>(key))});
+  if (std::get<4>(key)) desc.defines.push_back({"PS_GABOR_FILTER", "1"});
   if (intensity_lut) desc.defines.push_back({"PS_INTENSITY_LUT", "1"});
   auto built = gl::build_program(desc, glsl_root_);
   if (!built) return built.error();
@@ -169,7 +171,7 @@ Status SurfacePass::draw_all(const std::vector<SurfaceDraw>& draws, bool shadow)
     const SurfaceDraw& d = draws[i];
     const bool own = shadow && d.shadow;
     auto prog = program(own, d.textured, d.stratified, d.gabor_tile ? (d.gabor_tile_linear ? 2 : 1) : 0,
-                        d.intensity_lut != nullptr);
+                        d.gabor_filter, d.intensity_lut != nullptr);
     if (!prog) return prog.error();
     glUseProgram(prog.value()->id());
     glBindTextureUnit(1, d.albedo ? d.albedo->id() : dummy_.id());

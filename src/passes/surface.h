@@ -14,8 +14,9 @@
 //   exact only for power-of-two RGBA32F on llvmpipe, docs/gl-stack.md); the viewport covers the
 //   image, the padding stays cleared and drops out of every ratio computed from the mips.
 // Shaders: glsl/surface.{vert,frag}; variants PS_SHADOW, PS_TEXTURED, PS_GABOR_STRATIFIED,
-// PS_GABOR_BAKED, PS_INTENSITY_LUT (the material's intensity_lut in IntensityLutBlock, uniform
-// binding 1, make_intensity_lut_buffer; without it the source is byte-identical to before).
+// PS_GABOR_BAKED, PS_GABOR_FILTER, PS_INTENSITY_LUT (the material's intensity_lut in
+// IntensityLutBlock, uniform binding 1, make_intensity_lut_buffer; without it the source is
+// byte-identical to before).
 #pragma once
 
 #include <limits>
@@ -98,6 +99,7 @@ struct SurfaceDraw {
   const gl::Texture* albedo = nullptr;
   const gl::Texture* gabor_tile = nullptr;  // set: PS_GABOR_BAKED variant reads this tile
   bool gabor_tile_linear = false;           // the tile is values only, read bilinearly (PS_GABOR_BAKED 2)
+  bool gabor_filter = false;                // PS_GABOR_FILTER variant (GaborParams::Filter::kAnalytic)
   bool wireframe = false;                   // the triangles' edges only (glPolygonMode GL_LINE)
   const gl::Buffer* intensity_lut = nullptr;  // set: PS_INTENSITY_LUT variant reads this table
 };
@@ -141,7 +143,7 @@ struct SurfacePass {
  private:
   // baked: 0 none, 1 Hermite lookup, 2 bilinear lookup (the PS_GABOR_BAKED value).
   Result<const gl::Program*> program(bool shadow, bool textured, bool stratified = false,
-                                     int baked = 0, bool intensity_lut = false);
+                                     int baked = 0, bool filtered = false, bool intensity_lut = false);
 
   std::string glsl_root_;
   Params params_;
@@ -151,7 +153,7 @@ struct SurfacePass {
   // with their PS_SHADOW=0 variant.
   Status draw_all(const std::vector<SurfaceDraw>& draws, bool shadow);
 
-  std::map<std::tuple<bool, bool, bool, int, bool>, gl::Program> programs_;
+  std::map<std::tuple<bool, bool, bool, int, bool, bool>, gl::Program> programs_;
   gl::Texture color_, normal_, aov_, dummy_;
   gl::Renderbuffer depth_;
   gl::Framebuffer fbo_;

@@ -1,5 +1,7 @@
 #include "reference/gabor.h"
 
+#include "reference/gabor_internal.h"
+
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -50,7 +52,7 @@ float lcg_uniform(std::uint32_t& state) {
   return static_cast<float>(state) * (1.0f / 4294967296.0f);
 }
 
-namespace {
+namespace gabor_detail {
 
 int cell_count(const GaborParams& g, const GaborSetup& s, std::uint32_t& r) {
   if (s.stratified_count > 0) return std::min(s.stratified_count, s.max_impulses);
@@ -64,10 +66,7 @@ int cell_count(const GaborParams& g, const GaborSetup& s, std::uint32_t& r) {
 
 // The k-th impulse of a cell, relative to the point (px, py) in the cell's frame: the draws in
 // the shader's order and float operations. Naive: one stratum (the whole cell); stratified: a
-// grid x grid jittered grid (stratum_grid).
-struct Impulse {
-  double dx, dy, amp, lambda, theta, psi, w, r2;
-};
+// grid x grid jittered grid (stratum_grid). Impulse: gabor_internal.h.
 int stratum_grid(const GaborSetup& s) {
   return s.stratified_count > 0 ? static_cast<int>(std::ceil(std::sqrt(static_cast<float>(s.stratified_count)))) : 1;
 }
@@ -87,6 +86,12 @@ Impulse draw_impulse(const GaborParams& g, const GaborSetup& s, std::uint32_t& r
   i.r2 = i.dx * i.dx + i.dy * i.dy;
   return i;
 }
+
+}  // namespace gabor_detail
+
+namespace {
+
+using namespace gabor_detail;
 
 double cell_sum(const GaborParams& g, const GaborSetup& s, std::uint32_t seed, int cx, int cy,
                 double px, double py, double* margin = nullptr, double trunc_factor = 0.0) {
@@ -112,7 +117,8 @@ namespace {
 
 // cell_sum with derivatives (same draws, same truncation).
 GaborSample cell_sample(const GaborParams& g, const GaborSetup& s, std::uint32_t seed, int cx,
-                        int cy, double px, double py) {
+                        int cy, double px, double py, double sigma2 = 0.0) {
+  if (sigma2 > 0.0) return gabor_detail::cell_sample_filtered(g, s, seed, cx, cy, px, py, sigma2);
   std::uint32_t r = gabor_cell_seed(cx, cy, seed);
   const int count = cell_count(g, s, r);
   const int grid = stratum_grid(s);
@@ -158,11 +164,18 @@ GaborBakePlan make_gabor_bake_plan(const GaborParams& g, const GaborSetup& s) {
   p.texels = std::min(kMaxBakeTexels, static_cast<int>(std::ceil(p.period_mm / max_texel)));
   p.texel_mm = p.period_mm / p.texels;
   p.ok = true;
+  if (g.filter == GaborParams::Filter::kAnalytic) {
+    const double lambda_max = std::max(g.lambda_min_mm, g.lambda_max_mm);
+    // At the Hermite kappa (the smaller): a bilinear tile gets a level more than it needs.
+    while (p.level_texels(p.filtered_levels + 1) >= 16 &&
+           p.level_sigma2_mm2(p.filtered_levels) < lambda_max * lambda_max)
+      ++p.filtered_levels;
+  }
   return p;
 }
 
 GaborSample gabor_noise_derivatives(const GaborParams& g, const GaborSetup& s, std::uint32_t seed,
-                                    double u, double v, int period_cells) {
+                                    double u, double v, int period_cells, double sigma2_mm2) {
   const double fx = u / s.cell_mm, fy = v / s.cell_mm;
   const int cx = static_cast<int>(std::floor(fx)), cy = static_cast<int>(std::floor(fy));
   const double ox = (fx - cx) * s.cell_mm, oy = (fy - cy) * s.cell_mm;
@@ -171,7 +184,7 @@ GaborSample gabor_noise_derivatives(const GaborParams& g, const GaborSetup& s, s
     for (int i = -1; i <= 1; ++i) {
       const GaborSample c = cell_sample(g, s, seed, wrap_cell(cx + i, period_cells),
                                         wrap_cell(cy + j, period_cells), ox - i * s.cell_mm,
-                                        oy - j * s.cell_mm);
+                                        oy - j * s.cell_mm, sigma2_mm2);
       sum.f += c.f, sum.fu += c.fu, sum.fv += c.fv, sum.fuv += c.fuv;
     }
   return sum;

@@ -51,12 +51,36 @@ inline constexpr int kMaxBakeTexels = 2048;  // per side: 64 MiB of RGBA32F at m
 // Wanted period: wider than any probe footprint we ship (the bench's r = 25 mm sphere covers
 // 50 mm), so one footprint never shows a repeat.
 inline constexpr double kBakePeriodMm = 64.0;
+// Filtered levels (GaborParams::Filter::kAnalytic): mip level L = 1 .. filtered_levels of the
+// tile holds texels >> L samples per side (texel h_L = period / (texels >> L)) of the texture
+// filtered analytically with an isotropic Gaussian of standard deviation kappa * h_L
+// (gabor_noise_derivatives with sigma2_mm2), never box-averaged texels. Level 0 is the
+// unfiltered tile. Levels stop at 16 texels per side or once sigma_L (at the Hermite kappa)
+// passes lambda_max (the texture is then attenuated to exp(-2 pi^2) of itself).
+// kappa = sigma_L / h_L: a level's content must stay smooth on its own grid for the
+// interpolation. A bilinear lookup errs by at most (2 pi f h)^2 / 8 exp(-2 pi^2 k^2 h^2 f^2) of
+// a sinusoid's amplitude, whose maximum over f is 1 / (4 e k^2): 2.3 % at k = 2; the Hermite
+// lookup by (2 pi f h)^4 / 384 exp(...), at most 4 / (384 e^2 k^4) = 0.56 % at k = 1. A smaller
+// kappa puts the first filtered level nearer the unfiltered one: between the two the lookup
+// blends them, and the unfiltered share aliases (measured: kappa 2 left the Hermite tile at
+// 0.37 sd from the reference at lambda = 1.5 px, kappa 1 at <= 0.2).
+inline constexpr double kBakeLevelSigmaTexelsLinear = 2.0;
+inline constexpr double kBakeLevelSigmaTexelsHermite = 1.0;
 struct GaborBakePlan {
   bool ok = false;
   bool linear = false;  // values only, bilinear lookup (strategy baked_linear); else Hermite
   int period_cells = 0;
   int texels = 0;
   double period_mm = 0.0, texel_mm = 0.0;
+  int filtered_levels = 0;  // mip levels 1 .. filtered_levels (0: the unfiltered level alone)
+  int level_texels(int level) const { return texels >> level; }
+  double level_texel_mm(int level) const { return period_mm / level_texels(level); }
+  double level_sigma_texels() const { return linear ? kBakeLevelSigmaTexelsLinear : kBakeLevelSigmaTexelsHermite; }
+  // Variance (mm^2) of the isotropic filter level L was baked with (0 at level 0).
+  double level_sigma2_mm2(int level) const {
+    const double s = level == 0 ? 0.0 : level_sigma_texels() * level_texel_mm(level);
+    return s * s;
+  }
 };
 GaborBakePlan make_gabor_bake_plan(const GaborParams& g, const GaborSetup& s);
 
@@ -97,14 +121,74 @@ int wrap_cell(int c, int period_cells);
 struct GaborSample {
   double f = 0.0, fu = 0.0, fv = 0.0, fuv = 0.0;
 };
+// sigma2_mm2 > 0: of the texture filtered with an isotropic Gaussian of that variance (the
+// tile's filtered levels, GaborBakePlan::level_sigma2_mm2).
 GaborSample gabor_noise_derivatives(const GaborParams& g, const GaborSetup& s, std::uint32_t seed,
-                                    double u, double v, int period_cells);
+                                    double u, double v, int period_cells, double sigma2_mm2 = 0.0);
 
 // CPU twin of the baked lookup: bicubic Hermite (plan.linear: bilinear) interpolation of the tile's samples (computed
 // here in double with gabor_noise_derivatives) at (u, v). Its difference from
 // gabor_noise_derivatives(...).f is the interpolation error alone.
 double gabor_noise_baked(const GaborParams& g, const GaborSetup& s, const GaborBakePlan& plan,
                          std::uint32_t seed, double u, double v);
+
+// ---- Analytic filtering (Lagae et al. 2009 §5) ----
+// A symmetric 2x2 covariance in (u, v), mm^2: the pixel footprint's Gaussian.
+struct Cov2 {
+  double xx = 0.0, xy = 0.0, yy = 0.0;
+};
+// The footprint of a pixel whose (u, v) changes by du_dx (one pixel right) and du_dy (one pixel
+// down): pixel_variance * (du_dx du_dx^T + du_dy du_dy^T), pixel_variance in pixels^2.
+Cov2 footprint_from_derivatives(double dudx, double dvdx, double dudy, double dvdy, double pixel_variance);
+// Each eigenvalue of `c` capped at `cap` mm^2 (same eigenvectors). The filtered kernels are
+// evaluated from the 3x3 cells around the point like the unfiltered ones; a footprint wider
+// than the kernels would need more cells. Along a kernel's frequency a footprint of variance
+// W^2/2 already attenuates it to exp(-pi^2 kernel_periods^2 / 2) (< 1 % at 1 period), so the
+// cap kFootprintCapOfEnvelope * W_min^2 / 2 loses nothing visible there; across the
+// frequency it leaves the envelope's own slow modulation under-filtered.
+inline constexpr double kFootprintCapOfEnvelope = 1.0;
+Cov2 cap_footprint(const Cov2& c, double cap);
+double footprint_cap_mm2(const GaborParams& g);
+
+// A pixel's box split into k sub-boxes along its longer screen axis, k = its anisotropy
+// rounded, at most kGaborFilterMaxSubsamples: sub-box i centred at (u, v) + major ((i + 0.5) / k
+// - 0.5), each a Gaussian of covariance pixel_variance (minor minor^T + major major^T / k^2),
+// capped. One Gaussian standing for a long, thin box leaks what the box kills (about one cycle
+// per pixel along it) and that aliases; k Gaussians each 1/k as long follow the box out to k
+// cycles per pixel (measured at a 15-degree grazing view: 0.47 sd from the supersampled
+// reference with one, <= 0.3 with four). A 15-degree view is 3.9x anisotropic: 4 covers it.
+inline constexpr int kGaborFilterMaxSubsamples = 4;
+struct PixelSplit {
+  double major_u = 0.0, major_v = 0.0;  // the longer screen axis's (u, v) step over the pixel, mm
+  int k = 1;
+  Cov2 S;
+};
+// dudx, dvdx: (u, v) change one pixel right; dudy, dvdy: one pixel down (or up: signs do not
+// matter).
+PixelSplit gabor_pixel_split(double dudx, double dvdx, double dudy, double dvdy, double pixel_variance,
+                             double cap, int max_subsamples);
+// The texture filtered over that pixel (the surface pass's PS_GABOR_FILTER variant).
+double gabor_noise_pixel(const GaborParams& g, const GaborSetup& s, std::uint32_t seed, double u, double v,
+                         double dudx, double dvdx, double dudy, double dvdy);
+
+// One Gabor kernel A exp(-r^2/W^2) cos(2 pi d.o / lambda + psi), untruncated, at offset
+// d = (dx, dy) from its impulse; and the same kernel convolved with the normalised Gaussian of
+// covariance S. The convolution is again a Gabor kernel (complex form: a Gaussian times a
+// complex sinusoid; in frequency space the product of two Gaussians): with C = (W^2/2) I the
+// kernel's envelope covariance, C' = C + S,
+//   envelope exp(-d^T C'^-1 d / 2), frequency k' = C'^-1 C k0 (k0 = 2 pi o / lambda),
+//   amplitude A sqrt(|C| / |C'|) exp(-(k0^T C k0 - k'^T C' k') / 2), phase psi unchanged.
+struct GaborKernelShape {
+  double amp = 1.0, lambda = 1.0, theta = 0.0, psi = 0.0, w = 1.0;
+};
+double gabor_kernel(const GaborKernelShape& k, double dx, double dy);
+double gabor_kernel_filtered(const GaborKernelShape& k, double dx, double dy, const Cov2& S);
+
+// The noise filtered with the footprint S (mm^2): every kernel of gabor_noise filtered as
+// above, cut where its filtered envelope falls below the truncation (so S = 0 gives
+// gabor_noise). S is used as given (cap it with cap_footprint as the shader does).
+double gabor_noise_filtered(const GaborParams& g, const GaborSetup& s, std::uint32_t seed, double u,
+                            double v, const Cov2& S);
 
 std::uint32_t gabor_cell_seed(int cx, int cy, std::uint32_t seed);
 // One LCG step, then the new state mapped to [0, 1] in float (as the shader does).

@@ -355,7 +355,8 @@ std::shared_ptr<gl::Texture> Renderer::reusable_tile(const Material& m, const Ga
   for (size_t k = 0; k < old->materials_.size(); ++k) {
     const MaterialState& o = old->materials_[k];
     if (o.gabor_tile && old->scene_.materials[k].gabor == m.gabor && o.bake_plan.linear == plan.linear &&
-        o.bake_plan.texels == plan.texels && o.bake_plan.period_cells == plan.period_cells)
+        o.bake_plan.texels == plan.texels && o.bake_plan.period_cells == plan.period_cells &&
+        o.bake_plan.filtered_levels == plan.filtered_levels)
       return o.gabor_tile;
   }
   return nullptr;
@@ -456,6 +457,7 @@ std::vector<SurfaceDraw> Renderer::surface_draws(const FramePlan& plan) {
     d.gabor_tile = ms.gabor_tile.get();
     d.gabor_tile_linear = ms.bake_plan.linear;
     d.intensity_lut = ms.intensity_lut ? &ms.intensity_lut : nullptr;
+    d.gabor_filter = m.gabor.filter == GaborParams::Filter::kAnalytic;
     const Geometry::Sheets& sheets = geometry_.surface_sheets[i];
     if (!sheets.w4.empty()) {
       // The probe's sheet: the haptic proxy's (set_probe_sheet), else the nearest vertex's. The

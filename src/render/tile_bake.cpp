@@ -14,8 +14,9 @@ constexpr int kMinSliceRows = 8;
 
 void TileBaker::add(size_t material, const GaborBlock& block, const GaborBakePlan& plan) {
   assert(plan.ok && "TileBaker::add: only ok plans are baked");
-  jobs_.push_back({material, block, plan, {}, 0});
-  total_texels_ += static_cast<long long>(plan.texels) * plan.texels;
+  jobs_.push_back({material, block, plan, {}, 0, 0});
+  for (int level = 0; level <= plan.filtered_levels; ++level)
+    total_texels_ += static_cast<long long>(plan.level_texels(level)) * plan.level_texels(level);
 }
 
 double TileBaker::progress() const {
@@ -30,7 +31,7 @@ std::vector<TileBaker::Finished> TileBaker::take_finished() {
 
 Status TileBaker::bake_all(const std::string& glsl_root) {
   while (!jobs_.empty())
-    if (Status s = bake_rows(glsl_root, jobs_.front(), jobs_.front().plan.texels); !s) return s;
+    if (Status s = bake_rows(glsl_root, jobs_.front(), jobs_.front().plan.texels); !s) return s;  // a whole level
   return ok_status();
 }
 
@@ -38,7 +39,8 @@ Status TileBaker::bake_slice(const std::string& glsl_root) {
   assert(params_.slice_ms > 0.0 && "TileBaker::bake_slice: slices need params.slice_ms > 0");
   if (jobs_.empty()) return ok_status();
   const auto t0 = std::chrono::steady_clock::now();
-  const int rows = std::min(slice_rows_, jobs_.front().plan.texels - jobs_.front().rows_done);
+  const Job& job = jobs_.front();
+  const int rows = std::min(slice_rows_, job.plan.level_texels(job.level) - job.rows_done);
   if (Status s = bake_rows(glsl_root, jobs_.front(), rows); !s) return s;
   // Fit the next band to the budget from this one's time (bake_rows finished the GPU work):
   // the time per row is about constant within a tile, so rows scale with budget / time.
@@ -53,14 +55,18 @@ Status TileBaker::bake_rows(const std::string& glsl_root, Job& job, int rows) {
   if (!pass_.ready()) {  // only renderers with a tile to bake build the bake program
     if (Status s = pass_.init(glsl_root); !s) return s;
   }
-  if (job.rows_done == 0) job.tile = GaborBakePass::make_tile(job.plan);
-  const int end = std::min(job.plan.texels, job.rows_done + rows);
-  if (Status s = pass_.run_rows(job.tile, job.block, job.plan, job.rows_done, end); !s) return s;
+  if (job.rows_done == 0 && job.level == 0) job.tile = GaborBakePass::make_tile(job.plan);
+  const int texels = job.plan.level_texels(job.level);
+  const int end = std::min(texels, job.rows_done + rows);
+  if (Status s = pass_.run_rows(job.tile, job.block, job.plan, job.rows_done, end, job.level); !s) return s;
   glFinish();  // llvmpipe draws on flush: finishing makes the wall time the band's time
-  baked_texels_ += static_cast<long long>(end - job.rows_done) * job.plan.texels;
+  baked_texels_ += static_cast<long long>(end - job.rows_done) * texels;
   job.rows_done = end;
   bake_ms_ += std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
-  if (job.rows_done == job.plan.texels) {
+  if (job.rows_done == texels && job.level < job.plan.filtered_levels) {
+    ++job.level;  // the next filtered level, from its first row
+    job.rows_done = 0;
+  } else if (job.rows_done == texels) {
     finished_.push_back({job.material, std::make_shared<gl::Texture>(std::move(job.tile))});
     jobs_.erase(jobs_.begin());  // job is jobs_.front(): callers bake the first job only
   }

@@ -7,6 +7,8 @@
 //            The first frame comes at once instead of after the whole bake (~1-2 s on llvmpipe)
 //            and progress() tells the window how far the bake is.
 // A texel's value does not depend on the band it was drawn in, so both give the same tiles.
+// A tile's filtered levels (GaborBakePlan::filtered_levels) are baked after its level 0, band
+// by band in the same way; the tile is finished when its last level is.
 #pragma once
 
 #include <chrono>
@@ -49,7 +51,8 @@ class TileBaker {
     GaborBlock block;
     GaborBakePlan plan;
     gl::Texture tile;   // allocated on its first band
-    int rows_done = 0;  // rows [0, rows_done) are baked
+    int level = 0;      // the mip level being baked (levels below it are done)
+    int rows_done = 0;  // rows [0, rows_done) of that level are baked
   };
   // The next `rows` rows of `job` (clamped to the tile); job must be jobs_.front().
   Status bake_rows(const std::string& glsl_root, Job& job, int rows);

@@ -61,6 +61,17 @@ struct GaborParams {
   Strategy strategy = Strategy::kAuto;  // the fastest that meets the 1 % bar (docs/benchmarks.md)
   int stratified_impulses = 4;
   int bake_samples_per_lambda = 16;  // kBaked: tile samples per lambda_min (texel = lambda_min / this)
+  // Anti-aliasing (Lagae et al. 2009 §5; docs/architecture.md, "Texture filtering"). kAnalytic:
+  // every kernel convolved with the pixel's footprint, a Gaussian in (u, v) of covariance
+  // filter_pixel_variance * J J^T (J: the screen-space derivatives of (u, v), mm per pixel);
+  // baked tiles get mip levels baked from that filtered definition. kNone: the point-sampled
+  // texture (aliases where lambda is a few pixels or less). Default kAnalytic: measured in
+  // `bench --texture-filter` (docs/benchmarks.md, "Texture filtering").
+  enum class Filter { kNone, kAnalytic };
+  Filter filter = Filter::kAnalytic;
+  // Variance of the Gaussian standing for one pixel's box, in pixels^2: 1/12 is the box's own
+  // variance, so the two agree to second order in frequency.
+  double filter_pixel_variance = 1.0 / 12.0;
   bool operator==(const GaborParams&) const = default;
 };
 

@@ -23,6 +23,8 @@ constexpr std::array kProbeShapes = {"sphere"sv, "capsule"sv, "mesh"sv};
 constexpr std::array kDisplacements = {"weighted_average"sv, "exact_max"sv};
 constexpr std::array kShadowDistances = {"reference_plane"sv, "surface_normal"sv};
 constexpr std::array kGaborStrategies = {"naive"sv, "stratified"sv, "baked"sv, "auto"sv, "baked_linear"sv};
+// Same order as GaborParams::Filter.
+constexpr std::array kGaborFilters = {"none"sv, "analytic"sv};
 // Same order as SurfaceType.
 constexpr std::array kSurfaceTypes = {"plane"sv, "sphere"sv, "torus"sv, "heightfield"sv,
                                       "mesh"sv,  "box"sv,    "fourd"sv};
@@ -150,6 +152,7 @@ void read_gabor(TableReader& r, GaborParams& g) {
   r.number("truncation", g.truncation, Range{0.0, 1.0, true, true});
   r.integer("max_impulses_per_cell", g.max_impulses_per_cell, 1, 1024);
   read_enum(r, "gabor_strategy", g.strategy, kGaborStrategies);
+  read_enum(r, "gabor_filter", g.filter, kGaborFilters);
   r.integer("stratified_impulses", g.stratified_impulses, 1, 1024);
   r.integer("bake_samples_per_lambda", g.bake_samples_per_lambda, 4, 64);
   // theta_min > theta_max is allowed on purpose (see docs): no check for theta.

@@ -32,7 +32,7 @@ constexpr std::array kMaterialKeys = {
     "lambda_min"sv,      "lambda_max"sv,            "theta_min"sv,
     "theta_max"sv,       "n_min"sv,                 "n_max"sv,
     "kernel_periods"sv,  "truncation"sv,            "max_impulses_per_cell"sv,
-    "gabor_strategy"sv,  "stratified_impulses"sv, "bake_samples_per_lambda"sv,
+    "gabor_strategy"sv,  "stratified_impulses"sv, "bake_samples_per_lambda"sv, "gabor_filter"sv,
     "onset_distance_mm"sv, "influence_distance_mm"sv, "intensity_floor"sv,
     "intensity_scale"sv, "intensity_offset_mm"sv,   "resistance"sv,
     "peak_hz"sv,         "bandwidth_hz"sv,          "haptic"sv,

@@ -80,6 +80,7 @@ int offset_of(const std::map<std::string, int>& offsets, const std::string& glsl
     EXPECT_EQ(offset_of(offsets, glsl_prefix ".kernel"), base + static_cast<int>(offsetof(GaborBlock, kernel)));                     \
     EXPECT_EQ(offset_of(offsets, glsl_prefix ".tile"), base + static_cast<int>(offsetof(GaborBlock, tile)));                         \
     EXPECT_EQ(offset_of(offsets, glsl_prefix ".counts"), base + static_cast<int>(offsetof(GaborBlock, counts)));                     \
+    EXPECT_EQ(offset_of(offsets, glsl_prefix ".filtering"), base + static_cast<int>(offsetof(GaborBlock, filtering)));               \
   } while (false)
 
 TEST(UniformLayoutTest, SurfaceBlockMatches) {
@@ -125,8 +126,12 @@ TEST(UniformLayoutTest, GaborBlockMatchesInEveryPassThatReadsIt) {
   const auto bake = block_offsets("gabor_bake.frag", EShLangFragment);
   ASSERT_FALSE(bake.empty());
   EXPECT_GABOR_BLOCK(bake, "u_gabor", GaborBakeBlock, gabor);
+  EXPECT_MEMBER(bake, "u_level", GaborBakeBlock, level);
   for (const gl::Defines& variant : {gl::Defines{}, gl::Defines{{"PS_GABOR_STRATIFIED", "1"}},
-                                     gl::Defines{{"PS_GABOR_BAKED", "1"}}, gl::Defines{{"PS_GABOR_BAKED", "2"}}}) {
+                                     gl::Defines{{"PS_GABOR_BAKED", "1"}}, gl::Defines{{"PS_GABOR_BAKED", "2"}},
+                                     gl::Defines{{"PS_GABOR_FILTER", "1"}},
+                                     gl::Defines{{"PS_GABOR_FILTER", "1"}, {"PS_GABOR_BAKED", "1"}},
+                                     gl::Defines{{"PS_GABOR_FILTER", "1"}, {"PS_GABOR_BAKED", "2"}}}) {
     const auto surface = block_offsets("surface.frag", EShLangFragment, variant);
     ASSERT_FALSE(surface.empty());
     EXPECT_GABOR_BLOCK(surface, "u_gabor", SurfaceBlock, gabor);

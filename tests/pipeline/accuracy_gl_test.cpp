@@ -42,6 +42,7 @@ Scene textured_scene(Surface surface) {
   // The naive sum against its twin (the 1e-4 bar is for it); the baked tile is checked against
   // its own twin and against this one in gabor_gl_test.cpp.
   m.gabor.strategy = GaborParams::Strategy::kNaive;
+  m.gabor.filter = GaborParams::Filter::kNone;  // the point-sampled texture (filtering: gabor_filter_gl_test.cpp)
   s.probe.radius_mm = kProbeRadiusMm;
   // Probe straight above the origin, sunk kPenetrationMm below the surface point under it.
   const auto meshes = test::scene_meshes(s);

@@ -27,6 +27,7 @@ TEST_P(GaborGLTest, TextureAovMatchesCpuReference) {
   m.gabor.n_max = 30;
   m.onset_distance_mm = 100.0;  // texture everywhere under the probe
   m.gabor.strategy = GaborParams::Strategy::kNaive;  // the naive pass against its twin
+  m.gabor.filter = GaborParams::Filter::kNone;       // point-sampled (filtered: gabor_filter_gl_test.cpp)
   auto r = Renderer::create(s, {});
   ASSERT_TRUE(r.ok()) << r.error().message;
   ASSERT_TRUE(r.value()->render_frame().ok());
@@ -73,6 +74,7 @@ BakedResult render_baked(int samples_per_lambda, double probe_radius, bool linea
   m.gabor.theta_max_rad = 1.0;
   m.gabor.strategy = linear ? GaborParams::Strategy::kBakedLinear : GaborParams::Strategy::kBaked;
   m.gabor.bake_samples_per_lambda = samples_per_lambda;
+  m.gabor.filter = GaborParams::Filter::kNone;  // the point-sampled lookups against their twin
   m.onset_distance_mm = 100.0;
   auto r = Renderer::create(s, {});
   EXPECT_TRUE(r.ok()) << (r.ok() ? "" : r.error().message);

@@ -55,6 +55,18 @@ TEST(SceneOverrideTest, GaborStrategyKeys) {
   EXPECT_FALSE(parse(kScene, {"materials.wood.stratified_impulses=0"}));
 }
 
+TEST(SceneOverrideTest, GaborFilterKey) {
+  Result<Scene> plain = parse(kScene, {});
+  ASSERT_TRUE(plain) << plain.error().message;
+  EXPECT_EQ(plain->materials[0].gabor.filter, GaborParams::Filter::kAnalytic);  // the default
+  Result<Scene> scene = parse(kScene, {"materials.wood.gabor_filter=none"});
+  ASSERT_TRUE(scene) << scene.error().message;
+  EXPECT_EQ(scene->materials[0].gabor.filter, GaborParams::Filter::kNone);
+  const std::string e = error_of(kScene, {"materials.wood.gabor_filter=box"});
+  EXPECT_NE(e.find("gabor_filter"), std::string::npos) << e;
+  EXPECT_NE(e.find("analytic"), std::string::npos) << e;  // names the accepted values
+}
+
 TEST(SceneOverrideTest, CanAddAMaterial) {
   Result<Scene> scene = parse(kScene, {"materials.felt.lambda_min=0.2",
                                        "surfaces.1.material=felt"});
