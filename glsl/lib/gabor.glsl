@@ -58,27 +58,46 @@ GaborKernel gabor_draw_kernel(GaborMaterial g, inout uint r) {
   return k;
 }
 
+// The impulses of one cell, in the CPU twin's order (cell_sum in src/reference/gabor.cpp): how
+// many, then for each its offset from p (relative to the cell's lower corner, mm) and its kernel.
+struct GaborCellWalk {
+  uint r;
+  int count;
+#if PS_GABOR_STRATIFIED
+  int grid;
+  float inv_grid;
+#endif
+};
+GaborCellWalk gabor_cell_begin(GaborMaterial g, ivec2 cell) {
+  GaborCellWalk w;
+  w.r = gabor_cell_seed(cell, g.seed);
+#if PS_GABOR_STRATIFIED
+  w.count = min(g.stratified_count, g.max_impulses);
+  w.grid = int(ceil(sqrt(float(g.stratified_count))));
+  w.inv_grid = 1.0 / float(w.grid);
+#else
+  float n = g.density.x + (g.density.y - g.density.x) * lcg_uniform(w.r);
+  float expected = n * (1.0 / kPi);
+  w.count = clamp(int(floor(expected + lcg_uniform(w.r))), 0, g.max_impulses);
+#endif
+  return w;
+}
+vec2 gabor_impulse_offset(GaborMaterial g, inout GaborCellWalk w, int k, vec2 p) {
+#if PS_GABOR_STRATIFIED
+  vec2 jitter = vec2(lcg_uniform(w.r), lcg_uniform(w.r));
+  return p - (vec2(float(k % w.grid), float((k / w.grid) % w.grid)) + jitter) * w.inv_grid * g.cell_mm;
+#else
+  return p - vec2(lcg_uniform(w.r), lcg_uniform(w.r)) * g.cell_mm;
+#endif
+}
+
 // Sum of the kernels of one cell at p, given relative to the cell's lower corner (mm).
 float gabor_cell(GaborMaterial g, ivec2 cell, vec2 p) {
-  uint r = gabor_cell_seed(cell, g.seed);
-#if PS_GABOR_STRATIFIED
-  int count = min(g.stratified_count, g.max_impulses);
-  int grid = int(ceil(sqrt(float(g.stratified_count))));
-  float inv_grid = 1.0 / float(grid);
-#else
-  float n = g.density.x + (g.density.y - g.density.x) * lcg_uniform(r);
-  float expected = n * (1.0 / kPi);
-  int count = clamp(int(floor(expected + lcg_uniform(r))), 0, g.max_impulses);
-#endif
+  GaborCellWalk w = gabor_cell_begin(g, cell);
   float sum = 0.0;
-  for (int k = 0; k < count; ++k) {
-#if PS_GABOR_STRATIFIED
-    vec2 jitter = vec2(lcg_uniform(r), lcg_uniform(r));
-    vec2 d = p - (vec2(float(k % grid), float((k / grid) % grid)) + jitter) * inv_grid * g.cell_mm;
-#else
-    vec2 d = p - vec2(lcg_uniform(r), lcg_uniform(r)) * g.cell_mm;
-#endif
-    GaborKernel kern = gabor_draw_kernel(g, r);
+  for (int k = 0; k < w.count; ++k) {
+    vec2 d = gabor_impulse_offset(g, w, k, p);
+    GaborKernel kern = gabor_draw_kernel(g, w.r);
     float r2 = dot(d, d);
     if (kern.w <= 0.0 || r2 >= kern.w * kern.w * g.trunc_factor) continue;
     float phase = 2.0 * kPi * dot(d, vec2(cos(kern.theta), sin(kern.theta))) / kern.lambda;
@@ -125,25 +144,11 @@ GaborFilteredKernel gabor_filter_kernel(GaborKernel kern, vec3 S) {
 // gabor_cell with every kernel filtered by S, cut where its filtered envelope falls below the
 // truncation (S = 0: gabor_cell). CPU twin: cell_sum_filtered in src/reference/gabor.cpp.
 float gabor_cell_filtered(GaborMaterial g, ivec2 cell, vec2 p, vec3 S) {
-  uint r = gabor_cell_seed(cell, g.seed);
-#if PS_GABOR_STRATIFIED
-  int count = min(g.stratified_count, g.max_impulses);
-  int grid = int(ceil(sqrt(float(g.stratified_count))));
-  float inv_grid = 1.0 / float(grid);
-#else
-  float n = g.density.x + (g.density.y - g.density.x) * lcg_uniform(r);
-  float expected = n * (1.0 / kPi);
-  int count = clamp(int(floor(expected + lcg_uniform(r))), 0, g.max_impulses);
-#endif
+  GaborCellWalk w = gabor_cell_begin(g, cell);
   float sum = 0.0;
-  for (int k = 0; k < count; ++k) {
-#if PS_GABOR_STRATIFIED
-    vec2 jitter = vec2(lcg_uniform(r), lcg_uniform(r));
-    vec2 d = p - (vec2(float(k % grid), float((k / grid) % grid)) + jitter) * inv_grid * g.cell_mm;
-#else
-    vec2 d = p - vec2(lcg_uniform(r), lcg_uniform(r)) * g.cell_mm;
-#endif
-    GaborKernel kern = gabor_draw_kernel(g, r);
+  for (int k = 0; k < w.count; ++k) {
+    vec2 d = gabor_impulse_offset(g, w, k, p);
+    GaborKernel kern = gabor_draw_kernel(g, w.r);
     if (kern.w <= 0.0) continue;
     GaborFilteredKernel f = gabor_filter_kernel(kern, S);
     float q = f.q.x * d.x * d.x + 2.0 * f.q.y * d.x * d.y + f.q.z * d.y * d.y;
@@ -211,6 +216,9 @@ float gabor_noise_pixel(GaborMaterial g, vec4 filtering, vec2 uv, mat2 duv) {
 #endif
 
 #if PS_GABOR_BAKE
+#if PS_GABOR_STRATIFIED
+#error "the bake pass samples the naive (Poisson) texture only: a stratified material is never baked"
+#endif
 // Baking (glsl/gabor_bake.frag): value and derivatives (f, df/du, df/dv, d2f/dudv) of the
 // periodic texture, cells hashed by their index wrapped into [-N/2, N/2). CPU twin:
 // gabor_noise_derivatives in src/reference/gabor.cpp.
@@ -224,14 +232,11 @@ int gabor_wrap_cell(int c, int period_cells) {
 }
 
 vec4 gabor_cell_sample(GaborMaterial g, ivec2 cell, vec2 p) {
-  uint r = gabor_cell_seed(cell, g.seed);
-  float n = g.density.x + (g.density.y - g.density.x) * lcg_uniform(r);
-  float expected = n * (1.0 / kPi);
-  int count = clamp(int(floor(expected + lcg_uniform(r))), 0, g.max_impulses);
+  GaborCellWalk w = gabor_cell_begin(g, cell);
   vec4 sum = vec4(0.0);
-  for (int k = 0; k < count; ++k) {
-    vec2 d = p - vec2(lcg_uniform(r), lcg_uniform(r)) * g.cell_mm;
-    GaborKernel kern = gabor_draw_kernel(g, r);
+  for (int k = 0; k < w.count; ++k) {
+    vec2 d = gabor_impulse_offset(g, w, k, p);
+    GaborKernel kern = gabor_draw_kernel(g, w.r);
     float r2 = dot(d, d);
     if (kern.w <= 0.0 || r2 >= kern.w * kern.w * g.trunc_factor) continue;
     vec2 o = vec2(cos(kern.theta), sin(kern.theta));
@@ -248,14 +253,11 @@ vec4 gabor_cell_sample(GaborMaterial g, ivec2 cell, vec2 p) {
 // The filtered levels (S = sigma2 I): value and derivatives of the filtered kernels, with
 // g = Q d: E_u = -g_u E, E_uv = (g_u g_v - Q_uv) E. CPU twin: cell_sample_filtered.
 vec4 gabor_cell_sample_filtered(GaborMaterial g, ivec2 cell, vec2 p, float sigma2) {
-  uint r = gabor_cell_seed(cell, g.seed);
-  float n = g.density.x + (g.density.y - g.density.x) * lcg_uniform(r);
-  float expected = n * (1.0 / kPi);
-  int count = clamp(int(floor(expected + lcg_uniform(r))), 0, g.max_impulses);
+  GaborCellWalk w = gabor_cell_begin(g, cell);
   vec4 sum = vec4(0.0);
-  for (int k = 0; k < count; ++k) {
-    vec2 d = p - vec2(lcg_uniform(r), lcg_uniform(r)) * g.cell_mm;
-    GaborKernel kern = gabor_draw_kernel(g, r);
+  for (int k = 0; k < w.count; ++k) {
+    vec2 d = gabor_impulse_offset(g, w, k, p);
+    GaborKernel kern = gabor_draw_kernel(g, w.r);
     if (kern.w <= 0.0) continue;
     GaborFilteredKernel f = gabor_filter_kernel(kern, vec3(sigma2, 0.0, sigma2));
     vec2 gq = vec2(f.q.x * d.x + f.q.y * d.y, f.q.y * d.x + f.q.z * d.y);

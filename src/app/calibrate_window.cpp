@@ -7,6 +7,8 @@
 #include <backends/imgui_impl_glfw.h>
 #include <backends/imgui_impl_opengl3.h>
 
+#include "app/imgui_scope.h"
+
 #include <cmath>
 #include <cstdint>
 #include <cstdio>
@@ -52,22 +54,6 @@ Scene stimulus_scene(const Scene& from, const Material& m) {
   return s;
 }
 
-struct ImGuiScope {
-  explicit ImGuiScope(GLFWwindow* win) {
-    IMGUI_CHECKVERSION();
-    ImGui::CreateContext();
-    ImGui::GetIO().IniFilename = nullptr;
-    ImGui_ImplGlfw_InitForOpenGL(win, true);
-    ImGui_ImplOpenGL3_Init("#version 450 core");
-  }
-  ~ImGuiScope() {
-    ImGui_ImplOpenGL3_Shutdown();
-    ImGui_ImplGlfw_Shutdown();
-    ImGui::DestroyContext();
-  }
-  ImGuiScope(const ImGuiScope&) = delete;
-  ImGuiScope& operator=(const ImGuiScope&) = delete;
-};
 
 // The arrow presses since the last frame, from GLFW's key callback: a frame takes ~0.1 s on
 // llvmpipe, longer than a quick key press, so polling the key state would miss answers.

@@ -7,6 +7,8 @@
 #include <backends/imgui_impl_glfw.h>
 #include <backends/imgui_impl_opengl3.h>
 
+#include "app/imgui_scope.h"
+
 #include <cstdio>
 #include <filesystem>
 
@@ -149,20 +151,6 @@ Status draw(Window& w, const maze::MazeDesc& desc, const HapticState& st, const 
   return ok_status();
 }
 
-struct ImGuiScope {  // ImGui over the window for the session's life
-  explicit ImGuiScope(GLFWwindow* win) {
-    IMGUI_CHECKVERSION();
-    ImGui::CreateContext();
-    ImGui::GetIO().IniFilename = nullptr;  // no imgui.ini next to the participant's files
-    ImGui_ImplGlfw_InitForOpenGL(win, true);
-    ImGui_ImplOpenGL3_Init("#version 450 core");
-  }
-  ~ImGuiScope() {
-    ImGui_ImplOpenGL3_Shutdown();
-    ImGui_ImplGlfw_Shutdown();
-    ImGui::DestroyContext();
-  }
-};
 
 // The render thread's loop: input, the session's step on the newest haptic state (a pass switch
 // brings a new renderer), the frame. Returns when the participant quits, the log device ends, or
