@@ -111,9 +111,23 @@ bool TunePanel::wants_input() const {
   return visible_ && (ImGui::GetIO().WantCaptureMouse || ImGui::GetIO().WantCaptureKeyboard);
 }
 
-void TunePanel::apply(TuneSession& session, const std::string& key, const std::string& value) {
-  const Status s = session.set(key, value);
-  status_ = s ? "set " + key + " = " + value : s.error().message;
+void TunePanel::apply(TuneSession&, const std::string& key, const std::string& value) {
+  pending_.push_back({key, value, false, Lut{}});
+}
+
+void TunePanel::apply_pending(TuneSession& session) {
+  for (const PendingEdit& e : pending_) {
+    if (e.curve) {
+      const Status s = session.set_curve(e.key, e.lut);
+      status_ = s ? (e.lut.empty() ? "dropped the edit of " + e.key
+                                   : "set " + e.key + " (" + std::to_string(e.lut.points.size()) + " rows)")
+                  : s.error().message;
+    } else {
+      const Status s = session.set(e.key, e.value);
+      status_ = s ? "set " + e.key + " = " + e.value : s.error().message;
+    }
+  }
+  pending_.clear();
 }
 
 void TunePanel::material_section(TuneSession& session) {
@@ -262,10 +276,8 @@ void TunePanel::curve_editor(TuneSession& session, const Material& m, bool inten
   ImGui::PopID();
 }
 
-void TunePanel::set_curve(TuneSession& session, const std::string& key, const Lut& lut) {
-  const Status s = session.set_curve(key, lut);
-  status_ = s ? (lut.empty() ? "dropped the edit of " + key : "set " + key + " (" + std::to_string(lut.points.size()) + " rows)")
-              : s.error().message;
+void TunePanel::set_curve(TuneSession&, const std::string& key, const Lut& lut) {
+  pending_.push_back({key, std::string(), true, lut});
 }
 
 void TunePanel::plots(TuneSession& session) {
@@ -307,6 +319,7 @@ UiRect TunePanel::draw(TuneSession& session, const UiRect& dock) {
   if (open) contents(session);
   g_rects = nullptr;
   ImGui::End();
+  apply_pending(session);  // after the sections, which read the scene the edits rebuild
   return UiRect::at(pos.x, pos.y, size.x, size.y);
 }
 

@@ -55,8 +55,18 @@ class TunePanel {
   void plots(TuneSession& session);
   // The curve under a plot as editable lookup-table rows (intensity: true; speed gain: false).
   void curve_editor(TuneSession& session, const Material& m, bool intensity, double x_max);
+  // Edits are queued while the panel is built and carried out after it (apply_pending): an edit
+  // rebuilds the renderer and with it the Scene every section reads by reference, so applying
+  // one mid-section left the rest of that section reading freed memory.
   void set_curve(TuneSession& session, const std::string& key, const Lut& lut);
   void apply(TuneSession& session, const std::string& key, const std::string& value);
+  void apply_pending(TuneSession& session);
+  struct PendingEdit {
+    std::string key, value;
+    bool curve = false;
+    Lut lut;
+  };
+  std::vector<PendingEdit> pending_;
 
   bool visible_ = false;
   bool collapsed_ = false;
