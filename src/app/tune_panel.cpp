@@ -148,6 +148,12 @@ void TunePanel::material_section(TuneSession& session) {
     const std::string label = std::string(p.key) + (p.unit[0] ? std::string(" (") + p.unit + ")" : "");
     if (slider(label, prefix + p.key, &v, 1, p.lo, p.hi, p.log)) apply(session, prefix + p.key, number(v));
   }
+  // The texture's anti-aliasing (docs/architecture.md, "Texture filtering"): off shows what the
+  // unfiltered sum aliases.
+  bool filtered = m.gabor.filter == GaborParams::Filter::kAnalytic;
+  const bool toggled = ImGui::Checkbox(("filter the texture (anti-aliasing)##" + prefix).c_str(), &filtered);
+  record_rect(prefix + "gabor_filter");
+  if (toggled) apply(session, prefix + "gabor_filter", filtered ? "\"analytic\"" : "\"none\"");
   float c = static_cast<float>(scene.render.weight_exponent);
   if (slider("weight exponent c", "render.weight_exponent", &c, 1, 1.f, 100.f, false))
     apply(session, "render.weight_exponent", number(c));

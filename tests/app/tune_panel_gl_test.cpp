@@ -102,6 +102,41 @@ TEST_P(TunePanelGLTest, FourdTurnSliderAndRollingCheckboxEditTheSession) {
   EXPECT_TRUE(s.renderer().scene().surfaces[0].fourd.roll.on);
 }
 
+// The material section's anti-aliasing checkbox on the default scene: a click turns the filter
+// off (the edit --set makes), and the texture AOV changes in the shadow (the unfiltered sum).
+TEST_P(TunePanelGLTest, TextureFilterCheckboxTurnsTheFilterOff) {
+  TuneSource src;
+  src.overrides = {"render.size=[96,96]"};
+  auto session = TuneSession::open(src);
+  ASSERT_TRUE(session) << session.error().message;
+  TuneSession& s = *session.value();
+  ASSERT_TRUE(s.renderer().render_frame());
+  auto before = s.renderer().read_aov(Aov::kTexture);
+  ASSERT_TRUE(before);
+  HeadlessImGui ui(420.f, 6000.f);
+  TunePanel panel;
+  const UiRect dock = UiRect::at(0.f, 0.f, 420.f, 6000.f);
+  const ImVec2 away(-100.f, -100.f);
+  ui.frame(panel, s, dock, away, false);
+  const std::string key = "materials." + s.renderer().scene().materials[0].name + ".gabor_filter";
+  ASSERT_TRUE(panel.knob_rects().count(key));
+  const UiRect c = panel.knob_rects().at(key);
+  const ImVec2 box(c.x0 + 0.5f * c.height(), 0.5f * (c.y0 + c.y1));
+  ui.frame(panel, s, dock, box, false);
+  ui.frame(panel, s, dock, box, true);
+  ui.frame(panel, s, dock, box, false);
+  ASSERT_TRUE(s.edits().count(key)) << s.last_error();
+  EXPECT_EQ(s.edits().at(key), "\"none\"");
+  EXPECT_EQ(s.renderer().scene().materials[0].gabor.filter, GaborParams::Filter::kNone);
+  ASSERT_TRUE(s.renderer().render_frame());
+  auto after = s.renderer().read_aov(Aov::kTexture);
+  ASSERT_TRUE(after);
+  int changed = 0;
+  for (std::size_t i = 0; i < after.value().pixels.size(); ++i)
+    changed += std::abs(after.value().pixels[i] - before.value().pixels[i]) > 1e-4f;
+  EXPECT_GT(changed, 10) << "the shadow's texture is no longer filtered";
+}
+
 PS_INSTANTIATE_HEADLESS_BACKENDS(TunePanelGLTest);
 
 }  // namespace
