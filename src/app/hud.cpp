@@ -92,6 +92,7 @@ std::vector<std::string> hud_lines(const HudReadouts& r) {
     out.push_back(line("button", "#%d in %.1f of %.1f mm", r.button, r.button_depth_mm, r.button_travel_mm));
   if (r.flags) out.push_back(line("flags on", "%s", r.flags->empty() ? "none" : r.flags->c_str()));
   if (r.view_mm) out.push_back(line("view", "%+.0f %+.0f %+.0f mm", r.view_mm->x, r.view_mm->y, r.view_mm->z));
+  if (r.rolled_deg) out.push_back(line("rolled", "%.0f deg", *r.rolled_deg));
   if (!r.error.empty()) out.push_back(line("reload", "FAILED (F1)"));
   return out;
 }

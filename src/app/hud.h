@@ -43,6 +43,7 @@ struct HudReadouts {
   double button_depth_mm = 0.0, button_travel_mm = 0.0;
   std::optional<std::string> flags;      // the scene's flags that are on ("" none); none: no flags
   std::optional<glm::dvec3> view_mm;     // [navigation]: how far the view has moved; none: no box
+  std::optional<double> rolled_deg;      // rolling manifold: how far the view has turned; none: no rolling
 };
 
 // The readouts as "name  value" lines (the box draws them in this order).

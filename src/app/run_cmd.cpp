@@ -258,6 +258,11 @@ HudReadouts readouts(const Session& s, const HapticState& st, const ShadowMeasur
     r.flags = on;
   }
   if (sc.navigation.enabled) r.view_mm = st.view_offset_mm;
+  // A rolling fourd surface: the angle the view has turned from the scene's (docs/fourd.md).
+  if (std::any_of(sc.surfaces.begin(), sc.surfaces.end(), [](const Surface& x) { return x.fourd.roll.on; })) {
+    const glm::dmat3& m = st.view_rotation;
+    r.rolled_deg = glm::degrees(std::acos(std::clamp(0.5 * (m[0][0] + m[1][1] + m[2][2] - 1.0), -1.0, 1.0)));
+  }
   return r;
 }
 

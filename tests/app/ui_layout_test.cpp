@@ -241,6 +241,11 @@ TEST(HudTest, ButtonAndFlagsShowWhenTheSceneHasThem) {
   all.clear();
   for (const std::string& l : hud_lines(r)) all += l + "\n";
   EXPECT_NE(all.find("view        +151 +0 -2 mm"), std::string::npos) << all;
+  EXPECT_EQ(all.find("rolled"), std::string::npos) << "no rolling, no line:\n" << all;
+  r.rolled_deg = 69.8;
+  all.clear();
+  for (const std::string& l : hud_lines(r)) all += l + "\n";
+  EXPECT_NE(all.find("rolled      70 deg"), std::string::npos) << all;
 }
 
 TEST(RunKeysTest, EveryKeyOfTheWindowIsInTheTableOnce) {
