@@ -20,7 +20,6 @@ void main() {
   float h = u_level.x;
   vec2 uv = -0.5 * u_gabor.tile.x + ij * h;
   // Level 0 unfiltered; levels >= 1 filtered analytically (never box-averaged texels).
-  vec4 s = u_level.y > 0.0 ? gabor_noise_sample_filtered(g, uv, int(u_gabor.tile.w), u_level.y)
-                           : gabor_noise_sample(g, uv, int(u_gabor.tile.w));
+  vec4 s = gabor_noise_sample(g, uv, int(u_gabor.tile.w), u_level.y);
   o_sample = vec4(s.x, s.y * h, s.z * h, s.w * h * h);
 }

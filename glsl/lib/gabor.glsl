@@ -270,7 +270,9 @@ vec4 gabor_cell_sample_filtered(GaborMaterial g, ivec2 cell, vec2 p, float sigma
   return sum;
 }
 
-vec4 gabor_noise_sample_filtered(GaborMaterial g, vec2 uv, int period_cells, float sigma2) {
+// The tile's sample at uv: the plain texture (sigma2 = 0, level 0) or filtered with the
+// isotropic Gaussian of variance sigma2 (the filtered levels).
+vec4 gabor_noise_sample(GaborMaterial g, vec2 uv, int period_cells, float sigma2) {
   vec2 f = uv / g.cell_mm;
   ivec2 c = ivec2(floor(f));
   vec2 o = (f - vec2(c)) * g.cell_mm;
@@ -278,20 +280,8 @@ vec4 gabor_noise_sample_filtered(GaborMaterial g, vec2 uv, int period_cells, flo
   for (int j = -1; j <= 1; ++j)
     for (int i = -1; i <= 1; ++i) {
       ivec2 cell = ivec2(gabor_wrap_cell(c.x + i, period_cells), gabor_wrap_cell(c.y + j, period_cells));
-      sum += gabor_cell_sample_filtered(g, cell, o - vec2(i, j) * g.cell_mm, sigma2);
-    }
-  return sum;
-}
-
-vec4 gabor_noise_sample(GaborMaterial g, vec2 uv, int period_cells) {
-  vec2 f = uv / g.cell_mm;
-  ivec2 c = ivec2(floor(f));
-  vec2 o = (f - vec2(c)) * g.cell_mm;
-  vec4 sum = vec4(0.0);
-  for (int j = -1; j <= 1; ++j)
-    for (int i = -1; i <= 1; ++i) {
-      ivec2 cell = ivec2(gabor_wrap_cell(c.x + i, period_cells), gabor_wrap_cell(c.y + j, period_cells));
-      sum += gabor_cell_sample(g, cell, o - vec2(i, j) * g.cell_mm);
+      vec2 p = o - vec2(i, j) * g.cell_mm;
+      sum += sigma2 > 0.0 ? gabor_cell_sample_filtered(g, cell, p, sigma2) : gabor_cell_sample(g, cell, p);
     }
   return sum;
 }
