@@ -100,6 +100,7 @@ Result<HapticScene> HapticScene::build(const Scene& scene) {
                             fourd::FourdTouch(f.value(), s.scale, euler_xyz_deg(s.rotation_deg), s.center),
                             {s.fourd.suggest_kp_n_per_mm, s.fourd.suggest_kv_n_s_per_mm, s.fourd.suggest_lookahead_s},
                             s.fourd.roll});
+      out.any_roll_ = out.any_roll_ || s.fourd.roll.on;
       continue;
     }
     // Height field: the rendered triangles, an image has no closed form. Mesh: the triangles.

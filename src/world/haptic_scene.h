@@ -107,11 +107,7 @@ class HapticScene {
       if (f.surface == surface) return f.roll;
     return {};
   }
-  bool any_fourd_roll() const {
-    for (const FourdShape& f : fourd_)
-      if (f.roll.on) return true;
-    return false;
-  }
+  bool any_fourd_roll() const { return any_roll_; }  // asked twice a tick: kept, not searched
   // The scene file's camera as the device's workspace sees it: the screen centre and the
   // direction toward the viewer (the rolling manifold's default until the renderer publishes
   // the camera it draws with).
@@ -143,6 +139,7 @@ class HapticScene {
     fourd::RollParams roll;              // seed 000 §6 (fourd/rolling.h)
   };
   fourd::ViewAxes view_axes_;
+  bool any_roll_ = false;  // some fourd surface has fourd_roll on
   // "adjacency": how far along the surface the walk from the sheet's facet goes at least (the
   // local models' radius, fourd/local_model.h).
   static constexpr double kAdjacencyRadiusMm = 20.0;
