@@ -80,7 +80,7 @@ struct BenchArgs {
   int timer_slack_ns = -1;  // -1: the loop's default
   int wake_spin_us = -1;
   int slice_us = -1;
-  int render_threads = -1;
+  cli::LiveLoopArgs live;
 };
 
 void declare(cli::Command& cmd, BenchArgs& a) {
@@ -97,13 +97,14 @@ void declare(cli::Command& cmd, BenchArgs& a) {
                "poll the clock for the last US microseconds before each tick (default 50)");
   cli::add_int(app, "--slice-us", "US", a.slice_us, 0, 100'000,
                "ask the scheduler for a US-microsecond slice for the haptic thread (0 = the kernel's; default 100)");
-  cli::add_render_threads_option(app, a.render_threads);
+  cli::add_live_loop_options(app, a.live);
 }
 
 int bench(const cli::Command& cmd, const BenchArgs& a) {
   auto scene = cli::load_scene_or_default(a.scene);
   if (!scene) return cmd.fail(scene.error(), cli::scene_exit_code(scene.error()));
-  const std::string render_threads = cli::apply_render_threads(a.render_threads);  // before the context
+  auto live = cli::apply_live_loop(a.live);  // before the context and the haptic thread
+  if (!live) return cmd.usage_error(live.error());
   auto ctx = gl::create_context({a.backend});
   if (!ctx) return cmd.fail(ctx.error());
   auto renderer = Renderer::create(scene.value(), {});
@@ -122,9 +123,8 @@ int bench(const cli::Command& cmd, const BenchArgs& a) {
   const auto t0 = std::chrono::steady_clock::now();
   if (Status s = measure(*renderer.value(), loop, a.seconds, latency_ms, frame_ms, facets); !s) return cmd.fail(s.error());
   const double elapsed = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-  std::printf("bench-haptics: %s, %dx%d, %s, render threads %s, haptic thread %s\n", scene->path.c_str(),
-              scene->render.width, scene->render.height, ctx.value()->renderer().c_str(), render_threads.c_str(),
-              loop.scheduling().c_str());
+  std::printf("bench-haptics: %s, %dx%d, %s, %s, haptic thread %s\n", scene->path.c_str(), scene->render.width,
+              scene->render.height, ctx.value()->renderer().c_str(), live->report().c_str(), loop.scheduling().c_str());
   print_report(loop, elapsed, latency_ms, frame_ms, facets, haptic_scene.value());
   return cli::kExitOk;
 }

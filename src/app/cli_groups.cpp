@@ -112,20 +112,50 @@ int scene_exit_code(const Error& e) { return e.message.rfind("--", 0) == 0 ? kEx
 
 std::string scene_display_name(const std::string& path) { return path.empty() ? kDefaultSceneName : path; }
 
-void add_render_threads_option(CLI::App& app, int& threads) {
-  add_int(app, "--render-threads", "N", threads, 0, 1024,
-          "llvmpipe's rasteriser threads beside the haptic thread (default: one core fewer than the machine "
-          "has, at least 1, so the 1 kHz loop keeps time; 0: every core; LP_NUM_THREADS in the environment wins)");
+void add_live_loop_options(CLI::App& app, LiveLoopArgs& args) {
+  add_int(app, "--render-threads", "N", args.render_threads, 0, 1024,
+          "llvmpipe's rasteriser threads (default: one fewer than the CPUs the program runs on, the spare one "
+          "left out: none on 2 cores, so the 1 kHz loop keeps time; 0: every core; LP_NUM_THREADS in the "
+          "environment wins)");
+  app.add_option_function<std::string>(
+         "--spare-cpu",
+         [&args](const std::string& v) {  // checked as it is read: a bad value changes nothing
+           if (auto plan = plan_spare_cpu(v, allowed_cpus()); !plan) throw UsageError(plan.error().message);
+           args.spare_cpu = v;
+         },
+         "a CPU none of the program's threads use, so the kernel's own work lands there and not where "
+         "the haptic thread runs: auto (default: the highest-numbered CPU, when the program may use two "
+         "or more), off (the scheduler places every thread), or a CPU number")
+      ->type_name("auto|off|N");
 }
 
-std::string apply_render_threads(int threads) {
+namespace {
+
+// `cpus`: how many CPUs the program's threads run on (the spare one left out).
+std::string apply_render_threads(int threads, std::size_t cpus) {
   if (const char* set = std::getenv("LP_NUM_THREADS"); set != nullptr && *set != '\0')
     return std::string(set) + " (LP_NUM_THREADS from the environment)";
   if (threads == 0) return "every core (llvmpipe's default)";
-  const long cores = std::max(1L, sysconf(_SC_NPROCESSORS_ONLN));
-  const long n = threads > 0 ? threads : std::max(1L, cores - 1);
+  // The thread that draws takes a CPU of its own: llvmpipe's rasterisers get the others. With one
+  // CPU (2 cores, one of them spare) that is none: the rasteriser thread was the one the haptic
+  // thread's wake-up failed to preempt (docs/haptics.md, "A spare CPU").
+  const std::size_t n = threads > 0 ? static_cast<std::size_t>(threads) : (cpus > 1 ? cpus - 1 : 0);
   setenv("LP_NUM_THREADS", std::to_string(n).c_str(), 1);
-  return std::to_string(n) + (threads > 0 ? "" : " (a core left for the haptic thread)");
+  return std::to_string(n) + (threads > 0 ? "" : n == 0 ? " (the drawing thread rasterises)" : " (one per CPU beside the drawing thread)");
+}
+
+}  // namespace
+
+std::string LiveLoopSetup::report() const { return "render threads " + render_threads + "; spare " + spare.description; }
+
+Result<LiveLoopSetup> apply_live_loop(const LiveLoopArgs& args) {
+  LiveLoopSetup setup;
+  auto spare = leave_spare_cpu(args.spare_cpu);  // first: nothing is changed if the request is bad
+  if (!spare) return spare.error();
+  setup.spare = std::move(spare.value());
+  const std::size_t cpus = setup.spare.spare >= 0 ? setup.spare.ours.size() : allowed_cpus().size();
+  setup.render_threads = apply_render_threads(args.render_threads, std::max<std::size_t>(cpus, 1));
+  return setup;
 }
 
 }  // namespace ps::cli

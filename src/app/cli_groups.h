@@ -9,6 +9,7 @@
 
 #include "core/result.h"
 #include "gl/context.h"
+#include "haptics/spare_cpu.h"
 #include "scene/scene.h"
 
 namespace ps::cli {
@@ -48,14 +49,27 @@ void add_image_options(CLI::App& app, SceneArgs& scene);
 void add_gl_options(CLI::App& app, gl::Backend& backend);
 // --stats FILE.json (the per-frame numbers of the last frame, Renderer's stats_json).
 void add_stats_option(CLI::App& app, std::string& path);
-// --render-threads N for the commands that run a real-time haptic loop beside the renderer
-// (`run`, `bench-haptics`): llvmpipe's rasteriser threads. Default -1: one core fewer than the
-// machine has (at least 1), so the haptic thread always finds a free core (docs/haptics.md,
-// "Keeping time without privileges"); 0: llvmpipe's own default (every core).
-void add_render_threads_option(CLI::App& app, int& threads);
-// Sets LP_NUM_THREADS for `threads` before the GL context is created, unless the user set it;
-// returns what is in force, for the command's report ("1 (a core left for the haptic thread)").
-std::string apply_render_threads(int threads);
+// The options of the commands that run a live 1 kHz haptic loop beside the renderer (`run`,
+// `bench-haptics`, `maze`'s window): how the machine's cores are shared (docs/haptics.md,
+// "Keeping time without privileges").
+struct LiveLoopArgs {
+  // --render-threads N: llvmpipe's rasteriser threads. -1 (default): one fewer than the CPUs the
+  // program runs on (the spare one left out; 0 on 2 cores); 0: llvmpipe's own default (every core).
+  int render_threads = -1;
+  // --spare-cpu auto|off|N: a CPU none of the program's threads use (haptics/spare_cpu.h).
+  std::string spare_cpu = "auto";
+};
+void add_live_loop_options(CLI::App& app, LiveLoopArgs& args);
+
+struct LiveLoopSetup {
+  std::string render_threads;  // what is in force, for the command's report
+  SpareCpu spare;
+  std::string report() const;  // "render threads 1 (...); spare CPU 1 (...)"
+};
+// Call first, before the GL context and the haptic thread exist: sets LP_NUM_THREADS (unless the
+// user set it) and leaves a CPU spare, confining the calling thread and every thread it starts.
+// The error (a bad --spare-cpu) is a usage error.
+Result<LiveLoopSetup> apply_live_loop(const LiveLoopArgs& args);
 // -q, --quiet.
 void add_quiet_option(CLI::App& app, bool& quiet, const std::string& help = "no progress output");
 

@@ -43,6 +43,7 @@ struct MazeArgs {
   double fps = 30.0, pace = 0.0;
   gl::Backend backend = gl::Backend::kAuto;
   bool quiet = false, window = false;
+  cli::LiveLoopArgs live;  // the window's haptic thread and renderer: --render-threads, --spare-cpu
 };
 
 void declare(cli::Command& cmd, MazeArgs& a) {
@@ -91,6 +92,7 @@ void declare(cli::Command& cmd, MazeArgs& a) {
       ->group(cli::kOutputGroup);
   app.add_flag("--window", a.window, "open the window also for a trajectory:/playback: device (played in real time)");
   cli::add_gl_options(app, a.backend);
+  cli::add_live_loop_options(app, a.live);
   cli::add_quiet_option(app, a.quiet);
   cmd.usage("pseudoshadow maze --participant ID --seed N --cues on|off [--device trajectory:FILE] [--out DIR]");
 }
@@ -153,7 +155,7 @@ int maze_main(const cli::Command& cmd, const MazeArgs& a) {
             o.desc.max_passes, static_cast<int>(a.session)};
   o.log_path = args.out_dir + "/session.jsonl";
   o.record_path = args.out_dir + "/device.log";
-  if (a.window || a.device.empty() || a.device == "mouse" || a.device == "gamepad") return run_maze_window(cmd, o, a.device);
+  if (a.window || a.device.empty() || a.device == "mouse" || a.device == "gamepad") return run_maze_window(cmd, o, a.device, a.live);
   return run_headless(cmd, args, o);
 }
 

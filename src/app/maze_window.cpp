@@ -202,7 +202,10 @@ Status window_loop(const maze::SessionOptions& o, maze::SessionCore& core, Windo
 
 }  // namespace
 
-int run_maze_window(const cli::Command& cmd, const maze::SessionOptions& o, const std::string& device) {
+int run_maze_window(const cli::Command& cmd, const maze::SessionOptions& o, const std::string& device,
+                    const cli::LiveLoopArgs& live_args) {
+  auto live = cli::apply_live_loop(live_args);  // before the context and the haptic thread
+  if (!live) return cmd.usage_error(live.error());
   auto opened = maze::SessionCore::open(o);
   if (!opened) return cmd.fail(opened.error());
   maze::SessionCore& core = *opened.value();

@@ -7,11 +7,14 @@
 #include <string>
 
 #include "app/cli.h"
+#include "app/cli_groups.h"
 #include "maze/maze_session.h"
 
 namespace ps {
 
-// `device`: "mouse" (or empty), or a trajectory:/playback: log played in real time.
-int run_maze_window(const cli::Command& cmd, const maze::SessionOptions& options, const std::string& device);
+// `device`: "mouse" (or empty), or a trajectory:/playback: log played in real time. `live`: how the
+// renderer and the haptic thread share the cores (--render-threads, --spare-cpu).
+int run_maze_window(const cli::Command& cmd, const maze::SessionOptions& options, const std::string& device,
+                    const cli::LiveLoopArgs& live);
 
 }  // namespace ps

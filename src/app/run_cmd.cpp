@@ -63,7 +63,7 @@ struct RunArgs {
   cli::SceneArgs scene;
   std::string device = "mouse", record, stats_path, ui_report;
   long long frames = 0, realtime = 0;
-  int render_threads = -1;
+  cli::LiveLoopArgs live;  // --render-threads, --spare-cpu
   double quit_after_s = 0.0;
   bool quiet = false, watch = true, show_probe = false, show_device = false, panel = false;
   RunEventsDesc events;  // --events, --mute, --audio-device (docs/sound.md)
@@ -117,7 +117,7 @@ void declare(cli::Command& cmd, RunArgs& a) {
                         "do not reload the scene, its textures and glsl/ when they change");
   cli::add_int(app, "--realtime", "PRIO", a.realtime, 1, 99,
                "haptic thread SCHED_FIFO at PRIO (1..99; needs CAP_SYS_NICE), much lower jitter on a loaded machine");
-  cli::add_render_threads_option(app, a.render_threads);
+  cli::add_live_loop_options(app, a.live);
   cli::add_int(app, "--frames", "N", a.frames, 1, 100'000'000, "quit after N frames");
   cli::add_positive(app, "--quit-after", "S", a.quit_after_s, 1e9, "5", "quit after S seconds");
   cli::add_quiet_option(app, a.quiet, "no summary");
@@ -523,7 +523,8 @@ int run(const cli::Command& cmd, const RunArgs& a) {
   auto scene = cli::load_scene_or_default(a.scene);
   if (!scene) return cmd.fail(scene.error(), cli::scene_exit_code(scene.error()));
   Session s;
-  const std::string render_threads = cli::apply_render_threads(a.render_threads);  // before the context
+  auto live = cli::apply_live_loop(a.live);  // before the context and the haptic thread
+  if (!live) return cmd.usage_error(live.error());
   if (Status st = open_session(a, std::move(scene.value()), s); !st) return cmd.fail(st.error());
   if (Status st = open_events(a, s); !st) return cmd.fail(st.error());
   s.loop->start();
@@ -531,7 +532,7 @@ int run(const cli::Command& cmd, const RunArgs& a) {
   // 1 ms; bounded, as a gamepad may have nothing to give yet).
   for (int i = 0; i < 100 && !s.loop->state().read().have_sample; ++i)
     std::this_thread::sleep_for(std::chrono::milliseconds(1));
-  if (!a.quiet) std::printf("haptic thread: %s; render threads: %s\n", s.loop->scheduling().c_str(), render_threads.c_str());
+  if (!a.quiet) std::printf("haptic thread: %s; %s\n", s.loop->scheduling().c_str(), live->report().c_str());
   const Status looped = window_loop(a, s);
   s.loop->stop();  // join the haptic thread before touching what it wrote
   if (s.recorder)
