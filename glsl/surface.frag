@@ -6,10 +6,14 @@
 //                       sigmas, resistance);
 //                       d is NaN where no probe is above the fragment (the distance AOV's
 //                       documented "no probe" value, src/render/renderer.h)
+//   3 filter  R32F    : where the texture is evaluated with PS_GABOR_FILTER 1 or 2, how much the
+//                       filter attenuates lambda_min (gabor_filter_need); 0 elsewhere. Its
+//                       maximum decides whether the next frame may skip the filter.
 // Variants: PS_SHADOW (0: probe beyond this surface's influence, pseudo-shadow compiled out),
 //           PS_TEXTURED (0: untextured material, Gabor compiled out), PS_GABOR_STRATIFIED,
 //           PS_GABOR_BAKED (the texture read from the material's baked tile), PS_GABOR_FILTER
-//           (the texture filtered over the pixel's footprint).
+//           (1: the texture filtered over the pixel's footprint; 2: the filter skipped this
+//           frame, its need still measured).
 // The bodies' pseudo-shadows (lib/body_shadow.glsl) darken the colour target only, in every
 // variant; the AOVs and the normal stay the probe's.
 #include "lib/surface_block.glsl"
@@ -37,6 +41,7 @@ layout(location = 3) in float v_w4;    // 4D depth w (fourd surfaces), else 0
 layout(location = 0) out vec4 o_color;
 layout(location = 1) out vec4 o_normal;
 layout(location = 2) out vec4 o_aov;
+layout(location = 3) out float o_filter_need;
 
 // "No probe here" distance inside this shader (compares like a very large distance: no
 // intensity, no texture). Written to the AOV as NaN, never to the colour target.
@@ -164,7 +169,7 @@ void main() {
   if (cut_away()) discard;
   vec3 n = normalize(gl_FrontFacing ? v_normal : -v_normal);
   vec3 rgb = shade_surface(n);
-  float intensity = 0.0, d = kFar, tex_sigmas = 0.0;
+  float intensity = 0.0, d = kFar, tex_sigmas = 0.0, filter_need = 0.0;
 #if PS_SHADOW
   vec2 uv = vec2(dot(v_world, u_ref_t.xyz), dot(v_world, u_ref_b.xyz));
   vec2 hc;
@@ -192,13 +197,16 @@ void main() {
 #endif
   // Only fragments inside the footprint and the onset distance pay for the Gabor sum.
   if (intensity > 0.0 && d < u_modulation.y) {
-#if PS_GABOR_BAKED && PS_GABOR_FILTER
+#if PS_GABOR_FILTER
+    filter_need = gabor_filter_need(duv, u_gabor.filtering.x, u_gabor.amplitude_lambda.z);
+#endif
+#if PS_GABOR_BAKED && PS_GABOR_FILTER == 1
     tex_sigmas = gabor_noise_baked_filtered(u_gabor_tile, u_gabor.tile, u_gabor.filtering,
                                             u_gabor.amplitude_lambda.zw, uv, duv) /
                  u_gabor.kernel.w;
 #elif PS_GABOR_BAKED
     tex_sigmas = gabor_noise_baked(u_gabor_tile, u_gabor.tile, uv) / u_gabor.kernel.w;
-#elif PS_GABOR_FILTER
+#elif PS_GABOR_FILTER == 1
     tex_sigmas = gabor_noise_pixel(gabor_material(u_gabor), u_gabor.filtering, uv, duv) / u_gabor.kernel.w;
 #else
     tex_sigmas = gabor_noise(gabor_material(u_gabor), uv) / u_gabor.kernel.w;
@@ -215,4 +223,5 @@ void main() {
   o_color = vec4(pow(clamp(rgb, 0.0, 1.0), vec3(u_light_color.a)), 1.0);
   o_normal = vec4(n, 1.0);
   o_aov = vec4(intensity, d >= kFar ? no_probe_distance() : d, tex_sigmas, u_modulation.z);
+  o_filter_need = filter_need;
 }

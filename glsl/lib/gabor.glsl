@@ -12,7 +12,9 @@
 #define PS_GABOR_BAKED 0  // 1: gabor_noise_baked (Hermite lookup in the baked tile); 2: bilinear
 #endif
 #ifndef PS_GABOR_FILTER
-#define PS_GABOR_FILTER 0  // 1: analytic filtering over the pixel footprint (gabor_noise_filtered)
+#define PS_GABOR_FILTER 0  // 1: analytic filtering over the pixel footprint (gabor_noise_filtered);
+                           // 2: the same material, the filter skipped this frame (negligible:
+                           // docs/architecture.md, "Texture filtering", level of detail)
 #endif
 
 const float kPi = 3.14159265358979;
@@ -205,6 +207,14 @@ GaborPixelSplit gabor_pixel_split(mat2 duv, vec4 filtering) {
 vec2 gabor_sub_position(GaborPixelSplit p, vec2 uv, int i) {
   return uv + p.major * ((float(i) + 0.5) / float(p.k) - 0.5);
 }
+// How much the filter would attenuate the finest wavelength here: the exponent 2 pi^2 s2 /
+// lambda_min^2 of exp(-2 pi^2 s2 f^2) at f = 1 / lambda_min, for s2 = the footprint's mean
+// variance pixel_variance (|du/dx|^2 + |du/dy|^2) / 2 before the split and the cap, which only
+// lower it (an upper bound for every sub-box). CPU twin: gabor_filter_need in
+// src/reference/gabor_filter.cpp.
+float gabor_filter_need(mat2 duv, float pixel_variance, float lambda_min) {
+  return kPi * kPi * pixel_variance * (dot(duv[0], duv[0]) + dot(duv[1], duv[1])) / (lambda_min * lambda_min);
+}
 
 // The texture filtered over the pixel whose (u, v) derivatives are duv.
 float gabor_noise_pixel(GaborMaterial g, vec4 filtering, vec2 uv, mat2 duv) {
@@ -318,7 +328,7 @@ float gabor_noise_baked(sampler2D tile_tex, vec4 tile, vec2 uv) {
 }
 #endif
 
-#if PS_GABOR_FILTER && PS_GABOR_BAKED
+#if PS_GABOR_FILTER == 1 && PS_GABOR_BAKED
 // Filtered lookup in a tile with filtered levels (src/passes/gabor_bake.h): mip level L holds
 // the texture filtered with an isotropic Gaussian of variance v_L = (kappa h_L)^2 (v_0 = 0),
 // sampled at u_i = -period/2 + i h_L, h_L = period / (its texels). CPU twin of the levels:

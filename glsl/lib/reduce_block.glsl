@@ -15,4 +15,5 @@ layout(std430, binding = 0) buffer MaxBlock {
   uint penetrating_fragments;
   uint covered_fragments;               // fragments inside the pseudo-shadow
   ivec4 penetrating_box;                // x0, y0, x1, y1 (inclusive) of the penetrating pixels
+  uint max_filter_need_bits;            // max of the surface pass's filter need (its target 3)
 };

@@ -57,6 +57,7 @@ ReductionResult ReductionsPass::run(const SurfacePass& surface, const Params& pa
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 1, rows_ssbo_.id());
   glBindTextureUnit(0, surface.aov().id());
   glBindTextureUnit(1, surface.normal().id());
+  glBindTextureUnit(2, surface.filter_need().id());
   // One invocation per row of the rectangle (none when it is empty).
   const auto groups = static_cast<GLuint>((rect.height() + 63) / 64);
 
@@ -85,6 +86,7 @@ ReductionResult ReductionsPass::run(const SurfacePass& surface, const Params& pa
   r.max_resisted_penetration_mm = std::bit_cast<float>(m.max_resisted_penetration_bits);
   r.penetrating_fragments = m.penetrating_fragments;
   r.covered_fragments = m.covered_fragments;
+  r.max_filter_need = std::bit_cast<float>(m.max_filter_need_bits);
   return r;
 }
 

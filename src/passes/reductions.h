@@ -39,8 +39,9 @@ struct MaxBlock {
   std::uint32_t penetrating_fragments = 0;
   std::uint32_t covered_fragments = 0;
   glm::ivec4 penetrating_box{1 << 30, 1 << 30, -1, -1};  // inclusive; empty as initialised
+  std::uint32_t max_filter_need_bits = 0;
 };
-static_assert(sizeof(MaxBlock) == 32, "MaxBlock must match std430 layout");
+static_assert(sizeof(MaxBlock) == 36, "MaxBlock must match std430 layout");
 
 struct ReductionResult {
   glm::dvec3 normal_sum{0.0};     // mean normal * coverage (not normalised)
@@ -51,8 +52,10 @@ struct ReductionResult {
   std::uint32_t penetrating_fragments = 0;
   std::uint32_t covered_fragments = 0;
   glm::ivec4 penetrating_box{1 << 30, 1 << 30, -1, -1};  // inclusive; empty as initialised
+  // The largest gabor_filter_need over the shadow's covered pixels (0: no filtered texture
+  // was evaluated): SurfacePass::filter_need() reduced.
+  double max_filter_need = 0.0;
 };
-static_assert(sizeof(MaxBlock) == 32, "MaxBlock must match std430 layout");
 
 struct ReductionsPass {
   struct Params {

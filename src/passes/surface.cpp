@@ -66,7 +66,8 @@ Status SurfacePass::init(const std::string& glsl_root, const Params& params) {
   color_ = gl::make_texture_2d(padded_.x, padded_.y, GL_RGBA8);
   normal_ = gl::make_texture_2d(padded_.x, padded_.y, GL_RGBA32F, levels_);
   aov_ = gl::make_texture_2d(padded_.x, padded_.y, GL_RGBA32F);
-  for (const gl::Texture* t : {&color_, &normal_, &aov_}) {
+  filter_need_ = gl::make_texture_2d(padded_.x, padded_.y, GL_R32F);
+  for (const gl::Texture* t : {&color_, &normal_, &aov_, &filter_need_}) {
     glTextureParameteri(t->id(), GL_TEXTURE_MIN_FILTER, GL_NEAREST);
     glTextureParameteri(t->id(), GL_TEXTURE_MAG_FILTER, GL_NEAREST);
   }
@@ -76,11 +77,12 @@ Status SurfacePass::init(const std::string& glsl_root, const Params& params) {
   glNamedFramebufferTexture(fbo_.id(), GL_COLOR_ATTACHMENT0, color_.id(), 0);
   glNamedFramebufferTexture(fbo_.id(), GL_COLOR_ATTACHMENT1, normal_.id(), 0);
   glNamedFramebufferTexture(fbo_.id(), GL_COLOR_ATTACHMENT2, aov_.id(), 0);
+  glNamedFramebufferTexture(fbo_.id(), GL_COLOR_ATTACHMENT3, filter_need_.id(), 0);
   glNamedFramebufferRenderbuffer(fbo_.id(), GL_DEPTH_ATTACHMENT, GL_RENDERBUFFER, depth_.id());
-  const GLenum buffers[3] = {GL_COLOR_ATTACHMENT0, GL_COLOR_ATTACHMENT1, GL_COLOR_ATTACHMENT2};
-  glNamedFramebufferDrawBuffers(fbo_.id(), 3, buffers);
+  const GLenum buffers[4] = {GL_COLOR_ATTACHMENT0, GL_COLOR_ATTACHMENT1, GL_COLOR_ATTACHMENT2, GL_COLOR_ATTACHMENT3};
+  glNamedFramebufferDrawBuffers(fbo_.id(), 4, buffers);
   if (glCheckNamedFramebufferStatus(fbo_.id(), GL_FRAMEBUFFER) != GL_FRAMEBUFFER_COMPLETE)
-    return make_error("surface pass: MRT framebuffer incomplete (RGBA8 + 2x RGBA32F + D32F)");
+    return make_error("surface pass: MRT framebuffer incomplete (RGBA8 + 2x RGBA32F + R32F + D32F)");
   GLint align = 256;
   glGetIntegerv(GL_UNIFORM_BUFFER_OFFSET_ALIGNMENT, &align);
   ubo_stride_ = static_cast<GLint>((sizeof(SurfaceBlock) + align - 1) / align * align);
@@ -92,10 +94,10 @@ Status SurfacePass::init(const std::string& glsl_root, const Params& params) {
 }
 
 Result<const gl::Program*> SurfacePass::program(bool shadow, bool textured, bool stratified,
-                                                int baked, bool filtered, bool intensity_lut) {
+                                                int baked, int filter, bool intensity_lut) {
   const bool tex = textured && shadow;
   const auto key =
-      std::make_tuple(shadow, tex, stratified && tex && baked == 0, tex ? baked : 0, filtered && tex, intensity_lut);
+      std::make_tuple(shadow, tex, stratified && tex && baked == 0, tex ? baked : 0, tex ? filter : 0, intensity_lut);
   auto it = programs_.find(key);
   if (it != programs_.end()) return &it->second;
   gl::ProgramDesc desc{{"surface.vert", "surface.frag"},
@@ -103,7 +105,7 @@ Result<const gl::Program*> SurfacePass::program(bool shadow, bool textured, bool
   // Only the stratified variant gets the extra define: the naive source stays byte-identical.
   if (std::get<2>(key)) desc.defines.push_back({"PS_GABOR_STRATIFIED", "1"});
   if (std::get<3>(key)) desc.defines.push_back({"PS_GABOR_BAKED", std::to_string(std::get<3>(key))});
-  if (std::get<4>(key)) desc.defines.push_back({"PS_GABOR_FILTER", "1"});
+  if (std::get<4>(key)) desc.defines.push_back({"PS_GABOR_FILTER", std::to_string(std::get<4>(key))});
   if (intensity_lut) desc.defines.push_back({"PS_INTENSITY_LUT", "1"});
   auto built = gl::build_program(desc, glsl_root_);
   if (!built) return built.error();
@@ -146,11 +148,13 @@ Status SurfacePass::run(const std::vector<SurfaceDraw>& draws, const gl::Texture
   if (!shadow_rect_.empty()) {
     glScissor(shadow_rect_.x0, shadow_rect_.y0, shadow_rect_.width(), shadow_rect_.height());
     glClearNamedFramebufferfv(fbo_.id(), GL_COLOR, 2, aov_clear);
+    glClearNamedFramebufferfv(fbo_.id(), GL_COLOR, 3, zero);
     if (Status s = draw_all(draws, true); !s) return s;
   }
   // The rest of the image in bands around it (all of it when the rectangle is empty): plain
-  // shading, no AOV.
+  // shading, no AOV, no filter need.
   glColorMaski(2, GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
+  glColorMaski(3, GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
   const PixelRect& r = shadow_rect_;
   const PixelRect bands[4] = {{0, 0, image.x1, r.empty() ? image.y1 : r.y0},
                               {0, r.y1, image.x1, image.y1},
@@ -162,6 +166,7 @@ Status SurfacePass::run(const std::vector<SurfaceDraw>& draws, const gl::Texture
     if (Status s = draw_all(draws, false); !s) return s;
   }
   glColorMaski(2, GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+  glColorMaski(3, GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
   glDisable(GL_SCISSOR_TEST);
   return ok_status();
 }
@@ -171,7 +176,8 @@ Status SurfacePass::draw_all(const std::vector<SurfaceDraw>& draws, bool shadow)
     const SurfaceDraw& d = draws[i];
     const bool own = shadow && d.shadow;
     auto prog = program(own, d.textured, d.stratified, d.gabor_tile ? (d.gabor_tile_linear ? 2 : 1) : 0,
-                        d.gabor_filter, d.intensity_lut != nullptr);
+                        d.gabor_filter_skipped && d.gabor_filter ? 2 : d.gabor_filter ? 1 : 0,
+                        d.intensity_lut != nullptr);
     if (!prog) return prog.error();
     glUseProgram(prog.value()->id());
     glBindTextureUnit(1, d.albedo ? d.albedo->id() : dummy_.id());

@@ -100,6 +100,8 @@ struct SurfaceDraw {
   const gl::Texture* gabor_tile = nullptr;  // set: PS_GABOR_BAKED variant reads this tile
   bool gabor_tile_linear = false;           // the tile is values only, read bilinearly (PS_GABOR_BAKED 2)
   bool gabor_filter = false;                // PS_GABOR_FILTER variant (GaborParams::Filter::kAnalytic)
+  bool gabor_filter_skipped = false;        // with gabor_filter: PS_GABOR_FILTER 2, the filter skipped
+                                            // (negligible this frame), its need still measured
   bool wireframe = false;                   // the triangles' edges only (glPolygonMode GL_LINE)
   const gl::Buffer* intensity_lut = nullptr;  // set: PS_INTENSITY_LUT variant reads this table
 };
@@ -134,6 +136,9 @@ struct SurfacePass {
   const gl::Texture& color() const { return color_; }
   const gl::Texture& normal() const { return normal_; }
   const gl::Texture& aov() const { return aov_; }
+  // R32F: gabor_filter_need where a filtered material's texture was evaluated, 0 elsewhere in
+  // shadow_rect() (undefined outside it).
+  const gl::Texture& filter_need() const { return filter_need_; }
   const gl::Renderbuffer& depth_buffer() const { return depth_; }  // D32F, the surfaces' depth
   int width() const { return params_.width; }
   int height() const { return params_.height; }
@@ -142,8 +147,9 @@ struct SurfacePass {
 
  private:
   // baked: 0 none, 1 Hermite lookup, 2 bilinear lookup (the PS_GABOR_BAKED value).
+  // filter: the PS_GABOR_FILTER value (0 none, 1 analytic, 2 analytic skipped this frame).
   Result<const gl::Program*> program(bool shadow, bool textured, bool stratified = false,
-                                     int baked = 0, bool filtered = false, bool intensity_lut = false);
+                                     int baked = 0, int filter = 0, bool intensity_lut = false);
 
   std::string glsl_root_;
   Params params_;
@@ -153,8 +159,8 @@ struct SurfacePass {
   // with their PS_SHADOW=0 variant.
   Status draw_all(const std::vector<SurfaceDraw>& draws, bool shadow);
 
-  std::map<std::tuple<bool, bool, bool, int, bool, bool>, gl::Program> programs_;
-  gl::Texture color_, normal_, aov_, dummy_;
+  std::map<std::tuple<bool, bool, bool, int, int, bool>, gl::Program> programs_;
+  gl::Texture color_, normal_, aov_, filter_need_, dummy_;
   gl::Renderbuffer depth_;
   gl::Framebuffer fbo_;
   gl::Buffer ubo_;        // one SurfaceBlock per draw, ubo_stride_ bytes apart

@@ -167,6 +167,13 @@ struct PixelSplit {
 // matter).
 PixelSplit gabor_pixel_split(double dudx, double dvdx, double dudy, double dvdy, double pixel_variance,
                              double cap, int max_subsamples);
+// How much the analytic filter would attenuate lambda_min over that pixel: the exponent
+// 2 pi^2 s2 / lambda_min^2 for the footprint's mean variance s2 = pixel_variance (|du/dx|^2 +
+// |du/dy|^2) / 2 before the split and the cap (which only lower it). The surface pass writes
+// it where it evaluates a filtered texture; below kGaborFilterNegligibleNeed over a whole frame
+// the next frame skips the filter (render/renderer.h). GLSL twin: gabor_filter_need.
+double gabor_filter_need(double dudx, double dvdx, double dudy, double dvdy, double pixel_variance,
+                         double lambda_min);
 // The texture filtered over that pixel (the surface pass's PS_GABOR_FILTER variant).
 double gabor_noise_pixel(const GaborParams& g, const GaborSetup& s, std::uint32_t seed, double u, double v,
                          double dudx, double dvdx, double dudy, double dvdy);

@@ -66,6 +66,12 @@ Cov2 cap_footprint(const Cov2& c, double cap) {
   return {m1 * e1x * e1x + m2 * e1y * e1y, (m1 - m2) * e1x * e1y, m1 * e1y * e1y + m2 * e1x * e1x};
 }
 
+double gabor_filter_need(double dudx, double dvdx, double dudy, double dvdy, double pixel_variance,
+                         double lambda_min) {
+  const double pi2 = std::numbers::pi * std::numbers::pi;
+  return pi2 * pixel_variance * (dudx * dudx + dvdx * dvdx + dudy * dudy + dvdy * dvdy) / (lambda_min * lambda_min);
+}
+
 PixelSplit gabor_pixel_split(double dudx, double dvdx, double dudy, double dvdy, double pixel_variance,
                              double cap, int max_subsamples) {
   const bool x_major = dudx * dudx + dvdx * dvdx >= dudy * dudy + dvdy * dvdy;

@@ -458,6 +458,7 @@ std::vector<SurfaceDraw> Renderer::surface_draws(const FramePlan& plan) {
     d.gabor_tile_linear = ms.bake_plan.linear;
     d.intensity_lut = ms.intensity_lut ? &ms.intensity_lut : nullptr;
     d.gabor_filter = m.gabor.filter == GaborParams::Filter::kAnalytic;
+    d.gabor_filter_skipped = filter_negligible_;
     const Geometry::Sheets& sheets = geometry_.surface_sheets[i];
     if (!sheets.w4.empty()) {
       // The probe's sheet: the haptic proxy's (set_probe_sheet), else the nearest vertex's. The
@@ -541,6 +542,9 @@ Status Renderer::render_frame() {
   const FramePlan plan = make_plan(scene_, geometry_.surface_bounds, probe, frame_,
                                    scene_.render.depth_map_size);
   stats_.skipped = plan.skipped;
+  if (!plan.shadow_active || !filter_lod()) filter_negligible_ = false;  // no measure to go by
+  stats_.gabor_filter_skipped = filter_negligible_;
+  stats_.gabor_filter_need = 0.0;
   for (const MaterialState& ms : materials_)
     if (!ms.strategy_note.empty()) stats_.skipped.push_back(ms.strategy_note);
   timer.lap("plan");
@@ -564,6 +568,10 @@ Status Renderer::render_frame() {
     r.normal_sum = n.normal_sum;
     r.normal_coverage = n.normal_coverage;
     apply_reductions(r, plan);
+    // The next frame's choice: skipped only when this frame measured a filtered texture, and
+    // its need was negligible everywhere (with the filter skipped too the need is measured).
+    stats_.gabor_filter_need = r.max_filter_need;
+    filter_negligible_ = filter_lod() && r.max_filter_need > 0.0 && r.max_filter_need < kGaborFilterNegligibleNeed;
   } else {
     apply_reductions(ReductionResult{}, plan);  // zero sum: plane kept, no displacement
   }

@@ -74,7 +74,24 @@ struct RendererOptions {
   // penetrating pixels. false: the whole image and whole rows, as before; the results are the
   // same bits (tests compare the two).
   bool footprint_rect = true;
+  // Texture filtering's level of detail (docs/architecture.md, "Texture filtering"): a frame
+  // draws its analytically filtered materials without the filter when the last frame measured
+  // the filter's need below kGaborFilterNegligibleNeed over the whole shadow. The unfiltered
+  // variant is one more shader to build (~0.3 s on llvmpipe) for ~0.7 ms of a 512^2 frame: a
+  // renderer that expects fewer than kFilterLodMinFrames frames (expected_frames: a render, a
+  // golden, a tune cell, a replay) never switches. false: always filtered.
+  bool filter_lod = true;
 };
+
+// The filter's need (glsl/lib/gabor.glsl gabor_filter_need: the exponent of its attenuation of
+// lambda_min) under which the next frame skips it: 3 %. For a square footprint need = (pi^2 / 6)
+// (pixel / lambda_min)^2, so 3 % is lambda_min seen across 7.4 pixels or more everywhere in the
+// shadow, far from the 2 pixels where aliasing starts, and the filter would take at most 3 % of
+// lambda_min's contrast (less of the longer wavelengths). A view that zooms out by sqrt(2) between
+// two frames (the need grows with the square of the footprint) draws one frame at 5.2 pixels per
+// lambda_min, 6 %, unfiltered, and the next one filtered again.
+inline constexpr double kGaborFilterNegligibleNeed = 0.03;
+inline constexpr int kFilterLodMinFrames = 1000;
 
 struct FrameStats {
   glm::dvec3 reference_normal{0.0, 0.0, 1.0};  // after this frame's update
@@ -93,6 +110,11 @@ struct FrameStats {
   double first_frame_ms = -1.0;  // until the first frame was drawn; -1: none yet
   double tiles_ready_ms = -1.0;  // until the last tile was ready (create's time if none); -1: not yet
   DeformationStats deformation;  // the deformable surfaces as this frame drew them
+  // Texture filtering's level of detail: this frame drew its filtered materials without the
+  // filter (RendererOptions::filter_lod), and the largest need for it that the frame measured
+  // (0: no filtered texture in the shadow).
+  bool gabor_filter_skipped = false;
+  double gabor_filter_need = 0.0;
 };
 
 
@@ -256,6 +278,10 @@ class Renderer {
   ReductionsPass reductions_;
   ProbeViewPass probe_view_;
   bool show_probe_ = false;
+  bool filter_negligible_ = false;  // the last frame's filter need was negligible: skip it now
+  bool filter_lod() const {
+    return options_.filter_lod && (options_.expected_frames <= 0 || options_.expected_frames >= kFilterLodMinFrames);
+  }
   glm::dvec3 view_offset_{0.0};
   glm::dmat3 view_rotation_{1.0};
   int sheet_surface_ = -1;  // set_probe_sheet

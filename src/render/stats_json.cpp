@@ -38,6 +38,8 @@ std::string stats_json(const FrameStats& s, const std::string& backend,
   j["gabor_tiles_ready_ms"] = ms_or_null(s.tiles_ready_ms);
   j["first_frame_ms"] = ms_or_null(s.first_frame_ms);
   j["frames_before_tiles"] = s.frames_before_tiles;
+  j["gabor_filter_skipped"] = s.gabor_filter_skipped;
+  j["gabor_filter_need"] = s.gabor_filter_need;
   if (s.deformation.surfaces > 0)
     j["deformation"] = {{"surfaces", s.deformation.surfaces},
                         {"max_displacement_mm", s.deformation.max_displacement_mm},

@@ -186,6 +186,7 @@ TEST(UniformLayoutTest, ReduceBlockMatches) {
   EXPECT_MEMBER(o, "penetrating_fragments", MaxBlock, penetrating_fragments);
   EXPECT_MEMBER(o, "covered_fragments", MaxBlock, covered_fragments);
   EXPECT_MEMBER(o, "penetrating_box", MaxBlock, penetrating_box);
+  EXPECT_MEMBER(o, "max_filter_need_bits", MaxBlock, max_filter_need_bits);
 }
 
 }  // namespace

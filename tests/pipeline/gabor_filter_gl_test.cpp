@@ -119,6 +119,86 @@ TEST_P(GaborFilterGLTest, FilteredTextureAovMatchesCpuReference) {
   EXPECT_LT(max_err, 5e-3);
 }
 
+// Texture filtering's level of detail (RendererOptions::filter_lod): top-down, where the pixel
+// derivatives are (h, 0) and (0, h) everywhere, so the filter's need is known exactly.
+struct LodRun {
+  std::vector<FrameStats> stats;    // per frame
+  std::vector<Image> texture;       // the texture AOV per frame
+};
+Result<LodRun> render_frames(const Scene& s, int frames, RendererOptions o = {}) {
+  auto r = Renderer::create(s, o);
+  if (!r) return r.error();
+  LodRun run;
+  for (int f = 0; f < frames; ++f) {
+    if (Status st = r.value()->render_frame(); !st) return st.error();
+    run.stats.push_back(r.value()->stats());
+    auto tex = r.value()->read_aov("texture");
+    if (!tex) return tex.error();
+    run.texture.push_back(std::move(tex.value()));
+  }
+  return run;
+}
+double max_abs_diff(const Image& a, const Image& b) {
+  double m = 0.0;
+  for (int y = 0; y < a.height; ++y)
+    for (int x = 0; x < a.width; ++x) m = std::max(m, static_cast<double>(std::abs(a.at(x, y, 0) - b.at(x, y, 0))));
+  return m;
+}
+
+// lambda_min across 16 pixels: the filter would take (pi^2 / 6) / 16^2 = 0.64 % of its contrast,
+// below the 3 % bar. The first frame is filtered and measures that need; the second skips the
+// filter and draws exactly what the unfiltered material draws.
+TEST_P(GaborFilterGLTest, LevelOfDetailSkipsANegligibleFilterFromTheNextFrame) {
+  const Scene s = aliasing::scene(View::kTopDown, 16.0, kSize, kSize, S::kBaked, F::kAnalytic);
+  auto lod = render_frames(s, 3);
+  ASSERT_TRUE(lod.ok()) << lod.error().message;
+  const GaborParams& g = s.materials[0].gabor;
+  const double h = s.camera.ortho_height_mm / kSize;
+  const double need = gabor_filter_need(h, 0.0, 0.0, h, g.filter_pixel_variance, g.lambda_min_mm);
+  EXPECT_NEAR(need, std::numbers::pi * std::numbers::pi / 6.0 / 256.0, 1e-9);
+  // The GPU's maximum over the image against the twin: float derivatives of float positions,
+  // ~1e-6 relative (measured below 1e-6).
+  EXPECT_NEAR(lod->stats[0].gabor_filter_need, need, 1e-5 * need);
+  EXPECT_FALSE(lod->stats[0].gabor_filter_skipped);
+  EXPECT_TRUE(lod->stats[1].gabor_filter_skipped);
+  EXPECT_TRUE(lod->stats[2].gabor_filter_skipped);
+  EXPECT_NEAR(lod->stats[1].gabor_filter_need, need, 1e-5 * need) << "measured while skipped too";
+
+  Scene plain = s;
+  plain.materials[0].gabor.filter = F::kNone;
+  auto none = render_frames(plain, 2);
+  ASSERT_TRUE(none.ok()) << none.error().message;
+  EXPECT_EQ(max_abs_diff(lod->texture[1], none->texture[1]), 0.0) << "skipped: the unfiltered lookup itself";
+  const double change = max_abs_diff(lod->texture[0], lod->texture[1]);
+  EXPECT_GT(change, 0.0) << "the filter did change the first frame";
+  // ... by less than 3 % of the texture's range (its values span about +-3 sigma).
+  EXPECT_LT(change, 0.03 * 3.0);
+}
+
+// lambda_min across 4 pixels: need (pi^2 / 6) / 16 = 10 %: every frame stays filtered, the same
+// bits each time. And a renderer that expects a few frames (a render, a golden) never switches.
+TEST_P(GaborFilterGLTest, LevelOfDetailKeepsTheFilterWhereItMattersAndInShortRenders) {
+  const Scene fine = aliasing::scene(View::kTopDown, 4.0, kSize, kSize, S::kBaked, F::kAnalytic);
+  auto run = render_frames(fine, 2);
+  ASSERT_TRUE(run.ok()) << run.error().message;
+  EXPECT_GT(run->stats[0].gabor_filter_need, kGaborFilterNegligibleNeed);
+  EXPECT_FALSE(run->stats[1].gabor_filter_skipped);
+  EXPECT_EQ(max_abs_diff(run->texture[0], run->texture[1]), 0.0);
+
+  const Scene coarse = aliasing::scene(View::kTopDown, 16.0, kSize, kSize, S::kBaked, F::kAnalytic);
+  RendererOptions few;
+  few.expected_frames = 2;
+  auto short_run = render_frames(coarse, 2, few);
+  ASSERT_TRUE(short_run.ok()) << short_run.error().message;
+  EXPECT_LT(short_run->stats[0].gabor_filter_need, kGaborFilterNegligibleNeed);
+  EXPECT_FALSE(short_run->stats[1].gabor_filter_skipped) << "expected_frames 2 < kFilterLodMinFrames";
+  RendererOptions off;
+  off.filter_lod = false;
+  auto off_run = render_frames(coarse, 2, off);
+  ASSERT_TRUE(off_run.ok()) << off_run.error().message;
+  EXPECT_FALSE(off_run->stats[1].gabor_filter_skipped);
+}
+
 PS_INSTANTIATE_HEADLESS_BACKENDS(GaborFilterGLTest);
 
 }  // namespace
