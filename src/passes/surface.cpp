@@ -112,6 +112,12 @@ Result<const gl::Program*> SurfacePass::program(bool shadow, bool textured, bool
   return &programs_.emplace(key, std::move(built.value())).first->second;
 }
 
+Status SurfacePass::warm(const SurfaceDraw& d, int filter) {
+  auto prog = program(true, d.textured, d.stratified, d.gabor_tile ? (d.gabor_tile_linear ? 2 : 1) : 0, filter,
+                      d.intensity_lut != nullptr);
+  return prog ? ok_status() : Status(prog.error());
+}
+
 Status SurfacePass::run(const std::vector<SurfaceDraw>& draws, const gl::Texture* probe_depth,
                         const glm::dvec3& background, const PixelRect& shadow_rect) {
   const PixelRect image = PixelRect::whole(params_.width, params_.height);

@@ -19,10 +19,6 @@ std::string surface_label(const Scene& scene, size_t i) {
   o << "surface " << i << " (material '" << scene.surfaces[i].material << "')";
   return o.str();
 }
-bool has_texture(const Material& m) {
-  return m.textured && (m.gabor.a_min != 0.0 || m.gabor.a_max != 0.0) &&
-         m.gabor.max_impulses_per_cell > 0 && std::max(m.gabor.n_min, m.gabor.n_max) > 0.0;
-}
 // Distance is measured along the reference normal (d = h_probe - h_surface), so a probe that
 // sank far below a surface is penetrating it (d << 0), even when its bounding sphere is
 // farther than the influence distance from the surface's box. True when the probe's lowest
@@ -61,6 +57,11 @@ void shadowed_height_range(const std::vector<Aabb>& bounds, const std::vector<bo
 }
 
 }  // namespace
+
+bool has_texture(const Material& m) {
+  return m.textured && (m.gabor.a_min != 0.0 || m.gabor.a_max != 0.0) &&
+         m.gabor.max_impulses_per_cell > 0 && std::max(m.gabor.n_min, m.gabor.n_max) > 0.0;
+}
 
 std::vector<SphereCaster> bodies_in_reach(std::span<const SphereCaster> bodies, const Aabb& bounds,
                                           double influence_mm) {

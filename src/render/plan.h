@@ -61,6 +61,9 @@ PixelRect footprint_screen_rect(const Camera& camera, int width, int height, con
                                 const DepthWindow& window, int depth_map_size, double height_lo,
                                 double height_hi);
 
+// The material draws a Gabor texture at all (textured, some amplitude, some impulses).
+bool has_texture(const Material& m);
+
 // `depth_map_size` sets the margin: the window is the probe's bounding disc plus one texel.
 FramePlan make_plan(const Scene& scene, const std::vector<Aabb>& surface_bounds,
                     const BoundingSphere& probe, const PlaneFrame& frame, int depth_map_size);

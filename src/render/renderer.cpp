@@ -138,6 +138,8 @@ Result<std::unique_ptr<Renderer>> Renderer::create(const Scene& scene, const Ren
   if (options.prime_reference_plane) {
     if (Status s = r->prime_reference_plane(); !s) return s.error();
   }
+  if (r->filter_lod())
+    if (Status s = r->warm_unfiltered_variants(); !s) return s.error();
   r->stats_.reference_normal = r->frame_.n;
   r->stats_.probe_position = scene.probe.position;
   return r;
@@ -458,7 +460,9 @@ std::vector<SurfaceDraw> Renderer::surface_draws(const FramePlan& plan) {
     d.gabor_tile_linear = ms.bake_plan.linear;
     d.intensity_lut = ms.intensity_lut ? &ms.intensity_lut : nullptr;
     d.gabor_filter = m.gabor.filter == GaborParams::Filter::kAnalytic;
-    d.gabor_filter_skipped = filter_negligible_;
+    // Only a material drawn in its final form switches: one with an unfinished tile (the window
+    // bakes in slices) keeps the per-pixel sum filtered until the tile is there.
+    d.gabor_filter_skipped = filter_negligible_ && (ms.gabor_tile || !ms.bake_plan.ok);
     const Geometry::Sheets& sheets = geometry_.surface_sheets[i];
     if (!sheets.w4.empty()) {
       // The probe's sheet: the haptic proxy's (set_probe_sheet), else the nearest vertex's. The
@@ -587,6 +591,23 @@ Status Renderer::render_frame() {
   if (stats_.first_frame_ms < 0.0) {
     glFinish();  // the frame is drawn, not only queued
     stats_.first_frame_ms = ms_since_creation();
+  }
+  return ok_status();
+}
+
+Status Renderer::warm_unfiltered_variants() {
+  for (std::size_t i = 0; i < scene_.surfaces.size(); ++i) {
+    const auto mi = static_cast<std::size_t>(scene_.surfaces[i].material_index);
+    const Material& m = scene_.materials[mi];
+    if (!has_texture(m) || m.gabor.filter != GaborParams::Filter::kAnalytic) continue;
+    const MaterialState& ms = materials_[mi];
+    SurfaceDraw d;
+    d.textured = true;
+    d.stratified = ms.gabor_setup.stratified_count > 0;
+    d.gabor_tile = ms.bake_plan.ok ? &probe_depth_.depth() : nullptr;  // only its presence decides the variant
+    d.gabor_tile_linear = ms.bake_plan.linear;
+    d.intensity_lut = ms.intensity_lut ? &ms.intensity_lut : nullptr;
+    if (Status s = surface_.warm(d, 2); !s) return s;
   }
   return ok_status();
 }

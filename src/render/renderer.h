@@ -221,6 +221,7 @@ class Renderer {
   Status load_probe_mesh();
   Status load_materials();        // albedo textures, Gabor setup and strategy
   Status init_passes();
+  Status warm_unfiltered_variants();  // filter_lod(): the PS_GABOR_FILTER=2 variants, built ahead
   Status bake_gabor_tiles();      // tiles of the materials whose strategy chose one (or queue them)
   Status advance_bake();          // per frame: one band of the queued tiles, then the stats
   void collect_tiles();           // finished tiles to their materials; the bake's stats
