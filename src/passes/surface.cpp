@@ -112,9 +112,8 @@ Result<const gl::Program*> SurfacePass::program(bool shadow, bool textured, bool
   return &programs_.emplace(key, std::move(built.value())).first->second;
 }
 
-Status SurfacePass::warm(const SurfaceDraw& d, int filter) {
-  auto prog = program(true, d.textured, d.stratified, d.gabor_tile ? (d.gabor_tile_linear ? 2 : 1) : 0, filter,
-                      d.intensity_lut != nullptr);
+Status SurfacePass::warm(bool stratified, int baked, int filter, bool intensity_lut) {
+  auto prog = program(true, true, stratified, baked, filter, intensity_lut);
   return prog ? ok_status() : Status(prog.error());
 }
 

@@ -130,10 +130,10 @@ struct SurfacePass {
   // the footprint is absent (intensity 0 composites as rgb * 1).
   Status run(const std::vector<SurfaceDraw>& draws, const gl::Texture* probe_depth,
              const glm::dvec3& background, const PixelRect& shadow_rect);
-  // Builds the shadowed variant a draw like `d` will use (filter: the PS_GABOR_FILTER value) now,
-  // not at its first draw: a variant a live session switches to later (the filter's level of
-  // detail) is built ahead instead of stalling that frame.
-  Status warm(const SurfaceDraw& d, int filter);
+  // Builds a textured shadow variant now, not at its first draw (arguments as program()'s): a
+  // variant a live session switches to later (the filter's level of detail) is built ahead
+  // instead of stalling that frame.
+  Status warm(bool stratified, int baked, int filter, bool intensity_lut);
   // The last run()'s shadow_rect, clipped to the image: where aov() is valid.
   const PixelRect& shadow_rect() const { return shadow_rect_; }
 

@@ -601,13 +601,10 @@ Status Renderer::warm_unfiltered_variants() {
     const Material& m = scene_.materials[mi];
     if (!has_texture(m) || m.gabor.filter != GaborParams::Filter::kAnalytic) continue;
     const MaterialState& ms = materials_[mi];
-    SurfaceDraw d;
-    d.textured = true;
-    d.stratified = ms.gabor_setup.stratified_count > 0;
-    d.gabor_tile = ms.bake_plan.ok ? &probe_depth_.depth() : nullptr;  // only its presence decides the variant
-    d.gabor_tile_linear = ms.bake_plan.linear;
-    d.intensity_lut = ms.intensity_lut ? &ms.intensity_lut : nullptr;
-    if (Status s = surface_.warm(d, 2); !s) return s;
+    // As surface_draws() will draw it once its tile is there (the key of SurfacePass::program).
+    const int baked = ms.bake_plan.ok ? (ms.bake_plan.linear ? 2 : 1) : 0;
+    if (Status s = surface_.warm(ms.gabor_setup.stratified_count > 0, baked, 2, static_cast<bool>(ms.intensity_lut)); !s)
+      return s;
   }
   return ok_status();
 }
