@@ -35,9 +35,23 @@ struct GaborMaterial {
 #endif
 };
 
+// murmur3's 32-bit finaliser: a bijection of 32-bit words. CPU twin: fmix32 in gabor.cpp.
+uint gabor_fmix32(uint h) {
+  h = (h ^ (h >> 16)) * 0x85ebca6bu;
+  h = (h ^ (h >> 13)) * 0xc2b2ae35u;
+  return h ^ (h >> 16);
+}
+uint gabor_cell_hash(uint key, uint seed) {
+  return gabor_fmix32(gabor_fmix32(key) ^ gabor_fmix32(seed + 0x9e3779b9u));  // kGaborSeedOffset
+}
+// The LCG's first state in a cell: its 16-bit-per-axis key hashed with the seed, distinct for
+// every cell of the 65536-cell period; the key hashing to 0 takes the state of the key half a
+// period away (0x80008000: kGaborHalfPeriodKey). Rule and proof: gabor_cell_seed in
+// src/reference/gabor.h.
 uint gabor_cell_seed(ivec2 cell, uint seed) {
-  uint h = (uint(cell.x) * 73856093u) ^ (uint(cell.y) * 19349663u) ^ (seed * 83492791u);
-  return h == 0u ? 1u : h;
+  uint key = (uint(cell.x) & 0xffffu) | (uint(cell.y) << 16);
+  uint h = gabor_cell_hash(key, seed);
+  return h != 0u ? h : gabor_cell_hash(key ^ 0x80008000u, seed);
 }
 
 float lcg_uniform(inout uint state) {

@@ -12,18 +12,18 @@ namespace ps {
 namespace {
 
 // Variance of the sparse-convolution process for A == 1 (Lagae et al. 2009, eq. for random
-// phase): impulses per mm^2 times the integral of the squared kernel. With random phase the
-// cos^2 averages to 1/2 exactly, and the Gaussian squared integrates to pi W^2 / 2, so
-//   sigma^2 = (n_mean / (pi C^2)) * (1/2) * (pi / 2) E[W^2] = n_mean E[W^2] / (4 C^2).
-// Truncation at exp(-r^2/W^2) = t removes a fraction t^2 of that integral (ignored: 0.25 %
-// at t = 0.05).
-double unit_sigma(const GaborParams& g, double cell_mm, int stratified_count) {
+// phase). The phases are independent and uniform, so cross terms vanish and the variance is
+// the expected number of impulses per mm^2 times the mean squared kernel's integral: cos^2
+// averages to 1/2, and the squared envelope exp(-2 r^2/W^2) cut at r^2 = W^2 T (T = -ln t)
+// integrates to (pi W^2 / 2)(1 - t^2). With E[count] impulses per C x C cell,
+//   sigma^2 = E[count] / C^2 * (1/2) * (pi / 2) E[W^2] (1 - t^2).
+// E[count] is that of the count drawn (expected_cell_count), cap included.
+double unit_sigma(const GaborParams& g, const GaborSetup& s) {
   const double a = g.lambda_min_mm, b = g.lambda_max_mm;
   const double e_lambda2 = (a * a + a * b + b * b) / 3.0;  // lambda ~ U[a, b]
   const double e_w2 = g.kernel_periods * g.kernel_periods * e_lambda2;
-  // Stratified: K impulses per cell is the density of n = K pi impulses per kernel footprint.
-  const double n_mean = stratified_count > 0 ? stratified_count * std::numbers::pi : 0.5 * (g.n_min + g.n_max);
-  const double var = n_mean * e_w2 / (4.0 * cell_mm * cell_mm);
+  const double kept = 1.0 - std::exp(-2.0 * s.trunc_factor);  // 1 - t^2
+  const double var = expected_cell_count(g, s) * std::numbers::pi * e_w2 * kept / (4.0 * s.cell_mm * s.cell_mm);
   return var > 0.0 ? std::sqrt(var) : 1.0;
 }
 
@@ -37,14 +37,44 @@ GaborSetup make_gabor_setup(const GaborParams& g) {
   s.max_impulses = std::max(0, g.max_impulses_per_cell);
   if (g.strategy == GaborParams::Strategy::kStratified)
     s.stratified_count = std::clamp(g.stratified_impulses, 1, std::max(1, s.max_impulses));
-  s.sigma_unit = unit_sigma(g, s.cell_mm, s.stratified_count);
+  s.sigma_unit = unit_sigma(g, s);
   return s;
 }
 
+std::uint32_t fmix32(std::uint32_t h) {  // murmur3's finaliser; GLSL twin gabor_fmix32
+  h = (h ^ (h >> 16)) * 0x85ebca6bu;
+  h = (h ^ (h >> 13)) * 0xc2b2ae35u;
+  return h ^ (h >> 16);
+}
+
+namespace {
+// The cell's key hashed with the material seed (gabor.h, gabor_cell_seed): a bijection of the
+// keys for each seed.
+std::uint32_t cell_hash(std::uint32_t key, std::uint32_t seed) {
+  return fmix32(fmix32(key) ^ fmix32(seed + kGaborSeedOffset));
+}
+}  // namespace
+
 std::uint32_t gabor_cell_seed(int cx, int cy, std::uint32_t seed) {
-  std::uint32_t h = static_cast<std::uint32_t>(cx) * 73856093u ^
-                    static_cast<std::uint32_t>(cy) * 19349663u ^ seed * 83492791u;
-  return h == 0u ? 1u : h;
+  const std::uint32_t key = (static_cast<std::uint32_t>(cx) & 0xffffu) | (static_cast<std::uint32_t>(cy) << 16);
+  const std::uint32_t h = cell_hash(key, seed);
+  // The LCG must not start at 0. The one key hashing to 0 takes the state of the key half a
+  // period away on both axes (hash is a bijection, so that state is not 0): the only repeat
+  // in the period, out of reach of any window of 32768 cells a side.
+  return h != 0u ? h : cell_hash(key ^ kGaborHalfPeriodKey, seed);
+}
+
+double expected_cell_count(const GaborParams& g, const GaborSetup& s) {
+  const double cap = s.max_impulses;
+  if (s.stratified_count > 0) return std::min<double>(s.stratified_count, cap);
+  // count = floor(x + u), x = n / pi, u ~ U[0, 1): floor(x) + 1 with probability frac(x),
+  // so E[count | x] = x, and for an integer cap E[min(count, cap) | x] = min(x, cap) (below
+  // the cap both outcomes are <= cap; at or above it both are >= cap). Averaged over
+  // x ~ U[x0, x1]:
+  const double x0 = std::min(g.n_min, g.n_max) / std::numbers::pi, x1 = std::max(g.n_min, g.n_max) / std::numbers::pi;
+  if (x1 <= cap) return 0.5 * (x0 + x1);
+  if (x0 >= cap) return cap;
+  return (0.5 * (cap * cap - x0 * x0) + cap * (x1 - cap)) / (x1 - x0);
 }
 
 float lcg_uniform(std::uint32_t& state) {

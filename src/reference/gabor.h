@@ -5,10 +5,12 @@
 // Definition (units: mm):
 //   cell size C = kernel_periods * lambda_max * sqrt(-ln truncation)  (= the largest truncation
 //   radius, so the 3x3 cells around a point hold every kernel that reaches it).
-//   Per cell: LCG state from the cell index and seed; density n ~ U[n_min, n_max] impulses per
-//   kernel footprint; count = min(cap, floor(n / pi + u)) (expected n/pi per C x C cell; a
+//   Per cell: LCG state from the cell index and seed (gabor_cell_seed: distinct for every cell
+//   of a 65536-cell period); density n ~ U[n_min, n_max] impulses per kernel footprint;
+//   count = min(cap, floor(n / pi + u)) (expected n/pi per C x C cell below the cap; a
 //   stratified count instead of Lagae's Poisson: the mean and variance of the noise depend only
-//   on the expected count because the random phases make cross terms vanish).
+//   on the expected count because the random phases make cross terms vanish; sigma_unit uses
+//   the expected count with the cap, expected_cell_count).
 //   Per impulse, in this order: x, y ~ U[0,C); A ~ U[a_min,a_max]; lambda ~ U[lmin,lmax];
 //   theta ~ U[tmin,tmax]; psi ~ U[0, 2pi).
 //   Stratified strategy (GaborParams::Strategy::kStratified): count = min(cap, K) fixed, no
@@ -30,7 +32,7 @@ inline constexpr std::uint32_t kLcgMultiplier = 3039177861u;  // thesis §4.5.2,
 struct GaborSetup {
   double cell_mm = 1.0;
   double trunc_factor = 3.0;  // -ln(truncation): kernel cut at r^2 < W^2 * trunc_factor
-  double sigma_unit = 1.0;    // analytic std-dev of the noise with A == 1 (see gabor.cpp)
+  double sigma_unit = 1.0;    // std-dev of the noise with A == 1: exact for the counts drawn (gabor.cpp)
   int max_impulses = 64;
   // Stratified strategy: this many impulses in every cell (0 = naive random count), one per
   // stratum of a g x g grid, g = ceil(sqrt(count)).
@@ -197,7 +199,22 @@ double gabor_kernel_filtered(const GaborKernelShape& k, double dx, double dy, co
 double gabor_noise_filtered(const GaborParams& g, const GaborSetup& s, std::uint32_t seed, double u,
                             double v, const Cov2& S);
 
+// Cell seeds (the LCG's first state in each cell). The cell packs into a 32-bit key,
+// key = (cx mod 2^16) | (cy mod 2^16) << 16, so the texture repeats every 65536 cells on each
+// axis (at C = 10 mm, 655 m). The key is hashed with murmur3's finaliser fmix32 (a bijection
+// of 32-bit words): state = fmix32(fmix32(key) ^ fmix32(seed + kGaborSeedOffset)). For each
+// material seed that is a bijection of the keys, so every cell of the period gets its own
+// state, except that the one state 0 (which would stall the multiplicative LCG) is replaced by
+// the state of the cell (cx + 32768, cy + 32768): any window of up to 32768 x 32768 cells has
+// no two cells alike. Mixing the key before the seed keeps two material seeds from being the
+// same cells shuffled in blocks (as key ^ m would) or translated (as key + m would).
+inline constexpr std::uint32_t kGaborSeedOffset = 0x9e3779b9u;    // 2^32 / golden ratio
+inline constexpr std::uint32_t kGaborHalfPeriodKey = 0x80008000u;  // +32768 cells on both axes
+std::uint32_t fmix32(std::uint32_t h);
 std::uint32_t gabor_cell_seed(int cx, int cy, std::uint32_t seed);
+// The expected impulse count of a cell, E[min(count, cap)], exactly (gabor.cpp): the density
+// sigma_unit is normalised with.
+double expected_cell_count(const GaborParams& g, const GaborSetup& s);
 // One LCG step, then the new state mapped to [0, 1] in float (as the shader does).
 float lcg_uniform(std::uint32_t& state);
 

@@ -1,7 +1,10 @@
-// The GPU Gabor texture against the double-precision CPU twin, pixel by pixel.
+// The GPU Gabor texture against the double-precision CPU twin, pixel by pixel; its cells
+// uncorrelated with their mirrors and translates.
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
+#include <memory>
 
 #include <gtest/gtest.h>
 
@@ -157,6 +160,86 @@ TEST_P(GaborGLTest, BilinearBakedTextureMatchesItsCpuTwinAndTheNaiveTexture) {
   // Linear interpolation errs by (2 pi / 24)^2 / 8 = 0.9 % of a sinusoid's amplitude at most,
   // plus the smeared truncation jumps: 0.86 % RMS in double (choose_gabor_tile); 1 % is the bar.
   EXPECT_LT(b.rms_vs_naive, 0.01);
+}
+
+// The texture AOV at pixel pairs (p, q): q = p - 2 c C (p in cell c: the same offset in cell
+// -c, the same texture if the two cells shared a seed) or q = p + t C (translated cells).
+// Pixels are C / 8 wide, so q is a pixel centre too. Nearby pixels correlate (lambda spans a
+// few pixels), so the sum of f(p) f(q) is taken per cell of p (blocks, nearly independent) and
+// self-normalised: z = sum_c S_c / sqrt(sum_c S_c^2) is ~N(0, 1) for unrelated cells.
+struct CellPairs {
+  double sum = 0.0, sum_blocks2 = 0.0, pp = 0.0, qq = 0.0;
+  int pixels = 0, cells = 0;
+  double z() const { return sum / std::sqrt(sum_blocks2); }
+  double r() const { return sum / std::sqrt(pp * qq); }
+};
+constexpr int kPairSide = 256, kPerCell = 8, kPairCells = kPairSide / kPerCell;  // 32 x 32 cells
+struct CellPartner {
+  int x, y;
+  bool ok;
+};
+
+// Pairs every cell (cx, cy) of the image (pixel (px, py) lies in cell (px / 8 - 16, 15 - py / 8))
+// with partner(cx, cy), pixel by pixel, where both pixels are shaded.
+template <class Partner>
+CellPairs cell_pairs(const Image& tex, const Image& inten, Partner partner) {
+  constexpr int h = kPairCells / 2;
+  const auto in = [](int c) { return c >= -h && c < h; };
+  CellPairs out;
+  for (int cy = -h; cy < h; ++cy)
+    for (int cx = -h; cx < h; ++cx) {
+      const CellPartner q = partner(cx, cy);
+      if (!q.ok || !in(q.x) || !in(q.y)) continue;
+      double block = 0.0;
+      int n = 0;
+      for (int j = 0; j < kPerCell; ++j)
+        for (int i = 0; i < kPerCell; ++i) {
+          const int px = (cx + h) * kPerCell + i, py = (h - 1 - cy) * kPerCell + j;
+          const int qpx = (q.x + h) * kPerCell + i, qpy = (h - 1 - q.y) * kPerCell + j;
+          if (inten.at(px, py, 0) <= 0.0f || inten.at(qpx, qpy, 0) <= 0.0f) continue;
+          const double fp = tex.at(px, py, 0), fq = tex.at(qpx, qpy, 0);
+          block += fp * fq, out.pp += fp * fp, out.qq += fq * fq, ++n;
+        }
+      if (n == 0) continue;
+      out.sum += block, out.sum_blocks2 += block * block, out.pixels += n, ++out.cells;
+    }
+  return out;
+}
+
+TEST_P(GaborGLTest, MirroredAndTranslatedCellsAreUncorrelatedInTheTextureAov) {
+  Scene s = test::flat_plane_scene(0.0);
+  Material& m = s.materials[0];
+  m.gabor.lambda_min_mm = 0.8;
+  m.gabor.lambda_max_mm = 2.0;
+  m.gabor.theta_max_rad = 1.0;
+  m.gabor.strategy = GaborParams::Strategy::kNaive;  // the shader's own cell seeds, no tile
+  m.gabor.filter = GaborParams::Filter::kNone;
+  m.onset_distance_mm = 1000.0;  // texture everywhere under the probe
+  const double c_mm = make_gabor_setup(m.gabor).cell_mm;
+  s.render.width = s.render.height = kPairSide;
+  s.camera.ortho_height_mm = kPairCells * c_mm;  // cells [-16, 16) on both axes, 8 pixels each
+  s.probe.radius_mm = 0.5 * kPairCells * c_mm;
+  s.probe.position.z = s.probe.radius_mm - 0.5;
+  const std::unique_ptr<Renderer> r = test::render_one_frame(s);
+  ASSERT_TRUE(r);
+  const Image tex = r->read_aov("texture").value(), inten = r->read_aov("intensity").value();
+  // c against -c, each pair once, cells >= 2 from the origin (4 C apart: no shared kernel).
+  const CellPairs mirror = cell_pairs(tex, inten, [](int cx, int cy) {
+    return CellPartner{-cx, -cy, (cy > 0 || (cy == 0 && cx > 0)) && std::max(std::abs(cx), std::abs(cy)) >= 2};
+  });
+  std::printf("c vs -c: r %.4f, z %.2f over %d cells (%d pixels)\n", mirror.r(), mirror.z(), mirror.cells,
+              mirror.pixels);
+  EXPECT_GT(mirror.cells, 300);
+  // |z| < 4 for independent cells. Adjacent blocks' products correlate a little (a kernel
+  // straddles a cell border on both sides), which the self-normalisation ignores; 4 leaves room.
+  // OLD_HASH_NUMBERS
+  EXPECT_LT(std::abs(mirror.z()), 4.0);
+  for (const CellPartner t : {CellPartner{3, 0, true}, CellPartner{0, 5, true}, CellPartner{7, -4, true}}) {
+    const CellPairs moved = cell_pairs(tex, inten, [&](int cx, int cy) { return CellPartner{cx + t.x, cy + t.y, true}; });
+    std::printf("c vs c + (%d, %d): r %.4f, z %.2f over %d cells\n", t.x, t.y, moved.r(), moved.z(), moved.cells);
+    EXPECT_GT(moved.cells, 300);
+    EXPECT_LT(std::abs(moved.z()), 4.0) << "shift " << t.x << ", " << t.y;
+  }
 }
 
 PS_INSTANTIATE_HEADLESS_BACKENDS(GaborGLTest);

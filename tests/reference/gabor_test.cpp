@@ -19,13 +19,6 @@ TEST(GaborTest, LcgIsTheThesisGenerator) {
   EXPECT_FLOAT_EQ(u, static_cast<float>(static_cast<double>(expect) / 4294967296.0));
 }
 
-TEST(GaborTest, CellSeedsDifferAndAreNeverZero) {
-  EXPECT_NE(gabor_cell_seed(0, 0, 1), gabor_cell_seed(1, 0, 1));
-  EXPECT_NE(gabor_cell_seed(0, 0, 1), gabor_cell_seed(0, 1, 1));
-  EXPECT_NE(gabor_cell_seed(-1, 0, 1), gabor_cell_seed(1, 0, 1));
-  EXPECT_NE(gabor_cell_seed(0, 0, 0), 0u);  // an LCG seeded with 0 stays 0
-}
-
 TEST(GaborTest, SetupCellIsLargestTruncationRadius) {
   GaborParams g;
   g.lambda_min_mm = 0.5;
