@@ -37,7 +37,10 @@ double independent_rms(const GaborParams& g, const GaborSetup& s, const GaborBak
 
 // What "auto" must do with each shipped scene's material, measured (docs/benchmarks.md) and
 // written down here, so a change of the selection shows as a changed outcome rather than a
-// restatement of the selection's own conditions.
+// restatement of the selection's own conditions. The outcomes near the bar depend on the
+// texture drawn: with the cell seeds of issue 30 (every cell its own), table4_1_a, table4_1_d
+// and monkey_head measure 0.88 %, 0.79 % and 0.90 % on the selection's points and are baked
+// (with the former seeds no tile of theirs came within 0.9 %).
 enum class Outcome {
   kBaked,        // a tile: `linear` and `samples` name which one (the first try that passes)
   kNaiveError,   // every tile long enough misses the 0.9 % bar
@@ -60,14 +63,14 @@ const Expected kExpected[] = {
     {"default.toml", Outcome::kBaked, true, 24},
     {"fields_bodies_demo.toml", Outcome::kBaked, true, 24},  // the default scene's wood and probe
     {"heightfield.toml", Outcome::kBaked, true, 32},
-    {"table4_1_a.toml", Outcome::kNaiveError},
+    {"table4_1_a.toml", Outcome::kBaked, false, 32},
     {"table4_1_b.toml", Outcome::kBaked, true, 24},
     {"table4_1_c.toml", Outcome::kBaked, false, 16},
-    {"table4_1_d.toml", Outcome::kNaiveError},
+    {"table4_1_d.toml", Outcome::kBaked, true, 32},
     {"table4_1_e.toml", Outcome::kNaiveError},
     {"table4_1_f.toml", Outcome::kNaiveError},
     {"table5_1_construction_paper.toml", Outcome::kBaked, true, 24},
-    {"table5_1_monkey_head.toml", Outcome::kNaiveError},
+    {"table5_1_monkey_head.toml", Outcome::kBaked, false, 32},
     {"table5_1_sandpaper.toml", Outcome::kBaked, true, 32},
     // lambda_min 0.1 mm: a 2048-texel tile at 16 samples holds 12.8 mm, the shadow is 16 mm.
     {"table5_1_wood.toml", Outcome::kNaivePeriod},
@@ -118,8 +121,8 @@ void check_material(const std::string& file, const Scene& scene, Material m, con
       EXPECT_FALSE(c.plan.ok) << file << ": expected the naive sum, got a tile of period " << c.plan.period_mm;
       // The reason, on this test's own 2500 points: the tiles long enough are near or over the
       // bar, not far inside it. The selection refused them on estimates > 0.9 % from its 4096
-      // points; estimates scatter by 10-20 % between point sets, and here they measure 0.78 %
-      // (table4_1_d, Hermite 32) to 1.28 %. A tile refused while it measures below 0.6 % would
+      // points; estimates scatter by 10-20 % between point sets, and here they measure 1.23 %
+      // and 1.24 % (table4_1_e, _f: Hermite 16, the only tile long enough). A tile refused while it measures below 0.6 % would
       // be a selection that refuses good tiles.
       double best = 1e30;
       for (const Try t : kTries) {
@@ -186,7 +189,7 @@ TEST(GaborBakedScenesTest, AutoChoosesTheMeasuredTileForEveryShippedMaterial) {
   }
   std::printf("%d of %d textured materials baked\n", baked, textured);
   EXPECT_EQ(textured, static_cast<int>(std::size(kExpected)));
-  EXPECT_EQ(baked, 7);  // docs/benchmarks.md (six scenes, and the fields demo on the default wood)
+  EXPECT_EQ(baked, 10);  // docs/benchmarks.md (nine scenes, and the fields demo on the default wood)
 }
 
 }  // namespace
