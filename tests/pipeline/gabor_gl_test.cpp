@@ -18,41 +18,62 @@ namespace {
 
 class GaborGLTest : public test::GlTest {};
 
-TEST_P(GaborGLTest, TextureAovMatchesCpuReference) {
-  Scene s = test::flat_plane_scene(24.5);  // big probe (r = 25) touching the plane: wide footprint
+// Max |GPU - twin| (sigmas) of the naive texture AOV over every third pixel under a probe of
+// r = 25 mm touching the plane (a wide footprint), and the pixels compared.
+struct TwinError {
+  double max_err = 0.0;
+  int n = 0;
+};
+TwinError naive_vs_twin(double n_min, double n_max) {
+  Scene s = test::flat_plane_scene(24.5);
   s.probe.radius_mm = 25.0;
   Material& m = s.materials[0];
   m.gabor.lambda_min_mm = 0.8;
   m.gabor.lambda_max_mm = 2.0;
   m.gabor.theta_min_rad = 0.0;
   m.gabor.theta_max_rad = 1.0;
-  m.gabor.n_min = 20;
-  m.gabor.n_max = 30;
+  m.gabor.n_min = n_min;
+  m.gabor.n_max = n_max;
   m.onset_distance_mm = 100.0;  // texture everywhere under the probe
   m.gabor.strategy = GaborParams::Strategy::kNaive;  // the naive pass against its twin
   m.gabor.filter = GaborParams::Filter::kNone;       // point-sampled (filtered: gabor_filter_gl_test.cpp)
-  auto r = Renderer::create(s, {});
-  ASSERT_TRUE(r.ok()) << r.error().message;
-  ASSERT_TRUE(r.value()->render_frame().ok());
-  const Image tex = r.value()->read_aov("texture").value();
-  const Image inten = r.value()->read_aov("intensity").value();
+  const std::unique_ptr<Renderer> r = test::render_one_frame(s);
+  if (!r) return {};
+  const Image tex = r->read_aov("texture").value(), inten = r->read_aov("intensity").value();
   const GaborSetup setup = make_gabor_setup(m.gabor);
-  double max_err = 0.0;
-  int n = 0;
+  TwinError out;
   for (int py = 0; py < 128; py += 3)
     for (int px = 0; px < 128; px += 3) {
       if (inten.at(px, py, 0) <= 0.0f) continue;
       const glm::dvec2 w = test::pixel_to_world(s, px, py);
       const double expect = gabor_noise(m.gabor, setup, s.render.seed, w.x, w.y) / setup.sigma_unit;
-      max_err = std::max(max_err, std::abs(tex.at(px, py, 0) - expect));
-      ++n;
+      out.max_err = std::max(out.max_err, std::abs(tex.at(px, py, 0) - expect));
+      ++out.n;
     }
-  EXPECT_GT(n, 1000);
+  return out;
+}
+
+TEST_P(GaborGLTest, TextureAovMatchesCpuReference) {
+  const TwinError e = naive_vs_twin(20, 30);
+  EXPECT_GT(e.n, 1000);
   // Float32 shader vs double reference. The fragment's world position comes from interpolated
   // float vertex positions (~1e-5 mm at 20 mm from the origin), a phase error of
   // 2 pi 1e-5 / 0.8 ~ 1e-4 rad per kernel, over ~30 overlapping kernels of a value normalised
   // by sigma: 5e-3 sigma bounds the sum with margin.
-  EXPECT_LT(max_err, 5e-3) << "max error in sigmas over " << n << " pixels";
+  EXPECT_LT(e.max_err, 5e-3) << "max error in sigmas over " << e.n << " pixels";
+}
+
+TEST_P(GaborGLTest, CappedDensityIsNormalisedLikeTheTwin) {
+  // n = 1000: 318 impulses per cell drawn, 64 kept (the cap). The shader must apply the same
+  // cap and divide by the same sigma_unit (from the uniform block) as the twin, whose variance
+  // over sigma_unit^2 gabor_variance_test measures as 1 at this density: then the GPU's texture
+  // has unit variance too.
+  const TwinError e = naive_vs_twin(1000, 1000);
+  std::printf("n = 1000: max |GPU - twin| %.2e sigma over %d pixels\n", e.max_err, e.n);
+  EXPECT_GT(e.n, 1000);
+  // As above; ~580 kernels instead of ~30, their float phase errors independent: they grow as
+  // the square root of the count, like sigma, so the same bound holds.
+  EXPECT_LT(e.max_err, 5e-3) << "max error in sigmas over " << e.n << " pixels";
 }
 
 // Strategy "baked": the GPU lookup against its CPU twin (the same Hermite interpolation of the
