@@ -152,6 +152,96 @@ vec2 normal_distance(vec3 p, vec3 n, vec2 uv0) {
   return vec2(kFar, 0.0);
 }
 
+// The same distance in closed form for a sphere/capsule probe (u_probe_b.w = 1): the first s >= 0
+// where p + s n enters the probe or the column above its underside, which is what the depth map
+// describes, exactly instead of through the map's texels: through the underside (the ray meets
+// the capsule: s_k) or through the column's side above the silhouette (the ray's trace on the
+// plane enters the probe's outline at a height at or above the axis's height there: s_f). No
+// march: the cost of the reference-plane distance plus one depth-map read for the footprint's
+// coverage. CPU twin: capsule_column_distance() in src/reference/probe_geometry.cpp.
+// Coordinates are plane coordinates (u, v, height) relative to end a.
+float ray_capsule2(vec2 o, vec2 w, vec2 e, float r) {  // s >= 0 entering the outline, else kFar
+  float ww = dot(w, w), ee = dot(e, e), best = kFar;
+  if (ee > 0.0) {
+    float ew = dot(e, w), eo = dot(e, o);
+    float a = ee * ww - ew * ew, b = ee * dot(w, o) - eo * ew, c = ee * dot(o, o) - eo * eo - r * r * ee;
+    float h = b * b - a * c;
+    if (a > 0.0 && h >= 0.0) {
+      float s = (-b - sqrt(h)) / a, y = eo + s * ew;
+      if (s >= 0.0 && y > 0.0 && y < ee) best = s;
+    }
+  }
+  for (int k = 0; k < 2; ++k) {
+    vec2 oc = o - (k == 0 ? vec2(0.0) : e);
+    float b = dot(oc, w), h = b * b - ww * (dot(oc, oc) - r * r);
+    float s = (-b - sqrt(max(h, 0.0))) / ww;
+    if (h >= 0.0 && s >= 0.0) best = min(best, s);
+  }
+  return best;
+}
+float ray_capsule3(vec3 o, vec3 w, vec3 e, float r) {  // w unit; s >= 0 entering the capsule, else kFar
+  float ee = dot(e, e), best = kFar;
+  if (ee > 0.0) {
+    float ew = dot(e, w), eo = dot(e, o);
+    float a = ee - ew * ew, b = ee * dot(w, o) - eo * ew, c = ee * dot(o, o) - eo * eo - r * r * ee;
+    float h = b * b - a * c;
+    if (a > 0.0 && h >= 0.0) {
+      float s = (-b - sqrt(h)) / a, y = eo + s * ew;
+      if (s >= 0.0 && y > 0.0 && y < ee) best = s;
+    }
+  }
+  for (int k = 0; k < 2; ++k) {
+    vec3 oc = o - (k == 0 ? vec3(0.0) : e);
+    float b = dot(oc, w), h = b * b - (dot(oc, oc) - r * r);
+    float s = -b - sqrt(max(h, 0.0));
+    if (h >= 0.0 && s >= 0.0) best = min(best, s);
+  }
+  return best;
+}
+float segment_param2(vec2 x, vec2 e) {
+  float ee = dot(e, e);
+  return ee > 0.0 ? clamp(dot(x, e) / ee, 0.0, 1.0) : 0.0;
+}
+float segment_param3(vec3 x, vec3 e) {
+  float ee = dot(e, e);
+  return ee > 0.0 ? clamp(dot(x, e) / ee, 0.0, 1.0) : 0.0;
+}
+float silhouette_height(vec2 x, vec3 e) {
+  return dot(e.xy, e.xy) > 0.0 ? segment_param2(x, e.xy) * e.z : min(0.0, e.z);
+}
+float capsule_column_distance(vec3 p, vec3 w) {
+  vec3 e = u_probe_b.xyz - u_probe_a.xyz;
+  float r = u_probe_a.w;
+  vec3 near3 = segment_param3(p, e) * e;
+  if (dot(p - near3, p - near3) <= r * r) return 0.0;  // inside the probe
+  vec2 near2 = segment_param2(p.xy, e.xy) * e.xy;
+  bool in_outline = dot(p.xy - near2, p.xy - near2) <= r * r;
+  if (in_outline && p.z >= silhouette_height(p.xy, e)) return 0.0;  // above it
+  float s_f = in_outline ? 0.0 : ray_capsule2(p.xy, w.xy, e.xy, r);
+  if (s_f >= kFar) return kFar;
+  vec3 q = p + s_f * w;
+  if (s_f > 0.0 && q.z >= silhouette_height(q.xy, e)) return s_f;  // through the side
+  return ray_capsule3(p, w, e, r);
+}
+
+// (d mm, coverage) as normal_distance, for u_probe_b.w = 1. The coverage is the depth map's at
+// the point met (the footprint's smoothed edge, as the march reads it).
+vec2 analytic_normal_distance(vec3 p, vec3 n, vec2 uv0) {
+  float h0 = dot(p, u_ref_n.xyz);
+  vec2 hc = probe_height(uv0);
+  float dz = dot(n, u_ref_n.xyz);
+  vec2 dir = vec2(dot(n, u_ref_t.xyz), dot(n, u_ref_b.xyz));
+  // As normal_distance: along the reference normal, the reference-plane distance bit for bit;
+  // inside the probe already, its (negative) reference-plane distance; facing away, no probe.
+  if (dot(dir, dir) < 1e-12) return hc.x >= kFar ? hc : vec2(hc.x - h0, hc.y);
+  if (hc.x < kFar && hc.x - h0 <= 0.0) return vec2(hc.x - h0, hc.y);
+  if (dz <= 0.0) return vec2(kFar, 0.0);
+  float s = capsule_column_distance(vec3(uv0, h0) - u_probe_a.xyz, vec3(dir, dz));
+  if (s > u_intensity.w) return vec2(kFar, 0.0);
+  float coverage = probe_height(uv0 + s * dir).y;
+  return coverage > 0.0 ? vec2(s, coverage) : vec2(kFar, 0.0);
+}
+
 // Cutaway (seed 000 §6.3): a fragment of another sheet than the probe's, within u_cutaway.w of
 // the segment from the eye to the probe and in front of the probe, is not drawn.
 bool cut_away() {
@@ -174,7 +264,11 @@ void main() {
   vec2 uv = vec2(dot(v_world, u_ref_t.xyz), dot(v_world, u_ref_b.xyz));
   vec2 hc;
   if (u_ref_n.w > 0.5) {
-    hc = normal_distance(v_world, n, uv);
+    // The footprint stays within the probe's window on the reference plane in both modes (the
+    // plan's shadow_rect bounds it there): a point beside the window whose normal ray would reach
+    // the probe, on a concave receiver, is no more shadowed than with the reference plane.
+    hc = any(greaterThan(abs(uv - u_window.xy), vec2(u_window.z))) ? vec2(kFar, 0.0)
+         : u_probe_b.w > 0.5 ? analytic_normal_distance(v_world, n, uv) : normal_distance(v_world, n, uv);
   } else {
     hc = probe_height(uv);
   }

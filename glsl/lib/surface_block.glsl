@@ -25,6 +25,9 @@ layout(std140, binding = 0) uniform SurfaceBlock {
                          // y: that sheet's w; z: the band of w around y that is that sheet;
                          // w: crossing diagram, mm nearer the eye per unit of w (0: off)
   vec4 u_cutaway;        // xyz: the probe's centre mm; w: cutaway radius mm (0: off), fourd only
+  vec4 u_probe_a;        // sphere/capsule probe, plane coordinates (u, v, height) mm: end a; w: radius mm
+  vec4 u_probe_b;        // xyz: end b (= a for a sphere); w: 1 = surface_normal distances in closed
+                         // form against this capsule, 0 = marched through the depth map (mesh probe)
   vec4 u_eye;            // xyz: the camera position mm (perspective) or its view direction
                          // (orthographic); w: 1 perspective, 0 orthographic
 };

@@ -11,6 +11,7 @@
 #include <time.h>
 
 #include <algorithm>
+#include <cmath>
 #include <filesystem>
 #include <map>
 #include <memory>
@@ -53,6 +54,32 @@ Status timed_frame(Renderer& r, const Scene& s, std::map<std::string, std::vecto
   return ok_status();
 }
 
+// One renderer in a timed comparison: its scene, and what its frames measured.
+struct Contender {
+  Renderer* renderer = nullptr;
+  const Scene* scene = nullptr;
+  std::map<std::string, std::vector<double>> passes;
+  std::vector<double> frames, cpu;
+};
+
+// Warm-up frames for every contender, then `rounds` rounds of per_round frames each, the
+// contenders taking turns and each round starting with the next one, so that load from other
+// processes hits all of them alike.
+Status alternate(const BenchOptions& o, std::vector<Contender>& cs, int rounds, int per_round) {
+  std::map<std::string, std::vector<double>> warm;
+  std::vector<double> unused, unused_cpu;
+  for (int i = 0; i < std::max(o.warm_frames, 2); ++i)  // shader JIT, caches
+    for (Contender& c : cs)
+      if (Status st = timed_frame(*c.renderer, *c.scene, warm, unused, unused_cpu); !st) return st;
+  const int n = static_cast<int>(cs.size());
+  for (int round = 0; round < rounds; ++round)
+    for (int k = 0; k < n * per_round; ++k) {
+      Contender& c = cs[static_cast<size_t>((k + round) % n)];
+      if (Status st = timed_frame(*c.renderer, *c.scene, c.passes, c.frames, c.cpu); !st) return st;
+    }
+  return ok_status();
+}
+
 }  // namespace
 
 Result<ShadowCost> run_shadow_cost(const BenchOptions& o, int size) {
@@ -71,34 +98,52 @@ Result<ShadowCost> run_shadow_cost(const BenchOptions& o, int size) {
   Renderer& rs = *made.value();
   Renderer& rp = *made_plain.value();
 
-  std::map<std::string, std::vector<double>> shadow_passes, plain_passes, warm;
-  std::vector<double> shadow_frames, plain_frames, shadow_cpu, plain_cpu, unused, unused_cpu;
-  for (int i = 0; i < std::max(o.warm_frames, 2); ++i) {  // shader JIT, caches
-    if (Status st = timed_frame(rs, shadow, warm, unused, unused_cpu); !st) return st.error();
-    if (Status st = timed_frame(rp, plain, warm, unused, unused_cpu); !st) return st.error();
-  }
   // Two frames of ~10 ms that differ by a few ms: pooled over alternated rounds, as the
   // untextured ratio is (a shared 2-core machine moves single frames by 10-30 %).
-  const int rounds = std::max(o.rounds, 7), per_round = std::max(o.timed_frames, 8);
-  for (int round = 0; round < rounds; ++round)
-    for (int k = 0; k < 2 * per_round; ++k) {
-      const bool s = (k % 2 == 0) == (round % 2 == 0);  // alternate, and which goes first
-      Status st = s ? timed_frame(rs, shadow, shadow_passes, shadow_frames, shadow_cpu)
-                    : timed_frame(rp, plain, plain_passes, plain_frames, plain_cpu);
-      if (!st) return st.error();
-    }
+  std::vector<Contender> cs(2);
+  cs[0].renderer = &rs, cs[0].scene = &shadow;
+  cs[1].renderer = &rp, cs[1].scene = &plain;
+  if (Status st = alternate(o, cs, std::max(o.rounds, 7), std::max(o.timed_frames, 8)); !st) return st.error();
   ShadowCost c;
   c.size = size;
-  c.shadow_frame_ms = median_of(shadow_frames);
-  c.plain_frame_ms = median_of(plain_frames);
+  c.shadow_frame_ms = median_of(cs[0].frames);
+  c.plain_frame_ms = median_of(cs[1].frames);
   c.ratio = c.shadow_frame_ms / c.plain_frame_ms;
-  c.cpu_ratio = median_of(shadow_cpu) / median_of(plain_cpu);
+  c.cpu_ratio = median_of(cs[0].cpu) / median_of(cs[1].cpu);
   for (const char* pass : {"probe_depth", "surface", "reductions"})
-    c.shadow_pass_ms.emplace_back(pass, median_of(shadow_passes[pass]));
-  c.plain_surface_ms = median_of(plain_passes["surface"]);
+    c.shadow_pass_ms.emplace_back(pass, median_of(cs[0].passes[pass]));
+  c.plain_surface_ms = median_of(cs[1].passes["surface"]);
   c.shadow_pixels = rs.stats().shadow_pixels;
   return c;
 }
+
+namespace {
+
+// The largest and the mean |a - b| of the distance AOVs where both have a probe above the pixel
+// (NaN: none), and how many such pixels there are.
+struct AovDifference {
+  double max = 0.0, mean = 0.0;
+  long pixels = 0;
+};
+Result<AovDifference> distance_difference(const Renderer& a, const Renderer& b) {
+  auto da = a.read_aov("distance");
+  if (!da) return da.error();
+  auto db = b.read_aov("distance");
+  if (!db) return db.error();
+  AovDifference d;
+  double sum = 0.0;
+  for (size_t i = 0; i < da->pixels.size() && i < db->pixels.size(); ++i) {
+    const float x = da->pixels[i], y = db->pixels[i];
+    if (std::isnan(x) || std::isnan(y)) continue;
+    d.max = std::max(d.max, std::abs(static_cast<double>(x) - y));
+    sum += std::abs(static_cast<double>(x) - y);
+    ++d.pixels;
+  }
+  d.mean = d.pixels > 0 ? sum / static_cast<double>(d.pixels) : 0.0;
+  return d;
+}
+
+}  // namespace
 
 Result<DistanceCost> run_distance_cost(const BenchOptions& o, const std::string& scene_path, int size) {
   auto parsed = load_scene(scene_path, {"render.size=[" + std::to_string(size) + "," + std::to_string(size) + "]"});
@@ -113,29 +158,35 @@ Result<DistanceCost> run_distance_cost(const BenchOptions& o, const std::string&
   share.reuse_tiles_from = made_plane.value().get();
   auto made_normal = Renderer::create(normal, share);
   if (!made_normal) return made_normal.error();
-  std::map<std::string, std::vector<double>> plane_passes, normal_passes, warm;
-  std::vector<double> plane_frames, normal_frames, cpu, unused;
-  for (int i = 0; i < std::max(o.warm_frames, 2); ++i) {
-    if (Status st = timed_frame(*made_plane.value(), plane, warm, unused, cpu); !st) return st.error();
-    if (Status st = timed_frame(*made_normal.value(), normal, warm, unused, cpu); !st) return st.error();
-  }
-  const int rounds = std::max(o.rounds, 5), per_round = std::max(o.timed_frames, 4);
-  for (int round = 0; round < rounds; ++round)
-    for (int k = 0; k < 2 * per_round; ++k) {
-      const bool first = (k % 2 == 0) == (round % 2 == 0);
-      Status st = first ? timed_frame(*made_plane.value(), plane, plane_passes, plane_frames, cpu)
-                        : timed_frame(*made_normal.value(), normal, normal_passes, normal_frames, cpu);
-      if (!st) return st.error();
-    }
+  share.closed_form_normal_distance = false;  // the depth-map march (a mesh probe's way)
+  auto made_marched = Renderer::create(normal, share);
+  if (!made_marched) return made_marched.error();
+  std::vector<Contender> cs(3);
+  cs[0].renderer = made_plane.value().get(), cs[0].scene = &plane;
+  cs[1].renderer = made_normal.value().get(), cs[1].scene = &normal;
+  cs[2].renderer = made_marched.value().get(), cs[2].scene = &normal;
+  if (Status st = alternate(o, cs, std::max(o.rounds, 5), std::max(o.timed_frames, 4)); !st) return st.error();
   DistanceCost c;
   c.scene = std::filesystem::path(scene_path).stem().string();
   c.size = size;
-  c.plane_frame_ms = median_of(plane_frames);
-  c.normal_frame_ms = median_of(normal_frames);
+  c.plane_frame_ms = median_of(cs[0].frames);
+  c.normal_frame_ms = median_of(cs[1].frames);
+  c.marched_frame_ms = median_of(cs[2].frames);
   c.ratio = c.normal_frame_ms / c.plane_frame_ms;
-  c.plane_surface_ms = median_of(plane_passes["surface"]);
-  c.normal_surface_ms = median_of(normal_passes["surface"]);
+  c.marched_ratio = c.marched_frame_ms / c.plane_frame_ms;
+  c.plane_surface_ms = median_of(cs[0].passes["surface"]);
+  c.normal_surface_ms = median_of(cs[1].passes["surface"]);
   c.surface_ratio = c.normal_surface_ms / c.plane_surface_ms;
+  // The last frame of each drew the same probe position (timed_frame puts it back).
+  auto plane_off = distance_difference(*cs[0].renderer, *cs[1].renderer);
+  if (!plane_off) return plane_off.error();
+  auto march_off = distance_difference(*cs[2].renderer, *cs[1].renderer);
+  if (!march_off) return march_off.error();
+  c.plane_vs_normal_max_mm = plane_off->max;
+  c.plane_vs_normal_mean_mm = plane_off->mean;
+  c.marched_vs_normal_max_mm = march_off->max;
+  c.marched_vs_normal_mean_mm = march_off->mean;
+  c.compared_pixels = march_off->pixels;
   return c;
 }
 
@@ -152,27 +203,17 @@ Result<LutCost> run_lut_cost(const BenchOptions& o, const std::string& table, in
   share.reuse_tiles_from = made_formula.value().get();
   auto made_lut = Renderer::create(lut.value(), share);
   if (!made_lut) return made_lut.error();
-  std::map<std::string, std::vector<double>> formula_passes, lut_passes, warm;
-  std::vector<double> formula_frames, lut_frames, cpu, unused;
-  for (int i = 0; i < std::max(o.warm_frames, 2); ++i) {
-    if (Status st = timed_frame(*made_formula.value(), formula.value(), warm, unused, cpu); !st) return st.error();
-    if (Status st = timed_frame(*made_lut.value(), lut.value(), warm, unused, cpu); !st) return st.error();
-  }
-  const int rounds = std::max(o.rounds, 7), per_round = std::max(o.timed_frames, 8);
-  for (int round = 0; round < rounds; ++round)
-    for (int k = 0; k < 2 * per_round; ++k) {
-      const bool first = (k % 2 == 0) == (round % 2 == 0);
-      Status st = first ? timed_frame(*made_formula.value(), formula.value(), formula_passes, formula_frames, cpu)
-                        : timed_frame(*made_lut.value(), lut.value(), lut_passes, lut_frames, cpu);
-      if (!st) return st.error();
-    }
+  std::vector<Contender> cs(2);
+  cs[0].renderer = made_formula.value().get(), cs[0].scene = &formula.value();
+  cs[1].renderer = made_lut.value().get(), cs[1].scene = &lut.value();
+  if (Status st = alternate(o, cs, std::max(o.rounds, 7), std::max(o.timed_frames, 8)); !st) return st.error();
   LutCost c;
   c.size = size;
-  c.formula_frame_ms = median_of(formula_frames);
-  c.lut_frame_ms = median_of(lut_frames);
+  c.formula_frame_ms = median_of(cs[0].frames);
+  c.lut_frame_ms = median_of(cs[1].frames);
   c.ratio = c.lut_frame_ms / c.formula_frame_ms;
-  c.formula_surface_ms = median_of(formula_passes["surface"]);
-  c.lut_surface_ms = median_of(lut_passes["surface"]);
+  c.formula_surface_ms = median_of(cs[0].passes["surface"]);
+  c.lut_surface_ms = median_of(cs[1].passes["surface"]);
   c.surface_ratio = c.lut_surface_ms / c.formula_surface_ms;
   return c;
 }

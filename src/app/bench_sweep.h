@@ -80,6 +80,15 @@ struct DistanceCost {
   int size = 0;
   double plane_frame_ms = 0.0, normal_frame_ms = 0.0, ratio = 0.0;        // medians; ratio of them
   double plane_surface_ms = 0.0, normal_surface_ms = 0.0, surface_ratio = 0.0;
+  // surface_normal marched through the depth map (RendererOptions::closed_form_normal_distance
+  // false: the mesh probe's way and the sphere's and capsule's before the closed form).
+  double marched_frame_ms = 0.0, marched_ratio = 0.0;
+  // The distance AOVs against surface_normal's closed form, over the pixels where both have a
+  // probe above them (mm): how far the thesis's single plane is off on this scene, and the
+  // march's error.
+  double plane_vs_normal_max_mm = 0.0, plane_vs_normal_mean_mm = 0.0;
+  double marched_vs_normal_max_mm = 0.0, marched_vs_normal_mean_mm = 0.0;
+  long compared_pixels = 0;
 };
 Result<DistanceCost> run_distance_cost(const BenchOptions& o, const std::string& scene_path, int size);
 

@@ -36,6 +36,11 @@ SurfaceBlock make_surface_block(const SurfaceFrame& fr, const Material& m, const
   const size_t n = std::min(bodies.size(), static_cast<size_t>(kMaxSceneBodies));
   for (size_t i = 0; i < n; ++i) b.body_spheres[i] = v4(bodies[i].centre, bodies[i].radius_mm);
   b.body_count = glm::uvec4(static_cast<unsigned>(n), 0u, 0u, 0u);
+  if (fr.probe_capsule) {
+    const CapsuleShape& c = *fr.probe_capsule;
+    b.probe_a = v4(to_plane(fr.plane, c.a), c.radius);
+    b.probe_b = v4(to_plane(fr.plane, c.b), 1.0);
+  }
   return b;
 }
 

@@ -21,6 +21,7 @@
 
 #include <limits>
 #include <map>
+#include <optional>
 #include <span>
 #include <tuple>
 #include <string>
@@ -37,6 +38,7 @@
 #include "reference/basis.h"
 #include "reference/body_shadow.h"
 #include "reference/gabor.h"
+#include "reference/probe_geometry.h"
 #include "scene/scene.h"
 
 namespace ps {
@@ -56,9 +58,13 @@ struct SurfaceBlock {
   // centre, w the radius (0: off); eye: xyz the camera position (perspective, w = 1) or its
   // view direction (orthographic, w = 0).
   glm::vec4 cutaway{0.0f};
+  // The sphere/capsule probe in plane coordinates (u, v, height along ref_n) mm: end a with the
+  // radius in w; end b with w = 1 when surface_normal distances are taken in closed form against
+  // it (0: marched through the probe depth map, a mesh probe).
+  glm::vec4 probe_a{0.0f}, probe_b{0.0f};
   glm::vec4 eye{0.0f};
 };
-static_assert(sizeof(SurfaceBlock) == 64 + 10 * 16 + sizeof(GaborBlock) + (kMaxSceneBodies + 4) * 16,
+static_assert(sizeof(SurfaceBlock) == 64 + 10 * 16 + sizeof(GaborBlock) + (kMaxSceneBodies + 6) * 16,
               "SurfaceBlock must match std140 layout");
 
 // The distance AOV's value (aov().y) wherever no probe is above the pixel: outside the probe's
@@ -81,6 +87,10 @@ struct SurfaceFrame {
   // The probe's heights along the reference normal lie within [lo, hi] (its bounding sphere):
   // where a surface_normal ray may start and by when it must have met the probe.
   double probe_height_lo_mm = 0.0, probe_height_hi_mm = 0.0;
+  // A sphere/capsule probe (world mm): surface_normal distances in closed form against it
+  // (capsule_column_distance); unset for a mesh probe, whose distances are marched through the
+  // depth map.
+  std::optional<CapsuleShape> probe_capsule;
 };
 
 // `gabor`: the material's texture as make_gabor_block() packed it (with its baked tile, if any).

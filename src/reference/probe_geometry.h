@@ -23,6 +23,16 @@ CapsuleShape capsule_of(const Probe& probe);
 // first hit of the ray (u, v, -inf) -> +n; kNoProbe where the ray misses.
 double capsule_lowest_height(const CapsuleShape& c, const PlaneFrame& f, double u, double v);
 
+// Distance along a ray to a sphere/capsule probe "with the column above its underside": the
+// first s >= 0 where o + s d enters the set of points at or above the capsule along the
+// reference normal f.n (the solid the probe depth map describes as a height field; thesis
+// §4.3.1's depth map, read along the surface's own normal: render.shadow_distance =
+// "surface_normal"). o: world point mm, d: unit direction. CPU twin of
+// analytic_normal_distance() in glsl/surface.frag; kNoProbe where the ray misses. A ray that
+// starts inside that set returns 0.
+double capsule_column_distance(const CapsuleShape& c, const PlaneFrame& f, const glm::dvec3& o,
+                               const glm::dvec3& d);
+
 // Bounding sphere of the probe in world space (mesh probes: pass the mesh's AABB).
 struct BoundingSphere {
   glm::dvec3 center{0.0};

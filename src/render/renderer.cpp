@@ -435,6 +435,8 @@ std::vector<SurfaceDraw> Renderer::surface_draws(const FramePlan& plan) {
   const BoundingSphere probe = current_probe_bounds();
   fr.probe_height_lo_mm = glm::dot(probe.center, frame_.n) - probe.radius;
   fr.probe_height_hi_mm = glm::dot(probe.center, frame_.n) + probe.radius;
+  if (scene_.probe.shape != ProbeShape::kMesh && options_.closed_form_normal_distance)
+    fr.probe_capsule = capsule_of(scene_.probe);
   const std::vector<SphereCaster> bodies = body_casters();
   std::vector<SurfaceDraw> draws;
   bool gain_recorded = false;

@@ -81,6 +81,10 @@ struct RendererOptions {
   // renderer that expects fewer than kFilterLodMinFrames frames (expected_frames: a render, a
   // golden, a tune cell, a replay) never switches. false: always filtered.
   bool filter_lod = true;
+  // render.shadow_distance = "surface_normal" with a sphere or capsule probe: each point's
+  // distance in closed form against the probe's shape (capsule_column_distance). false: marched
+  // through the probe depth map as for a mesh probe; bench --shadow-distance compares the two.
+  bool closed_form_normal_distance = true;
 };
 
 // The filter's need (glsl/lib/gabor.glsl gabor_filter_need: the exponent of its attenuation of

@@ -183,7 +183,7 @@ struct RenderSettings {
   glm::dvec3 background{0.18, 0.19, 0.22};
   DisplacementMethod displacement = DisplacementMethod::kWeightedAverage;
   double weight_exponent = 20.0;    // c in weight = (1 - d)^c (thesis §4.5.4)
-  ShadowDistance shadow_distance = ShadowDistance::kReferencePlane;
+  ShadowDistance shadow_distance = ShadowDistance::kSurfaceNormal;
   std::uint32_t seed = 1;           // Gabor impulse seed
 };
 

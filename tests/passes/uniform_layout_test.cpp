@@ -102,6 +102,8 @@ TEST(UniformLayoutTest, SurfaceBlockMatches) {
   EXPECT_MEMBER(o, "u_body_count", SurfaceBlock, body_count);
   EXPECT_MEMBER(o, "u_sheet", SurfaceBlock, sheet);
   EXPECT_MEMBER(o, "u_cutaway", SurfaceBlock, cutaway);
+  EXPECT_MEMBER(o, "u_probe_a", SurfaceBlock, probe_a);
+  EXPECT_MEMBER(o, "u_probe_b", SurfaceBlock, probe_b);
   EXPECT_MEMBER(o, "u_eye", SurfaceBlock, eye);
 }
 
