@@ -209,6 +209,21 @@ float segment_param3(vec3 x, vec3 e) {
 float silhouette_height(vec2 x, vec3 e) {
   return dot(e.xy, e.xy) > 0.0 ? segment_param2(x, e.xy) * e.z : min(0.0, e.z);
 }
+// The least distance between the half-line o + s w (s >= 0) and the segment 0 -> e on the plane.
+float cross2(vec2 a, vec2 b) { return a.x * b.y - a.y * b.x; }
+float point_to_half_line(vec2 x, vec2 o, vec2 w) {
+  return length(x - (o + max(dot(x - o, w) / dot(w, w), 0.0) * w));
+}
+float half_line_to_segment(vec2 o, vec2 w, vec2 e) {
+  float den = cross2(w, e);
+  if (den != 0.0) {
+    float s = cross2(-o, e) / den, t = cross2(o, w) / -den;
+    if (s >= 0.0 && t >= 0.0 && t <= 1.0) return 0.0;  // they cross
+  }
+  float d = min(point_to_half_line(vec2(0.0), o, w), point_to_half_line(e, o, w));
+  return min(d, length(o - segment_param2(o, e) * e));
+}
+
 float capsule_column_distance(vec3 p, vec3 w) {
   vec3 e = u_probe_b.xyz - u_probe_a.xyz;
   float r = u_probe_a.w;
@@ -224,8 +239,14 @@ float capsule_column_distance(vec3 p, vec3 w) {
   return ray_capsule3(p, w, e, r);
 }
 
-// (d mm, coverage) as normal_distance, for u_probe_b.w = 1. The coverage is the depth map's at
-// the point met (the footprint's smoothed edge, as the march reads it).
+// (d mm, coverage) as normal_distance, for u_probe_b.w = 1. A ray meets the column exactly when
+// its trace on the plane reaches into the probe's outline (entering it below the silhouette it
+// meets the probe, above it the column's side), so the edge of the shadowed points is where the
+// trace only grazes the outline. The coverage is how deep the trace reaches into the outline,
+// in depth-map texels: that edge smoothed over a texel, as the depth map's coverage smooths the
+// reference-plane footprint's (for a ray along the reference normal it is the same edge, one
+// texel inside the outline). The depth map's own coverage at the point met steps with its
+// texels along the outline, and streaked the region met through the side on torus_capsule.
 vec2 analytic_normal_distance(vec3 p, vec3 n, vec2 uv0) {
   float h0 = dot(p, u_ref_n.xyz);
   vec2 hc = probe_height(uv0);
@@ -236,9 +257,12 @@ vec2 analytic_normal_distance(vec3 p, vec3 n, vec2 uv0) {
   if (dot(dir, dir) < 1e-12) return hc.x >= kFar ? hc : vec2(hc.x - h0, hc.y);
   if (hc.x < kFar && hc.x - h0 <= 0.0) return vec2(hc.x - h0, hc.y);
   if (dz <= 0.0) return vec2(kFar, 0.0);
-  float s = capsule_column_distance(vec3(uv0, h0) - u_probe_a.xyz, vec3(dir, dz));
+  vec3 p0 = vec3(uv0, h0) - u_probe_a.xyz;
+  float s = capsule_column_distance(p0, vec3(dir, dz));
   if (s > u_intensity.w) return vec2(kFar, 0.0);
-  float coverage = probe_height(uv0 + s * dir).y;
+  float texel = 2.0 * u_window.z / u_window.w;
+  float depth = u_probe_a.w - half_line_to_segment(p0.xy, dir, u_probe_b.xy - u_probe_a.xy);
+  float coverage = clamp(depth / texel, 0.0, 1.0);
   return coverage > 0.0 ? vec2(s, coverage) : vec2(kFar, 0.0);
 }
 
