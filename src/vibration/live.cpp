@@ -129,6 +129,8 @@ void LiveVibration::run() {
     feed_.drain([this](const TickSample& s) {
       const std::size_t before = pending_.size();
       synth_.add_tick(s, pending_);
+      // Only a tick with a sample of its own is measured: after a stall the loop runs the missed
+      // ticks back to back at one clock time, and they share the sample of the first.
       if (pending_.size() > before) ticks_.push_back({pending_start_ + pending_.size() - 1, s.clock_ns});
       ++ticks_seen_;
     });
@@ -148,7 +150,7 @@ std::string LiveVibration::summary() const {
   out += buf;
   if (sound_) {
     std::snprintf(buf, sizeof buf,
-                  "; latency tick -> sample out of OpenAL ms p50 %.1f p99 %.1f max %.1f (%zu ticks); "
+                  "; latency tick -> sample out of OpenAL ms p50 %.1f p99 %.1f max %.1f (%zu ticks measured); "
                   "then the device's buffer (OpenAL's figure) ms p50 %.1f; chunks dropped %llu, underruns %llu",
                   l.p50, l.p99, l.max, l.count, device_latency_ms().p50,
                   static_cast<unsigned long long>(sound_->dropped()),

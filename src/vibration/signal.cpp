@@ -93,12 +93,19 @@ void SignalSynth::add_tick(const TickSample& s, std::vector<float>& out) {
   start_transients(s, tex, target);
   double amp = 0.0, u0 = 0.0, v0 = 0.0, u1 = 0.0, v1 = 0.0;
   double from = 0.0;  // sample position of the previous tick
+  const glm::dvec3 last_point = segment ? point_ : s.proxy_mm;
+  point_ = s.proxy_mm;  // a new path starts at the contact point
   if (segment) {
     const PlaneFrame frame = make_plane_frame(s.normal);
-    const glm::dvec3 velocity = (s.proxy_mm - prev_.proxy_mm) / (s.time_s - prev_.time_s);
-    amp = model_->amplitude(*tex, frame, s.normal_force_n, velocity);
-    u0 = glm::dot(prev_.proxy_mm, frame.t), v0 = glm::dot(prev_.proxy_mm, frame.b);
-    u1 = glm::dot(s.proxy_mm, frame.t), v1 = glm::dot(s.proxy_mm, frame.b);
+    const double dt = s.time_s - prev_.time_s;
+    const glm::dvec3 along = s.velocity_mm_s - glm::dot(s.velocity_mm_s, frame.n) * frame.n;
+    const glm::dvec3 predicted = last_point + along * dt;
+    const double pull = std::min(1.0, dt / std::max(model_->params().follow_s, 1e-9));
+    const glm::dvec3 off = predicted + pull * (s.proxy_mm - predicted) - s.proxy_mm;
+    point_ = s.proxy_mm + off - glm::dot(off, frame.n) * frame.n;  // kept on the surface's plane
+    amp = model_->amplitude(*tex, frame, s.normal_force_n, along);
+    u0 = glm::dot(last_point, frame.t), v0 = glm::dot(last_point, frame.b);
+    u1 = glm::dot(point_, frame.t), v1 = glm::dot(point_, frame.b);
     from = static_cast<double>(std::llround(prev_.time_s * rate));
   }
   const double a0 = segment ? prev_amp_ : 0.0;

@@ -4,15 +4,19 @@
 // scene: the same ticks give the same samples, bit for bit. No GL; it never waits for a frame.
 //
 // The model (units: mm, mm/s, N, Hz; samples in full scale [-1, 1]):
-//   between two ticks in contact with the same textured surface, the contact point moves on a
-//   straight line; the material's Gabor noise (reference/gabor.h, the renderer's texture: plane
-//   coordinates (u, v) of the contact point in the frame of the contact normal, the seed of the
-//   scene) is evaluated at every audio sample's sub-tick position on that line, so a stroke at
-//   speed v across a texture of wavelength lambda at angle phi to its stripes' normal gives a
-//   peak at v |cos phi| / lambda, with no aliasing from the 1 kHz tick rate;
+//   the texture point follows the contact point: each tick it moves with the hand's velocity
+//   along the surface and is pulled toward the contact point with a time constant of
+//   follow_s (the proxy slides in stick-slip steps of the friction model, ~0.2 mm every few
+//   ticks, which would chop the texture into bursts at the break-away rate; the hand's velocity
+//   is smooth, and the pull keeps the point where the proxy is); between two ticks in contact
+//   with the same textured surface it moves on a straight line, and the material's Gabor noise
+//   (reference/gabor.h, the renderer's texture: plane coordinates (u, v) in the frame of the
+//   contact normal, the scene's seed) is evaluated at every audio sample's sub-tick position on
+//   that line, so a stroke at speed v across a texture of wavelength lambda at angle phi to its
+//   stripes' normal gives a peak at v |cos phi| / lambda, with no aliasing from the tick rate;
 //   x = clamp(noise / (clip_sigmas sigma), -1, 1)                    (sigma: the noise's std-dev)
 //   amplitude = vibration_gain * texture_peak * (1 - exp(-F / force_ref_n))   (F: normal force)
-//             * speed_gain(material, v)      (the renderer's speed modulation, at the path speed)
+//             * speed_gain(material, v)      (the renderer's speed modulation, at the hand's speed)
 //             * v^2 / (v^2 + rest_speed^2)   (silence at rest: exactly 0 when the point stands)
 //   interpolated linearly between ticks (no zipper noise). Out of contact, on an untextured
 //   surface or at vibration_gain = 0: 0.
@@ -37,7 +41,8 @@ struct SignalParams {
   double texture_peak = 0.8;        // texture amplitude at gain 1, full force and speed gain 1
   double clip_sigmas = 3.0;         // the noise's +-3 sigma maps to +-1
   double force_ref_n = 1.0;         // 63 % of the full amplitude at this normal force
-  double rest_speed_mm_s = 2.0;     // half the amplitude at this path speed, 0 at rest
+  double rest_speed_mm_s = 2.0;     // half the amplitude at this speed along the surface, 0 at rest
+  double follow_s = 0.02;           // the texture point's pull toward the contact point
   // Contact start: peak impact_max (1 - exp(-v / impact_ref)), a sine at impact_hz decaying
   // with impact_decay_s, cut after impact_length_s.
   double impact_max = 0.6, impact_ref_mm_s = 60.0, impact_hz = 250.0;
@@ -97,6 +102,7 @@ class SignalSynth {
   bool have_prev_ = false;
   TickSample prev_;
   double prev_amp_ = 0.0;
+  glm::dvec3 point_{0.0};  // the texture point at the previous tick (on its surface)
   std::uint64_t next_sample_ = 0;
   std::vector<Transient> transients_;  // few at once; finished ones are dropped
 };

@@ -1,6 +1,7 @@
 # `replay --vibration` twice on the scripted stroke: both exit 0, both WAVs are byte-identical,
 # and the WAV is as long as the replay (1.6 s at 48 kHz, 16-bit mono: 76801 samples, 153602
 # bytes of data after libsndfile's 44-byte header).
+file(MAKE_DIRECTORY ${OUT})
 foreach(run a b)
   execute_process(COMMAND ${PS} replay --log trajectory:${LOG} --out ${OUT}/${run} --fps 5
                           --set render.size=[64,64] --vibration ${OUT}/${run}/vibration.wav -q

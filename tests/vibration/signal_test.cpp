@@ -63,6 +63,25 @@ INSTANTIATE_TEST_SUITE_P(
                       StrokeCase{200.0, 1.0, 0.0, 45.0},   // at 45 degrees to the stripes' normal, 141 Hz
                       StrokeCase{240.0, 0.8, 20.0, 80.0})); // at 60 degrees, 150 Hz
 
+// The proxy of the haptic loop slides in stick-slip steps (the friction model breaks away every
+// few ticks: here 0.6 mm every 6 ticks, a 167 Hz step rate) while the hand moves smoothly at
+// 100 mm/s: the texture still peaks at v / lambda = 200 Hz, within the same 2 %.
+TEST(VibrationSignal, StickSlipProxyStillPeaksAtSpeedOverLambda) {
+  const Scene scene = test::texture_scene(0.5, 0.0);
+  const std::size_t n = 8192;
+  std::vector<double> psd(n / 2 + 1, 0.0);
+  for (int line = 0; line < 3; ++line) {
+    auto ticks = test::script({{0.05, 0.0, 0.0}, {2.0, 100.0, 0.0}}, glm::dvec3(3.1, -2.7 + 40.0 * line, 0.0));
+    for (std::size_t k = 50; k < ticks.size(); ++k)  // held for 5 ticks, then a jump to the hand
+      ticks[k].proxy_mm = ticks[50 + (k - 50) / 6 * 6].proxy_mm;
+    const auto one = test::welch(synthesize(scene, ticks), 48 * 100, 48 * 2050, n);
+    for (std::size_t k = 0; k < psd.size(); ++k) psd[k] += one[k];
+  }
+  const double peak = test::spectral_peak_hz(psd, 48000.0 / static_cast<double>(n));
+  std::printf("stick-slip proxy, hand at 100 mm/s, lambda 0.5 mm: peak %.2f Hz (v / lambda 200 Hz)\n", peak);
+  EXPECT_NEAR(peak, 200.0, 0.02 * 200.0);
+}
+
 // Along the stripes (|cos| = 0) the peak sits at 0 Hz: the spectrum's centroid stays far below
 // the across-stroke's peak (a Gaussian around 0 of std v / (2 pi kp lambda): mean |f| = 0.064
 // v / lambda at kernel_periods 2; bound 0.25 v / lambda leaves room for the randomness).
