@@ -58,6 +58,7 @@ std::unique_ptr<LiveVibration> LiveVibration::open(const LiveDesc& desc, const S
 LiveVibration::~LiveVibration() { close(); }
 
 void LiveVibration::set_scene(const Scene& scene) {
+  if (!active()) return;  // nothing plays it
   auto model = std::make_shared<const SignalModel>(scene, desc_.signal);  // built here, not on our thread
   std::lock_guard<std::mutex> lock(scene_mutex_);
   pending_scene_ = std::move(model);

@@ -91,31 +91,15 @@ void SignalSynth::add_tick(const TickSample& s, std::vector<float>& out) {
   const bool segment = have_prev_ && s.tick == prev_.tick + 1 && tex != nullptr && prev_.in_contact &&
                        prev_.surface == s.surface && s.time_s > prev_.time_s;
   start_transients(s, tex, target);
-  double amp = 0.0, u0 = 0.0, v0 = 0.0, u1 = 0.0, v1 = 0.0;
-  double from = 0.0;  // sample position of the previous tick
-  const glm::dvec3 last_point = segment ? point_ : s.proxy_mm;
-  point_ = s.proxy_mm;  // a new path starts at the contact point
-  if (segment) {
-    const PlaneFrame frame = make_plane_frame(s.normal);
-    const double dt = s.time_s - prev_.time_s;
-    const glm::dvec3 along = s.velocity_mm_s - glm::dot(s.velocity_mm_s, frame.n) * frame.n;
-    const glm::dvec3 predicted = last_point + along * dt;
-    const double pull = std::min(1.0, dt / std::max(model_->params().follow_s, 1e-9));
-    const glm::dvec3 off = predicted + pull * (s.proxy_mm - predicted) - s.proxy_mm;
-    point_ = s.proxy_mm + off - glm::dot(off, frame.n) * frame.n;  // kept on the surface's plane
-    amp = model_->amplitude(*tex, frame, s.normal_force_n, along);
-    u0 = glm::dot(last_point, frame.t), v0 = glm::dot(last_point, frame.b);
-    u1 = glm::dot(point_, frame.t), v1 = glm::dot(point_, frame.b);
-    from = static_cast<double>(std::llround(prev_.time_s * rate));
-  }
-  const double a0 = segment ? prev_amp_ : 0.0;
-  const double span = static_cast<double>(target) - from;
+  const Segment g = segment ? follow(s, *tex) : Segment{};
+  if (!segment) point_ = s.proxy_mm;  // a new path starts at the contact point
+  const double span = static_cast<double>(target) - g.from;
   for (std::uint64_t i = next_sample_; i <= target; ++i) {
     double x = 0.0;
-    if (segment && (a0 > 0.0 || amp > 0.0) && span > 0.0) {
-      const double a = std::clamp((static_cast<double>(i) - from) / span, 0.0, 1.0);
-      const double level = a0 + (amp - a0) * a;
-      x = level * model_->texture_value(*tex, u0 + a * (u1 - u0), v0 + a * (v1 - v0));
+    if (segment && (g.amp0 > 0.0 || g.amp1 > 0.0) && span > 0.0) {
+      const double a = std::clamp((static_cast<double>(i) - g.from) / span, 0.0, 1.0);
+      const double level = g.amp0 + (g.amp1 - g.amp0) * a;
+      x = level * model_->texture_value(*tex, g.u0 + a * (g.u1 - g.u0), g.v0 + a * (g.v1 - g.v0));
     }
     x += transient_sum(i);
     out.push_back(static_cast<float>(x));
@@ -123,8 +107,28 @@ void SignalSynth::add_tick(const TickSample& s, std::vector<float>& out) {
   next_sample_ = target + 1;
   std::erase_if(transients_, [this](const Transient& t) { return t.start + t.length <= next_sample_; });
   prev_ = s;
-  prev_amp_ = amp;
+  prev_amp_ = g.amp1;
   have_prev_ = true;
+}
+
+// The texture point's step from the previous tick to this one (see the header), and the
+// amplitude at its ends.
+SignalSynth::Segment SignalSynth::follow(const TickSample& s, const SurfaceTexture& tex) {
+  const double rate = model_->params().sample_rate_hz;
+  const PlaneFrame frame = make_plane_frame(s.normal);
+  const double dt = s.time_s - prev_.time_s;
+  const glm::dvec3 along = s.velocity_mm_s - glm::dot(s.velocity_mm_s, frame.n) * frame.n;
+  const glm::dvec3 last = point_, predicted = point_ + along * dt;
+  const double pull = std::min(1.0, dt / std::max(model_->params().follow_s, 1e-9));
+  const glm::dvec3 off = predicted + pull * (s.proxy_mm - predicted) - s.proxy_mm;
+  point_ = s.proxy_mm + off - glm::dot(off, frame.n) * frame.n;  // kept on the surface's plane
+  Segment g;
+  g.amp0 = prev_amp_;
+  g.amp1 = model_->amplitude(tex, frame, s.normal_force_n, along);
+  g.u0 = glm::dot(last, frame.t), g.v0 = glm::dot(last, frame.b);
+  g.u1 = glm::dot(point_, frame.t), g.v1 = glm::dot(point_, frame.b);
+  g.from = static_cast<double>(std::llround(prev_.time_s * rate));
+  return g;
 }
 
 }  // namespace ps::vibration

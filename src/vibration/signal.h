@@ -96,6 +96,12 @@ class SignalSynth {
     double peak = 0.0, hz = 0.0, decay_s = 1.0;
     std::uint64_t start = 0, length = 0;  // first sample, samples
   };
+  struct Segment {
+    double amp0 = 0.0, amp1 = 0.0;            // amplitude at the previous tick and at this one
+    double u0 = 0.0, v0 = 0.0, u1 = 0.0, v1 = 0.0;  // the texture point's (u, v) there, mm
+    double from = 0.0;                        // sample position of the previous tick
+  };
+  Segment follow(const TickSample& s, const SurfaceTexture& tex);
   void start_transients(const TickSample& s, const SurfaceTexture* tex, std::uint64_t at);
   double transient_sum(std::uint64_t index);
   std::shared_ptr<const SignalModel> model_;
