@@ -415,7 +415,7 @@ void HapticLoop::tick(Clock::Ns now) {
                          : glm::length(local_.velocity_mm_s);
       if (!f.in_contact) e.value = 0.0;
       events_.push(e);
-      // A contact starting with no measurable approach still gets a (faint) transient.
+      // Marks the start even with no measurable approach speed (its transient is then ~0).
       if (f.in_contact) feed_sample_.impact_mm_s = std::max(e.value, 1e-6);
     }
     local_.contact_surface = f.surface;
