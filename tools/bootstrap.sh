@@ -13,7 +13,7 @@ readonly kPackages=(
   libgtest-dev libgmock-dev libbenchmark-dev
   libassimp-dev assimp-testmodels libembree-dev libimgui-dev libtomlplusplus-dev nlohmann-json3-dev
   libcli11-dev gnuplot-nox xvfb xauth clang libclang-rt-14-dev ccache dpkg-dev file
-  libopenal-dev libsndfile1-dev pybind11-dev python3-dev python3-numpy python3-pytest
+  libopenal-dev libsndfile1-dev libsdl2-dev pybind11-dev python3-dev python3-numpy python3-pytest
   python3-matplotlib parallel
 )
 

@@ -70,12 +70,14 @@ constexpr const char* kDescription =
     "Runs the 1 kHz haptic loop (synthetic device: a 30 mm circle around the probe's position, 1\n"
     "turn/s; the proxy collides with the scene's haptic geometry) while the renderer draws the scene\n"
     "flat out, and prints the loop rate, the period percentiles\n"
-    "(p50/p99/p99.9/max), the jitter |period - 1 ms| and the latency device sample -> frame done.";
+    "(p50/p99/p99.9/max), the jitter |period - 1 ms| and the latency device sample -> frame done.\n"
+    "With --vibration-out the vibrotactile texture runs too, and its latency is reported.";
 
 struct BenchArgs {
   cli::SceneArgs scene;
   gl::Backend backend = gl::Backend::kAuto;
   double seconds = 5.0;
+  double circle_z_mm = std::nan("");  // NaN: the scene probe's height
   int realtime = 0;
   int timer_slack_ns = -1;  // -1: the loop's default
   int wake_spin_us = -1;
@@ -97,6 +99,10 @@ void declare(cli::Command& cmd, BenchArgs& a) {
                "poll the clock for the last US microseconds before each tick (default 50)");
   cli::add_int(app, "--slice-us", "US", a.slice_us, 0, 100'000,
                "ask the scheduler for a US-microsecond slice for the haptic thread (0 = the kernel's; default 100)");
+  app.add_option("--circle-z", a.circle_z_mm,
+                 "height of the device's circle, mm (default: the scene probe's; below the probe radius over "
+                 "a plane at z = 0 the probe strokes it: with --vibration-out, the texture's signal)")
+      ->type_name("MM");
   cli::add_live_loop_options(app, a.live);
 }
 
@@ -109,7 +115,9 @@ int bench(const cli::Command& cmd, const BenchArgs& a) {
   if (!ctx) return cmd.fail(ctx.error());
   auto renderer = Renderer::create(scene.value(), {});
   if (!renderer) return cmd.fail(renderer.error());
-  LogDevice device(circle_samples(scene->probe.position, a.seconds + 1.0), true, "synthetic circle");
+  glm::dvec3 center = scene->probe.position;
+  if (!std::isnan(a.circle_z_mm)) center.z = a.circle_z_mm;
+  LogDevice device(circle_samples(center, a.seconds + 1.0), true, "synthetic circle");
   auto haptic_scene = world::HapticScene::build(scene.value());  // what the proxy collides with
   if (!haptic_scene) return cmd.fail(haptic_scene.error());
   SteadyClock clock;
@@ -118,14 +126,20 @@ int bench(const cli::Command& cmd, const BenchArgs& a) {
   if (a.timer_slack_ns >= 0) params.timer_slack_ns = a.timer_slack_ns;
   if (a.wake_spin_us >= 0) params.wake_spin_us = a.wake_spin_us;
   if (a.slice_us >= 0) params.sched_slice_us = a.slice_us;
+  auto vib = std::unique_ptr<vibration::LiveVibration>();  // before the loop: it feeds it ticks
   HapticLoop loop(device, clock, params, &haptic_scene.value());
+  vib = cli::open_live_vibration(a.live, scene.value(), loop);
   std::vector<double> latency_ms, frame_ms, facets;
   const auto t0 = std::chrono::steady_clock::now();
-  if (Status s = measure(*renderer.value(), loop, a.seconds, latency_ms, frame_ms, facets); !s) return cmd.fail(s.error());
+  vib->start();
+  const Status measured = measure(*renderer.value(), loop, a.seconds, latency_ms, frame_ms, facets);
+  vib->close();
+  if (!measured) return cmd.fail(measured.error());
   const double elapsed = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   std::printf("bench-haptics: %s, %dx%d, %s, %s, haptic thread %s\n", scene->path.c_str(), scene->render.width,
               scene->render.height, ctx.value()->renderer().c_str(), live->report().c_str(), loop.scheduling().c_str());
   print_report(loop, elapsed, latency_ms, frame_ms, facets, haptic_scene.value());
+  if (vib->active()) std::printf("%s\n", vib->summary().c_str());
   return cli::kExitOk;
 }
 

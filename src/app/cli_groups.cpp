@@ -2,11 +2,13 @@
 
 #include <algorithm>
 
+#include <cstdio>
 #include <cstdlib>
 
 #include <unistd.h>
 
 #include "app/cli.h"
+#include "haptics/haptic_loop.h"
 #include "scene/scene_io.h"
 #include "tune/overrides_file.h"
 
@@ -127,6 +129,27 @@ void add_live_loop_options(CLI::App& app, LiveLoopArgs& args) {
          "the haptic thread runs: auto (default: the highest-numbered CPU, when the program may use two "
          "or more), off (the scheduler places every thread), or a CPU number")
       ->type_name("auto|off|N");
+  app.add_option_function<std::string>(
+         "--vibration-out",
+         [&args](const std::string& v) {
+           auto c = vibration::parse_output_choice(v);
+           if (!c) throw UsageError(c.error().message);
+           args.vibration_out = c.value();
+         },
+         "the texture under the probe as vibration (docs/vibration.md): none (default), sound (the default "
+         "audio device, a channel of its own: wire an actuator to it), sound:DEVICE (an OpenAL device by "
+         "name), gamepad (the first gamepad with rumble motors, SDL2), both, both:DEVICE")
+      ->type_name("OUT");
+}
+
+std::unique_ptr<vibration::LiveVibration> open_live_vibration(const LiveLoopArgs& args, const Scene& scene,
+                                                             HapticLoop& loop) {
+  vibration::LiveDesc d;
+  d.out = args.vibration_out;
+  auto v = vibration::LiveVibration::open(d, scene);
+  for (const std::string& w : v->warnings()) std::fprintf(stderr, "warning: %s\n", w.c_str());
+  if (v->active()) loop.set_tick_feed(&v->feed());
+  return v;
 }
 
 namespace {

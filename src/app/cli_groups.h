@@ -11,6 +11,11 @@
 #include "gl/context.h"
 #include "haptics/spare_cpu.h"
 #include "scene/scene.h"
+#include "vibration/live.h"
+
+namespace ps {
+class HapticLoop;
+}
 
 namespace ps::cli {
 
@@ -58,8 +63,16 @@ struct LiveLoopArgs {
   int render_threads = -1;
   // --spare-cpu auto|off|N: a CPU none of the program's threads use (haptics/spare_cpu.h).
   std::string spare_cpu = "auto";
+  // --vibration-out none|sound[:DEVICE]|gamepad|both[:DEVICE]: where the vibrotactile texture
+  // goes (docs/vibration.md); checked as it is read.
+  vibration::OutputChoice vibration_out;
 };
 void add_live_loop_options(CLI::App& app, LiveLoopArgs& args);
+// The live vibration for --vibration-out on `scene`, its tick feed given to `loop` (before the
+// loop starts); each output that cannot open is one "warning: ..." line on stderr. Start it
+// with start(), close() it after the loop stops; it must outlive the loop.
+std::unique_ptr<vibration::LiveVibration> open_live_vibration(const LiveLoopArgs& args, const Scene& scene,
+                                                             HapticLoop& loop);
 
 struct LiveLoopSetup {
   std::string render_threads;  // what is in force, for the command's report

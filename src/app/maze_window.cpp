@@ -156,7 +156,7 @@ Status draw(Window& w, const maze::MazeDesc& desc, const HapticState& st, const 
 // brings a new renderer), the frame. Returns when the participant quits, the log device ends, or
 // kScoreSeconds after the session ended (its last score stays up that long).
 Status window_loop(const maze::SessionOptions& o, maze::SessionCore& core, Window& w, HapticLoop& loop,
-                   SampleRecorder& recorder, std::string& reason) {
+                   SampleRecorder& recorder, std::string& reason, vibration::LiveVibration& vib) {
   Overlay ov;
   Keys keys;
   HapticState st;
@@ -190,6 +190,7 @@ Status window_loop(const maze::SessionOptions& o, maze::SessionCore& core, Windo
       auto r = Renderer::create(core.scene().scene, RendererOptions{});
       if (!r) return r.error();
       w.renderer = std::move(r.value());
+      vib.set_scene(core.scene().scene);  // the next room's materials
     }
     ov.label = core.label();
     if (Status s = draw(w, o.desc, st, ov, std::exchange(keys.screenshot, false)); !s) return s;
@@ -212,18 +213,22 @@ int run_maze_window(const cli::Command& cmd, const maze::SessionOptions& o, cons
   Window w;
   if (Status s = open_window(o, device, core, w); !s) return cmd.fail(s.error());
   SteadyClock clock;
+  std::unique_ptr<vibration::LiveVibration> vib;  // before the loop: it feeds it ticks
   HapticLoop loop(*w.device, clock, o.haptics, core.haptic().get());
+  vib = cli::open_live_vibration(live_args, core.scene().scene, loop);
   SampleRecorder recorder(o.record_path);
   loop.set_recorder(&recorder);
   if (w.input) w.input->poll(0.0, pointer_view(*w.renderer, floor_plane(*w.renderer)));
   loop.start();
+  vib->start();
   std::string reason = "quit";
   Status looped = ok_status();
   {
     ImGuiScope imgui(w.ctx->window());
-    looped = window_loop(o, core, w, loop, recorder, reason);
+    looped = window_loop(o, core, w, loop, recorder, reason, *vib);
   }
   loop.stop();
+  vib->close();
   // The session's end is logged at the time it ended: at the criterion (or max_passes) that is
   // the tick the tracker saw it, not when its score screen closed.
   const double end_time = reason == "logged" ? core.end_time_s() : loop.state().read().time_s;

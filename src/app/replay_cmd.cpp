@@ -2,6 +2,7 @@
 // frame rate, deterministically (fake clock, no threads), and writes the frames.
 #include <cmath>
 #include <cstdio>
+#include <optional>
 #include <unistd.h>
 
 #include "app/cli.h"
@@ -14,6 +15,7 @@
 #include "gl/context.h"
 #include "image/text.h"
 #include "scene/scene_io.h"
+#include "vibration/track.h"
 
 namespace ps {
 
@@ -29,6 +31,7 @@ struct ReplayArgs {
   gl::Backend backend = gl::Backend::kAuto;
   std::string log, out_dir, sheet, record;
   std::string events, audio;  // docs/sound.md
+  std::string vibration;      // docs/vibration.md
   long long every = 1;
   double fps = 30.0;
   bool quiet = false, show_probe = false, show_device = false, show_path = false;
@@ -59,6 +62,11 @@ void declare(cli::Command& cmd, ReplayArgs& a) {
       ->type_name("FILE")
       ->group(cli::kOutputGroup);
   app.add_option("--audio", a.audio, "the events' sound track: WAV, 48 kHz mono 16-bit, as long as the replay")
+      ->type_name("FILE.wav")
+      ->group(cli::kOutputGroup);
+  app.add_option("--vibration", a.vibration,
+                 "the vibrotactile texture under the probe (docs/vibration.md): WAV, 48 kHz mono 16-bit, as long "
+                 "as the replay")
       ->type_name("FILE.wav")
       ->group(cli::kOutputGroup);
   app.add_flag("--show-probe", a.show_probe, "also draw the probe itself (the haptic proxy) in the frames");
@@ -140,6 +148,8 @@ Status add_outputs(const ReplayArgs& a, OutputSet& out) {
     if (Status s = prepare_output_dir(a.record); !s) return s;
   if (!a.audio.empty())
     if (Status s = out.add(a.audio); !s) return s;
+  if (!a.vibration.empty())
+    if (Status s = out.add(a.vibration); !s) return s;
   return ok_status();
 }
 
@@ -184,7 +194,17 @@ int replay(const cli::Command& cmd, const ReplayArgs& a) {
   auto events = ReplayEvents::open(events_desc(a, device->device->duration_s()));
   if (!events) return fail(events.error());
   opt.on_event = [&ev = *events.value()](const HapticEvent& e) { ev.dispatcher().dispatch(e); };
-  opt.switch_scene = [&](const std::string& path) { return switch_scene(a, gl_state.value(), frames, device->pointer, path); };
+  // --vibration: every tick through the signal; a button's scene switch hands it the new scene.
+  std::optional<vibration::SignalTrack> vib;
+  if (!a.vibration.empty()) {
+    vib.emplace(std::make_shared<const vibration::SignalModel>(scene.value()));
+    opt.on_tick = [&vib](const TickSample& t) { vib->add_tick(t); };
+  }
+  opt.switch_scene = [&](const std::string& path) -> Result<SceneSwitch> {
+    auto next = switch_scene(a, gl_state.value(), frames, device->pointer, path);
+    if (next && vib) vib->set_model(std::make_shared<const vibration::SignalModel>(next->renderer->scene()));
+    return next;
+  };
   std::vector<Image> thumbs;
   std::vector<std::string> labels;
   int written = 0;
@@ -204,6 +224,11 @@ int replay(const cli::Command& cmd, const ReplayArgs& a) {
   auto result = replay_session(*renderer, *device->device, opt, sink);
   if (!result) return fail(result.error());
   if (Status s = events.value()->finish(outputs); !s) return fail(s.error());
+  if (vib) {
+    const double duration = device->device->duration_s();
+    auto write = [&](const std::string& file) { return vibration::write_track_wav(file, *vib, duration, 48000); };
+    if (Status s = outputs.stage(a.vibration, write); !s) return fail(s.error());
+  }
   if (!a.sheet.empty())
     if (Status s = stage_image(outputs, a.sheet, contact_sheet(thumbs, labels)); !s) return fail(s.error());
   if (Status s = outputs.publish(); !s) return fail(s.error());

@@ -138,6 +138,7 @@ struct Session {  // everything the window loop touches, grouped by owner thread
   PointerLogDevice* pointer_device = nullptr;  // == device.get() for pointer:FILE
   SteadyClock clock;
   std::unique_ptr<world::HapticScene> haptic_scene;  // before the loop: it must outlive the haptic thread
+  std::unique_ptr<vibration::LiveVibration> vibration;  // before the loop too: the loop feeds it ticks
   std::unique_ptr<HapticLoop> loop;
   std::unique_ptr<SampleRecorder> recorder;
   std::unique_ptr<RunEvents> events;  // the one consumer of loop->events(): log, sound, ...
@@ -198,6 +199,7 @@ Status open_session(const RunArgs& a, Scene scene, Session& s) {
   if (!haptic_scene) return haptic_scene.error();
   s.haptic_scene = std::make_unique<world::HapticScene>(std::move(haptic_scene.value()));
   s.loop = std::make_unique<HapticLoop>(*s.device, s.clock, params, s.haptic_scene.get());
+  s.vibration = cli::open_live_vibration(a.live, s.tune->renderer().scene(), *s.loop);
   if (s.glfw_device || s.pointer_device) {  // they move over the plane: distance known from the start
     s.loop->surface().publish(initial_surface_model(s.axes, s.tune->renderer().scene().probe.radius_mm));
     poll_device(s, 0.0, true);  // the first tick already has a sample
@@ -395,6 +397,7 @@ void reload_haptic_scene(Session& s) {
     return;
   }
   s.loop->replace_scene(std::make_shared<const world::HapticScene>(std::move(built.value())), s.tune->scene_path());
+  s.vibration->set_scene(s.tune->renderer().scene());  // the edited materials' vibration too
 }
 
 void poll_reload(Session& s) {
@@ -475,6 +478,7 @@ void switch_scene(const RunArgs& a, Session& s) {
   s.axes = pointer_plane(s.tune->renderer());
   s.loop->replace_scene(std::make_shared<const world::HapticScene>(std::move(haptic.value())),
                        std::filesystem::path(path).filename().string());
+  s.vibration->set_scene(s.tune->renderer().scene());
   if (!a.quiet) std::printf("button: switched to %s\n", path.c_str());
 }
 
@@ -528,6 +532,7 @@ int run(const cli::Command& cmd, const RunArgs& a) {
   if (Status st = open_session(a, std::move(scene.value()), s); !st) return cmd.fail(st.error());
   if (Status st = open_events(a, s); !st) return cmd.fail(st.error());
   s.loop->start();
+  s.vibration->start();
   // The first frame shows the device's probe, not the scene's: wait for the first tick (about
   // 1 ms; bounded, as a gamepad may have nothing to give yet).
   for (int i = 0; i < 100 && !s.loop->state().read().have_sample; ++i)
@@ -535,6 +540,7 @@ int run(const cli::Command& cmd, const RunArgs& a) {
   if (!a.quiet) std::printf("haptic thread: %s; %s\n", s.loop->scheduling().c_str(), live->report().c_str());
   const Status looped = window_loop(a, s);
   s.loop->stop();  // join the haptic thread before touching what it wrote
+  s.vibration->close();
   if (s.recorder)
     if (Status st = s.recorder->close(); !st) return cmd.fail(st.error());
   if (Status st = s.events->close(s.loop->events()); !st) return cmd.fail(st.error());
@@ -551,6 +557,7 @@ int run(const cli::Command& cmd, const RunArgs& a) {
     if (Status st = write_file_atomic(a.ui_report, ui_report_json(w, h, s.ui_frames)); !st) return cmd.fail(st.error());
   }
   if (!a.quiet) print_summary(s);
+  if (!a.quiet && s.vibration->active()) std::printf("%s\n", s.vibration->summary().c_str());
   return cli::kExitOk;
 }
 

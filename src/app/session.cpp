@@ -108,13 +108,21 @@ Result<ReplayResult> replay_session(Renderer& first_renderer, Device& device, co
   HapticLoop loop(device, clock, options.haptics, options.haptic_scene);
   SampleRecorder recorder(options.record_path);
   if (!options.record_path.empty()) loop.set_recorder(&recorder);
+  // Every tick's record for on_tick (the vibration track), drained after each block of ticks:
+  // blocks of at most half the feed, so a slow frame rate never drops one.
+  TickFeed feed(kReplayTickFeedCapacity);
+  if (options.on_tick) loop.set_tick_feed(&feed);
   std::uint64_t ticks_done = 0;
   ReplayResult result;
   for (int i = 0; i < frames; ++i) {
     // Tick k runs at k / rate; frame i shows the state after the tick at (or before) i / fps.
     const auto last_tick = static_cast<std::uint64_t>(std::floor(i / options.fps * options.haptics.rate_hz + 1e-9));
-    loop.run_ticks(last_tick + 1 - ticks_done);
-    ticks_done = last_tick + 1;
+    while (ticks_done < last_tick + 1) {
+      const std::uint64_t n = std::min<std::uint64_t>(last_tick + 1 - ticks_done, kReplayTickFeedCapacity / 2);
+      loop.run_ticks(n);
+      ticks_done += n;
+      if (options.on_tick) feed.drain(options.on_tick);
+    }
     std::string switch_to;
     loop.events().drain([&](const HapticEvent& e) {
       if (options.on_event) options.on_event(e);

@@ -63,7 +63,11 @@ struct ReplayOptions {
   // by the new renderer, so a replay switches at the same tick every run. Null: actions are
   // only logged.
   std::function<Result<SceneSwitch>(const std::string& scene_path)> switch_scene;
+  // Each tick of the loop (haptics/tick_feed.h), in order, before that frame's events (the
+  // vibration track of `replay --vibration`). Null: the loop keeps no tick feed.
+  std::function<void(const TickSample&)> on_tick;
 };
+inline constexpr std::size_t kReplayTickFeedCapacity = 4096;
 
 struct ReplayResult {
   int frames = 0;

@@ -54,6 +54,7 @@ ForceResult compute_force(const HapticsParams& p, const SurfaceModel& m, const g
   if (m.valid && r > 0.0) {
     out.in_contact = true;
     out.penetration_mm = r;
+    out.contact_normal = n;
     const double fn = spring_magnitude_n(p, r);
     f += fn * n;
     f -= p.damping_n_s_per_mm * glm::dot(n, v_mm_s) * n;
@@ -160,6 +161,7 @@ ForceResult compute_proxy_force(const HapticsParams& p, world::GodObject& god, c
     out.in_contact = true;
     out.surface = step.surface;
     out.penetration_mm = r;
+    out.contact_normal = step.contact_normal;
     const glm::dvec3 n = q.force_shading ? step.shaded_normal : (step.proxy_mm - x_mm) / r;
     double push_n = 0.0;
     f += contact_force_n(q, m, material_contact(n, step.contact_point, -r, v_mm_s),

@@ -63,6 +63,7 @@ struct ForceResult {
   bool in_contact = false;
   bool sticking = false;
   int surface = -1;                 // haptic scene: the surface touched (Scene::surfaces index)
+  glm::dvec3 contact_normal{0.0, 0.0, 1.0};  // in contact: unit, out of the surface (contact point -> proxy)
   int medium = -1;                  // haptic scene: the penetrable volume holding the proxy centre
   std::uint32_t facets_visited = 0; // haptic scene: mesh triangles examined this tick
 };

@@ -219,6 +219,7 @@ void HapticLoop::press_buttons(const glm::dvec3& anchor, double t, glm::dvec3& f
     e.position_mm = anchor;
     e.set_label(b.action);
     events_.push(e);
+    feed_sample_.click = true;
     if (b.action_kind != ButtonActionKind::kFlag || b.flag < 0) continue;
     local_.flags ^= 1u << static_cast<unsigned>(b.flag);
     e.kind = EventKind::flag_toggled;
@@ -343,6 +344,24 @@ glm::dvec3 HapticLoop::suggestion_force(double dt) {
   return fourd::force_suggestion_n(p, p_des, point, v_des, v, n);
 }
 
+// The tick's record for the vibration signal: the contact point on the surface (proxy centre
+// minus the probe radius along the normal), the normal and the force along it.
+void HapticLoop::push_tick_sample(const ForceResult& f, double t, Clock::Ns now) {
+  TickSample& s = feed_sample_;
+  s.tick = local_.tick;
+  s.time_s = t;
+  s.clock_ns = now.count();
+  s.in_contact = f.in_contact;
+  s.surface = f.in_contact ? f.surface : -1;
+  s.normal = f.contact_normal;
+  const double radius = god_ ? god_->scene().probe_radius_mm() : surface_.read().probe_radius_mm;
+  s.proxy_mm = f.in_contact ? f.proxy_mm - radius * f.contact_normal : f.proxy_mm;
+  s.velocity_mm_s = local_.velocity_mm_s;
+  s.normal_force_n = f.in_contact ? std::max(0.0, glm::dot(f.force_n, f.contact_normal)) : 0.0;
+  tick_feed_->push(s);
+  s = TickSample{};
+}
+
 void HapticLoop::tick(Clock::Ns now) {
   if (swap_pending_.load(std::memory_order_acquire)) adopt_pending_scene(now);
   // T of the filter = the measured tick period: after a preemption sleep_until() runs the
@@ -396,6 +415,8 @@ void HapticLoop::tick(Clock::Ns now) {
                          : glm::length(local_.velocity_mm_s);
       if (!f.in_contact) e.value = 0.0;
       events_.push(e);
+      // Marks the start even with no measurable approach speed (its transient is then ~0).
+      if (f.in_contact) feed_sample_.impact_mm_s = std::max(e.value, 1e-6);
     }
     local_.contact_surface = f.surface;
     local_.local_facets = f.facets_visited;
@@ -409,6 +430,7 @@ void HapticLoop::tick(Clock::Ns now) {
     if (god_) local_.force_n += roll(dt);
     // The device feels the force in its own workspace.
     device_.write_force(glm::transpose(view_.rotation) * local_.force_n);
+    if (tick_feed_ != nullptr) push_tick_sample(f, t, now);
   }
   local_.time_s = t;
   local_.rejected = sanitizer_.counts();

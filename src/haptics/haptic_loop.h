@@ -27,6 +27,7 @@
 #include "haptics/force_model.h"
 #include "haptics/kalman.h"
 #include "haptics/loop_stats.h"
+#include "haptics/tick_feed.h"
 #include "world/bodies.h"
 #include "world/buttons.h"
 #include "fourd/crossing.h"
@@ -127,6 +128,9 @@ class HapticLoop {
   HapticLoop& operator=(const HapticLoop&) = delete;
 
   void set_recorder(SampleRecorder* recorder) { recorder_ = recorder; }  // before start()
+  // Before start(): one TickSample per tick pushed into `feed` (not owned; it must outlive the
+  // loop), for the vibration signal (haptics/tick_feed.h). Null: none (the default).
+  void set_tick_feed(TickFeed* feed) { tick_feed_ = feed; }
   // Hands the loop a new haptic scene (a live reload, a button's scene switch): any thread, at
   // any time; the haptic thread adopts it at the start of its next tick, keeps the proxy where it
   // is (pushed out of anything it now sits in, GodObject::reset) and queues a scene_switched
@@ -204,6 +208,9 @@ class HapticLoop {
   std::atomic<bool> swap_pending_{false};
   HapticState local_;        // haptic thread's working copy
   SampleRecorder* recorder_ = nullptr;
+  TickFeed* tick_feed_ = nullptr;
+  TickSample feed_sample_;  // this tick's record, filled as the tick goes (impact, click)
+  void push_tick_sample(const ForceResult& f, double t, Clock::Ns now);
   BoundedLog periods_us_;         // every period, for period_stats()
   BoundedLog window_jitter_us_;   // |period - nominal| of the current 1 s HUD window
   std::uint64_t window_ticks_ = 0;  // ticks in the HUD window (the jitter log may have dropped some)

@@ -98,6 +98,9 @@ struct Material {
   Lut intensity_lut{LutAxis::kDistanceMm, {}, {}};
   Lut speed_gain_lut{LutAxis::kSpeedMmS, {}, {}};
   HapticMaterial haptic;  // how it feels (scene/haptic_material.h)
+  // Gain of its vibrotactile texture (src/vibration/, docs/vibration.md): 0 silences the
+  // surface (its texture and its contact transients); untextured materials have no texture term.
+  double vibration_gain = 1.0;
 };
 
 enum class SurfaceType { kPlane, kSphere, kTorus, kHeightField, kMesh, kBox, kFourd };

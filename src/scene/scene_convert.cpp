@@ -193,6 +193,7 @@ Status read_material(const ParseContext& ctx, const toml::table& table, const st
   r.number("resistance", out.resistance, kUnit);
   r.number("peak_hz", out.peak_hz, Range::positive(1e6));
   r.number("bandwidth_hz", out.bandwidth_hz, Range::positive(1e6));
+  r.number("vibration_gain", out.vibration_gain, Range::closed(0.0, 10.0));
   read_lut_key(r, "intensity_lut", out.intensity_lut);
   read_lut_key(r, "speed_gain_lut", out.speed_gain_lut);
   const toml::table* haptic = r.sub_table("haptic");

@@ -36,7 +36,7 @@ constexpr std::array kMaterialKeys = {
     "onset_distance_mm"sv, "influence_distance_mm"sv, "intensity_floor"sv,
     "intensity_scale"sv, "intensity_offset_mm"sv,   "resistance"sv,
     "peak_hz"sv,         "bandwidth_hz"sv,          "haptic"sv,
-    "intensity_lut"sv,   "speed_gain_lut"sv};
+    "intensity_lut"sv,   "speed_gain_lut"sv,        "vibration_gain"sv};
 // [materials.NAME.haptic]: how the material feels (scene/haptic_material.h).
 constexpr std::array kHapticKeys = {
     "stiffness_n_per_mm"sv,   "stiffness_exponent"sv,     "damping_n_s_per_mm"sv,
