@@ -38,11 +38,12 @@ constexpr const char* kDescription =
 std::string default_maze() { return default_scene_base_dir() + "/maze/maze.toml"; }
 
 struct MazeArgs {
-  std::string maze = default_maze(), participant, cues, device, out_dir, write_scene;
+  std::string maze = default_maze(), participant, cues, device, out_dir, write_scene, resume;
   long long seed = -1, every = 0, session = 1;
   double fps = 30.0, pace = 0.0;
   gl::Backend backend = gl::Backend::kAuto;
-  bool quiet = false, window = false;
+  bool quiet = false, window = false, no_clutch = false, hide_hand = false;
+  double clutch_mm = MazeWindowParams{}.clutch_mm;
   cli::LiveLoopArgs live;  // the window's haptic thread and renderer: --render-threads, --spare-cpu
 };
 
@@ -90,7 +91,17 @@ void declare(cli::Command& cmd, MazeArgs& a) {
                  "take) and exit without a session")
       ->type_name("FILE")
       ->group(cli::kOutputGroup);
+  app.add_option("--resume", a.resume,
+                 "continue the interrupted session in DIR (killed, crashed, quit) at its next unfinished trial: "
+                 "participant, seed, condition and maze from its log, which gets a `resumed` line; the device "
+                 "stream goes to DIR/device_resumed_N.log. A log device is played on from where the session stopped")
+      ->type_name("DIR");
   app.add_flag("--window", a.window, "open the window also for a trajectory:/playback: device (played in real time)");
+  cli::add_positive(app, "--clutch", "MM", a.clutch_mm, 1000.0, "6",
+                    "window: a hand run on past a wall by more than MM along the floor is put back under the probe, "
+                    "logged as `clutch` (default 6, the probe's radius)");
+  app.add_flag("--no-clutch", a.no_clutch, "window: never put the hand back (it stays where the mouse took it)");
+  app.add_flag("--hide-hand", a.hide_hand, "window: no faint ring where the hand is while a wall holds the probe");
   cli::add_gl_options(app, a.backend);
   cli::add_live_loop_options(app, a.live);
   cli::add_quiet_option(app, a.quiet);
@@ -139,7 +150,49 @@ int write_scene(const cli::Command& cmd, const MazeArgs& a, const maze::MazeDesc
   return cli::kExitOk;
 }
 
+bool opens_window(const MazeArgs& a) {
+  return a.window || a.device.empty() || a.device == "mouse" || a.device == "gamepad";
+}
+
+int run_session_of(const cli::Command& cmd, const MazeArgs& a, const maze::SessionOptions& o) {
+  if (opens_window(a)) {
+    const MazeWindowParams wp{a.no_clutch ? 0.0 : a.clutch_mm, !a.hide_hand};
+    return run_maze_window(cmd, o, a.device, a.live, wp);
+  }
+  return run_headless(cmd, a, o);
+}
+
+// --resume DIR: the session in DIR's log goes on where it stopped (maze/maze_resume.h).
+int resume_main(const cli::Command& cmd, const MazeArgs& a) {
+  if (!a.participant.empty() || a.seed >= 0 || !a.cues.empty())
+    return cmd.usage_error(make_error("--resume DIR takes the participant, seed and cues from DIR's log: give none of them"));
+  const std::string log = a.resume + "/session.jsonl";
+  auto r = maze::read_resume_point(log);
+  if (!r) return cmd.fail(r.error());
+  auto desc = maze::load_maze_desc(r->info.maze_path);
+  if (!desc) return cmd.fail(desc.error());
+  MazeArgs args = a;
+  args.out_dir = a.resume;
+  args.participant = r->info.participant;
+  if (args.device.empty() && r->info.device != "mouse") args.device = r->info.device;
+  maze::SessionOptions o;
+  o.desc = desc.value();
+  o.route = maze::draw_route(r->info.seed);
+  o.info = r->info;
+  o.info.device = args.device.empty() ? "mouse" : args.device;
+  o.info.device_log = "device_resumed_" + std::to_string(r->resumes + 1) + ".log";
+  o.log_path = log;
+  o.record_path = a.resume + "/" + o.info.device_log;
+  o.haptics.start_time_s = r->time_s;  // the loop's clock, the device and the fields go on from there
+  o.resume = std::move(r.value());
+  if (!a.quiet)
+    std::printf("maze: resuming %s at pass %d, room %d, %.3f s of session\n", args.participant.c_str(),
+                o.resume->current.pass + 1, static_cast<int>(o.resume->current.trials.size()) + 1, o.resume->time_s);
+  return run_session_of(cmd, args, o);
+}
+
 int maze_main(const cli::Command& cmd, const MazeArgs& a) {
+  if (!a.resume.empty()) return resume_main(cmd, a);
   auto desc = maze::load_maze_desc(a.maze);
   if (!desc) return cmd.fail(desc.error());
   if (!a.write_scene.empty()) return write_scene(cmd, a, desc.value());
@@ -155,8 +208,7 @@ int maze_main(const cli::Command& cmd, const MazeArgs& a) {
             o.desc.max_passes, static_cast<int>(a.session)};
   o.log_path = args.out_dir + "/session.jsonl";
   o.record_path = args.out_dir + "/device.log";
-  if (a.window || a.device.empty() || a.device == "mouse" || a.device == "gamepad") return run_maze_window(cmd, o, a.device, a.live);
-  return run_headless(cmd, args, o);
+  return run_session_of(cmd, args, o);
 }
 
 // --- maze summarize -------------------------------------------------------------------------
@@ -164,18 +216,21 @@ int maze_main(const cli::Command& cmd, const MazeArgs& a) {
 struct SummarizeArgs {
   std::vector<std::string> logs;
   std::string out_dir;
-  bool no_plots = false, quiet = false;
+  bool no_plots = false, quiet = false, include_aborted = false;
 };
 
 void declare_summarize(cli::Command& cmd, SummarizeArgs& a) {
   CLI::App& app = cmd.app();
   app.add_option("logs", a.logs, "session logs (DIR/session.jsonl of each participant)")->type_name("LOG");
   app.add_option("--out", a.out_dir,
-                 "writes participants.csv, groups.csv, trials.csv, summary.md and the plots there (required); it "
+                 "writes participants.csv, groups.csv, trials.csv, rooms.csv, summary.md and the plots there (required); it "
                  "must exist, or only its last component may be missing (it is created)")
       ->type_name("DIR")
       ->group(cli::kOutputGroup);
   app.add_flag("--no-plots", a.no_plots, "tables only (no gnuplot needed)");
+  app.add_flag("--include-aborted", a.include_aborted,
+               "count aborted sessions (quit, device_ended, crashed) in the group means too (default: left out, "
+               "counted in groups.csv's `excluded`)");
   cli::add_quiet_option(app, a.quiet);
   cmd.usage("pseudoshadow maze summarize LOGS... --out DIR");
 }
@@ -189,7 +244,7 @@ int summarize_main(const cli::Command& cmd, const SummarizeArgs& a) {
     if (!p) return cmd.fail(p.error());
     people.push_back(std::move(p.value()));
   }
-  const auto groups = maze::summarize_groups(people);
+  const auto groups = maze::summarize_groups(people, a.include_aborted);
   if (Status s = prepare_output_dir(a.out_dir + "/summary.md"); !s) return cmd.fail(s.error());
   if (Status s = maze::write_tables(a.out_dir, people, groups, maze::summarize_retests(people)); !s) return cmd.fail(s.error());
   if (!a.no_plots)

@@ -1,6 +1,7 @@
 #include "maze/maze_log.h"
 
 #include <cerrno>
+#include <cstdio>
 #include <cstring>
 #include <fcntl.h>
 #include <unistd.h>
@@ -38,6 +39,20 @@ Result<SessionLog> SessionLog::open(const std::string& path) {
                              "give another --out, or move that one away");
   if (fd < 0) return make_error(path + ": cannot create the session log: " + std::strerror(errno));
   return SessionLog(fd, path);
+}
+
+Result<SessionLog> SessionLog::open_existing(const std::string& path) {
+  const int fd = ::open(path.c_str(), O_WRONLY | O_APPEND | O_CLOEXEC);
+  if (fd < 0) return make_error(path + ": cannot open the session log to resume: " + std::strerror(errno));
+  // A line cut short is impossible with one write(2) per line, but a disk that filled up can
+  // leave one: the next line must still start on a line of its own.
+  std::FILE* f = std::fopen(path.c_str(), "rb");
+  bool newline = true;
+  if (f && std::fseek(f, -1, SEEK_END) == 0) newline = std::fgetc(f) == '\n';
+  if (f) std::fclose(f);
+  SessionLog log(fd, path);
+  if (!newline && ::write(fd, "\n", 1) != 1) return make_error(path + ": cannot append to the session log: " + std::strerror(errno));
+  return log;
 }
 
 SessionLog::~SessionLog() {
@@ -127,6 +142,27 @@ Status SessionLog::event(const SessionInfo& info, const TrackEvent& e) {
     case TrackEvent::Kind::kFinished: return ok_status();  // session_end says it
   }
   return ok_status();
+}
+
+Status SessionLog::clutch(double time_s, double overshoot_mm, const glm::dvec3& hand_mm, const glm::dvec3& probe_mm) {
+  return append(json{{"type", "clutch"},
+                     {"time_s", time_s},
+                     {"overshoot_mm", overshoot_mm},
+                     {"hand_mm", {hand_mm.x, hand_mm.y}},
+                     {"probe_mm", {probe_mm.x, probe_mm.y}}}
+                    .dump());
+}
+
+Status SessionLog::resumed(int resume, int pass, int room, double time_s, const std::string& device,
+                           const std::string& device_log) {
+  return append(json{{"type", "resumed"},
+                     {"resume", resume},
+                     {"pass", pass + 1},
+                     {"room", room + 1},
+                     {"time_s", time_s},
+                     {"device", device},
+                     {"device_log", device_log}}
+                    .dump());
 }
 
 Status SessionLog::session_end(const std::string& reason, int passes, int trials_to_criterion, double time_s) {
