@@ -5,7 +5,10 @@
 #      without input: no jump when the window maps, takes focus and grabs the mouse;
 #   2. five PageUp taps 5 ms apart raise the hand by 5 x 0.5 mm: every tap counts;
 #   3. a 40-count pointer motion to the right moves the hand 40 x 0.15 mm = 6 mm to the right;
-#   4. Esc ends the session, logged as quit.
+#   4. a 200-count motion to the left runs the hand 30 mm into the start corridor's wall, 12 mm
+#      from the start (18 mm corridor half-width - 6 mm probe radius): the clutch puts it back
+#      under the probe at the wall and logs it;
+#   5. Esc ends the session, logged as quit.
 # usage: maze_window_hand.sh PSEUDOSHADOW MAZE.toml OUT_DIR
 set -euo pipefail
 exe=$1 maze=$2 out=$3
@@ -69,6 +72,10 @@ for pos in "0 0" "1279 1023" "900 700"; do
     xdotool key --delay 5 Page_Up Page_Up Page_Up Page_Up Page_Up
     xdotool mousemove_relative -- 40 0
     wait_stream_past $i "$(awk -v t="$z_before" 'BEGIN { print t + 2.0 }')"
+  elif [ $i -eq 2 ]; then
+    t_before=$(stream_time $i)
+    xdotool mousemove_relative -- -200 0
+    wait_stream_past $i "$(awk -v t="$t_before" 'BEGIN { print t + 2.0 }')"
   fi
   quit_session $i
   check_still $i || fail "session $i (pointer at $pos): the hand moved without input, or did not start at the probe"
@@ -85,4 +92,13 @@ awk '
     if (x - x0 < 5.7 || x - x0 > 6.3) exit 1
     if (z - z0 < 2.5 - 1e-9 || z - z0 > 2.5 + 1e-9) exit 1
   }' "$out/1/device.log" || fail "session 1: the taps or the motion did not reach the hand as given"
+# Session 2: one clutch, 30 - 12 = 18 mm of overshoot (1 mm: the proxy rests on the wall within
+# the god-object's tolerance, and the motion may come in two events); the hand then back at the
+# wall, x = -12 mm (0.5 mm, the same reason).
+grep '"type":"clutch"' "$out/2/session.jsonl" | head -1 | tee "$out/2/clutch.txt"
+[ "$(grep -c '"type":"clutch"' "$out/2/session.jsonl")" -ge 1 ] || fail "session 2: no clutch logged"
+sed 's/.*"overshoot_mm":\([-0-9.e]*\).*/\1/' "$out/2/clutch.txt" | awk '{ if ($1 < 6 || $1 > 19) exit 1 }' ||
+  fail "session 2: overshoot not in (6, 19] mm"
+awk '/^#/ { next } { x = $2 } END { printf "session 2: hand after the clutch at x = %.4f mm\n", x; if (x < -12.5 || x > -11.5) exit 1 }' \
+  "$out/2/device.log" || fail "session 2: the hand is not back under the probe at the wall"
 echo "maze_window_hand: ok"
