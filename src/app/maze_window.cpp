@@ -30,7 +30,7 @@ constexpr double kMmPerCount = 0.15;   // captured mouse: mm on the floor per ra
 // What the window hears from GLFW, from its callbacks (installed before ImGui, which chains to
 // them): a frame can take longer than a quick tap, so polled key state would lose taps.
 struct Events {
-  bool quit = false, screenshot = false;
+  bool quit = false, screenshot = false, start = false;  // start: Space or Enter (the instructions)
   int height_steps = 0;  // PageUp/Up +1, PageDown/Down -1 (0.5 mm each, HeightControl); repeats count
   // GLFW moved its virtual cursor without the person moving the mouse (the pointer entered the
   // window, focus came back and the cursor was grabbed again): the next poll rebases on it.
@@ -44,6 +44,7 @@ struct Events {
     if (action != GLFW_PRESS) return;  // a held S or Esc acts once
     if (key == GLFW_KEY_S) e.screenshot = true;
     if (key == GLFW_KEY_ESCAPE || key == GLFW_KEY_Q) e.quit = true;
+    if (key == GLFW_KEY_SPACE || key == GLFW_KEY_ENTER || key == GLFW_KEY_KP_ENTER) e.start = true;
   }
   static void on_enter(GLFWwindow* win, int /*entered*/) { of(win).rebase = true; }
   static void on_focus(GLFWwindow* win, int /*focused*/) { of(win).rebase = true; }
@@ -80,9 +81,6 @@ Status open_device(const std::string& device, const maze::SessionOptions& o, Win
     const bool mouse = device != "gamepad";
     auto m = std::make_unique<GlfwInputDevice>(mouse ? GlfwInputDevice::Kind::kMouse : GlfwInputDevice::Kind::kGamepad,
                                                w.ctx->window(), params);
-    // The mouse relative (captured): the camera follows the probe, so an absolute pointer would
-    // chase it. The gamepad's stick is relative already.
-    if (mouse) m->toggle_capture();
     // The hand starts where the probe starts: its point on the floor under the probe's start.
     const PlaneAxes plane = floor_plane(*w.renderer);
     // A resumed session: where the probe waits, in the hall of the last room left.
@@ -132,7 +130,7 @@ std::string score_text(const maze::PassScore& s, bool cues) {
 
 // What the window shows over the frame: the label (cues off), the last score for a while.
 struct Overlay {
-  std::string label, score;
+  std::string label, score, instructions;
   double score_until = -1.0;
   bool done = false, show_hand = false;
 };
@@ -174,6 +172,7 @@ Status draw(Window& w, const maze::MazeDesc& desc, const HapticState& st, const 
   ImGui_ImplGlfw_NewFrame();
   ImGui::NewFrame();
   if (ov.show_hand && st.have_sample) draw_hand(w, st);
+  if (!ov.instructions.empty()) text_window("##instructions", ImVec2(30, 60), ov.instructions, 1.3f);
   if (!ov.label.empty()) text_window("##label", ImVec2(10, 10), ov.label, 2.0f);
   if (st.time_s < ov.score_until) text_window("##score", ImVec2(40, 80), ov.score, 1.6f);
   if (ov.done) text_window("##done", ImVec2(40, fh - 60.0f), "The session is over.", 1.6f);
@@ -258,6 +257,26 @@ Status window_loop(const maze::SessionOptions& o, const MazeWindowParams& p, maz
   }
 }
 
+// The instructions (the description's [instructions] text) over the start; the session's
+// clock, the haptic loop and the mouse grab wait for Space or Enter. False: the participant quit.
+Result<bool> show_instructions(const maze::SessionOptions& o, Window& w) {
+  Overlay ov;
+  ov.instructions = o.desc.instructions;
+  const HapticState still;  // no sample: the scene's own camera and probe at the start
+  for (;;) {
+    glfwWaitEventsTimeout(0.05);  // nothing moves: redraw at 20 Hz, not as fast as it can
+    if (w.events.quit || glfwWindowShouldClose(w.ctx->window())) return false;
+    if (std::exchange(w.events.start, false)) break;
+    if (Status s = draw(w, o.desc, still, ov, false); !s) return s.error();
+  }
+  // The mouse relative (captured): the camera follows the probe, so an absolute pointer would
+  // chase it. The gamepad's stick is relative already. The grab is a new relative origin.
+  if (w.input && w.input->name() == "mouse") w.input->toggle_capture();
+  w.events.screenshot = false;
+  w.events.height_steps = 0;
+  return true;
+}
+
 }  // namespace
 
 int run_maze_window(const cli::Command& cmd, const maze::SessionOptions& o, const std::string& device,
@@ -273,13 +292,19 @@ int run_maze_window(const cli::Command& cmd, const maze::SessionOptions& o, cons
   HapticLoop loop(*w.device, clock, o.haptics, core.haptic().get());
   SampleRecorder recorder(o.record_path);
   loop.set_recorder(&recorder);
-  if (w.input) w.input->poll(o.haptics.start_time_s, pointer_view(*w.renderer, floor_plane(*w.renderer)));
-  loop.start();
   std::string reason = "quit";
   Status looped = ok_status();
   {
     ImGuiScope imgui(w.ctx->window());
-    looped = window_loop(o, params, core, w, loop, recorder, reason);
+    // A participant's session starts from the instructions; a log device played in the window
+    // has no one to read them.
+    auto go = w.input ? show_instructions(o, w) : Result<bool>(true);
+    if (!go) looped = go.error();
+    if (go && go.value()) {
+      if (w.input) w.input->poll(o.haptics.start_time_s, pointer_view(*w.renderer, floor_plane(*w.renderer)));
+      loop.start();
+      looped = window_loop(o, params, core, w, loop, recorder, reason);
+    }
   }
   loop.stop();
   // The session's end is logged at the time it ended: at the criterion (or max_passes) that is

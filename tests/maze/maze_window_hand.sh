@@ -1,5 +1,7 @@
 #!/usr/bin/env bash
 # The live maze window driven by real X events (xdotool through XTest), run inside xvfb-run:
+#   0. the instructions screen holds the clock: while it shows (3 s in session 3, with the mouse
+#      moved meanwhile) no device sample is taken; the session's time counts from Space;
 #   1. for pointers left at three places on the screen (two corners and a point outside the
 #      window), the hand (device.log) stays within 1 mm of the probe's start for the first 3 s
 #      without input: no jump when the window maps, takes focus and grabs the mouse;
@@ -28,6 +30,16 @@ start_session() {
   wait "$search" || true
 }
 
+# The instructions screen for $2 s (the pointer moved 300 counts meanwhile), then Space.
+start_from_instructions() {
+  sleep "$2"
+  xdotool mousemove_relative -- 300 0
+  sleep 0.3
+  [ -s "$out/$1/device.log.partial" ] && fail "session $1: device samples before Space (the clock ran on the instructions)"
+  xdotool key space
+  t_space=$(date +%s.%N)
+}
+
 # Session seconds of the newest sample in the device stream (written once a second).
 stream_time() { tail -n 1 "$out/$1/device.log.partial" 2>/dev/null | awk '{print $1 + 0}'; }
 
@@ -41,6 +53,7 @@ wait_stream_past() {  # $1 session, $2 seconds
 
 quit_session() {
   xdotool key Escape
+  t_quit=$(date +%s.%N)
   wait "$pid" || fail "session $1 exited $?: $(cat "$out/$1.txt")"
   grep -q '"type":"session_end","reason":"quit"' "$out/$1/session.jsonl" || fail "session $1: no quit logged"
 }
@@ -65,6 +78,7 @@ for pos in "0 0" "1279 1023" "900 700"; do
   i=$((i + 1))
   xdotool mousemove $pos
   start_session $i
+  start_from_instructions $i "$([ $i -eq 3 ] && echo 3 || echo 0.5)"
   wait_stream_past $i 3.5
   if [ $i -eq 1 ]; then
     # Taps and a motion after the still phase (the check above reads [0, 3 s] only).
@@ -78,6 +92,11 @@ for pos in "0 0" "1279 1023" "900 700"; do
     wait_stream_past $i "$(awk -v t="$t_before" 'BEGIN { print t + 2.0 }')"
   fi
   quit_session $i
+  # Session time ends at most at the wall time from Space to Esc (0.5 s: the Esc's way through
+  # the X server and one frame); the instructions' seconds are not in it.
+  awk -v a="$t_space" -v b="$t_quit" -v log_end="$(grep '"session_end"' "$out/$i/session.jsonl" | sed 's/.*"time_s":\([0-9.e]*\).*/\1/')" \
+    'BEGIN { printf "session '$i': %.3f s of session, %.3f s from Space to Esc\n", log_end, b - a; exit !(log_end <= b - a + 0.5) }' ||
+    fail "session $i: the session's clock ran before Space"
   check_still $i || fail "session $i (pointer at $pos): the hand moved without input, or did not start at the probe"
 done
 
