@@ -114,6 +114,9 @@ Result<MazeDesc> parse_maze_desc(const std::string& text, const std::string& sou
 struct Route {
   std::uint64_t seed = 0;
   std::array<Exit, 6> correct{};  // indexed by static_cast<int>(Cue)
+  // A study plan's cue-room orders (maze_plan.h), pass p taking planned[p % size]; empty: each
+  // pass's order is drawn from the seed.
+  std::vector<std::array<Cue, 5>> planned;
   Exit correct_exit(Cue cue) const { return correct[static_cast<std::size_t>(cue)]; }
   // The six rooms of pass `pass` (from 0), dummy first.
   std::array<Cue, kRoomsPerPass> order(int pass) const;

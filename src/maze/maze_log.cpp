@@ -76,6 +76,12 @@ Status SessionLog::session_start(const SessionInfo& info, const Route& route) {
     correct[cue_name(static_cast<Cue>(c))] = exit_name(route.correct_exit(static_cast<Cue>(c)));
     labels[cue_name(static_cast<Cue>(c))] = cue_label(static_cast<Cue>(c));
   }
+  json planned = json::array();  // a study plan's orders (maze --plan); none: drawn from the seed
+  for (const auto& order : route.planned) {
+    json names = json::array();
+    for (const Cue c : order) names.push_back(cue_name(c));
+    planned.push_back(names);
+  }
   return append(json{{"type", "session_start"},
                      {"schema", kLogSchema},
                      {"participant", info.participant},
@@ -89,6 +95,7 @@ Status SessionLog::session_start(const SessionInfo& info, const Route& route) {
                      {"max_passes", info.max_passes},
                      {"correct_route", correct},
                      {"labels", labels},
+                     {"planned_orders", planned},
                      {"time_s", 0.0}}
                     .dump());
 }

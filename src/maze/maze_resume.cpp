@@ -18,7 +18,14 @@ E parse_name(const json& j, bool (*parse)(const std::string&, E&), const char* w
   return out;
 }
 
-void read_start(const json& j, SessionInfo& info) {
+void read_start(const json& j, ResumePoint& r) {
+  SessionInfo& info = r.info;
+  if (j.contains("planned_orders"))
+    for (const json& order : j.at("planned_orders")) {
+      std::array<Cue, 5> o{};
+      for (std::size_t k = 0; k < 5; ++k) o[k] = parse_name<Cue>(order.at(k), &parse_cue, "cue");
+      r.planned.push_back(o);
+    }
   info.participant = j.at("participant").get<std::string>();
   info.session = j.value("session", 1);
   info.cues = j.at("cues").get<bool>();
@@ -47,7 +54,7 @@ Trial read_trial(const json& j) {
 void read_line(const json& j, ResumePoint& r) {
   const std::string type = j.at("type").get<std::string>();
   if (type == "session_start") {
-    read_start(j, r.info);
+    read_start(j, r);
   } else if (type == "pass_start") {
     r.current_started = j.at("pass").get<int>() == static_cast<int>(r.done.size()) + 1;
     r.time_s = std::max(r.time_s, j.at("time_s").get<double>());

@@ -16,6 +16,7 @@ namespace ps::maze {
 
 struct ResumePoint {
   SessionInfo info;                // from session_start (device: as the first run gave it)
+  std::vector<std::array<Cue, 5>> planned;  // a study plan's room orders (Route::planned)
   std::vector<PassScore> done;     // passes with their pass_end line
   PassScore current;               // the pass in progress: its rooms left so far
   bool current_started = false;    // its pass_start line is in the log

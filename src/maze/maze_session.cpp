@@ -63,6 +63,7 @@ Status SessionCore::step(const HapticState& st, HapticLoop& loop, const ScoreFn&
 Status SessionCore::handle(const std::vector<TrackEvent>& events, double time_s, HapticLoop* loop, const ScoreFn& on_score) {
   for (const TrackEvent& e : events) {
     if (Status s = log_.event(options_.info, e); !s) return s;
+    if (e.kind == TrackEvent::Kind::kBranch) ++result_.branches;
     if (e.kind == TrackEvent::Kind::kPassEnd) {
       result_.scores.push_back(e.score);
       if (on_score)

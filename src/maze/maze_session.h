@@ -46,6 +46,7 @@ struct FrameView {
 struct SessionResult {
   std::string reason;  // "criterion", "max_passes", "device_ended"
   int passes = 0;
+  int branches = 0;             // rooms left in this run (a device that took none is suspect)
   int trials_to_criterion = 0;  // the pass (from 1) that had every room right; 0: none
   double time_s = 0.0;
   std::uint64_t ticks = 0;

@@ -72,7 +72,8 @@ TEST(MazeResumeTest, KilledAtRandomMomentsThenResumedSummarizesAsTheUninterrupte
   const std::string traj = dir + "/r1.traj";
   std::ofstream(traj) << script_trajectory(d.value(), {choices_with_errors(route, 0, 2), correct_choices(route, 1)}, 100.0);
   const std::vector<std::string> who = {"--maze", test::maze_file(), "--participant", "R1", "--seed", "9", "--cues", "on",
-                                        "--device", "trajectory:" + traj};
+                                        "--device", "trajectory:" + traj,
+                                        "--force"};  // the same participant several times in one folder, on purpose
   auto with = [&](std::vector<std::string> more) {
     std::vector<std::string> a = who;
     a.insert(a.end(), more.begin(), more.end());
