@@ -2,7 +2,7 @@
 // counterbalanced cue-room orders for a study, as a CSV the experimenter keeps and `maze --plan`
 // runs row by row. Room orders come from a balanced Latin square (Williams design) of the five
 // cue rooms: 10 rows in which every room stands at every position twice and follows every other
-// room once. Participant i (from 0) takes rows i, i + 1, ... (mod 10) for passes 1, 2, ..., so
+// room twice. Participant i (from 0) takes rows i, i + 1, ... (mod 10) for passes 1, 2, ..., so
 // the listed passes of every participant hold each row once, and first passes rotate through
 // the rows. Conditions alternate (P01 the first, P02 the second, ...); every participant gets a
 // seed of their own (the correct exits) and one row per session (retests keep seed and orders).
