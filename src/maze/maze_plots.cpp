@@ -2,6 +2,7 @@
 // group's mean with its 95 % confidence interval and N. Lines that would coincide (two
 // participants with the same times, two groups with the same means) are drawn a little apart
 // along x, each with its own point type and dash, so none hides another.
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
@@ -23,10 +24,13 @@ std::string group_title(const GroupSummary& g) {
 
 // Mean wrong exits per room, one bar per condition, with 95 % CI whiskers.
 void errors_script(std::ostringstream& gp, const std::string& dir, const std::vector<GroupSummary>& groups) {
+  double top = 1.0;  // whiskers included (gnuplot's autoscale leaves a histogram's error bars out)
+  for (const GroupSummary& g : groups)
+    for (std::size_t c = 0; c < kCueCount; ++c) top = std::max(top, g.mean_errors[c] + or_zero(g.ci_errors[c]));
   gp << "set terminal pngcairo noenhanced size 900,500 font ',10'\nset output '" << dir << "/errors_by_room.png'\n"
      << "set title 'Wrong exits per room (mean per participant, whiskers: 95 % CI) by condition'\nset ylabel 'errors'\n"
      << "set style data histograms\nset style histogram errorbars gap 1 lw 1.5\nset style fill solid 0.8 border -1\n"
-     << "set boxwidth 0.9\nset bmargin 5\nset offsets 0, 0, 0.5, 0\nset yrange [0:*]\nset key top right\nset grid ytics\n"
+     << "set boxwidth 0.9\nset bmargin 5\nset yrange [0:" << 1.1 * top << "]\nset key top right\nset grid ytics\n"
      << "$errors << EOD\n";
   for (int c = 0; c < kCueCount; ++c) {
     gp << "\"" << cue_label(static_cast<Cue>(c)) << "\\n" << cue_name(static_cast<Cue>(c)) << "\"";

@@ -186,7 +186,7 @@ void participant_tables(const std::vector<ParticipantSummary>& people, std::ostr
   tc << "participant,session,condition,pass,correct,pass_time_s\n";
   md << "## Participants\n\n| participant | session | condition | seed | passes | trials to criterion | total time (s) |";
   for (int c = 0; c < kCueCount; ++c) md << " errors " << cue_name(static_cast<Cue>(c)) << " |";
-  md << "\n|---|---|---|---|---|---|---|";
+  md << " end |\n|---|---|---|---|---|---|---|---|";
   for (int c = 0; c < kCueCount; ++c) md << "---|";
   md << "\n";
   for (const ParticipantSummary& p : people) {
@@ -198,7 +198,8 @@ void participant_tables(const std::vector<ParticipantSummary>& people, std::ostr
     for (int c = 0; c < kCueCount; ++c) pc << "," << p.errors[static_cast<std::size_t>(c)], md << " " << p.errors[static_cast<std::size_t>(c)] << " |";
     for (int c = 0; c < kCueCount; ++c) pc << "," << fmt(p.mean_room_time_s(c));
     pc << "," << p.end_reason_or_crashed() << "," << p.resumed << "\n";
-    md << (p.ended ? "" : " (log cut short)") << (p.resumed > 0 ? " (resumed " + std::to_string(p.resumed) + "x)" : "") << "\n";
+    md << " " << p.end_reason_or_crashed() << (p.ended ? "" : " (log cut short)")
+       << (p.resumed > 0 ? ", resumed " + std::to_string(p.resumed) + "x" : "") << " |\n";
     for (std::size_t i = 0; i < p.pass_time_s.size(); ++i)
       tc << p.participant << "," << p.session << "," << p.condition << "," << i + 1 << "," << p.pass_correct[i] << "," << fmt(p.pass_time_s[i]) << "\n";
   }
