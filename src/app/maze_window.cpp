@@ -61,7 +61,6 @@ struct Window {  // context first: the renderer's GL objects die before it
   std::unique_ptr<Renderer> renderer;
   std::unique_ptr<Device> device;
   GlfwInputDevice* input = nullptr;  // == device.get() for the mouse or gamepad
-
   Events events;                     // its callbacks point here: it lives as long as the window
   std::string out_dir;
   int screenshots = 0;
