@@ -211,12 +211,10 @@ int maze_main(const cli::Command& cmd, const MazeArgs& a) {
   if (!a.write_scene.empty()) return write_scene(cmd, a, desc.value());
   MazeArgs args = a;
   std::vector<maze::RoomOrder> planned;
-  if (!a.plan.empty()) {
+  if (!a.plan.empty()) {  // the row's seed, condition and room orders
     if (a.participant.empty() || a.seed >= 0 || !a.cues.empty())
       return cmd.usage_error(make_error("--plan FILE takes --participant ID (and --session K); the seed and cues come from the plan"));
-    auto rows = maze::read_plan(a.plan);
-    if (!rows) return cmd.fail(rows.error());
-    auto row = maze::find_plan_row(rows.value(), a.participant, static_cast<int>(a.session), a.plan);
+    auto row = maze::load_plan_row(a.plan, a.participant, static_cast<int>(a.session));
     if (!row) return cmd.fail(row.error());
     args.seed = static_cast<long long>(row->seed);
     args.cues = row->cues ? "on" : "off";
@@ -225,14 +223,15 @@ int maze_main(const cli::Command& cmd, const MazeArgs& a) {
   if (args.participant.empty() || args.seed < 0 || args.cues.empty())
     return cmd.usage_error(make_error("--participant ID, --seed N and --cues on|off are required (e.g. --participant P01 --seed 7 --cues on)"));
   if (args.out_dir.empty()) args.out_dir = "maze-" + a.participant;
+  const auto seed = static_cast<std::uint64_t>(args.seed);
   if (!a.force)
-    if (Status s = check_study_folder(args.out_dir, args.participant, static_cast<int>(a.session), static_cast<std::uint64_t>(args.seed)); !s)
+    if (Status s = check_study_folder(args.out_dir, args.participant, static_cast<int>(a.session), seed); !s)
       return cmd.fail(s.error());
-  warn_device_seed(a.device, static_cast<std::uint64_t>(args.seed));
+  warn_device_seed(a.device, seed);
   if (Status s = prepare_output_dir(args.out_dir + "/session.jsonl"); !s) return cmd.fail(s.error());
   maze::SessionOptions o;
   o.desc = desc.value();
-  o.route = maze::draw_route(static_cast<std::uint64_t>(args.seed));
+  o.route = maze::draw_route(seed);
   o.route.planned = planned;
   o.info = {a.participant, args.cues == "on", o.route.seed, a.maze, a.device.empty() ? "mouse" : a.device, "device.log",
             o.desc.max_passes, static_cast<int>(a.session)};
@@ -319,9 +318,7 @@ int script_main(const cli::Command& cmd, const ScriptArgs& a) {
   if (!desc) return cmd.fail(desc.error());
   maze::Route route = maze::draw_route(static_cast<std::uint64_t>(std::max(0LL, a.seed)));
   if (!a.plan.empty()) {
-    auto rows = maze::read_plan(a.plan);
-    if (!rows) return cmd.fail(rows.error());
-    auto row = maze::find_plan_row(rows.value(), a.participant, static_cast<int>(a.session), a.plan);
+    auto row = maze::load_plan_row(a.plan, a.participant, static_cast<int>(a.session));
     if (!row) return cmd.fail(row.error());
     route = maze::draw_route(row->seed);
     route.planned = row->orders;

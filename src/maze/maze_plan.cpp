@@ -121,4 +121,10 @@ Result<PlanRow> find_plan_row(const std::vector<PlanRow>& rows, const std::strin
                     " (its first column lists the participants)");
 }
 
+Result<PlanRow> load_plan_row(const std::string& plan_path, const std::string& participant, int session) {
+  auto rows = read_plan(plan_path);
+  if (!rows) return rows.error();
+  return find_plan_row(rows.value(), participant, session, plan_path);
+}
+
 }  // namespace ps::maze

@@ -47,6 +47,9 @@ Result<std::vector<PlanRow>> read_plan(const std::string& path);
 Result<PlanRow> find_plan_row(const std::vector<PlanRow>& rows, const std::string& participant, int session,
                               const std::string& plan_path);
 
+// read_plan + find_plan_row.
+Result<PlanRow> load_plan_row(const std::string& plan_path, const std::string& participant, int session);
+
 std::string order_text(const RoomOrder& order);  // "texture viscosity elastic hidden_sphere external_force"
 
 }  // namespace ps::maze
