@@ -3,8 +3,10 @@
 // calibration.h) and writes the lookup table that makes equal steps look equally different
 // (docs/calibrate.md). A person answers in the window (app/calibrate_window.cpp); with
 // --observer simulated a scripted observer with a known psychometric function answers, headless.
+#include <algorithm>
 #include <cstdio>
 #include <filesystem>
+#include <fstream>
 #include <sstream>
 
 #include "app/calibrate_window.h"
@@ -35,7 +37,7 @@ constexpr const char* kDescription =
 
 struct CalibrateArgs {
   cli::SceneArgs scene;
-  std::string material, curve, references, out, log, observer = "human";
+  std::string material, curve, references, out, log, observer = "human", resume;
   double range = 0.0, observer_jnd = 0.01, observer_weber = 0.1;
   long long seed = 1, reversals = 16, average_last = 12;
   bool quiet = false, window = false;
@@ -88,6 +90,10 @@ void declare(cli::Command& cmd, CalibrateArgs& a) {
   app.add_option("--log", a.log, "the trial log, CSV (default: FILE.lut's name + .trials.csv)")
       ->type_name("FILE.csv")
       ->group(cli::kOutputGroup);
+  app.add_option("--resume", a.resume,
+                 "continue a calibration stopped early (Esc, a crash) from its trial log: give the same options and "
+                 "--seed as that run; its answers are replayed, the rest is asked, and the log gets every trial")
+      ->type_name("LOG.csv");
   cli::add_quiet_option(app, a.quiet);
   cmd.usage("pseudoshadow calibrate --curve distance|speed --out FILE.lut [--observer simulated] [options]");
 }
@@ -152,25 +158,45 @@ Result<calibrate::Spec> make_spec(const CalibrateArgs& a, const Material& m, dou
   return spec;
 }
 
-// The equalising table with the JNDs in its comments (and on stdout unless quiet).
+// The equalising table from the staircases that finished (all of them, unless the person stopped
+// early), with the JNDs in its comments (and on stdout unless quiet).
 Status write_table(const CalibrateArgs& a, const calibrate::Calibration& cal, const Material& m,
                    const calibrate::CurveFn& shown, double range) {
   const calibrate::Spec& spec = cal.spec();
   const bool distance = spec.kind == CurveKind::kDistance;
-  const std::vector<double> jnds = cal.jnds();
-  const Lut lut = calibrate::equalising_lut(spec.kind, shown, spec.references, jnds, range,
-                                            distance ? m.influence_distance_mm : 4.0 * range);
+  const std::vector<double> all = cal.jnds();
+  const std::vector<bool> finished = cal.finished();
+  std::vector<double> refs, jnds;
+  for (std::size_t i = 0; i < all.size(); ++i)
+    if (finished[i]) refs.push_back(spec.references[i]), jnds.push_back(all[i]);
+  const Lut lut = calibrate::equalising_lut(spec.kind, shown, refs, jnds, range, distance ? m.influence_distance_mm : 4.0 * range);
   std::vector<std::string> comments = {"pseudoshadow calibrate --curve " + a.curve + ", material " + m.name + ", " +
                                        std::to_string(cal.trials().size()) + " trials, observer " + a.observer};
   const std::string unit = distance ? "mm" : "mm/s";
-  for (std::size_t i = 0; i < jnds.size(); ++i) {
-    comments.push_back("JND at " + number(spec.references[i]) + " " + unit + ": " + number(jnds[i]) + " " + unit +
-                       " (" + std::to_string(cal.reversals()[i]) + " reversals)");
+  for (std::size_t i = 0; i < all.size(); ++i) {
+    comments.push_back("JND at " + number(spec.references[i]) + " " + unit + ": " + number(all[i]) + " " + unit + " (" +
+                       std::to_string(cal.reversals()[i]) + " reversals)" + (finished[i] ? "" : ", not finished: not used"));
     if (!a.quiet) std::printf("%s\n", comments.back().c_str());
   }
   comments.push_back("equal steps over [0, " + number(range) + "] " + unit + "; the material's curve beyond");
   if (Status s = write_lut(a.out, lut, comments); !s) return s;
   if (!a.quiet) std::printf("calibrate: %zu trials; table %s (%zu rows)\n", cal.trials().size(), a.out.c_str(), lut.points.size());
+  return ok_status();
+}
+
+// --resume LOG: the log's answers again, in order (a simulated observer draws its answers as
+// it did, so the rest goes on as the uninterrupted run would).
+Status resume_from(const std::string& path, calibrate::Calibration& cal, calibrate::SimulatedObserver* observer) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) return make_error(path + ": cannot open the trial log to resume (the .trials.csv a stopped run wrote)");
+  std::ostringstream text;
+  text << in.rdbuf();
+  auto answers = calibrate::parse_trial_log(text.str(), path);
+  if (!answers) return answers.error();
+  for (std::size_t i = 0; i < answers->size(); ++i) {
+    if (observer && !cal.done()) observer->answer_left(cal.current(), cal.spec().kind);
+    if (Status s = calibrate::replay_answer(cal, (*answers)[i], path + ":" + std::to_string(i + 2)); !s) return s;
+  }
   return ok_status();
 }
 
@@ -192,7 +218,10 @@ int calibrate_main(const cli::Command& cmd, const CalibrateArgs& a) {
   calibrate::Calibration cal(spec.value());
   calibrate::SimulatedObserver observer(shown, {a.observer_jnd, a.observer_weber, static_cast<std::uint64_t>(a.seed) + 1});
   const bool simulated = a.observer == "simulated";
-  if (simulated && !a.window) {
+  if (!a.resume.empty())
+    if (Status s = resume_from(a.resume, cal, simulated ? &observer : nullptr); !s) return cmd.fail(s.error());
+  if (cal.done()) {
+  } else if (simulated && !a.window) {
     calibrate::run_simulated(cal, observer);
   } else {
     CalibrateWindowParams wp{scene.value(), *m, log_path, {}};
@@ -200,9 +229,16 @@ int calibrate_main(const cli::Command& cmd, const CalibrateArgs& a) {
     if (Status s = run_calibrate_window(cal, wp); !s) return cmd.fail(s.error());
   }
   if (Status s = write_file_atomic(log_path, calibrate::format_trial_log(cal)); !s) return cmd.fail(s.error());
+  const std::vector<bool> finished = cal.finished();
   if (!cal.done()) {
-    std::printf("calibrate: stopped after %zu trials; no table written; trials in %s\n", cal.trials().size(), log_path.c_str());
-    return cli::kExitOk;
+    std::printf("calibrate: stopped after %zu trials (%zu of %zu staircases finished); trials in %s; continue with "
+                "--resume %s\n",
+                cal.trials().size(), static_cast<std::size_t>(std::count(finished.begin(), finished.end(), true)),
+                finished.size(), log_path.c_str(), log_path.c_str());
+    if (std::count(finished.begin(), finished.end(), true) == 0) {
+      std::printf("calibrate: no staircase finished: no table written\n");
+      return cli::kExitOk;
+    }
   }
   if (Status s = write_table(a, cal, *m, shown, range); !s) return cmd.fail(s.error());
   if (!a.quiet) std::printf("calibrate: trials %s\n", log_path.c_str());

@@ -9,10 +9,12 @@
 
 #include "app/imgui_scope.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
 #include <cstdio>
 #include <memory>
+#include <string>
 
 #include "core/file_io.h"
 #include "gl/context.h"
@@ -27,6 +29,9 @@ constexpr double kProbeRadiusMm = 8.0;  // the probe: a sphere as in the thesis'
 constexpr double kSpeedGapMm = 1.0;     // speed trials: the probe this far above (texture shown)
 constexpr double kWrapMm = 1000.0;      // speed trials: the probe (and the view with it) starts over after this
 constexpr double kPlaneMm = 4000.0;     // the plane: wide enough for kWrapMm either side
+// Between trials: 0.3 s of black, so two identical trials in a row are seen as two (and the eye
+// leaves the last pair before the next).
+constexpr double kBlankS = 0.3;
 
 // A plane of `m` seen from above (orthographic, 40 mm across) under a sphere probe.
 Scene stimulus_scene(const Scene& from, const Material& m) {
@@ -98,8 +103,9 @@ Status draw_pair(Renderer& left, Renderer& right, std::vector<std::uint8_t>& rgb
 }
 
 // One frame: the pair of stimuli across the window (the texture's first row is the bottom one,
-// so v is flipped) and the question above it.
-void present(GLFWwindow* win, const gl::Texture& pair, const char* question, std::size_t trial) {
+// so v is flipped; none: a blank between trials, or the first frame while the stimuli are
+// prepared) and the question and the progress above it.
+void present(GLFWwindow* win, const gl::Texture* pair, const char* question, const std::string& progress) {
   int fw = 0, fh = 0;
   glfwGetFramebufferSize(win, &fw, &fh);
   glBindFramebuffer(GL_FRAMEBUFFER, 0);
@@ -109,17 +115,27 @@ void present(GLFWwindow* win, const gl::Texture& pair, const char* question, std
   ImGui_ImplOpenGL3_NewFrame();
   ImGui_ImplGlfw_NewFrame();
   ImGui::NewFrame();
-  ImGui::GetBackgroundDrawList()->AddImage(reinterpret_cast<ImTextureID>(static_cast<std::intptr_t>(pair.id())),
-                                           ImVec2(0, 0), ImGui::GetIO().DisplaySize, ImVec2(0, 1), ImVec2(1, 0));
+  if (pair)
+    ImGui::GetBackgroundDrawList()->AddImage(reinterpret_cast<ImTextureID>(static_cast<std::intptr_t>(pair->id())),
+                                             ImVec2(0, 0), ImGui::GetIO().DisplaySize, ImVec2(0, 1), ImVec2(1, 0));
   ImGui::SetNextWindowPos(ImVec2(10, 10));
   ImGui::SetNextWindowBgAlpha(0.7f);
   ImGui::Begin("question", nullptr, ImGuiWindowFlags_NoDecoration | ImGuiWindowFlags_AlwaysAutoResize | ImGuiWindowFlags_NoInputs);
-  ImGui::Text("%s  Left / Right arrow.  Esc stops.", question);
-  ImGui::Text("trial %zu", trial);
+  ImGui::Text("%s  Left / Right arrow.  Esc stops (every answer is kept).", question);
+  ImGui::TextUnformatted(progress.c_str());
   ImGui::End();
   ImGui::Render();
   ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
   glfwSwapBuffers(win);
+}
+
+// "trial 37 of about 230; staircases done: 1 of 4".
+std::string progress_text(const calibrate::Calibration& cal) {
+  const std::vector<bool> f = cal.finished();
+  char buf[128];
+  std::snprintf(buf, sizeof buf, "trial %zu of about %d; staircases done: %zu of %zu", cal.trials().size() + 1,
+                cal.expected_trials(), static_cast<std::size_t>(std::count(f.begin(), f.end(), true)), f.size());
+  return buf;
 }
 
 }  // namespace
@@ -147,21 +163,32 @@ Status run_calibrate_window(calibrate::Calibration& cal, const CalibrateWindowPa
   const calibrate::CurveKind kind = cal.spec().kind;
   const char* question = kind == calibrate::CurveKind::kDistance ? "Which pseudo-shadow is closer?"
                                                                  : "Which texture is moving faster?";
-  double trial_start = glfwGetTime();
+  // The first frame says what is coming while the first stimuli are prepared (the first tile
+  // bakes: seconds on a software renderer).
+  present(win, nullptr, question, progress_text(cal) + "  (preparing the stimuli...)");
+  double trial_start = glfwGetTime(), blank_until = 0.0;
   std::size_t shown = static_cast<std::size_t>(-1);  // the last trial drawn (index), none yet
   while (!cal.done() && !glfwWindowShouldClose(win)) {
     glfwPollEvents();
     if (answers.quit) break;
+    if (glfwGetTime() < blank_until) {  // a blank between trials: the next one is seen to be new
+      answers.left.clear();             // a press now would answer a trial not yet shown
+      present(win, nullptr, question, progress_text(cal));
+      trial_start = glfwGetTime();
+      continue;
+    }
     // Each press answers the trial on screen when it was pressed (the first press; presses that
     // came in the same frame after it would answer a trial never seen, so they are dropped). A
     // script answers a trial after its first frame.
+    if (shown != cal.trials().size()) answers.left.clear();  // nothing on screen yet to answer
     if (p.script && shown == cal.trials().size()) answers.left.assign(1, p.script(cal.current()));
     if (!answers.left.empty()) {
       cal.answer(answers.left.front());
       answers.left.clear();
       if (Status st = write_file_atomic(p.log_path, calibrate::format_trial_log(cal)); !st) return st;
       if (cal.done()) break;
-      trial_start = glfwGetTime();
+      blank_until = glfwGetTime() + kBlankS;
+      continue;
     }
     const calibrate::Trial& t = cal.current();
     const double now = glfwGetTime() - trial_start;
@@ -169,7 +196,7 @@ Status run_calibrate_window(calibrate::Calibration& cal, const CalibrateWindowPa
     place_probe(*right.value(), kind, t.comparison_left ? t.reference : t.comparison, now);
     if (Status st = draw_pair(*left.value(), *right.value(), rgba); !st) return st;
     glTextureSubImage2D(pair.id(), 0, 0, 0, 2 * kSide, kSide, GL_RGBA, GL_UNSIGNED_BYTE, rgba.data());
-    present(win, pair, question, cal.trials().size() + 1);
+    present(win, &pair, question, progress_text(cal));
     shown = cal.trials().size();
   }
   return ok_status();

@@ -10,11 +10,13 @@
 #include "app/cli.h"
 #include "app/cli_groups.h"
 #include "app/commands.h"
+#include "app/maze_plan_cmd.h"
 #include "app/maze_window.h"
 #include "app/session.h"
 #include "core/file_io.h"
 #include "gl/context.h"
 #include "maze/maze_frames.h"
+#include "maze/maze_plan.h"
 #include "maze/maze_screen.h"
 #include "maze/maze_script.h"
 #include "maze/maze_session.h"
@@ -33,16 +35,18 @@ constexpr const char* kDescription =
     "room order come from the seed. Writes DIR/session.jsonl (the session log), DIR/device.log (the\n"
     "device stream) and a score picture per pass. With --device trajectory:FILE or playback:FILE the\n"
     "session runs headless and deterministically; without --device it opens a window.\n"
-    "Also: `maze summarize LOGS... --out DIR` and `maze script --seed N --out FILE.traj`.";
+    "Also: `maze summarize LOGS... --out DIR`, `maze script --seed N --out FILE.traj`, `maze plan --participants N\n"
+    "--out plan.csv` (then `maze --plan plan.csv --participant P03`) and `maze --resume DIR`.";
 
 std::string default_maze() { return default_scene_base_dir() + "/maze/maze.toml"; }
 
 struct MazeArgs {
-  std::string maze = default_maze(), participant, cues, device, out_dir, write_scene;
+  std::string maze = default_maze(), participant, cues, device, out_dir, write_scene, resume, plan;
   long long seed = -1, every = 0, session = 1;
   double fps = 30.0, pace = 0.0;
   gl::Backend backend = gl::Backend::kAuto;
-  bool quiet = false, window = false;
+  bool quiet = false, window = false, no_clutch = false, hide_hand = false, force = false;
+  double clutch_mm = MazeWindowParams{}.clutch_mm;
   cli::LiveLoopArgs live;  // the window's haptic thread and renderer: --render-threads, --spare-cpu
 };
 
@@ -90,7 +94,23 @@ void declare(cli::Command& cmd, MazeArgs& a) {
                  "take) and exit without a session")
       ->type_name("FILE")
       ->group(cli::kOutputGroup);
+  app.add_option("--plan", a.plan,
+                 "run the row of --participant (and --session) of a study plan (`maze plan`): its seed, condition "
+                 "and counterbalanced room orders")
+      ->type_name("FILE.csv");
+  app.add_flag("--force", a.force,
+               "run even when the study folder (--out's parent) already has this participant's session or this seed");
+  app.add_option("--resume", a.resume,
+                 "continue the interrupted session in DIR (killed, crashed, quit) at its next unfinished trial: "
+                 "participant, seed, condition and maze from its log, which gets a `resumed` line; the device "
+                 "stream goes to DIR/device_resumed_N.log. A log device is played on from where the session stopped")
+      ->type_name("DIR");
   app.add_flag("--window", a.window, "open the window also for a trajectory:/playback: device (played in real time)");
+  cli::add_positive(app, "--clutch", "MM", a.clutch_mm, 1000.0, "6",
+                    "window: a hand run on past a wall by more than MM along the floor is put back under the probe, "
+                    "logged as `clutch` (default 6, the probe's radius)");
+  app.add_flag("--no-clutch", a.no_clutch, "window: never put the hand back (it stays where the mouse took it)");
+  app.add_flag("--hide-hand", a.hide_hand, "window: no faint ring where the hand is while a wall holds the probe");
   cli::add_gl_options(app, a.backend);
   cli::add_live_loop_options(app, a.live);
   cli::add_quiet_option(app, a.quiet);
@@ -122,6 +142,9 @@ int run_headless(const cli::Command& cmd, const MazeArgs& a, const maze::Session
   };
   auto r = maze::run_session(*device->device, o, on_frame, on_score);
   if (!r) return fail(r.error());
+  if (r->reason == "device_ended" && r->branches == 0)
+    std::fprintf(stderr, "pseudoshadow maze: warning: %s ended before the first branch: is it this session's (seed %llu)?\n",
+                 a.device.c_str(), static_cast<unsigned long long>(o.route.seed));
   if (!a.quiet)
     std::printf("maze: %s after %d pass%s (%s), %.2f s of session; log %s\n", a.participant.c_str(), r->passes,
                 r->passes == 1 ? "" : "es", r->reason.c_str(), r->time_s, o.log_path.c_str());
@@ -139,24 +162,82 @@ int write_scene(const cli::Command& cmd, const MazeArgs& a, const maze::MazeDesc
   return cli::kExitOk;
 }
 
+bool opens_window(const MazeArgs& a) {
+  return a.window || a.device.empty() || a.device == "mouse" || a.device == "gamepad";
+}
+
+int run_session_of(const cli::Command& cmd, const MazeArgs& a, const maze::SessionOptions& o) {
+  if (opens_window(a)) {
+    const MazeWindowParams wp{a.no_clutch ? 0.0 : a.clutch_mm, !a.hide_hand};
+    return run_maze_window(cmd, o, a.device, a.live, wp);
+  }
+  return run_headless(cmd, a, o);
+}
+
+// --resume DIR: the session in DIR's log goes on where it stopped (maze/maze_resume.h).
+int resume_main(const cli::Command& cmd, const MazeArgs& a) {
+  if (!a.participant.empty() || a.seed >= 0 || !a.cues.empty())
+    return cmd.usage_error(make_error("--resume DIR takes the participant, seed and cues from DIR's log: give none of them"));
+  const std::string log = a.resume + "/session.jsonl";
+  auto r = maze::read_resume_point(log);
+  if (!r) return cmd.fail(r.error());
+  auto desc = maze::load_maze_desc(r->info.maze_path);
+  if (!desc) return cmd.fail(desc.error());
+  MazeArgs args = a;
+  args.out_dir = a.resume;
+  args.participant = r->info.participant;
+  if (args.device.empty() && r->info.device != "mouse") args.device = r->info.device;
+  maze::SessionOptions o;
+  o.desc = desc.value();
+  o.route = maze::draw_route(r->info.seed);
+  o.route.planned = r->planned;
+  o.info = r->info;
+  o.info.device = args.device.empty() ? "mouse" : args.device;
+  o.info.device_log = "device_resumed_" + std::to_string(r->resumes + 1) + ".log";
+  o.log_path = log;
+  o.record_path = a.resume + "/" + o.info.device_log;
+  o.haptics.start_time_s = r->time_s;  // the loop's clock, the device and the fields go on from there
+  o.resume = std::move(r.value());
+  if (!a.quiet)
+    std::printf("maze: resuming %s at pass %d, room %d, %.3f s of session\n", args.participant.c_str(),
+                o.resume->current.pass + 1, static_cast<int>(o.resume->current.trials.size()) + 1, o.resume->time_s);
+  return run_session_of(cmd, args, o);
+}
+
 int maze_main(const cli::Command& cmd, const MazeArgs& a) {
+  if (!a.resume.empty()) return resume_main(cmd, a);
   auto desc = maze::load_maze_desc(a.maze);
   if (!desc) return cmd.fail(desc.error());
   if (!a.write_scene.empty()) return write_scene(cmd, a, desc.value());
-  if (a.participant.empty() || a.seed < 0 || a.cues.empty())
-    return cmd.usage_error(make_error("--participant ID, --seed N and --cues on|off are required (e.g. --participant P01 --seed 7 --cues on)"));
   MazeArgs args = a;
+  std::vector<maze::RoomOrder> planned;
+  if (!a.plan.empty()) {  // the row's seed, condition and room orders
+    if (a.participant.empty() || a.seed >= 0 || !a.cues.empty())
+      return cmd.usage_error(make_error("--plan FILE takes --participant ID (and --session K); the seed and cues come from the plan"));
+    auto row = maze::load_plan_row(a.plan, a.participant, static_cast<int>(a.session));
+    if (!row) return cmd.fail(row.error());
+    args.seed = static_cast<long long>(row->seed);
+    args.cues = row->cues ? "on" : "off";
+    planned = row->orders;
+  }
+  if (args.participant.empty() || args.seed < 0 || args.cues.empty())
+    return cmd.usage_error(make_error("--participant ID, --seed N and --cues on|off are required (e.g. --participant P01 --seed 7 --cues on)"));
   if (args.out_dir.empty()) args.out_dir = "maze-" + a.participant;
+  const auto seed = static_cast<std::uint64_t>(args.seed);
+  if (!a.force)
+    if (Status s = check_study_folder(args.out_dir, args.participant, static_cast<int>(a.session), seed); !s)
+      return cmd.fail(s.error());
+  warn_device_seed(a.device, seed);
   if (Status s = prepare_output_dir(args.out_dir + "/session.jsonl"); !s) return cmd.fail(s.error());
   maze::SessionOptions o;
   o.desc = desc.value();
-  o.route = maze::draw_route(static_cast<std::uint64_t>(a.seed));
-  o.info = {a.participant, a.cues == "on", o.route.seed, a.maze, a.device.empty() ? "mouse" : a.device, "device.log",
+  o.route = maze::draw_route(seed);
+  o.route.planned = planned;
+  o.info = {a.participant, args.cues == "on", o.route.seed, a.maze, a.device.empty() ? "mouse" : a.device, "device.log",
             o.desc.max_passes, static_cast<int>(a.session)};
   o.log_path = args.out_dir + "/session.jsonl";
   o.record_path = args.out_dir + "/device.log";
-  if (a.window || a.device.empty() || a.device == "mouse" || a.device == "gamepad") return run_maze_window(cmd, o, a.device, a.live);
-  return run_headless(cmd, args, o);
+  return run_session_of(cmd, args, o);
 }
 
 // --- maze summarize -------------------------------------------------------------------------
@@ -164,18 +245,21 @@ int maze_main(const cli::Command& cmd, const MazeArgs& a) {
 struct SummarizeArgs {
   std::vector<std::string> logs;
   std::string out_dir;
-  bool no_plots = false, quiet = false;
+  bool no_plots = false, quiet = false, include_aborted = false;
 };
 
 void declare_summarize(cli::Command& cmd, SummarizeArgs& a) {
   CLI::App& app = cmd.app();
   app.add_option("logs", a.logs, "session logs (DIR/session.jsonl of each participant)")->type_name("LOG");
   app.add_option("--out", a.out_dir,
-                 "writes participants.csv, groups.csv, trials.csv, summary.md and the plots there (required); it "
+                 "writes participants.csv, groups.csv, trials.csv, rooms.csv, summary.md and the plots there (required); it "
                  "must exist, or only its last component may be missing (it is created)")
       ->type_name("DIR")
       ->group(cli::kOutputGroup);
   app.add_flag("--no-plots", a.no_plots, "tables only (no gnuplot needed)");
+  app.add_flag("--include-aborted", a.include_aborted,
+               "count aborted sessions (quit, device_ended, crashed) in the group means too (default: left out, "
+               "counted in groups.csv's `excluded`)");
   cli::add_quiet_option(app, a.quiet);
   cmd.usage("pseudoshadow maze summarize LOGS... --out DIR");
 }
@@ -189,7 +273,7 @@ int summarize_main(const cli::Command& cmd, const SummarizeArgs& a) {
     if (!p) return cmd.fail(p.error());
     people.push_back(std::move(p.value()));
   }
-  const auto groups = maze::summarize_groups(people);
+  const auto groups = maze::summarize_groups(people, a.include_aborted);
   if (Status s = prepare_output_dir(a.out_dir + "/summary.md"); !s) return cmd.fail(s.error());
   if (Status s = maze::write_tables(a.out_dir, people, groups, maze::summarize_retests(people)); !s) return cmd.fail(s.error());
   if (!a.no_plots)
@@ -201,7 +285,8 @@ int summarize_main(const cli::Command& cmd, const SummarizeArgs& a) {
 // --- maze script ------------------------------------------------------------------------------
 
 struct ScriptArgs {
-  std::string maze = default_maze(), out;
+  std::string maze = default_maze(), out, plan, participant;
+  long long session = 1;
   long long seed = -1, errors = 0, passes = 0;
   double speed = 100.0, height = -1.0;
 };
@@ -218,22 +303,36 @@ void declare_script(cli::Command& cmd, ScriptArgs& a) {
   cli::add_positive(app, "--height", "MM", a.height, 1000.0, "5.5",
                     "the probe centre's height over the floor (default: probe radius + 1, no contact; below the "
                     "radius it presses into the floor, so the floor's feel shows in the log)");
+  app.add_option("--plan", a.plan, "walk the plan row of --participant (and --session): its seed and room orders")
+      ->type_name("FILE.csv");
+  app.add_option("--participant", a.participant, "with --plan: whose row")->type_name("ID");
+  cli::add_int(app, "--session", "K", a.session, 1LL, 1000LL, "with --plan: which session's row (default 1)");
   app.add_option("--out", a.out, "the trajectory file to write (required)")->type_name("FILE.traj")->group(cli::kOutputGroup);
   cmd.usage("pseudoshadow maze script --seed N --out FILE.traj [--errors K] [--passes P]");
 }
 
 int script_main(const cli::Command& cmd, const ScriptArgs& a) {
-  if (a.seed < 0 || a.out.empty()) return cmd.usage_error(make_error("--seed N and --out FILE.traj are required"));
+  if ((a.seed < 0) == a.plan.empty() || a.out.empty())
+    return cmd.usage_error(make_error("--seed N (or --plan FILE --participant ID) and --out FILE.traj are required"));
   auto desc = maze::load_maze_desc(a.maze);
   if (!desc) return cmd.fail(desc.error());
-  const maze::Route route = maze::draw_route(static_cast<std::uint64_t>(a.seed));
+  maze::Route route = maze::draw_route(static_cast<std::uint64_t>(std::max(0LL, a.seed)));
+  if (!a.plan.empty()) {
+    auto row = maze::load_plan_row(a.plan, a.participant, static_cast<int>(a.session));
+    if (!row) return cmd.fail(row.error());
+    route = maze::draw_route(row->seed);
+    route.planned = row->orders;
+  }
   const int passes = a.passes > 0 ? static_cast<int>(a.passes) : a.errors > 0 ? 2 : 1;
   std::vector<maze::PassChoices> choices;
   for (int p = 0; p < passes; ++p)
     choices.push_back(p + 1 < passes ? maze::choices_with_errors(route, p, static_cast<int>(a.errors))
                                      : maze::correct_choices(route, p));
   if (Status s = prepare_output_dir(a.out); !s) return cmd.fail(s.error());
-  if (Status s = write_file_atomic(a.out, maze::script_trajectory(desc.value(), choices, a.speed, a.height)); !s) return cmd.fail(s.error());
+  // The seed in the header: `maze` warns when the trajectory is run with another one.
+  const std::string header = "# pseudoshadow maze script --seed " + std::to_string(route.seed) + "\n";
+  if (Status s = write_file_atomic(a.out, header + maze::script_trajectory(desc.value(), choices, a.speed, a.height)); !s)
+    return cmd.fail(s.error());
   return cli::kExitOk;
 }
 
@@ -246,6 +345,7 @@ int run_maze(int argc, char** argv) {
                                            "Tables (CSV, markdown) and plots (PNG) of maze session logs, per "
                                            "participant and per condition (docs/maze.md).",
                                            declare_summarize, summarize_main);
+  if (sub == "plan") return run_maze_plan(argc - 1, argv + 1);
   if (sub == "script")
     return cli::run_command<ScriptArgs>(argc - 1, argv + 1, "maze script",
                                         "Writes a scripted participant: a trajectory through the maze taking the "

@@ -27,24 +27,32 @@ namespace {
 constexpr double kScoreSeconds = 5.0;  // how long a pass's score screen stays up
 constexpr double kMmPerCount = 0.15;   // captured mouse: mm on the floor per raw count
 
-// Keys read by polling (edge-triggered), so ImGui's GLFW callbacks need no chaining.
-struct Keys {
-  bool quit = false, screenshot = false;
-  int height_steps = 0;  // PageUp/Up +1, PageDown/Down -1 (0.5 mm each, HeightControl)
-  std::array<bool, 5> was{};
-  void poll(GLFWwindow* win) {
-    const int keys[5] = {GLFW_KEY_PAGE_UP, GLFW_KEY_UP, GLFW_KEY_PAGE_DOWN, GLFW_KEY_DOWN, GLFW_KEY_S};
-    for (std::size_t i = 0; i < was.size(); ++i) {
-      const bool down = glfwGetKey(win, keys[i]) == GLFW_PRESS;
-      if (down && !was[i]) {
-        if (i < 2) ++height_steps;
-        else if (i < 4) --height_steps;
-        else screenshot = true;
-      }
-      was[i] = down;
-    }
-    quit = glfwWindowShouldClose(win) || glfwGetKey(win, GLFW_KEY_ESCAPE) == GLFW_PRESS ||
-           glfwGetKey(win, GLFW_KEY_Q) == GLFW_PRESS;
+// What the window hears from GLFW, from its callbacks (installed before ImGui, which chains to
+// them): a frame can take longer than a quick tap, so polled key state would lose taps.
+struct Events {
+  bool quit = false, screenshot = false, start = false;  // start: Space or Enter (the instructions)
+  int height_steps = 0;  // PageUp/Up +1, PageDown/Down -1 (0.5 mm each, HeightControl); repeats count
+  // GLFW moved its virtual cursor without the person moving the mouse (the pointer entered the
+  // window, focus came back and the cursor was grabbed again): the next poll rebases on it.
+  bool rebase = false;
+  static Events& of(GLFWwindow* win) { return *static_cast<Events*>(glfwGetWindowUserPointer(win)); }
+  static void on_key(GLFWwindow* win, int key, int /*scancode*/, int action, int /*mods*/) {
+    if (action == GLFW_RELEASE) return;
+    Events& e = of(win);
+    if (key == GLFW_KEY_PAGE_UP || key == GLFW_KEY_UP) ++e.height_steps;
+    if (key == GLFW_KEY_PAGE_DOWN || key == GLFW_KEY_DOWN) --e.height_steps;
+    if (action != GLFW_PRESS) return;  // a held S or Esc acts once
+    if (key == GLFW_KEY_S) e.screenshot = true;
+    if (key == GLFW_KEY_ESCAPE || key == GLFW_KEY_Q) e.quit = true;
+    if (key == GLFW_KEY_SPACE || key == GLFW_KEY_ENTER || key == GLFW_KEY_KP_ENTER) e.start = true;
+  }
+  static void on_enter(GLFWwindow* win, int /*entered*/) { of(win).rebase = true; }
+  static void on_focus(GLFWwindow* win, int /*focused*/) { of(win).rebase = true; }
+  void install(GLFWwindow* win) {
+    glfwSetWindowUserPointer(win, this);
+    glfwSetKeyCallback(win, &Events::on_key);
+    glfwSetCursorEnterCallback(win, &Events::on_enter);
+    glfwSetWindowFocusCallback(win, &Events::on_focus);
   }
 };
 
@@ -53,6 +61,7 @@ struct Window {  // context first: the renderer's GL objects die before it
   std::unique_ptr<Renderer> renderer;
   std::unique_ptr<Device> device;
   GlfwInputDevice* input = nullptr;  // == device.get() for the mouse or gamepad
+  Events events;                     // its callbacks point here: it lives as long as the window
   std::string out_dir;
   int screenshots = 0;
 };
@@ -62,16 +71,19 @@ PlaneAxes floor_plane(const Renderer& r) {
   return {r.scene().camera.target, glm::dvec3(1, 0, 0), glm::dvec3(0, 1, 0), glm::dvec3(0, 0, 1)};
 }
 
-Status open_device(const std::string& device, Window& w) {
+glm::dvec3 on_plane(const PlaneAxes& plane, const glm::dvec3& p) { return p - glm::dot(p - plane.origin, plane.n) * plane.n; }
+
+Status open_device(const std::string& device, const maze::SessionOptions& o, Window& w) {
   if (device.empty() || device == "mouse" || device == "gamepad") {
     GlfwInputParams params;
     params.mm_per_count = kMmPerCount;
     const bool mouse = device != "gamepad";
     auto m = std::make_unique<GlfwInputDevice>(mouse ? GlfwInputDevice::Kind::kMouse : GlfwInputDevice::Kind::kGamepad,
                                                w.ctx->window(), params);
-    // The mouse relative (captured): the camera follows the probe, so an absolute pointer would
-    // chase it. The gamepad's stick is relative already.
-    if (mouse) m->toggle_capture();
+    // The hand starts where the probe starts: its point on the floor under the probe's start.
+    const PlaneAxes plane = floor_plane(*w.renderer);
+    // A resumed session: where the probe waits, in the hall of the last room left.
+    m->place(on_plane(plane, o.resume ? maze::resume_place(o.desc, *o.resume) : w.renderer->scene().probe.position));
     w.input = m.get();
     w.device = std::move(m);
     return ok_status();
@@ -90,11 +102,12 @@ Status open_window(const maze::SessionOptions& o, const std::string& device, con
   auto ctx = gl::create_context(desc);
   if (!ctx) return ctx.error();
   w.ctx = std::move(ctx.value());
+  w.events.install(w.ctx->window());  // before ImGui (it chains to them) and before the grab
   auto r = Renderer::create(core.scene().scene, RendererOptions{});
   if (!r) return r.error();
   w.renderer = std::move(r.value());
   w.out_dir = std::filesystem::path(o.log_path).parent_path().string();
-  return open_device(device, w);
+  return open_device(device, o, w);
 }
 
 void text_window(const char* id, ImVec2 pos, const std::string& text, float scale) {
@@ -116,10 +129,25 @@ std::string score_text(const maze::PassScore& s, bool cues) {
 
 // What the window shows over the frame: the label (cues off), the last score for a while.
 struct Overlay {
-  std::string label, score;
+  std::string label, score, instructions;
   double score_until = -1.0;
-  bool done = false;
+  bool done = false, show_hand = false;
 };
+
+// A faint ring where the hand is, once a wall holds the probe away from it: the participant sees
+// how far the hand has run on (the clutch brings it back past MazeWindowParams::clutch_mm).
+void draw_hand(const Window& w, const HapticState& st) {
+  const PlaneAxes plane = floor_plane(*w.renderer);
+  const glm::dvec3 hand = on_plane(plane, st.device_mm);
+  if (glm::length(hand - on_plane(plane, st.proxy_mm)) < 0.5) return;  // under the probe: nothing to show
+  int ww = 0, wh = 0;
+  glfwGetWindowSize(w.ctx->window(), &ww, &wh);
+  const PointerView view = pointer_view(*w.renderer, plane, glm::dvec2(ww, wh));
+  const glm::dvec2 c = project_to_window(view, hand);
+  const double r = glm::length(project_to_window(view, hand + view.probe_radius_mm * plane.t) - c);
+  ImGui::GetBackgroundDrawList()->AddCircle(ImVec2(static_cast<float>(c.x), static_cast<float>(c.y)),
+                                            static_cast<float>(r), IM_COL32(255, 255, 255, 90), 32, 2.0f);
+}
 
 // Renders the state, stamps a screenshot if asked (the frame plus the label, as headless
 // frames have it), blits, draws the overlay.
@@ -142,6 +170,8 @@ Status draw(Window& w, const maze::MazeDesc& desc, const HapticState& st, const 
   ImGui_ImplOpenGL3_NewFrame();
   ImGui_ImplGlfw_NewFrame();
   ImGui::NewFrame();
+  if (ov.show_hand && st.have_sample) draw_hand(w, st);
+  if (!ov.instructions.empty()) text_window("##instructions", ImVec2(30, 60), ov.instructions, 1.3f);
   if (!ov.label.empty()) text_window("##label", ImVec2(10, 10), ov.label, 2.0f);
   if (st.time_s < ov.score_until) text_window("##score", ImVec2(40, 80), ov.score, 1.6f);
   if (ov.done) text_window("##done", ImVec2(40, fh - 60.0f), "The session is over.", 1.6f);
@@ -152,15 +182,44 @@ Status draw(Window& w, const maze::MazeDesc& desc, const HapticState& st, const 
 }
 
 
+// The clutch (docs/maze.md, "A hand a wall has stopped"): a mouse has no force to hold the hand
+// at a wall, so the hand runs on while the wall holds the probe. Once it has overshot by more
+// than clutch_mm along the floor, the hand is put back under the probe and that is logged.
+Status apply_clutch(const MazeWindowParams& p, Window& w, maze::SessionCore& core, const HapticState& st,
+                    double& quiet_until_s) {
+  if (!w.input || p.clutch_mm <= 0.0 || !st.have_sample || st.time_s < quiet_until_s) return ok_status();
+  const PlaneAxes plane = floor_plane(*w.renderer);
+  const glm::dvec3 hand = on_plane(plane, st.device_mm), probe = on_plane(plane, st.proxy_mm);
+  const double overshoot = glm::length(hand - probe);
+  if (overshoot <= p.clutch_mm) return ok_status();
+  w.input->place(probe);
+  // The haptic thread reads the placed hand within a tick; 50 ms keeps a frame drawn from a
+  // state older than that from clutching twice.
+  quiet_until_s = st.time_s + 0.05;
+  return core.log_clutch(st.time_s, overshoot, hand, probe);
+}
+
+// The window's events since the last frame, applied: quit, height steps, a rebase of the
+// relative origin; then the device's poll.
+bool take_input(Window& w, const HapticState& st) {
+  Events& e = w.events;
+  if (e.quit || glfwWindowShouldClose(w.ctx->window())) return false;
+  if (w.input) {
+    if (std::exchange(e.rebase, false)) w.input->rebase();
+    w.input->add_height_steps(std::exchange(e.height_steps, 0));
+    w.input->poll(st.time_s, pointer_view(*w.renderer, floor_plane(*w.renderer)));
+  }
+  return true;
+}
+
 // The render thread's loop: input, the session's step on the newest haptic state (a pass switch
 // brings a new renderer), the frame. Returns when the participant quits, the log device ends, or
 // kScoreSeconds after the session ended (its last score stays up that long).
-Status window_loop(const maze::SessionOptions& o, maze::SessionCore& core, Window& w, HapticLoop& loop,
-                   SampleRecorder& recorder, std::string& reason, vibration::LiveVibration& vib) {
+Status window_loop(const maze::SessionOptions& o, const MazeWindowParams& p, maze::SessionCore& core, Window& w,
+                   HapticLoop& loop, SampleRecorder& recorder, std::string& reason, vibration::LiveVibration& vib) {
   Overlay ov;
-  Keys keys;
   HapticState st;
-  double last_flush = 0.0, end_at = -1.0;
+  double last_flush = 0.0, end_at = -1.0, clutch_quiet_until = 0.0;
   const auto on_score = [&](const maze::PassScore& s) -> Status {
     ov.score = score_text(s, o.info.cues);
     ov.score_until = st.time_s + kScoreSeconds;
@@ -168,13 +227,9 @@ Status window_loop(const maze::SessionOptions& o, maze::SessionCore& core, Windo
   };
   for (;;) {
     glfwPollEvents();
-    keys.poll(w.ctx->window());
-    if (keys.quit) return ok_status();
     st = loop.state().read();
-    if (w.input) {
-      w.input->add_height_steps(std::exchange(keys.height_steps, 0));
-      w.input->poll(st.time_s, pointer_view(*w.renderer, floor_plane(*w.renderer)));
-    }
+    if (Status s = apply_clutch(p, w, core, st, clutch_quiet_until); !s) return s;
+    if (!take_input(w, st)) return ok_status();
     if (!core.finished())
       if (Status s = core.step(st, loop, on_score); !s) return s;
     if (core.finished() && end_at < 0.0) {
@@ -193,7 +248,8 @@ Status window_loop(const maze::SessionOptions& o, maze::SessionCore& core, Windo
       vib.set_scene(core.scene().scene);  // the next room's materials
     }
     ov.label = core.label();
-    if (Status s = draw(w, o.desc, st, ov, std::exchange(keys.screenshot, false)); !s) return s;
+    ov.show_hand = p.show_hand && w.input;
+    if (Status s = draw(w, o.desc, st, ov, std::exchange(w.events.screenshot, false)); !s) return s;
     if (st.time_s - last_flush >= 1.0) {  // the device stream, about once a second
       last_flush = st.time_s;
       if (Status s = recorder.flush(); !s) return s;
@@ -201,10 +257,30 @@ Status window_loop(const maze::SessionOptions& o, maze::SessionCore& core, Windo
   }
 }
 
+// The instructions (the description's [instructions] text) over the start; the session's
+// clock, the haptic loop and the mouse grab wait for Space or Enter. False: the participant quit.
+Result<bool> show_instructions(const maze::SessionOptions& o, Window& w) {
+  Overlay ov;
+  ov.instructions = o.desc.instructions;
+  const HapticState still;  // no sample: the scene's own camera and probe at the start
+  for (;;) {
+    glfwWaitEventsTimeout(0.05);  // nothing moves: redraw at 20 Hz, not as fast as it can
+    if (w.events.quit || glfwWindowShouldClose(w.ctx->window())) return false;
+    if (std::exchange(w.events.start, false)) break;
+    if (Status s = draw(w, o.desc, still, ov, false); !s) return s.error();
+  }
+  // The mouse relative (captured): the camera follows the probe, so an absolute pointer would
+  // chase it. The gamepad's stick is relative already. The grab is a new relative origin.
+  if (w.input && w.input->name() == "mouse") w.input->toggle_capture();
+  w.events.screenshot = false;
+  w.events.height_steps = 0;
+  return true;
+}
+
 }  // namespace
 
 int run_maze_window(const cli::Command& cmd, const maze::SessionOptions& o, const std::string& device,
-                    const cli::LiveLoopArgs& live_args) {
+                    const cli::LiveLoopArgs& live_args, const MazeWindowParams& params) {
   auto live = cli::apply_live_loop(live_args);  // before the context and the haptic thread
   if (!live) return cmd.usage_error(live.error());
   auto opened = maze::SessionCore::open(o);
@@ -218,20 +294,26 @@ int run_maze_window(const cli::Command& cmd, const maze::SessionOptions& o, cons
   vib = cli::open_live_vibration(live_args, core.scene().scene, loop);
   SampleRecorder recorder(o.record_path);
   loop.set_recorder(&recorder);
-  if (w.input) w.input->poll(0.0, pointer_view(*w.renderer, floor_plane(*w.renderer)));
-  loop.start();
-  vib->start();
   std::string reason = "quit";
   Status looped = ok_status();
   {
     ImGuiScope imgui(w.ctx->window());
-    looped = window_loop(o, core, w, loop, recorder, reason, *vib);
+    // A participant's session starts from the instructions; a log device played in the window
+    // has no one to read them.
+    auto go = w.input ? show_instructions(o, w) : Result<bool>(true);
+    if (!go) looped = go.error();
+    if (go && go.value()) {
+      if (w.input) w.input->poll(o.haptics.start_time_s, pointer_view(*w.renderer, floor_plane(*w.renderer)));
+      loop.start();
+      vib->start();
+      looped = window_loop(o, params, core, w, loop, recorder, reason, *vib);
+    }
   }
   loop.stop();
   vib->close();
   // The session's end is logged at the time it ended: at the criterion (or max_passes) that is
   // the tick the tracker saw it, not when its score screen closed.
-  const double end_time = reason == "logged" ? core.end_time_s() : loop.state().read().time_s;
+  const double end_time = reason == "logged" ? core.end_time_s() : std::max(o.haptics.start_time_s, loop.state().read().time_s);
   auto result = core.finish(end_time, reason == "logged" ? "quit" : reason);
   if (Status s = recorder.close(); !s) return cmd.fail(s.error());
   if (!looped) return cmd.fail(looped.error());

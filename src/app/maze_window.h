@@ -12,9 +12,18 @@
 
 namespace ps {
 
+// The live window's own settings (docs/maze.md, "A hand a wall has stopped").
+struct MazeWindowParams {
+  // The clutch: once the hand has run on past a wall by more than this along the floor, it is put
+  // back under the probe (logged as a `clutch` line). 6 mm = the shipped probe's radius: the
+  // shadow has then left the hand's place entirely. 0: no clutch.
+  double clutch_mm = 6.0;
+  bool show_hand = true;  // a faint ring where the hand is while a wall holds the probe away
+};
+
 // `device`: "mouse" (or empty), or a trajectory:/playback: log played in real time. `live`: how the
 // renderer and the haptic thread share the cores (--render-threads, --spare-cpu).
 int run_maze_window(const cli::Command& cmd, const maze::SessionOptions& options, const std::string& device,
-                    const cli::LiveLoopArgs& live);
+                    const cli::LiveLoopArgs& live, const MazeWindowParams& params = {});
 
 }  // namespace ps

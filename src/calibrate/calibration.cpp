@@ -154,3 +154,57 @@ std::string format_trial_log(const Calibration& c) {
 }
 
 }  // namespace ps::calibrate
+
+namespace ps::calibrate {
+
+std::vector<bool> Calibration::finished() const {
+  std::vector<bool> out;
+  for (const Staircase& s : stairs_) out.push_back(s.done());
+  return out;
+}
+
+int Calibration::expected_trials() const {
+  double total = static_cast<double>(log_.size());
+  const int want = spec_.staircase.reversals;
+  for (const Staircase& s : stairs_) {
+    if (s.done()) continue;
+    const double per = s.reversal_count() >= 2 ? static_cast<double>(s.trials()) / s.reversal_count() : 4.0;
+    const double left = std::min(per * (want - s.reversal_count()), static_cast<double>(spec_.staircase.max_trials - s.trials()));
+    total += std::max(0.0, left);
+  }
+  return static_cast<int>(std::lround(total));
+}
+
+Result<std::vector<LoggedAnswer>> parse_trial_log(std::string_view text, const std::string& source) {
+  std::vector<LoggedAnswer> out;
+  int n = 0;
+  std::size_t at = 0;
+  while (at < text.size()) {
+    const std::size_t end = std::min(text.find('\n', at), text.size());
+    const std::string line(text.substr(at, end - at));
+    at = end + 1;
+    if (++n == 1 || line.empty()) continue;  // the header
+    int index = 0, point = 0, correct = 0, reversal = 0;
+    double ref = 0.0, cmp = 0.0, delta = 0.0;
+    char curve[16], side[8], answer[8];
+    if (std::sscanf(line.c_str(), "%d,%15[^,],%d,%lf,%lf,%lf,%7[^,],%7[^,],%d,%d", &index, curve, &point, &ref, &cmp, &delta,
+                    side, answer, &correct, &reversal) != 10)
+      return make_error(source + ":" + std::to_string(n) + ": not a trial log row (give the .trials.csv `calibrate` wrote)");
+    out.push_back({point, ref, cmp, std::string(side) == "left", std::string(answer) == "left"});
+  }
+  return out;
+}
+
+Status replay_answer(Calibration& c, const LoggedAnswer& a, const std::string& where) {
+  const Trial& t = c.current();
+  // The log writes 9 significant digits: the same trial agrees to that.
+  auto same = [](double x, double y) { return std::abs(x - y) <= 1e-8 * std::max(1.0, std::abs(x)); };
+  if (c.done() || t.point != a.point || !same(t.reference, a.reference) || !same(t.comparison, a.comparison) ||
+      t.comparison_left != a.comparison_left)
+    return make_error(where + ": this trial is not the one the calibration shows next: give the same --curve, "
+                              "--references, --reversals, --average-last and --seed as the run that wrote the log");
+  c.answer(a.answered_left);
+  return ok_status();
+}
+
+}  // namespace ps::calibrate

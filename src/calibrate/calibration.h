@@ -14,6 +14,7 @@
 #include <vector>
 
 #include "calibrate/staircase.h"
+#include "core/result.h"
 #include "scene/lut.h"
 
 namespace ps::calibrate {
@@ -54,6 +55,11 @@ class Calibration {
   const std::vector<Trial>& trials() const { return log_; }
   std::vector<double> jnds() const;          // each reference's threshold (stimulus units)
   std::vector<int> reversals() const;
+  std::vector<bool> finished() const;        // each reference's staircase has ended
+  // About how many trials the whole calibration takes: the trials so far plus, per open
+  // staircase, its missing reversals at its own trials per reversal so far (4 before it has two:
+  // a 1-up-2-down staircase at its target reverses every 3-4 trials).
+  int expected_trials() const;
 
  private:
   void draw_trial();
@@ -106,6 +112,17 @@ Lut equalising_lut(CurveKind kind, const CurveFn& shown, const std::vector<doubl
 
 // The trial log as CSV: a header, then one line per trial.
 std::string format_trial_log(const Calibration& c);
+
+// One trial of a log back (`calibrate --resume`): which side was answered, for the trial `c`
+// shows next. Replaying a log's answers in order with the same spec (and seed) brings `c` to
+// where the log stopped; a row that is not the trial `c` shows is an error naming source:line.
+struct LoggedAnswer {
+  int point = 0;
+  double reference = 0.0, comparison = 0.0;
+  bool comparison_left = false, answered_left = false;
+};
+Result<std::vector<LoggedAnswer>> parse_trial_log(std::string_view text, const std::string& source);
+Status replay_answer(Calibration& c, const LoggedAnswer& a, const std::string& where);
 
 std::string_view curve_name(CurveKind kind);  // "distance" / "speed"
 

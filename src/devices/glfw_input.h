@@ -49,6 +49,14 @@ class GlfwInputDevice final : public Device {
   void add_height_steps(int presses) { height_.step(presses); }
   double height_mm() const { return height_.mm(); }
   void toggle_capture();
+  // Main thread. The cursor's present position becomes the relative origin at the next poll:
+  // called when GLFW may have moved its virtual cursor by something other than the person's
+  // motion (the pointer entering the window, focus returning, the cursor being grabbed), so
+  // that jump never reaches the probe.
+  void rebase() { have_cursor_ = false; }
+  // Main thread: the probe's point on the plane (its shadow's centre) is `hit_mm` from the next
+  // poll on: where the hand starts, or where a clutch puts it back under the proxy.
+  void place(const glm::dvec3& hit_mm) { map_.set_hit(hit_mm); }
 
  private:
   glm::dvec3 poll_mouse(const PointerView& view);

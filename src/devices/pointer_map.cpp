@@ -68,6 +68,12 @@ glm::dvec3 PointerMap::centre(const PointerView& view, double height_mm) const {
   return hit(view) + (view.probe_radius_mm + height_mm) * view.plane.n;
 }
 
+void PointerMap::set_hit(const glm::dvec3& hit_mm) {
+  if (!finite(hit_mm)) return;
+  hit_ = hit_mm;
+  have_hit_ = true;
+}
+
 glm::dvec3 PointerMap::absolute(const PointerView& view, const glm::dvec2& pointer, double height_mm) {
   if (std::isfinite(pointer.x) && std::isfinite(pointer.y) && view.window_size.x > 0.0 && view.window_size.y > 0.0)
     if (auto h = intersect_plane(pointer_ray(view, pointer), view.plane)) {

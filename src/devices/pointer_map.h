@@ -84,6 +84,9 @@ class PointerMap {
   // The current hit point (the shadow's centre); the plane origin before the first hit.
   glm::dvec3 hit(const PointerView& view) const { return have_hit_ ? hit_ : view.plane.origin; }
   bool have_hit() const { return have_hit_; }
+  // Puts the hit point at `hit_mm` (a point on the plane): where a relative pointer starts, or
+  // where a clutch re-centres it. Non-finite points are ignored.
+  void set_hit(const glm::dvec3& hit_mm);
 
  private:
   glm::dvec3 centre(const PointerView& view, double height_mm) const;

@@ -162,7 +162,7 @@ void HapticLoop::adopt_pending_scene(Clock::Ns now) {
   HapticEvent e;
   e.kind = EventKind::scene_switched;
   e.tick = local_.tick;
-  e.time_s = static_cast<double>((now - start_).count()) * 1e-9;
+  e.time_s = params_.start_time_s + static_cast<double>((now - start_).count()) * 1e-9;
   e.position_mm = proxy;
   e.set_label(pending_label_);
   events_.push(e);
@@ -371,7 +371,7 @@ void HapticLoop::tick(Clock::Ns now) {
   const double dt = local_.tick == 0 ? nominal
                                      : std::clamp(static_cast<double>((now - last_tick_).count()) * 1e-9, 1e-5, 0.05);
   update_rate(now);
-  const double t = static_cast<double>((now - start_).count()) * 1e-9;
+  const double t = params_.start_time_s + static_cast<double>((now - start_).count()) * 1e-9;
   const DeviceSample raw = device_.read(t);
   if (recorder_ != nullptr) recorder_->append(raw);
   if (auto s = sanitizer_.filter(raw)) {

@@ -38,6 +38,10 @@ namespace ps {
 
 struct HapticLoopParams {
   double rate_hz = 1000.0;
+  // Session time of the loop's start (s): every time the loop reports and reads its device at
+  // counts on from here. 0, or where a resumed maze session goes on (docs/maze.md), so that its
+  // device, its fields' time-varying forces and its log continue the interrupted session's clock.
+  double start_time_s = 0.0;
   KalmanParams kalman;
   HapticsParams forces;
   SanitizerParams sanitizer;

@@ -48,8 +48,19 @@ const char* exit_name(Exit e);  // "left", "straight", "right"
 bool parse_exit(const std::string& name, Exit& out);
 
 // What a maze description holds. Defaults are scenes/maze/maze.toml's values.
+// What the live window shows before the session's clock starts ([instructions] text).
+inline constexpr const char* kDefaultInstructions =
+    "Welcome to the maze.\n\n"
+    "Move the mouse to steer the ball through a series of rooms. Every room has three exits:\n"
+    "left, straight ahead and right. One of them is the right one; try to find the right way\n"
+    "through every room. After each pass through the rooms you see which exits were right.\n"
+    "The session ends after a pass with every room right.\n\n"
+    "Page Up / Page Down raise and lower the ball. Esc ends the session.\n\n"
+    "Press Space to start.";
+
 struct MazeDesc {
   std::string path;                 // the file it came from (for scene names and errors)
+  std::string instructions = kDefaultInstructions;  // the live window's first screen
   double room_size_mm = 120.0;      // interior, square (2a)
   double room_height_mm = 40.0;     // floor to ceiling
   double corridor_width_mm = 36.0;  // doors, corridors, channels and hall depth
@@ -103,6 +114,9 @@ Result<MazeDesc> parse_maze_desc(const std::string& text, const std::string& sou
 struct Route {
   std::uint64_t seed = 0;
   std::array<Exit, 6> correct{};  // indexed by static_cast<int>(Cue)
+  // A study plan's cue-room orders (maze_plan.h), pass p taking planned[p % size]; empty: each
+  // pass's order is drawn from the seed.
+  std::vector<std::array<Cue, 5>> planned;
   Exit correct_exit(Cue cue) const { return correct[static_cast<std::size_t>(cue)]; }
   // The six rooms of pass `pass` (from 0), dummy first.
   std::array<Cue, kRoomsPerPass> order(int pass) const;

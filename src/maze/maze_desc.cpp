@@ -159,6 +159,15 @@ Result<MazeDesc> parse_maze_desc(const std::string& text, const std::string& sou
     const std::string name(key.str());
     const toml::table* t = node.as_table();
     if (t == nullptr) return make_error(r.at(node) + "'" + name + "' must be a table, e.g. [" + name + "]");
+    if (name == "instructions") {  // one string key: the live window's first screen
+      for (const auto& [k, n] : *t) {
+        const auto v = n.value<std::string>();
+        if (k.str() != "text") return make_error(r.at(n) + "unknown key '" + std::string(k.str()) + "' in [instructions]; known keys: text");
+        if (!v || v->empty()) return make_error(r.at(n) + "'text' must be a non-empty string, e.g. text = \"Press Space to start.\"");
+        d.instructions = *v;
+      }
+      continue;
+    }
     if (name == "cues") {
       for (const auto& [cue_key, cue_node] : *t) {
         const std::string full = "cues." + std::string(cue_key.str());
@@ -177,7 +186,7 @@ Result<MazeDesc> parse_maze_desc(const std::string& text, const std::string& sou
     for (const auto& [tname, keys] : tables)
       if (tname == name) known = r.table(*t, name, keys);
     if (!r.error.empty()) return make_error(r.error);
-    if (!known) return make_error(r.at(node) + "unknown table [" + name + "]; known: maze, walls, camera, cues.*");
+    if (!known) return make_error(r.at(node) + "unknown table [" + name + "]; known: maze, walls, camera, instructions, cues.*");
   }
   if (const std::string bad = check_geometry(d); !bad.empty()) return make_error(source_name + ":1: " + bad);
   return d;

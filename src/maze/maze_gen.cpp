@@ -209,6 +209,10 @@ const char* surface_kind_name(SurfaceKind k) {
 }
 
 std::array<Cue, kRoomsPerPass> Route::order(int pass) const {
+  if (!planned.empty()) {
+    const auto& r = planned[static_cast<std::size_t>(pass) % planned.size()];
+    return {Cue::kNone, r[0], r[1], r[2], r[3], r[4]};
+  }
   SplitMix64 rng{seed ^ (0xd1b54a32d192ed03ull * static_cast<std::uint64_t>(pass + 1))};
   std::array<Cue, 5> rooms = kCueRooms;
   for (std::size_t i = rooms.size() - 1; i > 0; --i) std::swap(rooms[i], rooms[rng.below(i + 1)]);  // Fisher-Yates

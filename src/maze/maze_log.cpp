@@ -1,6 +1,7 @@
 #include "maze/maze_log.h"
 
 #include <cerrno>
+#include <cstdio>
 #include <cstring>
 #include <fcntl.h>
 #include <unistd.h>
@@ -40,6 +41,20 @@ Result<SessionLog> SessionLog::open(const std::string& path) {
   return SessionLog(fd, path);
 }
 
+Result<SessionLog> SessionLog::open_existing(const std::string& path) {
+  const int fd = ::open(path.c_str(), O_WRONLY | O_APPEND | O_CLOEXEC);
+  if (fd < 0) return make_error(path + ": cannot open the session log to resume: " + std::strerror(errno));
+  // A line cut short is impossible with one write(2) per line, but a disk that filled up can
+  // leave one: the next line must still start on a line of its own.
+  std::FILE* f = std::fopen(path.c_str(), "rb");
+  bool newline = true;
+  if (f && std::fseek(f, -1, SEEK_END) == 0) newline = std::fgetc(f) == '\n';
+  if (f) std::fclose(f);
+  SessionLog log(fd, path);
+  if (!newline && ::write(fd, "\n", 1) != 1) return make_error(path + ": cannot append to the session log: " + std::strerror(errno));
+  return log;
+}
+
 SessionLog::~SessionLog() {
   if (fd_ >= 0) ::close(fd_);
 }
@@ -61,6 +76,12 @@ Status SessionLog::session_start(const SessionInfo& info, const Route& route) {
     correct[cue_name(static_cast<Cue>(c))] = exit_name(route.correct_exit(static_cast<Cue>(c)));
     labels[cue_name(static_cast<Cue>(c))] = cue_label(static_cast<Cue>(c));
   }
+  json planned = json::array();  // a study plan's orders (maze --plan); none: drawn from the seed
+  for (const auto& order : route.planned) {
+    json names = json::array();
+    for (const Cue c : order) names.push_back(cue_name(c));
+    planned.push_back(names);
+  }
   return append(json{{"type", "session_start"},
                      {"schema", kLogSchema},
                      {"participant", info.participant},
@@ -74,6 +95,7 @@ Status SessionLog::session_start(const SessionInfo& info, const Route& route) {
                      {"max_passes", info.max_passes},
                      {"correct_route", correct},
                      {"labels", labels},
+                     {"planned_orders", planned},
                      {"time_s", 0.0}}
                     .dump());
 }
@@ -127,6 +149,27 @@ Status SessionLog::event(const SessionInfo& info, const TrackEvent& e) {
     case TrackEvent::Kind::kFinished: return ok_status();  // session_end says it
   }
   return ok_status();
+}
+
+Status SessionLog::clutch(double time_s, double overshoot_mm, const glm::dvec3& hand_mm, const glm::dvec3& probe_mm) {
+  return append(json{{"type", "clutch"},
+                     {"time_s", time_s},
+                     {"overshoot_mm", overshoot_mm},
+                     {"hand_mm", {hand_mm.x, hand_mm.y}},
+                     {"probe_mm", {probe_mm.x, probe_mm.y}}}
+                    .dump());
+}
+
+Status SessionLog::resumed(int resume, int pass, int room, double time_s, const std::string& device,
+                           const std::string& device_log) {
+  return append(json{{"type", "resumed"},
+                     {"resume", resume},
+                     {"pass", pass + 1},
+                     {"room", room + 1},
+                     {"time_s", time_s},
+                     {"device", device},
+                     {"device_log", device_log}}
+                    .dump());
 }
 
 Status SessionLog::session_end(const std::string& reason, int passes, int trials_to_criterion, double time_s) {

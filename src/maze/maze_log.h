@@ -31,6 +31,8 @@ class SessionLog {
  public:
   // Creates `path` (its directory must exist); an existing file is an error, never truncated.
   static Result<SessionLog> open(const std::string& path);
+  // Opens an existing log to append to (`maze --resume`): never created, never truncated.
+  static Result<SessionLog> open_existing(const std::string& path);
   SessionLog(SessionLog&& o) noexcept : fd_(o.fd_), path_(std::move(o.path_)), lines_(o.lines_) { o.fd_ = -1; }
   SessionLog(const SessionLog&) = delete;
   SessionLog& operator=(const SessionLog&) = delete;
@@ -40,6 +42,12 @@ class SessionLog {
   Status session_start(const SessionInfo& info, const Route& route);
   Status pass_start(int pass, const std::array<Cue, kRoomsPerPass>& order, double time_s);
   Status event(const SessionInfo& info, const TrackEvent& e);
+  // The live window's clutch: the hand, run on past a wall by overshoot_mm, was put back under
+  // the probe (positions on the floor, x and y in mm).
+  Status clutch(double time_s, double overshoot_mm, const glm::dvec3& hand_mm, const glm::dvec3& probe_mm);
+  // `maze --resume`: the session goes on at `pass`, `room` (from 0) at session time time_s, with
+  // `device`, its stream in device_log (the resume's own file); resume counts from 1.
+  Status resumed(int resume, int pass, int room, double time_s, const std::string& device, const std::string& device_log);
   // reason: "criterion", "max_passes", "device_ended" or "quit".
   Status session_end(const std::string& reason, int passes, int trials_to_criterion, double time_s);
   const std::string& path() const { return path_; }

@@ -21,24 +21,49 @@ int contact_kind(const MazeScene& scene, const HapticState& state) {
 }
 
 Result<std::unique_ptr<SessionCore>> SessionCore::open(const SessionOptions& o) {
-  auto scene = generate_scene(o.desc, o.route, o.info.cues, 0);
+  const int pass = o.resume ? o.resume->current.pass : 0;
+  auto scene = generate_scene(o.desc, o.route, o.info.cues, pass);
   if (!scene) return scene.error();
   auto haptic = build_haptic(scene.value());
   if (!haptic) return haptic.error();
-  auto log = SessionLog::open(o.log_path);
+  auto log = o.resume ? SessionLog::open_existing(o.log_path) : SessionLog::open(o.log_path);
   if (!log) return log.error();
   std::unique_ptr<SessionCore> core(
       new SessionCore(o, std::move(log.value()), std::move(scene.value()), std::move(haptic.value())));
+  if (o.resume) {
+    if (Status s = core->resume(*o.resume); !s) return s.error();
+    return core;
+  }
   if (Status s = core->log_.session_start(o.info, o.route); !s) return s.error();
   if (Status s = core->log_.pass_start(0, o.route.order(0), 0.0); !s) return s.error();
   return core;
 }
 
+// Picks the session up where its log ends: the tracker at the next unfinished trial, a
+// `resumed` line, and what the dead process had not yet written (a pass's end, the next pass's
+// start; with them maybe the session's end).
+Status SessionCore::resume(const ResumePoint& r) {
+  result_.scores = r.done;
+  const std::vector<TrackEvent> events = tracker_.resume(r.done, r.current);
+  const int room = events.empty() ? tracker_.index() : 0;
+  if (Status s = log_.resumed(r.resumes + 1, tracker_.pass(), room, r.time_s, options_.info.device, options_.info.device_log); !s)
+    return s;
+  if (!events.empty()) return handle(events, r.time_s, nullptr, {});
+  if (!r.current_started) return log_.pass_start(tracker_.pass(), options_.route.order(tracker_.pass()), r.time_s);
+  return ok_status();
+}
+
 Status SessionCore::step(const HapticState& st, HapticLoop& loop, const ScoreFn& on_score) {
   const ProbeStep step{st.time_s, st.proxy_mm, st.force_n, st.field_force_n, contact_kind(scene_, st)};
-  const std::vector<TrackEvent> events = tracker_.feed(step);
+  return handle(tracker_.feed(step), st.time_s, &loop, on_score);
+}
+
+// Logs what the tracker saw at session time time_s; at a pass's end the next pass's scene goes
+// to the loop (when there is one yet: a resume hands it over before the loop is made).
+Status SessionCore::handle(const std::vector<TrackEvent>& events, double time_s, HapticLoop* loop, const ScoreFn& on_score) {
   for (const TrackEvent& e : events) {
     if (Status s = log_.event(options_.info, e); !s) return s;
+    if (e.kind == TrackEvent::Kind::kBranch) ++result_.branches;
     if (e.kind == TrackEvent::Kind::kPassEnd) {
       result_.scores.push_back(e.score);
       if (on_score)
@@ -46,7 +71,7 @@ Status SessionCore::step(const HapticState& st, HapticLoop& loop, const ScoreFn&
     }
     if (e.kind == TrackEvent::Kind::kFinished) {
       result_.reason = e.criterion ? "criterion" : "max_passes";
-      end_time_s_ = st.time_s;
+      end_time_s_ = time_s;
       if (e.criterion) result_.trials_to_criterion = static_cast<int>(result_.scores.size());
     }
   }
@@ -57,16 +82,16 @@ Status SessionCore::step(const HapticState& st, HapticLoop& loop, const ScoreFn&
   if (!hs) return hs.error();
   scene_ = std::move(next.value());
   haptic_ = hs.value();
-  loop.replace_scene(haptic_, "maze pass " + std::to_string(tracker_.pass() + 1));
+  if (loop) loop->replace_scene(haptic_, "maze pass " + std::to_string(tracker_.pass() + 1));
   scene_changed_ = true;
-  return log_.pass_start(tracker_.pass(), options_.route.order(tracker_.pass()), st.time_s);
+  return log_.pass_start(tracker_.pass(), options_.route.order(tracker_.pass()), time_s);
 }
 
 Result<SessionResult> SessionCore::finish(double time_s, const std::string& reason_if_open) {
   if (result_.reason.empty()) result_.reason = reason_if_open;
   result_.passes = static_cast<int>(result_.scores.size());
   result_.time_s = time_s;
-  if (Status s = log_.session_end(result_.reason, result_.passes, result_.trials_to_criterion, time_s); !s)
+  if (Status s = log_.session_end(result_.reason, result_.passes, result_.trials_to_criterion, result_.time_s); !s)
     return s.error();
   return result_;
 }
@@ -81,10 +106,13 @@ Result<SessionResult> run_session(Device& device, const SessionOptions& o, const
   SampleRecorder recorder(o.record_path);
   if (!o.record_path.empty()) loop.set_recorder(&recorder);
   const double rate = o.haptics.rate_hz;
-  const auto ticks = static_cast<std::uint64_t>(std::floor(std::max(0.0, device.duration_s()) * rate + 1e-9)) + 1;
+  // The loop's clock starts at start_time_s (a resumed session: where it stopped).
+  const double start_s = o.haptics.start_time_s;
+  const auto ticks = static_cast<std::uint64_t>(std::floor(std::max(0.0, device.duration_s() - start_s) * rate + 1e-9)) + 1;
   const auto wall_start = std::chrono::steady_clock::now();
   int frame = 0;
   HapticState st;
+  st.time_s = start_s;
   std::uint64_t done = 0;
   for (std::uint64_t k = 0; k < ticks && !core.finished(); ++k) {
     loop.run_ticks(1);
@@ -100,7 +128,7 @@ Result<SessionResult> run_session(Device& device, const SessionOptions& o, const
     if (!o.record_path.empty() && (k + 1) % static_cast<std::uint64_t>(rate) == 0)
       if (Status s = recorder.flush(); !s) return s.error();  // once per second of session time
     if (o.pace > 0.0 && k % 10 == 0)
-      std::this_thread::sleep_until(wall_start + std::chrono::duration<double>(st.time_s / o.pace));
+      std::this_thread::sleep_until(wall_start + std::chrono::duration<double>((st.time_s - start_s) / o.pace));
   }
   auto result = core.finish(st.time_s, "device_ended");
   if (!result) return result.error();

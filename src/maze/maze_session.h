@@ -7,6 +7,7 @@
 
 #include <functional>
 #include <memory>
+#include <optional>
 #include <string>
 #include <utility>
 
@@ -14,6 +15,7 @@
 #include "devices/device.h"
 #include "haptics/haptic_loop.h"
 #include "maze/maze_log.h"
+#include "maze/maze_resume.h"
 #include "maze/maze_track.h"
 #include "world/haptic_scene.h"
 
@@ -28,6 +30,9 @@ struct SessionOptions {
   HapticLoopParams haptics;
   double fps = 30.0;          // frames per second of session time given to on_frame
   double pace = 0.0;          // > 0: session time runs at `pace` x real time (1: as live)
+  // `maze --resume`: where the interrupted session stands (log_path is then its existing log,
+  // appended to; haptics.start_time_s must be resume->time_s: the loop's clock goes on from there).
+  std::optional<ResumePoint> resume;
 };
 
 struct FrameView {
@@ -41,6 +46,7 @@ struct FrameView {
 struct SessionResult {
   std::string reason;  // "criterion", "max_passes", "device_ended"
   int passes = 0;
+  int branches = 0;             // rooms left in this run (a device that took none is suspect)
   int trials_to_criterion = 0;  // the pass (from 1) that had every room right; 0: none
   double time_s = 0.0;
   std::uint64_t ticks = 0;
@@ -73,10 +79,16 @@ class SessionCore {
   const Tracker& tracker() const { return tracker_; }
   // The session time of the tick at which the tracker finished (the criterion or max_passes).
   double end_time_s() const { return end_time_s_; }
+  // The live window's clutch put the hand back under the probe (SessionLog::clutch).
+  Status log_clutch(double time_s, double overshoot_mm, const glm::dvec3& hand_mm, const glm::dvec3& probe_mm) {
+    return log_.clutch(time_s, overshoot_mm, hand_mm, probe_mm);
+  }
   // Writes session_end (`reason_if_open` when the tracker has not finished: device_ended, quit).
   Result<SessionResult> finish(double time_s, const std::string& reason_if_open);
 
  private:
+  Status resume(const ResumePoint& r);
+  Status handle(const std::vector<TrackEvent>& events, double time_s, HapticLoop* loop, const ScoreFn& on_score);
   SessionCore(const SessionOptions& o, SessionLog log, MazeScene scene, std::shared_ptr<const world::HapticScene> h)
       : options_(o), log_(std::move(log)), tracker_(o.desc, o.route, o.desc.max_passes), scene_(std::move(scene)),
         haptic_(std::move(h)) {}

@@ -1,5 +1,7 @@
 #include "maze/maze_summary.h"
 
+#include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <fstream>
@@ -16,6 +18,7 @@ namespace {
 using nlohmann::json;
 
 std::string fmt(double v, int digits = 3) {
+  if (std::isnan(v)) return "";  // a CI of fewer than two participants: no number
   char buf[48];
   std::snprintf(buf, sizeof buf, "%.*f", digits, v);
   return buf;
@@ -40,10 +43,20 @@ void read_line(ParticipantSummary& p, const json& j, const std::string& where) {
     ++p.trials[c];
     if (!j.at("correct").get<bool>()) ++p.errors[c];
     p.room_time_s[c] += j.at("room_time_s").get<double>();
+    RoomTrial r{j.value("pass", 0), j.value("room", 0), j.at("cue").get<std::string>(), j.value("exit", std::string()),
+                j.at("correct").get<bool>(), j.at("room_time_s").get<double>(), j.value("path_mm", 0.0), {}};
+    if (j.contains("contacts"))
+      for (int k = 0; k < 4; ++k)
+        r.contacts[static_cast<std::size_t>(k)] = j.at("contacts").value(surface_kind_name(static_cast<SurfaceKind>(k)), 0);
+    p.rooms.push_back(std::move(r));
   } else if (type == "pass_end") {
     ++p.passes;
     p.pass_time_s.push_back(j.at("pass_time_s").get<double>());
     p.pass_correct.push_back(j.at("correct").get<int>());
+  } else if (type == "resumed") {  // one session, interrupted: what follows continues it
+    ++p.resumed;
+    p.ended = false;
+    p.end_reason.clear();
   } else if (type == "session_end") {
     p.ended = true;
     p.end_reason = j.at("reason").get<std::string>();
@@ -82,45 +95,84 @@ Result<ParticipantSummary> summarize_log(const std::string& path) {
   return p;
 }
 
-std::vector<GroupSummary> summarize_groups(const std::vector<ParticipantSummary>& people) {
+namespace {
+
+// Student's t at 0.975 for df degrees of freedom (two-sided 95 %); 1.96 past 30 (within 2 %).
+double t975(int df) {
+  static constexpr double kT[30] = {12.706, 4.303, 3.182, 2.776, 2.571, 2.447, 2.365, 2.306, 2.262, 2.228,
+                                    2.201,  2.179, 2.160, 2.145, 2.131, 2.120, 2.110, 2.101, 2.093, 2.086,
+                                    2.080,  2.074, 2.069, 2.064, 2.060, 2.056, 2.052, 2.048, 2.045, 2.042};
+  return df >= 1 && df <= 30 ? kT[df - 1] : 1.96;
+}
+
+GroupSummary& group_of(std::vector<GroupSummary>& groups, const ParticipantSummary& p) {
+  auto it = std::find_if(groups.begin(), groups.end(),
+                         [&](const GroupSummary& g) { return g.condition == p.condition && g.session == p.session; });
+  if (it != groups.end()) return *it;
+  GroupSummary g;
+  g.condition = p.condition;
+  g.session = p.session;
+  return groups.emplace_back(std::move(g));
+}
+
+void fill_group(GroupSummary& g, const std::vector<const ParticipantSummary*>& members) {
+  g.participants = static_cast<int>(members.size());
+  std::vector<double> ttc, total;
+  std::array<std::vector<double>, kCueCount> errors, room_time;
+  std::vector<std::vector<double>> pass_time;
+  for (const ParticipantSummary* p : members) {
+    if (p->trials_to_criterion > 0) ttc.push_back(p->trials_to_criterion);
+    total.push_back(p->total_time_s);
+    for (std::size_t c = 0; c < kCueCount; ++c) {
+      errors[c].push_back(p->errors[c]);
+      room_time[c].push_back(p->mean_room_time_s(static_cast<int>(c)));
+    }
+    for (std::size_t i = 0; i < p->pass_time_s.size(); ++i) {
+      if (pass_time.size() <= i) pass_time.emplace_back();
+      pass_time[i].push_back(p->pass_time_s[i]);
+    }
+  }
+  g.reached_criterion = static_cast<int>(ttc.size());
+  g.mean_trials_to_criterion = mean_ci(ttc).mean;
+  const MeanCi t = mean_ci(total);
+  g.mean_total_time_s = t.mean, g.ci_total_time_s = t.half;
+  for (std::size_t c = 0; c < kCueCount; ++c) {
+    const MeanCi e = mean_ci(errors[c]);
+    g.mean_errors[c] = e.mean, g.ci_errors[c] = e.half;
+    g.mean_room_time_s[c] = mean_ci(room_time[c]).mean;
+  }
+  for (const std::vector<double>& v : pass_time) {
+    const MeanCi m = mean_ci(v);
+    g.mean_pass_time_s.push_back(m.mean), g.ci_pass_time_s.push_back(m.half), g.pass_n.push_back(m.n);
+  }
+}
+
+}  // namespace
+
+MeanCi mean_ci(const std::vector<double>& values) {
+  MeanCi r;
+  r.n = static_cast<int>(values.size());
+  if (r.n == 0) return {0.0, std::nan(""), 0};
+  for (double v : values) r.mean += v;
+  r.mean /= r.n;
+  if (r.n < 2) return {r.mean, std::nan(""), r.n};
+  double ss = 0.0;
+  for (double v : values) ss += (v - r.mean) * (v - r.mean);
+  r.half = t975(r.n - 1) * std::sqrt(ss / (r.n - 1)) / std::sqrt(static_cast<double>(r.n));
+  return r;
+}
+
+std::vector<GroupSummary> summarize_groups(const std::vector<ParticipantSummary>& people, bool include_aborted) {
   std::vector<GroupSummary> groups;
+  std::vector<std::vector<const ParticipantSummary*>> members;
   for (const ParticipantSummary& p : people) {
-    auto it = std::find_if(groups.begin(), groups.end(), [&](const GroupSummary& g) {
-      return g.condition == p.condition && g.session == p.session;
-    });
-    if (it == groups.end()) {
-      GroupSummary g;
-      g.condition = p.condition;
-      g.session = p.session;
-      it = groups.insert(groups.end(), g);
-    }
-    GroupSummary& g = *it;
-    ++g.participants;
-    if (p.trials_to_criterion > 0) ++g.reached_criterion, g.mean_trials_to_criterion += p.trials_to_criterion;
-    g.mean_total_time_s += p.total_time_s;
-    for (int c = 0; c < kCueCount; ++c) {
-      g.mean_errors[static_cast<std::size_t>(c)] += p.errors[static_cast<std::size_t>(c)];
-      g.mean_room_time_s[static_cast<std::size_t>(c)] += p.mean_room_time_s(c);
-    }
+    GroupSummary& g = group_of(groups, p);
+    const auto gi = static_cast<std::size_t>(&g - groups.data());
+    if (members.size() <= gi) members.resize(gi + 1);
+    if (!include_aborted && p.aborted()) ++g.excluded;
+    else members[gi].push_back(&p);
   }
-  for (GroupSummary& g : groups) {
-    if (g.reached_criterion > 0) g.mean_trials_to_criterion /= g.reached_criterion;
-    g.mean_total_time_s /= g.participants;
-    for (int c = 0; c < kCueCount; ++c) {
-      g.mean_errors[static_cast<std::size_t>(c)] /= g.participants;
-      g.mean_room_time_s[static_cast<std::size_t>(c)] /= g.participants;
-    }
-    std::vector<int> count;
-    for (const ParticipantSummary& p : people) {
-      if (p.condition != g.condition || p.session != g.session) continue;
-      for (std::size_t i = 0; i < p.pass_time_s.size(); ++i) {
-        if (g.mean_pass_time_s.size() <= i) g.mean_pass_time_s.push_back(0.0), count.push_back(0);
-        g.mean_pass_time_s[i] += p.pass_time_s[i];
-        ++count[i];
-      }
-    }
-    for (std::size_t i = 0; i < count.size(); ++i) g.mean_pass_time_s[i] /= count[i];
-  }
+  for (std::size_t gi = 0; gi < groups.size(); ++gi) fill_group(groups[gi], members[gi]);
   return groups;
 }
 
@@ -130,11 +182,11 @@ namespace {
 void participant_tables(const std::vector<ParticipantSummary>& people, std::ostringstream& pc, std::ostringstream& tc,
                         std::ostringstream& md) {
   pc << "participant,session,condition,seed,passes,trials_to_criterion,ended,total_time_s" << csv_header_cues("errors_")
-     << csv_header_cues("room_time_s_") << "\n";
+     << csv_header_cues("room_time_s_") << ",end_reason,resumed\n";
   tc << "participant,session,condition,pass,correct,pass_time_s\n";
   md << "## Participants\n\n| participant | session | condition | seed | passes | trials to criterion | total time (s) |";
   for (int c = 0; c < kCueCount; ++c) md << " errors " << cue_name(static_cast<Cue>(c)) << " |";
-  md << "\n|---|---|---|---|---|---|---|";
+  md << " end |\n|---|---|---|---|---|---|---|---|";
   for (int c = 0; c < kCueCount; ++c) md << "---|";
   md << "\n";
   for (const ParticipantSummary& p : people) {
@@ -145,18 +197,35 @@ void participant_tables(const std::vector<ParticipantSummary>& people, std::ostr
        << (ttc.empty() ? "not reached" : ttc) << " | " << fmt(p.total_time_s, 2) << " |";
     for (int c = 0; c < kCueCount; ++c) pc << "," << p.errors[static_cast<std::size_t>(c)], md << " " << p.errors[static_cast<std::size_t>(c)] << " |";
     for (int c = 0; c < kCueCount; ++c) pc << "," << fmt(p.mean_room_time_s(c));
-    pc << "\n";
-    md << (p.ended ? "" : " (log cut short)") << "\n";
+    pc << "," << p.end_reason_or_crashed() << "," << p.resumed << "\n";
+    md << " " << p.end_reason_or_crashed() << (p.ended ? "" : " (log cut short)")
+       << (p.resumed > 0 ? ", resumed " + std::to_string(p.resumed) + "x" : "") << " |\n";
     for (std::size_t i = 0; i < p.pass_time_s.size(); ++i)
       tc << p.participant << "," << p.session << "," << p.condition << "," << i + 1 << "," << p.pass_correct[i] << "," << fmt(p.pass_time_s[i]) << "\n";
   }
 }
 
+// rooms.csv: one row per room left, every participant.
+std::string rooms_table(const std::vector<ParticipantSummary>& people) {
+  std::ostringstream rc;
+  rc << "participant,condition,session,pass,room,cue,exit,correct,time_s,path_mm,contacts_floor,contacts_wall,"
+        "contacts_ceiling,contacts_hidden\n";
+  for (const ParticipantSummary& p : people)
+    for (const RoomTrial& r : p.rooms) {
+      rc << p.participant << "," << p.condition << "," << p.session << "," << r.pass << "," << r.room << "," << r.cue << ","
+         << r.exit << "," << (r.correct ? "yes" : "no") << "," << fmt(r.time_s) << "," << fmt(r.path_mm, 2);
+      for (int k : r.contacts) rc << "," << k;
+      rc << "\n";
+    }
+  return rc.str();
+}
+
 // groups.csv and the markdown's group table.
 void group_tables(const std::vector<GroupSummary>& groups, std::ostringstream& gc, std::ostringstream& md) {
   gc << "condition,session,participants,reached_criterion,mean_trials_to_criterion,mean_total_time_s"
-     << csv_header_cues("mean_errors_") << csv_header_cues("mean_room_time_s_") << "\n";
-  md << "\n## Groups\n\n| condition | session | participants | reached criterion | mean trials to criterion | mean total time (s) |";
+     << csv_header_cues("mean_errors_") << csv_header_cues("mean_room_time_s_") << ",excluded,ci95_total_time_s"
+     << csv_header_cues("ci95_errors_") << "\n";
+  md << "\n## Groups\n\n| condition | session | participants (excluded) | reached criterion | mean trials to criterion | mean total time (s) ± 95 % CI |";
   for (int c = 0; c < kCueCount; ++c) md << " mean room time " << cue_name(static_cast<Cue>(c)) << " (s) |";
   md << "\n|---|---|---|---|---|---|";
   for (int c = 0; c < kCueCount; ++c) md << "---|";
@@ -164,11 +233,14 @@ void group_tables(const std::vector<GroupSummary>& groups, std::ostringstream& g
   for (const GroupSummary& g : groups) {
     gc << g.condition << "," << g.session << "," << g.participants << "," << g.reached_criterion << "," << fmt(g.mean_trials_to_criterion)
        << "," << fmt(g.mean_total_time_s);
-    md << "| " << g.condition << " | " << g.session << " | " << g.participants << " | " << g.reached_criterion << " | "
-       << fmt(g.mean_trials_to_criterion, 2) << " | " << fmt(g.mean_total_time_s, 2) << " |";
+    md << "| " << g.condition << " | " << g.session << " | " << g.participants << " (" << g.excluded << ") | "
+       << g.reached_criterion << " | " << fmt(g.mean_trials_to_criterion, 2) << " | " << fmt(g.mean_total_time_s, 2)
+       << (std::isnan(g.ci_total_time_s) ? "" : " ± " + fmt(g.ci_total_time_s, 2)) << " |";
     for (int c = 0; c < kCueCount; ++c) gc << "," << fmt(g.mean_errors[static_cast<std::size_t>(c)]);
     for (int c = 0; c < kCueCount; ++c)
       gc << "," << fmt(g.mean_room_time_s[static_cast<std::size_t>(c)]), md << " " << fmt(g.mean_room_time_s[static_cast<std::size_t>(c)], 2) << " |";
+    gc << "," << g.excluded << "," << fmt(g.ci_total_time_s);
+    for (int c = 0; c < kCueCount; ++c) gc << "," << fmt(g.ci_errors[static_cast<std::size_t>(c)]);
     gc << "\n";
     md << "\n";
   }
@@ -211,78 +283,14 @@ Status write_tables(const std::string& dir, const std::vector<ParticipantSummary
     md << "| " << r.condition << " | " << r.retested << " | " << r.faster << " | " << fmt(100.0 * r.share_faster(), 0) << " % |\n";
   }
   md << "\nErrors per room are wrong exits summed over all passes; room time is the time from entering a room to "
-        "leaving it by an exit, averaged over passes. Plots: errors_by_room.png, time_per_trial.png.\n";
+        "leaving it by an exit, averaged over passes. Group means leave out aborted sessions (quit, device_ended, "
+        "crashed: the count in brackets) unless summarize was given --include-aborted; ± is the 95 % confidence "
+        "interval (Student's t). Per-room trials: rooms.csv. Plots: errors_by_room.png, time_per_trial.png.\n";
   for (const auto& [name, text] : {std::pair<std::string, std::string>{"participants.csv", pc.str()},
-                                   {"groups.csv", gc.str()}, {"trials.csv", tc.str()}, {"retest.csv", rc.str()},
+                                   {"groups.csv", gc.str()}, {"trials.csv", tc.str()}, {"rooms.csv", rooms_table(people)},
+                                   {"retest.csv", rc.str()},
                                    {"summary.md", md.str()}})
     if (Status s = write_file_atomic(dir + "/" + name, text); !s) return s;
-  return ok_status();
-}
-
-namespace {
-
-// Mean wrong exits per room, one bar per condition.
-void errors_script(std::ostringstream& gp, const std::string& dir, const std::vector<GroupSummary>& groups) {
-  gp << "set terminal pngcairo noenhanced size 900,500 font ',10'\nset output '" << dir << "/errors_by_room.png'\n"
-     << "set title 'Wrong exits per room (mean per participant) by condition'\nset ylabel 'errors'\n"
-     << "set style data histograms\nset style histogram clustered gap 1\nset style fill solid 0.8 border -1\n"
-     << "set boxwidth 0.9\nset bmargin 5\nset offsets 0, 0, 0.5, 0\nset yrange [0:*]\nset key top right\nset grid ytics\n"
-     << "$errors << EOD\nroom";
-  for (const GroupSummary& g : groups)
-    gp << " \"" << g.condition << (g.session > 1 ? " session " + std::to_string(g.session) : "") << "\"";
-  gp << "\n";
-  for (int c = 0; c < kCueCount; ++c) {
-    gp << "\"" << cue_label(static_cast<Cue>(c)) << "\\n" << cue_name(static_cast<Cue>(c)) << "\"";
-    for (const GroupSummary& g : groups) gp << " " << g.mean_errors[static_cast<std::size_t>(c)];
-    gp << "\n";
-  }
-  gp << "EOD\nplot ";
-  for (std::size_t i = 0; i < groups.size(); ++i)
-    gp << (i ? ", " : "") << "$errors using " << i + 2 << (i == 0 ? ":xtic(1)" : "") << " title columnheader";
-  if (groups.empty()) gp << "0 notitle";
-  gp << "\n";
-}
-
-// Time per pass, one line per participant, coloured by condition.
-void time_script(std::ostringstream& gp, const std::string& dir, const std::vector<ParticipantSummary>& people,
-                 const std::vector<GroupSummary>& groups) {
-  gp << "\nset output '" << dir << "/time_per_trial.png'\nunset style\nset style data linespoints\n"
-     << "set title 'Time per trial (one pass through all rooms)'\nset xlabel 'trial (pass)'\nset ylabel 'time (s)'\n"
-     << "set xtics 1\nset yrange [0:*]\nset offsets 0.2, 0.2, 1, 0\nset key outside right\n";
-  for (std::size_t k = 0; k < people.size(); ++k) {
-    gp << "$p" << k << " << EOD\n";
-    for (std::size_t i = 0; i < people[k].pass_time_s.size(); ++i) gp << i + 1 << " " << people[k].pass_time_s[i] << "\n";
-    gp << "EOD\n";
-  }
-  gp << "plot ";
-  for (std::size_t k = 0; k < people.size(); ++k) {
-    std::size_t group = 0;
-    for (std::size_t gi = 0; gi < groups.size(); ++gi)
-      if (groups[gi].condition == people[k].condition && groups[gi].session == people[k].session) group = gi;
-    gp << (k ? ", " : "") << "$p" << k << " using 1:2 lc " << group + 1 << " pt " << k % 10 + 1 << " title '"
-       << people[k].participant << (people[k].session > 1 ? " session " + std::to_string(people[k].session) : "")
-       << " (" << people[k].condition << ")'";
-  }
-  if (people.empty()) gp << "0 notitle";
-  gp << "\n";
-}
-
-}  // namespace
-
-Status write_plots(const std::string& dir, const std::vector<ParticipantSummary>& people,
-                   const std::vector<GroupSummary>& groups) {
-  if (std::system("command -v gnuplot > /dev/null 2>&1") != 0)
-    return make_error("gnuplot not found (install gnuplot-nox): no plots written, the CSV files have the data");
-  if (dir.find('\'') != std::string::npos)
-    return make_error(dir + ": a directory name with a single quote cannot be handed to gnuplot; choose another --out");
-  std::ostringstream gp;
-  errors_script(gp, dir, groups);
-  time_script(gp, dir, people, groups);
-  const std::string script = dir + "/plots.gp";
-  if (Status s = write_file_atomic(script, gp.str()); !s) return s;
-  if (std::system(("gnuplot '" + script + "' 2> '" + dir + "/plots.log'").c_str()) != 0)
-    return make_error("gnuplot failed on " + script + " (its messages: " + dir + "/plots.log)");
-  std::remove((dir + "/plots.log").c_str());
   return ok_status();
 }
 

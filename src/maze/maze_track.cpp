@@ -62,8 +62,12 @@ void Tracker::end_trial(const ProbeStep& s, std::vector<TrackEvent>& events) {
   events.push_back({TrackEvent::Kind::kBranch, trial_, {}, false});
   entered_ = false;
   if (++index_ < kRoomsPerPass) return;
+  end_pass(s.time_s, events);
+}
+
+void Tracker::end_pass(double time_s, std::vector<TrackEvent>& events) {
   current_.pass = pass_;
-  current_.end_s = s.time_s;
+  current_.end_s = time_s;
   done_.push_back(current_);
   events.push_back({TrackEvent::Kind::kPassEnd, {}, current_, false});
   const bool criterion = current_.correct() == kRoomsPerPass;
@@ -78,6 +82,20 @@ void Tracker::end_trial(const ProbeStep& s, std::vector<TrackEvent>& events) {
   order_ = route_.order(pass_);
   current_ = PassScore{};
   current_.order = order_;
+}
+
+std::vector<TrackEvent> Tracker::resume(const std::vector<PassScore>& done, const PassScore& current) {
+  done_ = done;
+  pass_ = current.pass;
+  order_ = route_.order(pass_);
+  current_ = current;
+  current_.order = order_;
+  index_ = static_cast<int>(current.trials.size());
+  entered_ = false;
+  have_last_ = false;
+  std::vector<TrackEvent> events;
+  if (index_ >= kRoomsPerPass) end_pass(current.trials.back().exit_s, events);
+  return events;
 }
 
 std::vector<TrackEvent> Tracker::feed(const ProbeStep& s) {

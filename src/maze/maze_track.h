@@ -63,12 +63,18 @@ class Tracker {
   Cue room() const { return order_[static_cast<std::size_t>(index_)]; }
   bool finished() const { return finished_; }
   const std::vector<PassScore>& passes() const { return done_; }
+  // Continues a session read back from its log (maze_resume.h): the passes it finished and the
+  // trials of the pass in progress; the next room is the next unfinished trial. When `current`
+  // already holds every room (the process died between its last branch and its pass_end line),
+  // the pass ends here and its events (kPassEnd, maybe kFinished) are returned; else none.
+  std::vector<TrackEvent> resume(const std::vector<PassScore>& done, const PassScore& current);
 
  private:
   bool inside(const glm::dvec3& p) const;
   void accumulate(const ProbeStep& s, double dt);
   void start_trial(const ProbeStep& s, std::vector<TrackEvent>& events);
   void end_trial(const ProbeStep& s, std::vector<TrackEvent>& events);
+  void end_pass(double time_s, std::vector<TrackEvent>& events);
   RoomGeometry g_;
   Route route_;
   int max_passes_;

@@ -37,7 +37,9 @@ foreach(f participants.csv trials.csv summary.md errors_by_room.png time_per_tri
   endif()
 endforeach()
 # Deterministic replay from the participant's own recording.
-run(${CMD} maze --maze ${MAZE} --participant P01 --seed 7 --cues on --device playback:${DIR}/p01/device.log --out ${DIR}/p01_again)
+# --force: the same participant and seed again in this folder, on purpose (the study-folder check
+# would refuse it otherwise).
+run(${CMD} maze --maze ${MAZE} --participant P01 --seed 7 --cues on --device playback:${DIR}/p01/device.log --out ${DIR}/p01_again --force)
 file(STRINGS ${DIR}/p01/session.jsonl a)
 file(STRINGS ${DIR}/p01_again/session.jsonl b)
 list(REMOVE_AT a 0)

@@ -36,7 +36,8 @@ pid_t spawn(const std::vector<std::string>& args) {
 std::vector<std::string> session_args(const std::string& traj, const std::string& out, bool paced) {
   std::vector<std::string> a = {std::string(PS_BINARY_DIR) + "/pseudoshadow", "maze", "--maze", test::maze_file(),
                                 "--participant", "K1", "--seed", "9", "--cues", "on",
-                                "--device", "trajectory:" + traj, "--out", out, "-q"};
+                                "--device", "trajectory:" + traj, "--out", out, "-q",
+                                "--force"};  // the same participant twice in one folder, on purpose
   if (paced) a.insert(a.end(), {"--pace", "4"});  // ~4 x real time: slow enough to be killed mid-way
   return a;
 }

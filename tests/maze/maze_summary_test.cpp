@@ -4,6 +4,7 @@
 // is compared with session 1; bad lines are file:line errors.
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <fstream>
 
 #include "maze/maze_summary.h"
@@ -54,8 +55,9 @@ TEST(MazeSummaryTest, ParticipantNumbersEqualTheHandComputedOnes) {
   EXPECT_NEAR(p3.mean_room_time_s(static_cast<int>(kNone)), 1.5, 1e-12);  // (2 + 1) / 2
 }
 
+// With the aborted P3 counted (--include-aborted), as before the exclusion rule.
 TEST(MazeSummaryTest, GroupNumbersEqualTheHandComputedOnes) {
-  const auto groups = summarize_groups(three());
+  const auto groups = summarize_groups(three(), true);
   ASSERT_EQ(groups.size(), 2u);
   const GroupSummary& on = groups[0];  // P1 and P3
   EXPECT_EQ(on.condition, "cues_on");
@@ -82,7 +84,7 @@ TEST(MazeSummaryTest, GroupNumbersEqualTheHandComputedOnes) {
 
 TEST(MazeSummaryTest, TablesAndPlotsAreWritten) {
   const auto people = three();
-  const auto groups = summarize_groups(people);
+  const auto groups = summarize_groups(people, true);
   const std::string dir = test::temp_dir("summary_tables");
   ASSERT_TRUE(write_tables(dir, people, groups, summarize_retests(people)));
   const auto groups_csv = test::read_lines(dir + "/groups.csv");
@@ -117,7 +119,7 @@ TEST(MazeSummaryTest, RetestComparesSessionTwoWithSessionOne) {
   EXPECT_EQ(retests[1].condition, "cues_off");
   EXPECT_EQ(retests[1].retested, 1);
   EXPECT_EQ(retests[1].faster, 0);
-  const auto groups = summarize_groups(people);
+  const auto groups = summarize_groups(people, true);
   ASSERT_EQ(groups.size(), 4u);
   EXPECT_EQ(groups[0].session, 1);
   EXPECT_DOUBLE_EQ(groups[0].mean_total_time_s, 35.0);  // session 1 of cues_on as before: (40 + 30) / 2
@@ -130,6 +132,60 @@ TEST(MazeSummaryTest, RetestComparesSessionTwoWithSessionOne) {
   EXPECT_EQ(test::read_lines(dir + "/retest.csv"),
             (std::vector<std::string>{"condition,retested,faster_on_retest,share_faster", "cues_on,1,1,1.000",
                                       "cues_off,1,0,0.000"}));
+}
+
+// Five cues-on sessions' worth of rules: P1 (criterion), P3 (cut short: crashed), P4 (quit), P5
+// (resumed once, then criterion). By default the aborted P3 and P4 are left out of the means:
+// N = 2 (P1, P5). 95 % CI half width for two values a, b: t(0.975, 1) sd / sqrt(2) with
+// sd = |a - b| / sqrt(2), i.e. 12.706 |a - b| / 2.
+TEST(MazeSummaryTest, AbortedSessionsLeaveTheMeansAndEndReasonsAreReported) {
+  std::vector<ParticipantSummary> people;
+  for (const char* f : {"p1_cues_on.jsonl", "p3_cues_on_cut.jsonl", "p4_cues_on_quit.jsonl", "p5_cues_on_resumed.jsonl"}) {
+    auto p = summarize_log(data(f));
+    ASSERT_TRUE(p) << p.error().message;
+    people.push_back(p.value());
+  }
+  EXPECT_EQ(people[3].resumed, 1);
+  EXPECT_TRUE(people[3].ended);
+  EXPECT_FALSE(people[3].aborted());
+  EXPECT_EQ(people[3].total_time_s, 30.0);
+  EXPECT_TRUE(people[1].aborted());
+  EXPECT_TRUE(people[2].aborted());
+  const auto groups = summarize_groups(people);
+  ASSERT_EQ(groups.size(), 1u);
+  const GroupSummary& g = groups[0];
+  EXPECT_EQ(g.participants, 2);
+  EXPECT_EQ(g.excluded, 2);
+  EXPECT_EQ(g.reached_criterion, 2);
+  EXPECT_DOUBLE_EQ(g.mean_trials_to_criterion, 1.5);  // (2 + 1) / 2
+  EXPECT_DOUBLE_EQ(g.mean_total_time_s, 35.0);       // (40 + 30) / 2
+  EXPECT_NEAR(g.ci_total_time_s, 12.706 * 10.0 / 2.0, 1e-9);
+  EXPECT_DOUBLE_EQ(g.mean_errors[kTexture], 0.5);  // (1 + 0) / 2
+  EXPECT_NEAR(g.ci_errors[kTexture], 12.706 * 1.0 / 2.0, 1e-9);
+  EXPECT_EQ(g.mean_pass_time_s, (std::vector<double>{24.0, 16.0}));  // (20 + 28) / 2; P1 alone
+  EXPECT_NEAR(g.ci_pass_time_s[0], 12.706 * 8.0 / 2.0, 1e-9);
+  EXPECT_TRUE(std::isnan(g.ci_pass_time_s[1])) << "one participant: no interval";
+  EXPECT_EQ(g.pass_n, (std::vector<int>{2, 1}));
+  const auto all = summarize_groups(people, true);
+  EXPECT_EQ(all[0].participants, 4);
+  EXPECT_EQ(all[0].excluded, 0);
+  EXPECT_DOUBLE_EQ(all[0].mean_total_time_s, 28.0);  // (40 + 30 + 12 + 30) / 4
+  const std::string dir = test::temp_dir("summary_aborted");
+  ASSERT_TRUE(write_tables(dir, people, groups, summarize_retests(people)));
+  const auto pc = test::read_lines(dir + "/participants.csv");
+  ASSERT_EQ(pc.size(), 5u);
+  EXPECT_NE(pc[0].find(",end_reason,resumed"), std::string::npos) << pc[0];
+  const char* ends[4] = {",criterion,0", ",crashed,0", ",quit,0", ",criterion,1"};
+  for (std::size_t i = 0; i < 4; ++i)
+    EXPECT_EQ(pc[i + 1].substr(pc[i + 1].size() - std::string(ends[i]).size()), ends[i]) << pc[i + 1];
+  const auto gc = test::read_lines(dir + "/groups.csv");
+  EXPECT_EQ(gc[1].rfind("cues_on,1,2,2,1.500,35.000,", 0), 0u) << gc[1];
+  EXPECT_NE(gc[1].find(",2,63.530,"), std::string::npos) << "excluded, then the CI of the total time: " << gc[1];
+  const auto rooms = test::read_lines(dir + "/rooms.csv");
+  EXPECT_EQ(rooms.size(), 1u + 12 + 7 + 1 + 6);  // every branch line of the four logs
+  EXPECT_EQ(rooms[0], "participant,condition,session,pass,room,cue,exit,correct,time_s,path_mm,contacts_floor,"
+                      "contacts_wall,contacts_ceiling,contacts_hidden");
+  EXPECT_EQ(rooms[21], "P5,cues_on,1,1,1,none,straight,yes,2.000,120.50,1,2,0,0");
 }
 
 TEST(MazeSummaryTest, BadLinesNameFileAndLine) {

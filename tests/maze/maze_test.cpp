@@ -33,6 +33,22 @@ TEST(MazeDescTest, ShippedDescriptionLoads) {
   EXPECT_EQ(d->external_fluctuation_n, glm::dvec3(1.0, 0.0, 0.0));
 }
 
+// The live window's first screen: the default text, or the description's [instructions] text.
+TEST(MazeDescTest, InstructionsComeFromTheDescriptionOrTheDefault) {
+  auto d = parse_maze_desc("[maze]\nmax_passes = 3\n", "m.toml");
+  ASSERT_TRUE(d) << d.error().message;
+  EXPECT_EQ(d->instructions, kDefaultInstructions);
+  auto own = parse_maze_desc("[instructions]\ntext = \"Steer with the mouse.\\nPress Space.\"\n", "m.toml");
+  ASSERT_TRUE(own) << own.error().message;
+  EXPECT_EQ(own->instructions, "Steer with the mouse.\nPress Space.");
+  auto bad = parse_maze_desc("[instructions]\ntxt = \"x\"\n", "m.toml");
+  ASSERT_FALSE(bad);
+  EXPECT_EQ(bad.error().message, "m.toml:2: unknown key 'txt' in [instructions]; known keys: text");
+  auto empty = parse_maze_desc("[instructions]\ntext = \"\"\n", "m.toml");
+  ASSERT_FALSE(empty);
+  EXPECT_EQ(empty.error().message.rfind("m.toml:2: 'text' must be a non-empty string", 0), 0u) << empty.error().message;
+}
+
 TEST(MazeDescTest, ErrorsNameTheLineAndTheFix) {
   auto unknown = parse_maze_desc("[maze]\nroom_size_mm = 100\nroom_sise_mm = 3\n", "m.toml");
   ASSERT_FALSE(unknown);

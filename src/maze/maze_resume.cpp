@@ -1,0 +1,115 @@
+#include "maze/maze_resume.h"
+
+#include <fstream>
+#include <stdexcept>
+
+#include <nlohmann/json.hpp>
+
+namespace ps::maze {
+
+namespace {
+
+using nlohmann::json;
+
+template <class E>
+E parse_name(const json& j, bool (*parse)(const std::string&, E&), const char* what) {
+  E out{};
+  if (!j.is_string() || !parse(j.get<std::string>(), out)) throw std::runtime_error(std::string("unknown ") + what + " " + j.dump());
+  return out;
+}
+
+void read_start(const json& j, ResumePoint& r) {
+  SessionInfo& info = r.info;
+  if (j.contains("planned_orders"))
+    for (const json& order : j.at("planned_orders")) {
+      std::array<Cue, 5> o{};
+      for (std::size_t k = 0; k < 5; ++k) o[k] = parse_name<Cue>(order.at(k), &parse_cue, "cue");
+      r.planned.push_back(o);
+    }
+  info.participant = j.at("participant").get<std::string>();
+  info.session = j.value("session", 1);
+  info.cues = j.at("cues").get<bool>();
+  info.seed = j.at("seed").get<std::uint64_t>();
+  info.maze_path = j.at("maze").get<std::string>();
+  info.device = j.at("device").get<std::string>();
+  info.device_log = j.at("device_log").get<std::string>();
+  info.max_passes = j.at("max_passes").get<int>();
+}
+
+// A branch line back into the trial the tracker logged (the fields the score and the summary use).
+Trial read_trial(const json& j) {
+  Trial t;
+  t.pass = j.at("pass").get<int>() - 1;
+  t.index = j.at("room").get<int>() - 1;
+  t.cue = parse_name<Cue>(j.at("cue"), &parse_cue, "cue");
+  t.chosen = parse_name<Exit>(j.at("exit"), &parse_exit, "exit");
+  t.correct = parse_name<Exit>(j.at("correct_exit"), &parse_exit, "exit");
+  t.ok = j.at("correct").get<bool>();
+  t.enter_s = j.at("enter_s").get<double>();
+  t.exit_s = j.at("time_s").get<double>();
+  t.path_mm = j.at("path_mm").get<double>();
+  return t;
+}
+
+void read_line(const json& j, ResumePoint& r) {
+  const std::string type = j.at("type").get<std::string>();
+  if (type == "session_start") {
+    read_start(j, r);
+  } else if (type == "pass_start") {
+    r.current_started = j.at("pass").get<int>() == static_cast<int>(r.done.size()) + 1;
+    r.time_s = std::max(r.time_s, j.at("time_s").get<double>());
+  } else if (type == "branch") {
+    const Trial t = read_trial(j);
+    if (t.pass != r.current.pass || t.index != static_cast<int>(r.current.trials.size()))
+      throw std::runtime_error("branch out of order (pass " + std::to_string(t.pass + 1) + ", room " + std::to_string(t.index + 1) + ")");
+    if (r.current.trials.empty()) r.current.start_s = t.enter_s;
+    r.current.trials.push_back(t);
+    r.time_s = std::max(r.time_s, t.exit_s);
+  } else if (type == "pass_end") {
+    r.current.end_s = j.at("time_s").get<double>();
+    r.done.push_back(r.current);
+    r.current = PassScore{};
+    r.current.pass = static_cast<int>(r.done.size());
+    r.current_started = false;
+  } else if (type == "session_end") {
+    r.ended = j.at("reason").get<std::string>();
+  } else if (type == "resumed") {
+    ++r.resumes;
+    r.ended.clear();  // a quit session resumed is open again
+  }
+}
+
+}  // namespace
+
+glm::dvec3 resume_place(const MazeDesc& desc, const ResumePoint& r) {
+  const RoomGeometry g = room_geometry(desc);
+  const int slot = r.current.pass * kRoomsPerPass + static_cast<int>(r.current.trials.size()) - 1;
+  if (slot < 0) return g.start(desc.probe_radius_mm);
+  return {0.0, g.hall_y(slot), desc.probe_radius_mm + 1.0};
+}
+
+Result<ResumePoint> read_resume_point(const std::string& log_path) {
+  std::ifstream in(log_path);
+  if (!in) return make_error(log_path + ": cannot open the session log to resume (give the DIR a `maze` run wrote)");
+  ResumePoint r;
+  bool started = false;
+  int n = 0;
+  for (std::string line; std::getline(in, line);) {
+    const std::string where = log_path + ":" + std::to_string(++n) + ": ";
+    if (line.empty()) continue;
+    try {
+      const json j = json::parse(line);
+      started |= j.at("type") == "session_start";
+      if (!started) return make_error(where + "the first line must be the session_start line");
+      read_line(j, r);
+    } catch (const std::exception& e) {
+      return make_error(where + "not a maze log line (" + e.what() + "); docs/maze.md lists the schema");
+    }
+  }
+  if (!started) return make_error(log_path + ":1: empty log: no session_start line, nothing to resume (start the session again)");
+  if (r.ended == "criterion" || r.ended == "max_passes")
+    return make_error(log_path + ":" + std::to_string(n) + ": the session ended (" + r.ended + "): nothing to resume");
+  return r;
+}
+
+}  // namespace ps::maze

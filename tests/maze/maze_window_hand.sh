@@ -1,0 +1,123 @@
+#!/usr/bin/env bash
+# The live maze window driven by real X events (xdotool through XTest), run inside xvfb-run:
+#   0. the instructions screen holds the clock: while it shows (3 s in session 3, with the mouse
+#      moved meanwhile) no device sample is taken; the session's time counts from Space;
+#   1. for pointers left at three places on the screen (two corners and a point outside the
+#      window), the hand (device.log) stays within 1 mm of the probe's start for the first 3 s
+#      without input: no jump when the window maps, takes focus and grabs the mouse;
+#   2. five PageUp taps 5 ms apart raise the hand by 5 x 0.5 mm: every tap counts;
+#   3. a 40-count pointer motion to the right moves the hand 40 x 0.15 mm = 6 mm to the right;
+#   4. a 200-count motion to the left runs the hand 30 mm into the start corridor's wall, 12 mm
+#      from the start (18 mm corridor half-width - 6 mm probe radius): the clutch puts it back
+#      under the probe at the wall and logs it;
+#   5. Esc ends the session, logged as quit.
+# usage: maze_window_hand.sh PSEUDOSHADOW MAZE.toml OUT_DIR
+set -euo pipefail
+exe=$1 maze=$2 out=$3
+rm -rf "$out"
+mkdir -p "$out"
+
+fail() { echo "maze_window_hand: $*" >&2; exit 1; }
+
+# Starts a mouse session into $out/$1 and waits for its window (at most 30 s).
+start_session() {
+  "$exe" maze --maze "$maze" --participant "H$1" --seed $((6 + $1)) --cues on --out "$out/$1" >"$out/$1.txt" 2>&1 &
+  pid=$!
+  xdotool search --sync --onlyvisible --name "pseudoshadow maze - H$1" >/dev/null &
+  local search=$!
+  for _ in $(seq 300); do kill -0 "$search" 2>/dev/null || break; sleep 0.1; done
+  kill -0 "$search" 2>/dev/null && { kill "$search" "$pid"; fail "no window after 30 s"; }
+  wait "$search" || true
+}
+
+# The instructions screen for $2 s (the pointer moved 300 counts meanwhile), then Space.
+start_from_instructions() {
+  sleep "$2"
+  xdotool mousemove_relative -- 300 0
+  sleep 0.3
+  [ -s "$out/$1/device.log.partial" ] && fail "session $1: device samples before Space (the clock ran on the instructions)"
+  xdotool key space
+  t_space=$(date +%s.%N)
+}
+
+# Session seconds of the newest sample in the device stream (written once a second).
+stream_time() { tail -n 1 "$out/$1/device.log.partial" 2>/dev/null | awk '{print $1 + 0}'; }
+
+wait_stream_past() {  # $1 session, $2 seconds
+  for _ in $(seq 200); do
+    awk -v t="$(stream_time "$1")" -v s="$2" 'BEGIN { exit !(t + 0 >= s) }' && return 0
+    sleep 0.1
+  done
+  fail "session $1: device stream never reached $2 s"
+}
+
+quit_session() {
+  xdotool key Escape
+  t_quit=$(date +%s.%N)
+  wait "$pid" || fail "session $1 exited $?: $(cat "$out/$1.txt")"
+  grep -q '"type":"session_end","reason":"quit"' "$out/$1/session.jsonl" || fail "session $1: no quit logged"
+}
+
+# Largest distance (mm, x-y) of the hand in [0, 3 s] from the first sample, and that sample.
+check_still() {
+  awk -v name="$1" '
+    /^#/ { next }
+    n == 0 { x0 = $2; y0 = $3; n = 1 }
+    $1 <= 3.0 { d = sqrt(($2 - x0)^2 + ($3 - y0)^2); if (d > m) m = d; last = $1 }
+    END {
+      printf "session %s: first sample (%.3f, %.3f) mm, largest move in the first %.3f s: %.4f mm\n", name, x0, y0, last, m
+      # The probe starts at x = 0 mid-corridor, y = -91 (the shipped maze, any seed); 1e-9: the recording
+      # writes 17 digits, so the start comes back exactly.
+      if (x0 < -1e-9 || x0 > 1e-9 || y0 < -91 - 1e-9 || y0 > -91 + 1e-9) exit 2
+      if (last < 2.9 || m > 1.0) exit 1
+    }' "$out/$1/device.log"
+}
+
+i=0
+for pos in "0 0" "1279 1023" "900 700"; do
+  i=$((i + 1))
+  xdotool mousemove $pos
+  start_session $i
+  start_from_instructions $i "$([ $i -eq 3 ] && echo 3 || echo 0.5)"
+  wait_stream_past $i 3.5
+  if [ $i -eq 1 ]; then
+    # Taps and a motion after the still phase (the check above reads [0, 3 s] only).
+    z_before=$(stream_time $i)
+    xdotool key --delay 5 Page_Up Page_Up Page_Up Page_Up Page_Up
+    xdotool mousemove_relative -- 40 0
+    wait_stream_past $i "$(awk -v t="$z_before" 'BEGIN { print t + 2.0 }')"
+  elif [ $i -eq 2 ]; then
+    t_before=$(stream_time $i)
+    xdotool mousemove_relative -- -200 0
+    wait_stream_past $i "$(awk -v t="$t_before" 'BEGIN { print t + 2.0 }')"
+  fi
+  quit_session $i
+  # Session time ends at most at the wall time from Space to Esc (0.5 s: the Esc's way through
+  # the X server and one frame); the instructions' seconds are not in it.
+  awk -v a="$t_space" -v b="$t_quit" -v log_end="$(grep '"session_end"' "$out/$i/session.jsonl" | sed 's/.*"time_s":\([0-9.e]*\).*/\1/')" \
+    'BEGIN { printf "session '$i': %.3f s of session, %.3f s from Space to Esc\n", log_end, b - a; exit !(log_end <= b - a + 0.5) }' ||
+    fail "session $i: the session's clock ran before Space"
+  check_still $i || fail "session $i (pointer at $pos): the hand moved without input, or did not start at the probe"
+done
+
+# Session 1's last sample: 6 mm right of the start (40 counts x 0.15 mm; 0.3 mm: two counts lost
+# to a rebase at most), 2.5 mm higher (5 taps x 0.5 mm, exact: taps are events).
+awk '
+  /^#/ { next }
+  n == 0 { x0 = $2; z0 = $4; n = 1 }
+  { x = $2; z = $4 }
+  END {
+    printf "session 1: hand moved %.4f mm right and %.4f mm up\n", x - x0, z - z0
+    if (x - x0 < 5.7 || x - x0 > 6.3) exit 1
+    if (z - z0 < 2.5 - 1e-9 || z - z0 > 2.5 + 1e-9) exit 1
+  }' "$out/1/device.log" || fail "session 1: the taps or the motion did not reach the hand as given"
+# Session 2: one clutch, 30 - 12 = 18 mm of overshoot (1 mm: the proxy rests on the wall within
+# the god-object's tolerance, and the motion may come in two events); the hand then back at the
+# wall, x = -12 mm (0.5 mm, the same reason).
+grep '"type":"clutch"' "$out/2/session.jsonl" | head -1 | tee "$out/2/clutch.txt"
+[ "$(grep -c '"type":"clutch"' "$out/2/session.jsonl")" -ge 1 ] || fail "session 2: no clutch logged"
+sed 's/.*"overshoot_mm":\([-0-9.e]*\).*/\1/' "$out/2/clutch.txt" | awk '{ if ($1 < 6 || $1 > 19) exit 1 }' ||
+  fail "session 2: overshoot not in (6, 19] mm"
+awk '/^#/ { next } { x = $2 } END { printf "session 2: hand after the clutch at x = %.4f mm\n", x; if (x < -12.5 || x > -11.5) exit 1 }' \
+  "$out/2/device.log" || fail "session 2: the hand is not back under the probe at the wall"
+echo "maze_window_hand: ok"
