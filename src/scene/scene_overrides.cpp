@@ -3,9 +3,11 @@
 // "file:line").
 #include <algorithm>
 #include <charconv>
+#include <filesystem>
 #include <string_view>
 
 #include "scene/scene_convert.h"
+#include "scene/scene_io.h"
 
 namespace ps::scene_detail {
 namespace {
@@ -140,9 +142,51 @@ Result<toml::table*> target_table(toml::table& root, const std::vector<std::stri
   return t;
 }
 
+// Leaves whose string value names a file (TableReader::file and the button's "scene:FILE").
+bool names_file(std::string_view leaf) {
+  return leaf.ends_with("_lut") || leaf == "mesh_file" || leaf == "albedo_texture" || leaf == "heightmap" ||
+         leaf == "action";
+}
+
 }  // namespace
 
-Status apply_override(toml::table& root, const std::string& text, ParseContext& ctx) {
+}  // namespace ps::scene_detail
+
+namespace ps {
+
+std::string anchor_override_path(const std::string& text, const std::string& base_dir) {
+  namespace fs = std::filesystem;
+  const auto eq = text.find('=');
+  if (eq == std::string::npos) return text;
+  const std::string key = scene_detail::trim(std::string_view(text).substr(0, eq));
+  const std::string leaf = key.substr(key.rfind('.') == std::string::npos ? 0 : key.rfind('.') + 1);
+  if (!scene_detail::names_file(leaf)) return text;
+  const toml::table value = scene_detail::parse_value(scene_detail::trim(std::string_view(text).substr(eq + 1)));
+  const std::optional<std::string> name = value["v"].value<std::string>();
+  if (!name || name->empty()) return text;
+  // A button's action: only "scene:FILE" names a file ("flag:NAME" does not).
+  const std::string prefix = leaf == "action" ? "scene:" : "";
+  if (name->rfind(prefix, 0) != 0 || name->size() == prefix.size()) return text;
+  const fs::path file(name->substr(prefix.size()));
+  if (!file.is_relative()) return text;
+  const std::string anchored = prefix + (fs::path(base_dir) / file).lexically_normal().string();
+  std::string out = key + "=\"";
+  for (char c : anchored) {
+    if (c == '"' || c == '\\') out += '\\';
+    out += c;
+  }
+  return out + "\"";
+}
+
+}  // namespace ps
+
+namespace ps::scene_detail {
+
+Status apply_override(toml::table& root, const std::string& given, ParseContext& ctx) {
+  // Written on the command line (or anchored already by read_overrides): the working directory.
+  std::error_code cwd_ec;
+  const std::filesystem::path cwd = std::filesystem::current_path(cwd_ec);
+  const std::string text = cwd_ec ? given : anchor_override_path(given, cwd.string());
   const auto eq = text.find('=');
   if (eq == std::string::npos) {
     return make_error("--set " + text + ": expected KEY=VALUE (e.g. probe.radius_mm=10)");

@@ -9,6 +9,7 @@
 #include <fstream>
 
 #include "core/file_io.h"
+#include "scene/scene_io.h"
 
 namespace ps {
 
@@ -72,16 +73,15 @@ std::string curve_file_for(const std::string& overrides_path, const std::string&
 }
 
 Status save_overrides_file(const std::string& path, const std::map<std::string, std::string>& edits,
-                           const std::map<std::string, Lut>& curves, const std::string& scene_name,
-                           const std::string& scene_dir) {
+                           const std::map<std::string, Lut>& curves, const std::string& scene_name) {
   std::map<std::string, std::string> lines = edits;
   for (const auto& [key, lut] : curves) {
     assert(key.rfind("materials.", 0) == 0 && key.ends_with("_lut") && "save_overrides_file: not a curve key");
     const std::string file = curve_file_for(path, key);
     if (Status s = prepare_output_dir(file); !s) return s;
     if (Status s = write_lut(file, lut, {"Edited in the tuning panel: " + key + " of " + scene_name}); !s) return s;
-    const fs::path rel = fs::absolute(file).lexically_normal().lexically_relative(fs::absolute(scene_dir).lexically_normal());
-    lines[key] = quoted(rel.empty() ? fs::absolute(file).string() : rel.generic_string());
+    // The table lies next to the override file, and read_overrides resolves against that file.
+    lines[key] = quoted(fs::path(file).filename().generic_string());
   }
   return write_file_atomic(path, format_overrides(lines, scene_name));
 }
@@ -89,6 +89,8 @@ Status save_overrides_file(const std::string& path, const std::map<std::string, 
 Result<std::vector<std::string>> read_overrides(const std::string& path) {
   std::ifstream f(path);
   if (!f) return make_error(path + ": cannot open override file: " + std::strerror(errno));
+  std::error_code ec;
+  const fs::path dir = fs::absolute(path, ec).parent_path();
   std::vector<std::string> out;
   std::string line;
   for (int n = 1; std::getline(f, line); ++n) {
@@ -97,7 +99,7 @@ Result<std::vector<std::string>> read_overrides(const std::string& path) {
     const auto eq = t.find('=');
     if (eq == std::string::npos || eq == 0 || trim(t.substr(eq + 1)).empty())
       return make_error(path + ":" + std::to_string(n) + ": expected KEY = VALUE (e.g. materials.wood.lambda_min = 0.4)");
-    out.push_back(trim(t.substr(0, eq)) + "=" + trim(t.substr(eq + 1)));
+    out.push_back(anchor_override_path(trim(t.substr(0, eq)) + "=" + trim(t.substr(eq + 1)), dir.string()));
   }
   return out;
 }

@@ -28,18 +28,19 @@ std::string format_overrides(const std::map<std::string, std::string>& edits,
 
 // Curves edited as lookup tables (the panel's curve editor): key "materials.NAME.intensity_lut"
 // or "materials.NAME.speed_gain_lut" -> the table. Saved as table files NEXT TO the override file
-// (curve_file_for) and one line each, KEY = "FILE" with FILE relative to `scene_dir` (relative
-// file values resolve against the scene's directory, docs/scene-format.md), so the override file
-// with its tables is what `--overrides` reads back, and the tables are plain files to review.
+// (curve_file_for) and one line each, KEY = "FILE" with FILE relative to the override file (a
+// relative file value in an override file resolves against that file's directory,
+// docs/scene-format.md "Relative paths"), so the override file with its tables is what
+// `--overrides` reads back from any working directory, and the tables are plain files to review.
 std::string curve_file_for(const std::string& overrides_path, const std::string& key);
 
 // Writes the tables of `curves` (each atomically), then the override file for `edits` plus one
 // line per curve (atomically). A curve key must be a material's *_lut key (asserted).
 Status save_overrides_file(const std::string& path, const std::map<std::string, std::string>& edits,
-                           const std::map<std::string, Lut>& curves, const std::string& scene_name,
-                           const std::string& scene_dir);
+                           const std::map<std::string, Lut>& curves, const std::string& scene_name);
 
-// Reads an override file into "KEY=VALUE" strings for parse_scene/load_scene.
+// Reads an override file into "KEY=VALUE" strings for parse_scene/load_scene, a relative file
+// value made absolute against the file's own directory (anchor_override_path).
 // Errors: "<path>: cannot open override file: <reason>", "<path>:<line>: expected KEY = VALUE".
 Result<std::vector<std::string>> read_overrides(const std::string& path);
 

@@ -113,10 +113,7 @@ Status TuneSession::save_overrides(const std::string& path) const {
       return make_error("save: the built-in default scene has no file; give the override file's name");
     target = overrides_path_for(source_.scene_path);
   }
-  const std::string scene_dir = source_.scene_path.empty()
-                                    ? default_scene_base_dir()
-                                    : std::filesystem::path(source_.scene_path).parent_path().string();
-  return save_overrides_file(target, edits_, curve_edits_, scene_name, scene_dir.empty() ? "." : scene_dir);
+  return save_overrides_file(target, edits_, curve_edits_, scene_name);
 }
 
 }  // namespace ps

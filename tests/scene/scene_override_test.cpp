@@ -3,6 +3,7 @@
 
 #include <cmath>
 
+#include "scene/scene_io.h"
 #include "scene_test_util.h"
 
 namespace ps {
@@ -115,6 +116,26 @@ TEST(SceneOverrideTest, MalformedOverrides) {
   EXPECT_EQ(error_of(kScene, {"materials=3"}),
             "--set materials: expected materials.NAME.KEY=VALUE (or "
             "materials.NAME.haptic.KEY, materials.NAME.haptic.texture.N.KEY)");
+}
+
+// A relative file value in an override resolves against where it was written (docs/scene-format.md
+// "Paths"): anchor_override_path makes it absolute against the given directory.
+TEST(SceneOverridePaths, RelativeFileValueAnchored) {
+  EXPECT_EQ(anchor_override_path("materials.wood.intensity_lut=my.lut", "/w"),
+            "materials.wood.intensity_lut=\"/w/my.lut\"");
+  EXPECT_EQ(anchor_override_path("materials.wood.speed_gain_lut = \"t/../g.lut\"", "/w"),
+            "materials.wood.speed_gain_lut=\"/w/g.lut\"");
+  EXPECT_EQ(anchor_override_path("surfaces.0.mesh_file=m.obj", "/w"), "surfaces.0.mesh_file=\"/w/m.obj\"");
+  EXPECT_EQ(anchor_override_path("buttons.0.action=\"scene:b.toml\"", "/w"),
+            "buttons.0.action=\"scene:/w/b.toml\"");
+}
+
+TEST(SceneOverridePaths, OtherValuesUnchanged) {
+  for (const std::string text : {"materials.wood.intensity_lut=\"/abs/my.lut\"", "probe.radius_mm=12",
+                                 "render.displacement=exact_max", "buttons.0.action=\"flag:lamp\"",
+                                 "materials.wood.intensity_lut=\"\"", "no equals sign"}) {
+    EXPECT_EQ(anchor_override_path(text, "/w"), text);
+  }
 }
 
 }  // namespace

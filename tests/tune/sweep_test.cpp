@@ -1,6 +1,8 @@
 // Sweep specs, cell enumeration, labels and override files (no GL).
 #include <gtest/gtest.h>
 
+#include <filesystem>
+
 #include "core/file_io.h"
 #include "tune/overrides_file.h"
 #include "tune/sweep.h"
@@ -65,6 +67,20 @@ TEST(OverridesFileTest, RoundTripAndQuoting) {
   EXPECT_EQ(lines.value(), (std::vector<std::string>{"materials.wood.lambda_min=0.4", "probe.position=[0,0,5]",
                                                      "render.displacement=\"exact_max\""}));
   EXPECT_EQ(overrides_path_for("scenes/a.toml"), "scenes/a.overrides.toml");
+}
+
+// A relative file value inside an override file resolves against that file's directory, not the
+// working directory nor the scene's (docs/scene-format.md "Paths").
+TEST(OverridesFileTest, RelativeFileResolvesAgainstTheOverrideFile) {
+  const std::filesystem::path dir = std::filesystem::absolute(testing::TempDir()) / "anchored";
+  std::filesystem::create_directories(dir);
+  const std::string path = (dir / "a.overrides.toml").string();
+  ASSERT_TRUE(write_file_atomic(path, "materials.wood.intensity_lut = \"a.wood.intensity.lut\"\nprobe.radius_mm = 3\n"));
+  auto lines = read_overrides(path);
+  ASSERT_TRUE(lines) << lines.error().message;
+  const std::string lut = (dir / "a.wood.intensity.lut").lexically_normal().string();
+  EXPECT_EQ(lines.value(), (std::vector<std::string>{"materials.wood.intensity_lut=\"" + lut + "\"",
+                                                     "probe.radius_mm=3"}));
 }
 
 TEST(OverridesFileTest, MalformedLineNamesFileAndLine) {
