@@ -79,6 +79,49 @@ int text_width(const std::string& text, int scale) {
   return text.empty() ? 0 : (static_cast<int>(text.size()) * kGlyphAdvance - 1) * scale;
 }
 
+namespace {
+
+// How many leading characters of `word` go on a line `chars` characters wide: after the last
+// '.' or '=' that fits (between a key's parts, before its value), else after the last ',' or
+// '_', else all `chars` (at least one).
+std::size_t word_break(const std::string& word, std::size_t chars) {
+  chars = std::max<std::size_t>(1, chars);
+  if (word.size() <= chars) return word.size();
+  std::size_t at = word.find_last_of(".=", chars - 1);
+  if (at == std::string::npos) at = word.find_last_of(",_", chars - 1);
+  return at == std::string::npos ? chars : at + 1;
+}
+
+}  // namespace
+
+std::vector<std::string> wrap_text(const std::string& text, int max_width, int scale) {
+  // A line of n glyphs is (n * advance - 1) * scale wide (text_width).
+  const std::size_t chars = static_cast<std::size_t>(std::max(1, (max_width / scale + 1) / kGlyphAdvance));
+  std::vector<std::string> lines;
+  std::string line;
+  std::size_t pos = 0;
+  while (pos < text.size()) {
+    const std::size_t end = std::min(text.find(' ', pos), text.size());
+    std::string word = text.substr(pos, end - pos);
+    pos = end + 1;
+    if (word.empty()) continue;
+    if (!line.empty() && line.size() + 1 + word.size() <= chars) {
+      line += ' ' + word;
+      continue;
+    }
+    if (!line.empty()) lines.push_back(std::move(line));
+    line.clear();
+    while (word.size() > chars) {
+      const std::size_t n = word_break(word, chars);
+      lines.push_back(word.substr(0, n));
+      word.erase(0, n);
+    }
+    line = std::move(word);
+  }
+  if (!line.empty() || lines.empty()) lines.push_back(std::move(line));
+  return lines;
+}
+
 void draw_text(Image& image, int x, int y, const std::string& text, const glm::vec3& color, int scale) {
   assert(scale >= 1 && "draw_text: scale must be >= 1");
   for (size_t i = 0; i < text.size(); ++i) {
@@ -96,7 +139,14 @@ Image contact_sheet(const std::vector<Image>& images, const std::vector<std::str
   assert(!images.empty() && "contact_sheet: no images");
   const int tw = d.thumb_width;
   const int th = std::max(1, tw * images[0].height / std::max(1, images[0].width));
-  const int label_h = (kGlyphHeight + 2) * d.label_scale;
+  std::vector<std::vector<std::string>> wrapped;
+  std::size_t label_lines = 1;
+  for (const std::string& label : labels) {
+    wrapped.push_back(wrap_text(label, tw, d.label_scale));
+    label_lines = std::max(label_lines, wrapped.back().size());
+  }
+  const int line_h = (kGlyphHeight + 2) * d.label_scale;
+  const int label_h = static_cast<int>(label_lines) * line_h;
   const int cols = std::max(1, std::min<int>(d.columns, static_cast<int>(images.size())));
   const int rows = (static_cast<int>(images.size()) + cols - 1) / cols;
   Image sheet;
@@ -116,7 +166,9 @@ Image contact_sheet(const std::vector<Image>& images, const std::vector<std::str
         const int sx = x * im.width / tw, sy = y * im.height / th;
         for (int c = 0; c < 3; ++c) sheet.at(cx + x, cy + y, c) = im.at(sx, sy, std::min(c, im.channels - 1));
       }
-    draw_text(sheet, cx, cy + th + d.label_scale, labels[i], d.label_color, d.label_scale);
+    for (std::size_t l = 0; l < wrapped[i].size(); ++l)
+      draw_text(sheet, cx, cy + th + d.label_scale + static_cast<int>(l) * line_h, wrapped[i][l], d.label_color,
+                d.label_scale);
   }
   return sheet;
 }

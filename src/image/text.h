@@ -19,6 +19,11 @@ constexpr int kGlyphWidth = 5, kGlyphHeight = 7, kGlyphAdvance = 6;  // pixels a
 // scale x scale block; pixels outside the image are skipped. Channels beyond RGB are untouched.
 void draw_text(Image& image, int x, int y, const std::string& text, const glm::vec3& color, int scale = 1);
 int text_width(const std::string& text, int scale = 1);
+// `text` broken into lines no wider than `max_width` pixels (text_width): at spaces first; a word
+// too long for a line breaks after its last '.', '=', ',' or '_' that fits ('.' and '=' first),
+// else between two characters. At least one character per line, so a very narrow width still
+// terminates.
+std::vector<std::string> wrap_text(const std::string& text, int max_width, int scale = 1);
 
 struct ContactSheetDesc {
   int columns = 4;
@@ -29,8 +34,9 @@ struct ContactSheetDesc {
   glm::vec3 label_color{1.0f, 1.0f, 1.0f};
 };
 
-// One RGB image: thumbnails in rows, each with its label underneath. Images must be RGB or
-// RGBA; labels.size() must equal images.size().
+// One RGB image: thumbnails in rows, each with its label underneath, wrapped to the cell's
+// width (wrap_text) so labels never run into the next cell; every label row is as tall as its
+// longest label. Images must be RGB or RGBA; labels.size() must equal images.size().
 Image contact_sheet(const std::vector<Image>& images, const std::vector<std::string>& labels,
                     const ContactSheetDesc& desc = {});
 

@@ -5,6 +5,7 @@
 #include <bit>
 #include <cstdint>
 #include <string>
+#include <vector>
 
 #include "image/text.h"
 
@@ -124,6 +125,49 @@ TEST(TextTest, ContactSheetLayout) {
   EXPECT_EQ(sheet.width, 4 + 2 * 54);
   EXPECT_EQ(sheet.height, 4 + 3 * (25 + 18 + 4));
   EXPECT_GT(lit(sheet), 0);  // labels drawn in white
+}
+
+// A `tune --sweep` label is wider than a 128 px cell (issue: labels ran into each other): it is
+// wrapped, every line fits the cell, and nothing is lost (the lines hold every character; spaces
+// are compared removed, as a line break replaces one).
+TEST(TextTest, WrapTextFitsTheWidthAndKeepsEveryCharacter) {
+  const std::string label = "materials.table4_1_a.lambda_min=1.5 mm probe.velocity=[250,0,0] mm/s";
+  for (int width : {128, 64, 200, 3}) {
+    const auto lines = wrap_text(label, width);
+    std::string joined;
+    for (const std::string& l : lines) {
+      if (l.size() > 1) {  // a single glyph is the least a line holds, whatever the width
+        EXPECT_LE(text_width(l), width) << "'" << l << "' at width " << width;
+      }
+      joined += l;
+    }
+    std::erase(joined, ' ');
+    std::string no_spaces = label;
+    std::erase(no_spaces, ' ');
+    EXPECT_EQ(joined, no_spaces) << "width " << width;
+  }
+  // Breaks at spaces first, then after a '.' or '=' (21 glyphs fit in 128 px).
+  EXPECT_EQ(wrap_text(label, 128), (std::vector<std::string>{"materials.table4_1_a.", "lambda_min=1.5 mm",
+                                                              "probe.velocity=", "[250,0,0] mm/s"}));
+  EXPECT_EQ(wrap_text("short", 128), std::vector<std::string>{"short"});
+}
+
+// A 3-column sheet of 128^2 cells with sweep labels: no label pixel in the padding between
+// cells (a label that ran on would light it), and the label rows grow to hold the lines.
+TEST(TextTest, ContactSheetLabelsStayInTheirCells) {
+  const std::string label = "materials.table4_1_a.lambda_min=1.5 mm probe.velocity=[250,0,0] mm/s";
+  const std::vector<Image> ims(3, blank(128, 128));
+  const ContactSheetDesc desc{.columns = 3, .thumb_width = 128, .label_scale = 1};
+  const Image sheet = contact_sheet(ims, {label, label, label}, desc);
+  EXPECT_EQ(sheet.height, 4 + 128 + 4 * (kGlyphHeight + 2) + 4);
+  int in_padding = 0;
+  for (int y = 0; y < sheet.height; ++y)
+    for (int x = 0; x < sheet.width; ++x) {
+      const int in_pitch = (x - desc.padding) % (desc.thumb_width + desc.padding);
+      if (x < desc.padding || in_pitch >= desc.thumb_width) in_padding += sheet.at(x, y, 0) > 0.5f;
+    }
+  EXPECT_EQ(in_padding, 0);
+  EXPECT_GT(lit(sheet), 3 * 200);  // the labels are drawn (each of its ~60 glyphs lights ~12 pixels)
 }
 
 }  // namespace
