@@ -31,17 +31,17 @@ json trial_json(const SessionInfo& info, const Trial& t) {
 
 }  // namespace
 
-Result<SessionLog> SessionLog::open(const std::string& path) {
+Result<SessionLog> SessionLog::open(const std::string& path, LogSyscalls sys) {
   // O_EXCL: a participant's log is never overwritten by a later run into the same directory.
   const int fd = ::open(path.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_APPEND | O_CLOEXEC, 0644);
   if (fd < 0 && errno == EEXIST)
     return make_error(path + ": a session log is already there (a participant's data is never overwritten); "
                              "give another --out, or move that one away");
   if (fd < 0) return make_error(path + ": cannot create the session log: " + std::strerror(errno));
-  return SessionLog(fd, path);
+  return SessionLog(fd, path, std::move(sys));
 }
 
-Result<SessionLog> SessionLog::open_existing(const std::string& path) {
+Result<SessionLog> SessionLog::open_existing(const std::string& path, LogSyscalls sys) {
   const int fd = ::open(path.c_str(), O_WRONLY | O_APPEND | O_CLOEXEC);
   if (fd < 0) return make_error(path + ": cannot open the session log to resume: " + std::strerror(errno));
   // A line cut short is impossible with one write(2) per line, but a disk that filled up can
@@ -50,7 +50,7 @@ Result<SessionLog> SessionLog::open_existing(const std::string& path) {
   bool newline = true;
   if (f && std::fseek(f, -1, SEEK_END) == 0) newline = std::fgetc(f) == '\n';
   if (f) std::fclose(f);
-  SessionLog log(fd, path);
+  SessionLog log(fd, path, std::move(sys));
   if (!newline && ::write(fd, "\n", 1) != 1) return make_error(path + ": cannot append to the session log: " + std::strerror(errno));
   return log;
 }
@@ -62,10 +62,12 @@ SessionLog::~SessionLog() {
 Status SessionLog::append(const std::string& json_line) {
   const std::string line = json_line + "\n";
   // One write of the whole line: with O_APPEND it lands whole or (on a full disk) is reported.
-  const ssize_t n = ::write(fd_, line.data(), line.size());
-  if (n != static_cast<ssize_t>(line.size()))
+  const long n = sys_.write ? sys_.write(fd_, line.data(), line.size()) : ::write(fd_, line.data(), line.size());
+  if (n != static_cast<long>(line.size()))
     return make_error(path_ + ": cannot append to the session log: " + (n < 0 ? std::strerror(errno) : "short write"));
-  if (::fsync(fd_) != 0) return make_error(path_ + ": cannot sync the session log: " + std::strerror(errno));
+  // Synced before append() returns: once a line is reported written, a power cut keeps it.
+  if ((sys_.fsync ? sys_.fsync(fd_) : ::fsync(fd_)) != 0)
+    return make_error(path_ + ": cannot sync the session log: " + std::strerror(errno));
   ++lines_;
   return ok_status();
 }

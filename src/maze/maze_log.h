@@ -5,6 +5,8 @@
 // room entered and left, one per pass), so the fsync costs nothing the session would notice.
 #pragma once
 
+#include <cstddef>
+#include <functional>
 #include <string>
 
 #include "core/result.h"
@@ -27,13 +29,24 @@ struct SessionInfo {
   int session = 1;
 };
 
+// The two system calls each line takes, injectable so a test can observe them: a kill test
+// cannot see a missing fsync (the page cache keeps the data either way). Empty: write(2) and
+// fsync(2) themselves.
+struct LogSyscalls {
+  std::function<long(int fd, const char* data, std::size_t size)> write;
+  std::function<int(int fd)> fsync;
+};
+
 class SessionLog {
  public:
   // Creates `path` (its directory must exist); an existing file is an error, never truncated.
-  static Result<SessionLog> open(const std::string& path);
+  static Result<SessionLog> open(const std::string& path, LogSyscalls sys = {});
   // Opens an existing log to append to (`maze --resume`): never created, never truncated.
-  static Result<SessionLog> open_existing(const std::string& path);
-  SessionLog(SessionLog&& o) noexcept : fd_(o.fd_), path_(std::move(o.path_)), lines_(o.lines_) { o.fd_ = -1; }
+  static Result<SessionLog> open_existing(const std::string& path, LogSyscalls sys = {});
+  SessionLog(SessionLog&& o) noexcept
+      : fd_(o.fd_), path_(std::move(o.path_)), lines_(o.lines_), sys_(std::move(o.sys_)) {
+    o.fd_ = -1;
+  }
   SessionLog(const SessionLog&) = delete;
   SessionLog& operator=(const SessionLog&) = delete;
   SessionLog& operator=(SessionLog&&) = delete;
@@ -54,11 +67,12 @@ class SessionLog {
   int lines() const { return lines_; }
 
  private:
-  SessionLog(int fd, std::string path) : fd_(fd), path_(std::move(path)) {}
+  SessionLog(int fd, std::string path, LogSyscalls sys) : fd_(fd), path_(std::move(path)), sys_(std::move(sys)) {}
   Status append(const std::string& json_line);
   int fd_ = -1;
   std::string path_;
   int lines_ = 0;
+  LogSyscalls sys_;
 };
 
 }  // namespace ps::maze

@@ -38,6 +38,27 @@ TEST(StaircaseTest, TwoDownOneUpWithCoarseThenFineSteps) {
   EXPECT_DOUBLE_EQ(s.threshold(), std::cbrt(4.0 * 6.25 * 5.0));
 }
 
+// More reversals than the threshold averages: the estimate is the geometric mean of the LAST
+// average_last reversal deltas, exactly (the first ones are the staircase finding its range).
+// Factor 2 throughout keeps every delta a power of two, so the values are exact.
+TEST(StaircaseTest, ThresholdAveragesTheLastReversalsOnly) {
+  StaircaseParams p;
+  p.start_delta = 8.0;
+  p.coarse_factor = 2.0;
+  p.coarse_reversals = 100;  // never fine: every step is x2 or /2
+  p.reversals = 4;
+  p.average_last = 2;
+  Staircase s(p);
+  // 8 -TT-> 4 -TT-> 2 -F-> 4 (reversal at 2) -TT-> 2 (at 4) -TT-> 1 -F-> 2 (at 1) -F-> 4 -TT-> 2 (at 4)
+  for (bool answer : {true, true, true, true, false, true, true, true, true, false, false, true, true})
+    s.record(answer);
+  ASSERT_EQ(s.reversal_count(), 4);
+  ASSERT_TRUE(s.done());
+  // Last two reversals at 1 and 4: sqrt(1 * 4) = 2. (The first two, 2 and 4, would give 2.83;
+  // all four 2.38.) exp(log(1) + log(4)) / 2) is 2 within a rounding of the log and exp.
+  EXPECT_DOUBLE_EQ(s.threshold(), 2.0);
+}
+
 TEST(CalibrationTest, AnswersAreScoredByTheQuestion) {
   for (CurveKind kind : {CurveKind::kDistance, CurveKind::kSpeed}) {
     Spec spec;

@@ -3,6 +3,7 @@
 // across a facet edge, and the haptic loop walking over the flat torus with the view rolling.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
@@ -53,6 +54,28 @@ TEST(FourdRollingTest, RotateBetweenIsTheSeedsAxisAngle) {
 // Eq. 1 with beta = 3: |f| = alpha r^4 toward the line of sight through the screen centre, r the
 // proxy's distance from that line; nothing along the line (the band pulls sideways, never into
 // the surface under the probe); capped. The pose turns the line with the view. 1e-12 relative.
+// Nearly opposite directions (pi - 1e-3 ... pi - 1e-9 rad), where T . T' can round below -1: the
+// turn angle must come from atan2(|T x T'|, T . T'), finite everywhere (acos of a dot below -1
+// is NaN). 2000 pairs in all directions; about 100 of them have a dot below -1.
+TEST(FourdRollingTest, RotateBetweenNearlyOppositeDirectionsIsFinite) {
+  int below_minus_one = 0;
+  double worst = 0.0;
+  for (int i = 0; i < 2000; ++i) {
+    const glm::dvec3 v = glm::normalize(glm::dvec3(std::sin(i * 1.3), std::cos(i * 0.7), std::sin(i * 2.1 + 1)));
+    const glm::dvec3 w = glm::normalize(glm::cross(v, glm::dvec3(0.3, 0.5, 0.8)));
+    const double eps = std::pow(10.0, -3.0 - (i % 7));
+    const glm::dvec3 b = glm::normalize(-v * std::cos(eps) + w * std::sin(eps));
+    below_minus_one += glm::dot(v, b) < -1.0;
+    const glm::dvec3 rv = fourd::rotate_between(v, b) * v;
+    ASSERT_TRUE(std::isfinite(rv.x) && std::isfinite(rv.y) && std::isfinite(rv.z)) << "pair " << i << " eps " << eps;
+    worst = std::max(worst, glm::length(rv - b));
+  }
+  EXPECT_GT(below_minus_one, 0) << "no pair tried the dot below -1";
+  // The axis T x T' / |T x T'| of two nearly opposite unit vectors carries the cross product's
+  // cancellation, ~1e-16 / eps: measured 1.1e-7 at eps = 1e-9.
+  EXPECT_LT(worst, 1e-6);
+}
+
 TEST(FourdRollingTest, TetherIsEquationOneWithBetaThree) {
   RollParams p;
   p.on = true;
@@ -111,6 +134,38 @@ TEST(FourdRollingTest, CrossingAnEdgeTurnsTheNewFacetToTheViewerAboutTheContact)
     else EXPECT_GT(left, 0.01);
     EXPECT_EQ(m.turns(), 2);
   }
+}
+
+// An oblique crossing: the seed's Rotate(theta, N) takes T (the motion, in the facet it leaves)
+// to T' (T projected on the new facet), so the motion keeps its direction in the workspace:
+// target' ^T T' = target ^T T. The correction that then turns the new normal toward the viewer
+// turns about T' itself (T' is normal to both the normal it moves and the new normal), so it
+// keeps this exactly. T taken in the new facet's plane instead turns the motion by 0.13 rad here
+// (measured).
+TEST(FourdRollingTest, ObliqueCrossingKeepsTheMotionsDirectionInTheWorkspace) {
+  const double fold = 40.0 * M_PI / 180.0;
+  const glm::dvec3 n0(0, 0, 1), n1(-std::sin(fold), 0, std::cos(fold));  // facet 1 rises for x > 0
+  const ViewAxes axes{{0, 0, 0}, {0, 0, 1}};
+  RollParams p;
+  p.on = true;
+  p.turn_s = 0.0;
+  RollingManifold m;
+  ViewPose pose;
+  const glm::dvec3 before(-0.5, -0.5, 0.0);
+  ASSERT_TRUE(m.step(p, axes, {true, 0, before, n0}, 1e-3, pose));
+  const glm::dmat3 target0 = m.target_rotation();
+  const glm::dvec3 after(0.5, 0.5, 0.5 * std::tan(fold));
+  ASSERT_TRUE(m.step(p, axes, {true, 1, after, n1}, 1e-3, pose));
+  const glm::dvec3 step = after - before;
+  const glm::dvec3 t = glm::normalize(step - glm::dot(step, n0) * n0);
+  const glm::dvec3 tp = glm::normalize(t - glm::dot(t, n1) * n1);
+  const glm::dvec3 motion_before = glm::transpose(target0) * t;
+  const glm::dvec3 motion_after = glm::transpose(m.target_rotation()) * tp;
+  // Rotations of unit vectors in double: a few ulps.
+  EXPECT_LT(glm::length(motion_after - motion_before), 1e-12)
+      << "T in the workspace (" << motion_before.x << ", " << motion_before.y << ", " << motion_before.z
+      << ") became (" << motion_after.x << ", " << motion_after.y << ", " << motion_after.z << ")";
+  EXPECT_LT(angle(m.target_rotation() * axes.toward_viewer_ws, n1), 1e-12);  // and the facet faces the viewer
 }
 
 // The haptic loop on the flat torus with the rolling manifold: a hand pressed 1 mm into the

@@ -2,7 +2,9 @@
 // stream is recorded; replaying the recording must give exactly the same frames.
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <filesystem>
+#include <vector>
 
 #include "app/session.h"
 #include "devices/sample_log.h"
@@ -51,6 +53,34 @@ TEST_P(ReplayGLTest, RecordedSessionPlaysBackByteIdentical) {
     EXPECT_TRUE(first[i].pixels == second[i].pixels) << "frame " << i << " differs";
   EXPECT_FALSE(first.front().pixels == first[6].pixels) << "the probe should have moved";
   std::filesystem::remove(log);
+}
+
+// The frame schedule: frame i shows the state after tick floor(i / fps * rate), never a later
+// tick (docs/haptics.md, replay). At 30 fps and 1 kHz, i / fps * rate = 33.3 i: frames 2, 5, ...
+// have a fraction >= 0.5, so a schedule that rounded would show them one tick late.
+TEST_P(ReplayGLTest, FrameIShowsTheTickAtFloorOfIOverFpsTimesRate) {
+  auto scene = parse_scene(default_scene_text(), "<default>", default_scene_base_dir(),
+                           {"render.size=[32,32]", "render.depth_map_size=32"});
+  ASSERT_TRUE(scene.ok());
+  auto renderer = Renderer::create(scene.value(), {});
+  ASSERT_TRUE(renderer.ok()) << renderer.error().message;
+  auto script = parse_sample_log("0 -20 0 14 0\n0.3 20 0 14 0\n", "line");
+  ASSERT_TRUE(script.ok());
+  LogDevice device(script.value(), true, "line");
+  ReplayOptions opt;
+  opt.fps = 30.0;
+  std::vector<double> times;
+  auto r = replay_session(*renderer.value(), device, opt, [&](int, double, const HapticState& st, const Renderer&) {
+    times.push_back(st.time_s);
+    return ok_status();
+  });
+  ASSERT_TRUE(r.ok()) << r.error().message;
+  ASSERT_EQ(times.size(), 10u);  // 0.3 s at 30 fps, both ends
+  for (std::size_t i = 0; i < times.size(); ++i) {
+    const double tick = std::floor(static_cast<double>(i) / opt.fps * opt.haptics.rate_hz + 1e-9);
+    // A tick's time is k / rate in double: a ms tick index is exact after rounding to the nearest.
+    EXPECT_EQ(std::llround(times[i] * opt.haptics.rate_hz), static_cast<long long>(tick)) << "frame " << i;
+  }
 }
 
 PS_INSTANTIATE_HEADLESS_BACKENDS(ReplayGLTest);

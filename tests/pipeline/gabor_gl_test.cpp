@@ -76,6 +76,45 @@ TEST_P(GaborGLTest, CappedDensityIsNormalisedLikeTheTwin) {
   EXPECT_LT(e.max_err, 5e-3) << "max error in sigmas over " << e.n << " pixels";
 }
 
+// The texture's gate: the Gabor sum is evaluated only where d < onset_distance_mm (surface.frag),
+// so the texture AOV is exactly 0 at and beyond the onset distance, and not 0 inside it. The
+// colour cannot show a loosened gate (the darkening's own amplitude is 0 beyond the onset), the
+// AOV can. A probe of r = 25 mm 1 mm above the plane: d grows from 1 mm under its centre; the
+// onset of 3 mm is a ring of radius 9.8 mm, and the band onset..1.05 onset is ~250 pixels.
+TEST_P(GaborGLTest, TextureAovIsExactlyZeroBeyondTheOnsetDistance) {
+  Scene s = test::flat_plane_scene(26.0);
+  s.probe.radius_mm = 25.0;
+  Material& m = s.materials[0];
+  m.gabor.lambda_min_mm = 0.8;
+  m.gabor.lambda_max_mm = 2.0;
+  m.gabor.n_min = 20;
+  m.gabor.n_max = 30;
+  m.onset_distance_mm = 3.0;
+  m.gabor.strategy = GaborParams::Strategy::kNaive;
+  m.gabor.filter = GaborParams::Filter::kNone;
+  const std::unique_ptr<Renderer> r = test::render_one_frame(s);
+  ASSERT_TRUE(r);
+  const Image tex = r->read_aov("texture").value(), dist = r->read_aov("distance").value();
+  const float onset = static_cast<float>(m.onset_distance_mm);
+  int inside_textured = 0, band = 0, beyond_textured = 0;
+  for (int py = 0; py < tex.height; ++py)
+    for (int px = 0; px < tex.width; ++px) {
+      const float d = dist.at(px, py, 0), t = tex.at(px, py, 0);
+      if (std::isnan(d)) continue;  // no probe above this pixel
+      if (d < onset) {
+        inside_textured += t != 0.0f;
+      } else {
+        band += d <= 1.05f * onset;
+        beyond_textured += t != 0.0f;  // exact: the shader writes 0 where it skips the sum
+      }
+    }
+  std::printf("onset %.1f mm: %d textured pixels inside, %d in [onset, 1.05 onset], %d textured beyond\n",
+              m.onset_distance_mm, inside_textured, band, beyond_textured);
+  EXPECT_GT(inside_textured, 500);  // the gate opens inside (~300 mm^2 at 0.098 mm^2 a pixel)
+  EXPECT_GT(band, 100);             // the test looks where a loosened gate would texture
+  EXPECT_EQ(beyond_textured, 0);
+}
+
 // Strategy "baked": the GPU lookup against its CPU twin (the same Hermite interpolation of the
 // same periodic samples, in double), and against the naive texture it replaces.
 struct BakedResult {
