@@ -148,7 +148,7 @@ std::unique_ptr<vibration::LiveVibration> open_live_vibration(const LiveLoopArgs
   d.out = args.vibration_out;
   auto v = vibration::LiveVibration::open(d, scene);
   for (const std::string& w : v->warnings()) std::fprintf(stderr, "warning: %s\n", w.c_str());
-  if (v->active()) loop.set_tick_feed(&v->feed());
+  if (v->active()) loop.add_tick_feed(&v->feed());
   return v;
 }
 

@@ -25,6 +25,9 @@ namespace ps {
 namespace {
 
 constexpr double kScoreSeconds = 5.0;  // how long a pass's score screen stays up
+// Ticks the tracker's feed holds between two frames: 16 s at 1 kHz (a frame that takes longer
+// loses ticks, and says so); ~3 MiB.
+constexpr std::size_t kTrackFeedTicks = std::size_t{1} << 14;
 constexpr double kMmPerCount = 0.15;   // captured mouse: mm on the floor per raw count
 
 // What the window hears from GLFW, from its callbacks (installed before ImGui, which chains to
@@ -216,7 +219,8 @@ bool take_input(Window& w, const HapticState& st) {
 // brings a new renderer), the frame. Returns when the participant quits, the log device ends, or
 // kScoreSeconds after the session ended (its last score stays up that long).
 Status window_loop(const maze::SessionOptions& o, const MazeWindowParams& p, maze::SessionCore& core, Window& w,
-                   HapticLoop& loop, SampleRecorder& recorder, std::string& reason, vibration::LiveVibration& vib) {
+                   HapticLoop& loop, TickFeed& ticks, SampleRecorder& recorder, std::string& reason,
+                   vibration::LiveVibration& vib) {
   Overlay ov;
   HapticState st;
   double last_flush = 0.0, end_at = -1.0, clutch_quiet_until = 0.0;
@@ -230,8 +234,13 @@ Status window_loop(const maze::SessionOptions& o, const MazeWindowParams& p, maz
     st = loop.state().read();
     if (Status s = apply_clutch(p, w, core, st, clutch_quiet_until); !s) return s;
     if (!take_input(w, st)) return ok_status();
-    if (!core.finished())
-      if (Status s = core.step(st, loop, on_score); !s) return s;
+    // Every tick since the last frame, so the tracker sees each room the proxy passed through
+    // however long the frame took (a pass switch's new renderer, a loaded machine).
+    Status stepped = ok_status();
+    ticks.drain([&](const TickSample& t) {
+      if (stepped && !core.finished()) stepped = core.step(t, loop, on_score);
+    });
+    if (!stepped) return stepped;
     if (core.finished() && end_at < 0.0) {
       end_at = st.time_s + kScoreSeconds;
       reason = "logged";
@@ -294,6 +303,8 @@ int run_maze_window(const cli::Command& cmd, const maze::SessionOptions& o, cons
   vib = cli::open_live_vibration(live_args, core.scene().scene, loop);
   SampleRecorder recorder(o.record_path);
   loop.set_recorder(&recorder);
+  TickFeed track_ticks(kTrackFeedTicks);  // the tracker's ticks, drained by each frame
+  loop.add_tick_feed(&track_ticks);
   std::string reason = "quit";
   Status looped = ok_status();
   {
@@ -306,7 +317,7 @@ int run_maze_window(const cli::Command& cmd, const maze::SessionOptions& o, cons
       if (w.input) w.input->poll(o.haptics.start_time_s, pointer_view(*w.renderer, floor_plane(*w.renderer)));
       loop.start();
       vib->start();
-      looped = window_loop(o, params, core, w, loop, recorder, reason, *vib);
+      looped = window_loop(o, params, core, w, loop, track_ticks, recorder, reason, *vib);
     }
   }
   loop.stop();
@@ -317,6 +328,9 @@ int run_maze_window(const cli::Command& cmd, const maze::SessionOptions& o, cons
   auto result = core.finish(end_time, reason == "logged" ? "quit" : reason);
   if (Status s = recorder.close(); !s) return cmd.fail(s.error());
   if (!looped) return cmd.fail(looped.error());
+  if (const std::uint64_t lost = track_ticks.dropped(); lost > 0)
+    std::fprintf(stderr, "warning: the maze's tracker missed %llu ticks: frames more than %.0f s apart\n",
+                 static_cast<unsigned long long>(lost), static_cast<double>(kTrackFeedTicks) / o.haptics.rate_hz);
   if (!result) return cmd.fail(result.error());
   std::printf("maze: %s after %d pass%s (%s), %.1f s; log %s\n", o.info.participant.c_str(), result->passes,
               result->passes == 1 ? "" : "es", result->reason.c_str(), result->time_s, o.log_path.c_str());

@@ -111,7 +111,7 @@ Result<ReplayResult> replay_session(Renderer& first_renderer, Device& device, co
   // Every tick's record for on_tick (the vibration track), drained after each block of ticks:
   // blocks of at most half the feed, so a slow frame rate never drops one.
   TickFeed feed(kReplayTickFeedCapacity);
-  if (options.on_tick) loop.set_tick_feed(&feed);
+  if (options.on_tick) loop.add_tick_feed(&feed);
   std::uint64_t ticks_done = 0;
   ReplayResult result;
   for (int i = 0; i < frames; ++i) {

@@ -8,6 +8,7 @@
 #include <unistd.h>
 
 #include <algorithm>
+#include <cassert>
 #include <cerrno>
 #include <cmath>
 #include <cstring>
@@ -358,8 +359,17 @@ void HapticLoop::push_tick_sample(const ForceResult& f, double t, Clock::Ns now)
   s.proxy_mm = f.in_contact ? f.proxy_mm - radius * f.contact_normal : f.proxy_mm;
   s.velocity_mm_s = local_.velocity_mm_s;
   s.normal_force_n = f.in_contact ? std::max(0.0, glm::dot(f.force_n, f.contact_normal)) : 0.0;
-  tick_feed_->push(s);
+  s.proxy_centre_mm = local_.proxy_mm;
+  s.force_n = local_.force_n;
+  s.field_force_n = local_.field_force_n;
+  for (std::size_t i = 0; i < tick_feed_count_; ++i) tick_feeds_[i]->push(s);
   s = TickSample{};
+}
+
+void HapticLoop::add_tick_feed(TickFeed* feed) {
+  assert(feed != nullptr && tick_feed_count_ < kMaxTickFeeds && "HapticLoop::add_tick_feed: null or too many feeds");
+  assert(!thread_.joinable() && "HapticLoop::add_tick_feed: before start()");
+  tick_feeds_[tick_feed_count_++] = feed;
 }
 
 void HapticLoop::tick(Clock::Ns now) {
@@ -430,7 +440,7 @@ void HapticLoop::tick(Clock::Ns now) {
     if (god_) local_.force_n += roll(dt);
     // The device feels the force in its own workspace.
     device_.write_force(glm::transpose(view_.rotation) * local_.force_n);
-    if (tick_feed_ != nullptr) push_tick_sample(f, t, now);
+    if (tick_feed_count_ > 0) push_tick_sample(f, t, now);
   }
   local_.time_s = t;
   local_.rejected = sanitizer_.counts();

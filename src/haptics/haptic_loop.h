@@ -133,8 +133,10 @@ class HapticLoop {
 
   void set_recorder(SampleRecorder* recorder) { recorder_ = recorder; }  // before start()
   // Before start(): one TickSample per tick pushed into `feed` (not owned; it must outlive the
-  // loop), for the vibration signal (haptics/tick_feed.h). Null: none (the default).
-  void set_tick_feed(TickFeed* feed) { tick_feed_ = feed; }
+  // loop), for the vibration signal or the maze's tracker (haptics/tick_feed.h); each feed added
+  // gets every tick, at most kMaxTickFeeds of them (asserted). None by default.
+  static constexpr std::size_t kMaxTickFeeds = 2;
+  void add_tick_feed(TickFeed* feed);
   // Hands the loop a new haptic scene (a live reload, a button's scene switch): any thread, at
   // any time; the haptic thread adopts it at the start of its next tick, keeps the proxy where it
   // is (pushed out of anything it now sits in, GodObject::reset) and queues a scene_switched
@@ -212,7 +214,8 @@ class HapticLoop {
   std::atomic<bool> swap_pending_{false};
   HapticState local_;        // haptic thread's working copy
   SampleRecorder* recorder_ = nullptr;
-  TickFeed* tick_feed_ = nullptr;
+  std::array<TickFeed*, kMaxTickFeeds> tick_feeds_{};  // the first tick_feed_count_ are set
+  std::size_t tick_feed_count_ = 0;
   TickSample feed_sample_;  // this tick's record, filled as the tick goes (impact, click)
   void push_tick_sample(const ForceResult& f, double t, Clock::Ns now);
   BoundedLog periods_us_;         // every period, for period_stats()

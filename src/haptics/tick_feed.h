@@ -1,7 +1,8 @@
 // Every tick of the haptic loop as a small record, for consumers that need each tick rather than
 // the latest state (the vibration signal, src/vibration/: it follows the proxy's path tick by
-// tick). HapticLoop::set_tick_feed() (before start) makes the haptic thread push one TickSample
-// per tick; one consumer drains it. Single producer, single consumer, fixed capacity, never
+// tick; the maze window's tracker: it must see every room the proxy passes through however slow
+// the frames are). HapticLoop::add_tick_feed() (before start) makes the haptic thread push one
+// TickSample per tick into each feed given (at most kMaxTickFeeds); one consumer drains each. Single producer, single consumer, fixed capacity, never
 // allocates after construction; a full feed drops the tick and counts it (the consumer then
 // sees a gap in `tick` and starts its path afresh).
 #pragma once
@@ -27,6 +28,10 @@ struct TickSample {
   bool in_contact = false;
   double impact_mm_s = 0.0;       // > 0 on the tick a contact starts: the approach speed
   bool click = false;             // a scene button fired on this tick
+  // For a consumer that follows the proxy itself (the maze's tracker, maze/maze_session.h):
+  glm::dvec3 proxy_centre_mm{0.0};  // the proxy's centre (world), HapticState::proxy_mm
+  glm::dvec3 force_n{0.0};          // the tick's whole force on the hand (world), HapticState::force_n
+  glm::dvec3 field_force_n{0.0};    // its part from fields and navigation, HapticState::field_force_n
 };
 
 class TickFeed {

@@ -14,10 +14,13 @@ Result<std::shared_ptr<const world::HapticScene>> build_haptic(const MazeScene& 
   return std::make_shared<const world::HapticScene>(std::move(hs.value()));
 }
 
+int contact_kind(const MazeScene& scene, bool in_contact, int surface) {
+  if (!in_contact || surface < 0 || static_cast<std::size_t>(surface) >= scene.kinds.size()) return -1;
+  return static_cast<int>(scene.kinds[static_cast<std::size_t>(surface)]);
+}
+
 int contact_kind(const MazeScene& scene, const HapticState& state) {
-  if (!state.in_contact || state.contact_surface < 0 || static_cast<std::size_t>(state.contact_surface) >= scene.kinds.size())
-    return -1;
-  return static_cast<int>(scene.kinds[static_cast<std::size_t>(state.contact_surface)]);
+  return contact_kind(scene, state.in_contact, state.contact_surface);
 }
 
 Result<std::unique_ptr<SessionCore>> SessionCore::open(const SessionOptions& o) {
@@ -56,6 +59,12 @@ Status SessionCore::resume(const ResumePoint& r) {
 Status SessionCore::step(const HapticState& st, HapticLoop& loop, const ScoreFn& on_score) {
   const ProbeStep step{st.time_s, st.proxy_mm, st.force_n, st.field_force_n, contact_kind(scene_, st)};
   return handle(tracker_.feed(step), st.time_s, &loop, on_score);
+}
+
+Status SessionCore::step(const TickSample& tick, HapticLoop& loop, const ScoreFn& on_score) {
+  const ProbeStep step{tick.time_s, tick.proxy_centre_mm, tick.force_n, tick.field_force_n,
+                       contact_kind(scene_, tick.in_contact, tick.surface)};
+  return handle(tracker_.feed(step), tick.time_s, &loop, on_score);
 }
 
 // Logs what the tracker saw at session time time_s; at a pass's end the next pass's scene goes

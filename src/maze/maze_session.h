@@ -59,9 +59,11 @@ using ScoreFn = std::function<Status(const PassScore&)>;
 // The haptic scene a loop collides with, shared so a pass switch can hand it over.
 Result<std::shared_ptr<const world::HapticScene>> build_haptic(const MazeScene& scene);
 
-// What a session does with each state of the haptic loop, whoever drives it: run_session()
-// below once per tick, the window (app/maze_window.cpp) once per frame. Owns the log, the
-// tracker and the scene of the pass in progress.
+// What a session does with each tick of the haptic loop, whoever drives it: run_session() below
+// with each tick's state, the window (app/maze_window.cpp) with each tick's TickSample, drained
+// once per frame (fed only the newest state of each frame, the tracker missed a room the proxy
+// crossed between two slow frames: 0 passes under load). Owns the log, the tracker and the scene
+// of the pass in progress.
 class SessionCore {
  public:
   // Generates pass 1, opens the log and writes its first lines.
@@ -72,6 +74,8 @@ class SessionCore {
   // to on_score and, unless the session is over, the next pass's scene to the loop (adopted at
   // its next tick; seamless: the new scene holds the room the probe is in).
   Status step(const HapticState& state, HapticLoop& loop, const ScoreFn& on_score);
+  // The same with a tick's record from the loop's tick feed (HapticLoop::add_tick_feed).
+  Status step(const TickSample& tick, HapticLoop& loop, const ScoreFn& on_score);
   bool finished() const { return tracker_.finished(); }
   // True once after each pass switch: the caller draws with a new renderer.
   bool take_scene_changed() { return std::exchange(scene_changed_, false); }
@@ -107,5 +111,6 @@ Result<SessionResult> run_session(Device& device, const SessionOptions& options,
 
 // The surface kind the loop touches in `state` (-1: none), for the tracker.
 int contact_kind(const MazeScene& scene, const HapticState& state);
+int contact_kind(const MazeScene& scene, bool in_contact, int surface);
 
 }  // namespace ps::maze

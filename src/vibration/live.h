@@ -1,5 +1,5 @@
 // The live vibration of `run` and `maze`: the haptic thread pushes one TickSample per tick into
-// feed() (HapticLoop::set_tick_feed, haptics/tick_feed.h: no lock, no allocation, no GL); a
+// feed() (HapticLoop::add_tick_feed, haptics/tick_feed.h: no lock, no allocation, no GL); a
 // thread of ours wakes every millisecond, drains it, turns the ticks into samples
 // (vibration/signal.h) and hands 5 ms chunks to the outputs: a sound channel of its own
 // (vibration/sound_out.h) and a gamepad's rumble (vibration/rumble.h). Never waits for a frame.
@@ -50,7 +50,7 @@ class LiveVibration {
 
   bool active() const { return sound_ != nullptr || rumble_ != nullptr; }
   const std::vector<std::string>& warnings() const { return warnings_; }
-  TickFeed& feed() { return feed_; }  // HapticLoop::set_tick_feed, before the loop starts
+  TickFeed& feed() { return feed_; }  // HapticLoop::add_tick_feed, before the loop starts
   // A new scene (reload, a button's switch): any thread; the vibration thread adopts it.
   void set_scene(const Scene& scene);
   void start();

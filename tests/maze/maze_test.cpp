@@ -181,6 +181,65 @@ Result<SessionResult> scripted_session(const std::string& dir, const MazeDesc& d
   return run_session(*dev.value(), o, nullptr, nullptr);
 }
 
+// The window drains the loop's tick feed once per frame and feeds the tracker every tick
+// (SessionCore::step(TickSample)): with frames 0.5 s apart - longer than the 0.2-0.6 s the
+// scripted participant spends in a room at 300 mm/s, so a tracker fed one state per frame missed
+// rooms and ended "after 0 passes (device_ended)" - the session scores as the headless one,
+// which steps every tick: the same exits, the same pass-1 times to the tick.
+TEST(MazeSessionTest, TickFeedDrainedAtSlowFramesScoresLikeEveryTick) {
+  auto d = load_maze_desc(maze_file());
+  ASSERT_TRUE(d) << d.error().message;
+  const Route route = draw_route(5);
+  const std::string dir = temp_dir("slow_frames");
+  std::ofstream(dir + "/p.traj") << script_trajectory(d.value(), {choices_with_errors(route, 0, 2), correct_choices(route, 1)}, 300.0);
+  SessionOptions o;
+  o.desc = d.value();
+  o.route = route;
+  o.info.participant = "T";
+  o.info.seed = route.seed;
+  o.log_path = dir + "/every_tick.jsonl";
+  auto every = open_log_device("trajectory:" + dir + "/p.traj");
+  ASSERT_TRUE(every);
+  auto reference = run_session(*every.value(), o, nullptr, nullptr);
+  ASSERT_TRUE(reference) << reference.error().message;
+  ASSERT_EQ(reference->reason, "criterion");
+
+  o.log_path = dir + "/slow_frames.jsonl";
+  auto dev = open_log_device("trajectory:" + dir + "/p.traj");
+  ASSERT_TRUE(dev);
+  auto core = SessionCore::open(o);
+  ASSERT_TRUE(core) << core.error().message;
+  FakeClock clock;
+  HapticLoop loop(*dev.value(), clock, o.haptics, core.value()->haptic().get());
+  TickFeed feed(1 << 12);
+  loop.add_tick_feed(&feed);
+  const double end_s = dev.value()->duration_s();
+  for (int frame = 0; !core.value()->finished() && frame * 0.5 < end_s; ++frame) {
+    loop.run_ticks(500);  // one slow frame
+    Status stepped = ok_status();
+    feed.drain([&](const TickSample& t) {
+      if (stepped && !core.value()->finished()) stepped = core.value()->step(t, loop, nullptr);
+    });
+    ASSERT_TRUE(stepped) << stepped.error().message;
+  }
+  auto slow = core.value()->finish(core.value()->end_time_s(), "device_ended");
+  ASSERT_TRUE(slow) << slow.error().message;
+  EXPECT_EQ(slow->reason, "criterion");
+  EXPECT_EQ(slow->trials_to_criterion, reference->trials_to_criterion);
+  ASSERT_EQ(slow->scores.size(), reference->scores.size());
+  for (std::size_t p = 0; p < slow->scores.size(); ++p)
+    for (std::size_t i = 0; i < slow->scores[p].trials.size(); ++i) {
+      const Trial &a = slow->scores[p].trials[i], &b = reference->scores[p].trials[i];
+      EXPECT_EQ(a.chosen, b.chosen) << "pass " << p << " room " << i;
+      EXPECT_EQ(a.ok, b.ok) << "pass " << p << " room " << i;
+      // Pass 1 runs on the same scene tick for tick: the same times exactly. (The next pass's
+      // scene reaches the loop up to a frame later than in the headless run.)
+      if (p == 0) EXPECT_EQ(a.enter_s, b.enter_s) << "room " << i;
+      if (p == 0) EXPECT_EQ(a.exit_s, b.exit_s) << "room " << i;
+    }
+  EXPECT_EQ(feed.dropped(), 0u);
+}
+
 // Every seed's route can be walked: the correct exits of pass 1 finish the session with the
 // criterion after one pass, every room scored right, with cues on and off.
 TEST(MazeSessionTest, EveryRouteIsReachable) {

@@ -25,7 +25,7 @@ TEST(VibrationLoop, DefaultSceneStrokeFromTheHapticLoop) {
   FakeClock clock;
   HapticLoop loop(*dev->device, clock, HapticLoopParams{}, &haptic.value());
   TickFeed feed(2048);
-  loop.set_tick_feed(&feed);
+  loop.add_tick_feed(&feed);
   vibration::SignalSynth synth(std::make_shared<const vibration::SignalModel>(scene.value()));
   std::vector<float> x;
   for (int block = 0; block < 2; ++block) {  // 1.601 s of ticks, drained before the feed fills

@@ -22,7 +22,7 @@ TEST(TickFeed, OneRecordPerTickWithTheContactPointOnTheSurface) {
   FakeClock clock;
   HapticLoop loop(device, clock, HapticLoopParams{}, &haptic.value());
   TickFeed feed(1024);
-  loop.set_tick_feed(&feed);
+  loop.add_tick_feed(&feed);
   loop.run_ticks(600);
   std::vector<TickSample> got;
   feed.drain([&](const TickSample& s) { got.push_back(s); });
