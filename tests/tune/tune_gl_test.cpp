@@ -2,6 +2,7 @@
 // the watcher notices, and the rebuilt renderer draws the change (or keeps the last good).
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
@@ -176,7 +177,11 @@ TEST_P(TuneGLTest, SweepCellsMatchSingleRenders) {
   ASSERT_TRUE(cells) << cells.error().message;
   ASSERT_EQ(cells->size(), 9u);
   const Image sheet = sweep_sheet(job.axes, cells.value());
-  const int pad = ContactSheetDesc{}.padding, label_h = (kGlyphHeight + 2) * 1;
+  // Each label wrapped to the 48 px cell (contact_sheet), the label rows as tall as the longest.
+  std::size_t label_lines = 1;
+  for (const auto& c : cells.value()) label_lines = std::max(label_lines, wrap_text(c.label, 48).size());
+  EXPECT_GT(label_lines, 1u);  // "materials.table4_1_a.lambda_min=1 mm probe.velocity=..." is wider than 48 px
+  const int pad = ContactSheetDesc{}.padding, label_h = (kGlyphHeight + 2) * static_cast<int>(label_lines);
   EXPECT_EQ(sheet.width, pad + 3 * (48 + pad));
   EXPECT_EQ(sheet.height, pad + 3 * (48 + label_h + pad));
   for (int i : {0, 4, 8}) {
