@@ -3,6 +3,7 @@
 #include <cerrno>
 #include <cstdio>
 #include <cstring>
+#include <fstream>
 #include <fcntl.h>
 #include <unistd.h>
 
@@ -181,6 +182,28 @@ Status SessionLog::session_end(const std::string& reason, int passes, int trials
                      {"trials_to_criterion", trials_to_criterion > 0 ? json(trials_to_criterion) : json(nullptr)},
                      {"time_s", time_s}}
                     .dump());
+}
+
+Result<int> read_session_log(const std::string& path, const std::string& open_hint, const std::string& empty_hint,
+                             const std::function<void(const nlohmann::json&, const std::string& where)>& on_line) {
+  std::ifstream in(path);
+  if (!in) return make_error(path + ": cannot open the session log (" + open_hint + ")");
+  bool started = false;
+  int n = 0;
+  for (std::string line; std::getline(in, line);) {
+    const std::string where = path + ":" + std::to_string(++n) + ": ";
+    if (line.empty()) continue;
+    try {
+      const nlohmann::json j = nlohmann::json::parse(line);
+      started |= j.at("type") == "session_start";
+      if (!started) return make_error(where + "the first line must be the session_start line");
+      on_line(j, where);
+    } catch (const std::exception& e) {
+      return make_error(where + "not a maze log line (" + e.what() + "); docs/maze.md lists the schema");
+    }
+  }
+  if (!started) return make_error(path + ":1: empty log: no session_start line" + empty_hint);
+  return n;
 }
 
 }  // namespace ps::maze

@@ -9,12 +9,22 @@
 #include <functional>
 #include <string>
 
+#include <nlohmann/json_fwd.hpp>
+
 #include "core/result.h"
 #include "maze/maze_track.h"
 
 namespace ps::maze {
 
 inline constexpr const char* kLogSchema = "pseudoshadow-maze/1";
+
+// Reads a session log: each non-empty line parsed and handed to `on_line` with its
+// "file:line: " prefix (for its own errors: an exception it throws becomes one); the first line
+// must be the session_start line. Returns how many lines the file has. Errors name file:line;
+// `open_hint` ends the message when the file cannot be opened, `empty_hint` when it holds no
+// session_start line.
+Result<int> read_session_log(const std::string& path, const std::string& open_hint, const std::string& empty_hint,
+                             const std::function<void(const nlohmann::json&, const std::string& where)>& on_line);
 
 struct SessionInfo {
   std::string participant;

@@ -89,26 +89,12 @@ glm::dvec3 resume_place(const MazeDesc& desc, const ResumePoint& r) {
 }
 
 Result<ResumePoint> read_resume_point(const std::string& log_path) {
-  std::ifstream in(log_path);
-  if (!in) return make_error(log_path + ": cannot open the session log to resume (give the DIR a `maze` run wrote)");
   ResumePoint r;
-  bool started = false;
-  int n = 0;
-  for (std::string line; std::getline(in, line);) {
-    const std::string where = log_path + ":" + std::to_string(++n) + ": ";
-    if (line.empty()) continue;
-    try {
-      const json j = json::parse(line);
-      started |= j.at("type") == "session_start";
-      if (!started) return make_error(where + "the first line must be the session_start line");
-      read_line(j, r);
-    } catch (const std::exception& e) {
-      return make_error(where + "not a maze log line (" + e.what() + "); docs/maze.md lists the schema");
-    }
-  }
-  if (!started) return make_error(log_path + ":1: empty log: no session_start line, nothing to resume (start the session again)");
+  auto n = read_session_log(log_path, "give the DIR a `maze` run wrote", ", nothing to resume (start the session again)",
+                            [&](const json& j, const std::string&) { read_line(j, r); });
+  if (!n) return n.error();
   if (r.ended == "criterion" || r.ended == "max_passes")
-    return make_error(log_path + ":" + std::to_string(n) + ": the session ended (" + r.ended + "): nothing to resume");
+    return make_error(log_path + ":" + std::to_string(n.value()) + ": the session ended (" + r.ended + "): nothing to resume");
   return r;
 }
 

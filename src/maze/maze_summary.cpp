@@ -10,6 +10,7 @@
 #include <nlohmann/json.hpp>
 
 #include "core/file_io.h"
+#include "maze/maze_log.h"
 
 namespace ps::maze {
 
@@ -73,25 +74,11 @@ std::string csv_header_cues(const std::string& prefix) {
 }  // namespace
 
 Result<ParticipantSummary> summarize_log(const std::string& path) {
-  std::ifstream in(path);
-  if (!in) return make_error(path + ": cannot open session log (give the session.jsonl a `maze` run wrote)");
   ParticipantSummary p;
   p.log = path;
-  bool started = false;
-  int n = 0;
-  for (std::string line; std::getline(in, line);) {
-    const std::string where = path + ":" + std::to_string(++n) + ": ";
-    if (line.empty()) continue;
-    try {
-      const json j = json::parse(line);
-      started |= j.at("type") == "session_start";
-      if (!started) return make_error(where + "the first line must be the session_start line");
-      read_line(p, j, where);
-    } catch (const std::exception& e) {
-      return make_error(where + "not a maze log line (" + e.what() + "); docs/maze.md lists the schema");
-    }
-  }
-  if (!started) return make_error(path + ":1: empty log: no session_start line");
+  auto n = read_session_log(path, "give the session.jsonl a `maze` run wrote", "",
+                            [&](const json& j, const std::string& where) { read_line(p, j, where); });
+  if (!n) return n.error();
   return p;
 }
 

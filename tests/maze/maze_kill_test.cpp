@@ -21,18 +21,6 @@
 namespace ps::maze {
 namespace {
 
-pid_t spawn(const std::vector<std::string>& args) {
-  const pid_t pid = fork();
-  if (pid == 0) {
-    std::vector<char*> argv;
-    for (const std::string& a : args) argv.push_back(const_cast<char*>(a.c_str()));
-    argv.push_back(nullptr);
-    execv(argv[0], argv.data());
-    _exit(127);
-  }
-  return pid;
-}
-
 std::vector<std::string> session_args(const std::string& traj, const std::string& out, bool paced) {
   std::vector<std::string> a = {std::string(PS_BINARY_DIR) + "/pseudoshadow", "maze", "--maze", test::maze_file(),
                                 "--participant", "K1", "--seed", "9", "--cues", "on",
@@ -56,13 +44,13 @@ TEST(MazeKillTest, KilledSessionLeavesACompleteLogUpToTheLastLine) {
   const std::string traj = dir + "/k1.traj";
   std::ofstream(traj) << script_trajectory(d.value(), {choices_with_errors(route, 0, 2), correct_choices(route, 1)}, 100.0);
   // The whole session, unpaced, for reference.
-  ASSERT_EQ(wait_exit(spawn(session_args(traj, dir + "/full", false))), 0);
+  ASSERT_EQ(wait_exit(test::spawn(session_args(traj, dir + "/full", false))), 0);
   const auto full = test::read_lines(dir + "/full/session.jsonl");
   ASSERT_GT(full.size(), 20u);
   // The same session paced, killed once its log has 10 lines (about 8 s of session, 2 s of wall
   // time: rooms 1 to 4 of pass 1).
   const std::string cut = dir + "/cut";
-  const pid_t pid = spawn(session_args(traj, cut, true));
+  const pid_t pid = test::spawn(session_args(traj, cut, true));
   const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(60);
   while (test::read_lines(cut + "/session.jsonl").size() < 10 && std::chrono::steady_clock::now() < deadline)
     std::this_thread::sleep_for(std::chrono::milliseconds(5));

@@ -22,14 +22,7 @@ namespace ps::maze {
 namespace {
 
 int run_child(const std::vector<std::string>& args, double kill_after_s = -1.0, bool* killed = nullptr) {
-  const pid_t pid = fork();
-  if (pid == 0) {
-    std::vector<char*> argv;
-    for (const std::string& a : args) argv.push_back(const_cast<char*>(a.c_str()));
-    argv.push_back(nullptr);
-    execv(argv[0], argv.data());
-    _exit(127);
-  }
+  const pid_t pid = test::spawn(args);
   if (kill_after_s >= 0.0) {
     std::this_thread::sleep_for(std::chrono::duration<double>(kill_after_s));
     kill(pid, SIGKILL);

@@ -1,10 +1,12 @@
 // Helpers shared by the maze tests: the shipped description, a per-test temporary directory
-// (unique per process and name: the suite runs tests in parallel), a file's lines.
+// (unique per process and name: the suite runs tests in parallel), a file's lines, a child
+// process running the real program.
 #pragma once
 
 #include <filesystem>
 #include <fstream>
 #include <string>
+#include <sys/types.h>
 #include <unistd.h>
 #include <vector>
 
@@ -25,6 +27,19 @@ inline std::vector<std::string> read_lines(const std::string& path) {
   std::vector<std::string> lines;
   for (std::string l; std::getline(in, l);) lines.push_back(l);
   return lines;
+}
+
+// Starts args[0] (an absolute path) with args in a child process; returns its pid.
+inline pid_t spawn(const std::vector<std::string>& args) {
+  const pid_t pid = fork();
+  if (pid == 0) {
+    std::vector<char*> argv;
+    for (const std::string& a : args) argv.push_back(const_cast<char*>(a.c_str()));
+    argv.push_back(nullptr);
+    execv(argv[0], argv.data());
+    _exit(127);
+  }
+  return pid;
 }
 
 }  // namespace ps::maze::test
