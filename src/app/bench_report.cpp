@@ -247,14 +247,18 @@ Status write_plots(const std::string& dir, const std::vector<BenchRow>& rows) {
   return run_gnuplot(dir + "/bench_ratios.gp", ratios_script(dir + "/bench_ratios.png", speedups));
 }
 
-Result<long long> render_peak_rss_kib(int size, const std::string& backend, const std::string& dir) {
+Result<long long> render_peak_rss_kib(int size, const std::vector<std::string>& gl_args, const std::string& dir) {
   const std::string sz = std::to_string(size) + "x" + std::to_string(size);
   const std::string out = dir + "/rss_" + std::to_string(size) + ".png";
+  std::vector<std::string> words = {"pseudoshadow", "render", "--size", sz, "--out", out, "-q"};
+  words.insert(words.end(), gl_args.begin(), gl_args.end());
+  std::vector<char*> argv;
+  for (std::string& w : words) argv.push_back(w.data());
+  argv.push_back(nullptr);
   const pid_t pid = fork();
   if (pid < 0) return make_error(std::string("fork: ") + std::strerror(errno));
   if (pid == 0) {
-    execl("/proc/self/exe", "pseudoshadow", "render", "--size", sz.c_str(), "--backend", backend.c_str(),
-          "--out", out.c_str(), "-q", static_cast<char*>(nullptr));
+    execv("/proc/self/exe", argv.data());
     _exit(127);
   }
   int status = 0;

@@ -547,7 +547,7 @@ int run(const cli::Command& cmd, const RunArgs& a) {
   if (!looped) return cmd.fail(looped.error());
   if (!a.stats_path.empty()) {
     const Renderer& r = s.tune->renderer();
-    const std::string json = stats_json(r.stats(), gl::backend_name(s.ctx->backend()), s.ctx->renderer(),
+    const std::string json = stats_json(r.stats(), gl::backend_name(s.ctx->backend()), s.ctx->egl_device(), s.ctx->renderer(),
                                         static_cast<int>(s.frame_ms.size()));
     if (Status st = write_file_atomic(a.stats_path, json); !st) return cmd.fail(st.error());
   }
