@@ -131,6 +131,7 @@ int render(const cli::Command& cmd, const RenderArgs& a) {
   const int frames = scene->render.frames;
   const bool progress = !a.quiet && frames > 1 && isatty(STDERR_FILENO);
   if (Status s = run_frames(*renderer.value(), frames, progress); !s) return cmd.fail(s.error());
+  renderer.value()->poll_gpu_timings(true);  // the last frame's timers: its image is read next anyway
   if (Status s = write_outputs(a, *renderer.value(), *ctx.value(), outputs); !s) return cmd.fail(s.error());
   if (!a.quiet) {
     double frame_ms = 0.0;
