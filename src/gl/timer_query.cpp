@@ -70,7 +70,7 @@ bool TimerQueries::collect(Slot& slot, bool wait) {
   }
   slot.pending = false;
   results_ = std::move(t);
-  lag_ = static_cast<int>(frame_ - slot.frame);
+  results_frame_ = slot.frame;
   return true;
 }
 

@@ -34,7 +34,8 @@ class TimerQueries {
   void poll(bool wait = false);
 
   const Timings& results() const { return results_; }
-  int lag() const { return lag_; }  // frames between the newest begun frame and results(); -1: none yet
+  // Frames between the newest begun frame and results(); -1: none yet.
+  int lag() const { return results_frame_ < 0 ? -1 : static_cast<int>(frame_ - results_frame_); }
 
  private:
   struct Slot {
@@ -51,7 +52,7 @@ class TimerQueries {
   bool open_ = false;  // a query of the current slot is running
   long long frame_ = -1;
   Timings results_;
-  int lag_ = -1;
+  long long results_frame_ = -1;
 };
 
 }  // namespace ps::gl
