@@ -49,6 +49,10 @@ using Vec3 = std::array<double, 3>;
 // on the auto backend.
 struct OpenDesc {
   Backend backend = Backend::kAuto;
+  // The EGL display (the CLI's --gpu): "" (Mesa's surfaceless platform), "auto" (a hardware EGL
+  // device, else surfaceless, else OSMesa), "software" (Mesa's software EGL device) or "N" (EGL
+  // device N). Like the backend, one per process while a renderer is open.
+  std::string gpu;
   // "KEY=VALUE" scene overrides applied when the scene is parsed, as the CLI's --set
   // (e.g. "render.size=[64,64]"); the same as calling set() afterwards, but without a rebuild.
   std::vector<std::string> set;
@@ -77,6 +81,7 @@ struct Aov {
 struct Stats {
   std::string backend;      // "egl" or "osmesa"
   std::string gl_renderer;  // GL_RENDERER, e.g. "llvmpipe (LLVM 15.0.6, 256 bits)"
+  std::string egl_device;   // "surfaceless", "device N (name)" or "none" (OSMesa)
   int frames = 0;           // frames rendered by this render() call
   Vec3 reference_normal{0.0, 0.0, 1.0};
   Vec3 displacement{0.0, 0.0, 0.0};  // applied to the probe by the last frame, mm
@@ -85,6 +90,10 @@ struct Stats {
   double speed_gain = 0.0;             // of the first shadowed material
   unsigned shadow_pixels = 0, penetrating_pixels = 0;
   std::vector<std::pair<std::string, double>> timings_ms;  // per pass, the last frame
+  // GPU time per pass (GL_TIME_ELAPSED) of the newest frame whose timer queries came back
+  // (gpu_timings_lag frames before the last; -1 and empty: none yet).
+  std::vector<std::pair<std::string, double>> gpu_timings_ms;
+  int gpu_timings_lag = -1;
   std::vector<std::string> skipped;                        // work the plan skipped, and why
   // All of the above and the Gabor bake's times: the text the CLI writes with --stats FILE.
   std::string json;

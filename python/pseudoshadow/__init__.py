@@ -69,23 +69,27 @@ class Renderer:
     scene_text: scene TOML given as a string instead (relative files resolve against base_dir,
       default the current directory).
     backend: "auto" (EGL, then OSMesa), "egl" or "osmesa".
+    gpu: the EGL display, as the CLI's --gpu: None (Mesa's surfaceless platform), "auto" (a
+      hardware EGL device, else surfaceless, else OSMesa), "software" (Mesa's software EGL
+      device) or a device number; stats["egl_device"] says which was taken.
     set: scene overrides applied when the scene is parsed, as {path: value} or ["path=value", ...].
     """
 
-    def __init__(self, scene=None, backend="auto", set=None, scene_text=None, base_dir=""):
+    def __init__(self, scene=None, backend="auto", set=None, scene_text=None, base_dir="", gpu=None):
         if scene is not None and scene_text is not None:
             raise ValueError("give scene (a file) or scene_text, not both")
+        gpu_text = "" if gpu is None else str(gpu)
         sets = []
         if isinstance(set, dict):
             sets = [f"{k}={toml_value(v)}" for k, v in set.items()]
         elif set is not None:
             sets = [str(s) for s in set]
         if scene_text is not None:
-            self._r = _CoreRenderer.open("string", scene_text, str(base_dir), backend, sets)
+            self._r = _CoreRenderer.open("string", scene_text, str(base_dir), backend, sets, gpu_text)
         elif scene is not None:
-            self._r = _CoreRenderer.open("file", os.fspath(scene), "", backend, sets)
+            self._r = _CoreRenderer.open("file", os.fspath(scene), "", backend, sets, gpu_text)
         else:
-            self._r = _CoreRenderer.open("default", "", "", backend, sets)
+            self._r = _CoreRenderer.open("default", "", "", backend, sets, gpu_text)
 
     def close(self):
         """Release the renderer now; with the last one open, its GL context too, after which

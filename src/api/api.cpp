@@ -52,6 +52,7 @@ Stats to_stats(const ps::FrameStats& s, const ps::gl::Context& context, int fram
   Stats out;
   out.backend = ps::gl::backend_name(context.backend());
   out.gl_renderer = context.renderer();
+  out.egl_device = context.egl_device();
   out.frames = frames;
   out.reference_normal = to_vec3(s.reference_normal);
   out.displacement = to_vec3(s.displacement);
@@ -61,8 +62,10 @@ Stats to_stats(const ps::FrameStats& s, const ps::gl::Context& context, int fram
   out.shadow_pixels = s.shadow_pixels;
   out.penetrating_pixels = s.penetrating_pixels;
   out.timings_ms = s.timings_ms;
+  out.gpu_timings_ms = s.gpu_timings_ms;
+  out.gpu_timings_lag = s.gpu_timings_lag;
   out.skipped = s.skipped;
-  out.json = ps::stats_json(s, out.backend, out.gl_renderer, frames);
+  out.json = ps::stats_json(s, out.backend, out.egl_device, out.gl_renderer, frames);
   return out;
 }
 
@@ -99,7 +102,7 @@ Renderer Renderer::open(std::unique_ptr<Impl> impl, const OpenDesc& desc) {
   impl->overrides = desc.set;
   // The scene first: its errors are the user's to fix and need no context.
   impl->scene = value_or_throw(impl->parse(impl->overrides));
-  impl->context = api::acquire_context(desc.backend);
+  impl->context = api::acquire_context(desc.backend, desc.gpu);
   return Renderer(std::move(impl));
 }
 

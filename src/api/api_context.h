@@ -10,9 +10,10 @@
 
 namespace pseudoshadow::api {
 
-// The live context if one is (it must be of `backend`, or `backend` must be auto), else a new
-// one. Throws Error: no context ("no OpenGL 4.5 context: egl: ...; osmesa: ..."), or another
-// backend already open.
-std::shared_ptr<ps::gl::Context> acquire_context(Backend backend);
+// The live context if one is (it must be of `backend`, or `backend` must be auto; and on the
+// display `gpu` names, or `gpu` must be "" or "auto"), else a new one. Throws Error: no context
+// ("no OpenGL 4.5 context: egl: ...; osmesa: ..."), a bad or missing `gpu`, or another backend
+// or display already open.
+std::shared_ptr<ps::gl::Context> acquire_context(Backend backend, const std::string& gpu);
 
 }  // namespace pseudoshadow::api

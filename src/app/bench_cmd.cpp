@@ -34,7 +34,7 @@ constexpr const char* kDescription =
 struct BenchArgs {
   int size = 512, frames = 3;
   std::string out_dir = "bench_out";
-  gl::Backend backend = gl::Backend::kAuto;
+  cli::GlArgs gl_opts;
   bool quiet = false;
   bool plot_only = false;  // draw the plots from --out-dir's bench.csv; no sweep, no GL
   bool first_image = false;  // time to the first image only (bench_first_image.h)
@@ -62,7 +62,7 @@ void declare(cli::Command& cmd, BenchArgs& a) {
   cli::add_int(app, "--frames", "N", a.frames, 1, 1000,
                "timed warm frames per configuration and round (default 3); every configuration is measured "
                "in 3 round-robin rounds, the median over all its timed frames is reported");
-  cli::add_gl_options(app, a.backend);
+  cli::add_gl_options(app, a.gl_opts);
   app.add_option("--out-dir", a.out_dir,
                  "output directory (default bench_out): bench.csv, bench.md, bench.png, bench_ratios.png")
       ->type_name("DIR")
@@ -110,9 +110,7 @@ Status run(const BenchArgs& a) {
   bench::SkipRatios skip;
   std::vector<bench::BenchRow> rows;
   {
-    gl::ContextDesc desc;
-    desc.backend = a.backend;
-    auto ctx = gl::create_context(desc);
+    auto ctx = cli::open_context(a.gl_opts, a.quiet);
     if (!ctx) return ctx.error();
     auto r = bench::run_sweep(o);
     if (!r) return r.error();
@@ -123,10 +121,10 @@ Status run(const BenchArgs& a) {
     skip = s.value();
   }
   bench::RssReport rss;
-  const std::string bname = gl::backend_name(a.backend);
+  const std::vector<std::string> gl_args = a.gl_opts.argv();
   for (int size : {512, 2048}) {
     if (o.progress) o.progress("peak RSS of render " + std::to_string(size) + "^2 ...");
-    auto k = bench::render_peak_rss_kib(size, bname, a.out_dir);
+    auto k = bench::render_peak_rss_kib(size, gl_args, a.out_dir);
     if (!k) return k.error();
     (size == 512 ? rss.kib_512 : rss.kib_2048) = k.value();
   }
@@ -142,10 +140,8 @@ Status run(const BenchArgs& a) {
 
 // The context and options of the printing-only measurements (--shadow-cost, --shadow-distance).
 Result<std::unique_ptr<gl::Context>> bench_context(const BenchArgs& a, bench::BenchOptions& o) {
-  gl::ContextDesc desc;
-  desc.backend = a.backend;
   o.timed_frames = a.frames;
-  return gl::create_context(desc);
+  return cli::open_context(a.gl_opts, a.quiet);
 }
 
 // --shadow-cost: one measurement of the full bench, printed (about 20 s).
@@ -237,7 +233,7 @@ Status first_image(const BenchArgs& a) {
   bench::FirstImageOptions o;
   o.scenes_dir = default_scene_base_dir();
   o.work_dir = a.out_dir + "/first_image_work";
-  o.backend = gl::backend_name(a.backend);
+  o.gl_args = a.gl_opts.argv();
   o.reps = a.reps;
   if (!a.quiet) o.progress = [](const std::string& line) { std::fprintf(stderr, "%s\n", line.c_str()); };
   auto rows = bench::run_first_image(o);

@@ -106,7 +106,7 @@ Result<std::vector<FirstImageRow>> run_first_image(const FirstImageOptions& o) {
     FirstImageRow row;
     row.name = path.stem().string();
     if (o.progress) o.progress("first image: " + row.name + " ...");
-    const std::vector<std::string> base = {"render", "--scene", path.string(), "--backend", o.backend, "--out", out, "-q"};
+    const std::vector<std::string> base = concat({"render", "--scene", path.string(), "--out", out, "-q"}, o.gl_args);
     const std::vector<std::string> variants[3] = {base, concat(base, force_strategy(scene.value(), "naive")),
                                                   concat(base, force_strategy(scene.value(), "baked"))};
     std::vector<double> t[3];
@@ -129,8 +129,8 @@ Result<std::vector<FirstImageRow>> run_first_image(const FirstImageOptions& o) {
     FirstImageRow row;
     row.name = "replay, 301 frames (default)";
     if (o.progress) o.progress("first image: a 301-frame replay ...");
-    const std::vector<std::string> base = {"replay", "--log", "trajectory:" + traj, "--fps", kReplayFps,
-                                           "--backend", o.backend, "--out", frames, "-q"};
+    const std::vector<std::string> base = concat({"replay", "--log", "trajectory:" + traj, "--fps", kReplayFps,
+                                                  "--out", frames, "-q"}, o.gl_args);
     double* slots[3] = {&row.auto_s, &row.naive_s, &row.baked_s};
     const char* strategy[3] = {nullptr, "naive", "baked"};
     for (int k = 0; k < 3; ++k) {

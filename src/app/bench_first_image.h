@@ -34,7 +34,7 @@ struct FirstImageRow {
 struct FirstImageOptions {
   std::string scenes_dir;  // every *.toml directly inside (not the material library below it)
   std::string work_dir;    // renders and the replay's frames go here (removed after)
-  std::string backend = "auto";
+  std::vector<std::string> gl_args = {"--backend", "auto"};  // --backend and --gpu for each child
   int reps = 3;            // one-frame renders: median of this many alternating runs
   bool replay = true;      // also the 301-frame replay (once per strategy)
   std::function<void(const std::string&)> progress;

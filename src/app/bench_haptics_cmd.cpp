@@ -75,7 +75,7 @@ constexpr const char* kDescription =
 
 struct BenchArgs {
   cli::SceneArgs scene;
-  gl::Backend backend = gl::Backend::kAuto;
+  cli::GlArgs gl_opts;
   double seconds = 5.0;
   double circle_z_mm = std::nan("");  // NaN: the scene probe's height
   int realtime = 0;
@@ -90,7 +90,7 @@ void declare(cli::Command& cmd, BenchArgs& a) {
   cli::add_scene_options(app, a.scene);
   cli::add_image_options(app, a.scene);
   cli::add_positive(app, "--seconds", "S", a.seconds, 3600.0, "5", "duration (default 5)");
-  cli::add_gl_options(app, a.backend);
+  cli::add_gl_options(app, a.gl_opts);
   cli::add_int(app, "--realtime", "PRIO", a.realtime, 1, 99,
                "run the haptic thread SCHED_FIFO at PRIO (1..99; needs CAP_SYS_NICE)");
   cli::add_int(app, "--timer-slack-ns", "NS", a.timer_slack_ns, 0, 1'000'000,
@@ -111,7 +111,7 @@ int bench(const cli::Command& cmd, const BenchArgs& a) {
   if (!scene) return cmd.fail(scene.error(), cli::scene_exit_code(scene.error()));
   auto live = cli::apply_live_loop(a.live);  // before the context and the haptic thread
   if (!live) return cmd.usage_error(live.error());
-  auto ctx = gl::create_context({a.backend});
+  auto ctx = cli::open_context(a.gl_opts);
   if (!ctx) return cmd.fail(ctx.error());
   auto renderer = Renderer::create(scene.value(), {});
   if (!renderer) return cmd.fail(renderer.error());

@@ -44,11 +44,12 @@ std::string summary_markdown(const std::vector<BenchRow>& rows, const SkipRatios
                              const RssReport& rss, int size) {
   std::ostringstream o;
   o << "Image " << size << "x" << size << "; times are medians of warm frames (glFinish per pass).\n\n";
-  o << "| group | value | frame ms | surface ms | error metric | error | Pareto |\n";
-  o << "| --- | --- | --- | --- | --- | --- | --- |\n";
+  o << "| group | value | frame ms | surface ms | error metric | error | Pareto | GPU timer frame ms |\n";
+  o << "| --- | --- | --- | --- | --- | --- | --- | --- |\n";
   for (const BenchRow& r : rows)
     o << "| " << r.group << " | " << r.value << " | " << g(r.m.frame_ms) << " | " << g(r.m.surface_ms)
-      << " | " << r.metric << " | " << g(r.error) << " | " << (r.pareto ? "yes" : "") << " |\n";
+      << " | " << r.metric << " | " << g(r.error) << " | " << (r.pareto ? "yes" : "") << " | "
+      << (std::isnan(r.m.gpu_frame_ms) ? std::string("-") : g(r.m.gpu_frame_ms)) << " |\n";
   // Gabor strategies against the naive sum, all from this run: whole frame, surface pass, and
   // the Gabor evaluation alone (time above the "none" row, i.e. the same frame untextured).
   if (const std::vector<SpeedUp> speedups = strategy_speedups(rows); !speedups.empty()) {
@@ -84,15 +85,17 @@ std::string shadow_cost_table(const std::vector<ShadowCost>& costs) {
   o << "| default scene | plain frame ms | pseudo-shadow frame ms | ratio |";
   if (!costs.empty())
     for (const auto& [pass, ms] : costs.front().shadow_pass_ms) o << " " << pass << " ms |";
-  o << " shadow pixels | ratio of CPU time |\n| --- | --- | --- | --- |";
+  o << " shadow pixels | ratio of CPU time | GPU timer: plain / pseudo-shadow frame ms |\n| --- | --- | --- | --- |";
   if (!costs.empty())
     for (size_t i = 0; i < costs.front().shadow_pass_ms.size(); ++i) o << " --- |";
-  o << " --- | --- |\n";
+  o << " --- | --- | --- |\n";
   for (const ShadowCost& c : costs) {
     o << "| " << c.size << "x" << c.size << " | " << g(c.plain_frame_ms) << " | " << g(c.shadow_frame_ms) << " | "
       << g(c.ratio) << "x |";
     for (const auto& [pass, ms] : c.shadow_pass_ms) o << " " << g(ms) << " |";
-    o << " " << c.shadow_pixels << " | " << g(c.cpu_ratio) << "x |\n";
+    o << " " << c.shadow_pixels << " | " << g(c.cpu_ratio) << "x | "
+      << (std::isnan(c.gpu_shadow_frame_ms) ? std::string("-") : g(c.gpu_plain_frame_ms) + " / " + g(c.gpu_shadow_frame_ms))
+      << " |\n";
   }
   return o.str();
 }
@@ -247,14 +250,18 @@ Status write_plots(const std::string& dir, const std::vector<BenchRow>& rows) {
   return run_gnuplot(dir + "/bench_ratios.gp", ratios_script(dir + "/bench_ratios.png", speedups));
 }
 
-Result<long long> render_peak_rss_kib(int size, const std::string& backend, const std::string& dir) {
+Result<long long> render_peak_rss_kib(int size, const std::vector<std::string>& gl_args, const std::string& dir) {
   const std::string sz = std::to_string(size) + "x" + std::to_string(size);
   const std::string out = dir + "/rss_" + std::to_string(size) + ".png";
+  std::vector<std::string> words = {"pseudoshadow", "render", "--size", sz, "--out", out, "-q"};
+  words.insert(words.end(), gl_args.begin(), gl_args.end());
+  std::vector<char*> argv;
+  for (std::string& w : words) argv.push_back(w.data());
+  argv.push_back(nullptr);
   const pid_t pid = fork();
   if (pid < 0) return make_error(std::string("fork: ") + std::strerror(errno));
   if (pid == 0) {
-    execl("/proc/self/exe", "pseudoshadow", "render", "--size", sz.c_str(), "--backend", backend.c_str(),
-          "--out", out.c_str(), "-q", static_cast<char*>(nullptr));
+    execv("/proc/self/exe", argv.data());
     _exit(127);
   }
   int status = 0;

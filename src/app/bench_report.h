@@ -27,6 +27,7 @@ std::string shadow_cost_table(const std::vector<ShadowCost>& costs);
 // (e.g. gnuplot not installed).
 Status write_plots(const std::string& dir, const std::vector<BenchRow>& rows);
 // Peak RSS (KiB) of a child `pseudoshadow render` at size^2 (fork + exec of this binary).
-Result<long long> render_peak_rss_kib(int size, const std::string& backend, const std::string& work_dir);
+// `gl_args`: the --backend / --gpu words for the child render.
+Result<long long> render_peak_rss_kib(int size, const std::vector<std::string>& gl_args, const std::string& work_dir);
 
 }  // namespace ps::bench

@@ -40,7 +40,7 @@ double process_cpu_ms() {
 // One frame of `r` with its probe put back where `s` has it (undoes the last frame's push-out);
 // adds each pass's time to `passes`, the frame's total to `frames` and its CPU time to `cpu`.
 Status timed_frame(Renderer& r, const Scene& s, std::map<std::string, std::vector<double>>& passes,
-                   std::vector<double>& frames, std::vector<double>& cpu) {
+                   std::vector<double>& frames, std::vector<double>& cpu, std::vector<double>* gpu = nullptr) {
   r.set_probe_state(s.probe.position, s.probe.velocity);
   const double cpu0 = process_cpu_ms();
   if (Status st = r.render_frame(); !st) return st;
@@ -51,6 +51,11 @@ Status timed_frame(Renderer& r, const Scene& s, std::map<std::string, std::vecto
     total += ms;
   }
   frames.push_back(total);
+  if (gpu != nullptr && !r.stats().gpu_timings_ms.empty()) {
+    double gpu_total = 0.0;
+    for (const auto& [name, ms] : r.stats().gpu_timings_ms) gpu_total += ms;
+    gpu->push_back(gpu_total);
+  }
   return ok_status();
 }
 
@@ -59,7 +64,7 @@ struct Contender {
   Renderer* renderer = nullptr;
   const Scene* scene = nullptr;
   std::map<std::string, std::vector<double>> passes;
-  std::vector<double> frames, cpu;
+  std::vector<double> frames, cpu, gpu;  // gpu: GL timer queries' frame, where they came back
 };
 
 // Warm-up frames for every contender, then `rounds` rounds of per_round frames each, the
@@ -75,7 +80,7 @@ Status alternate(const BenchOptions& o, std::vector<Contender>& cs, int rounds, 
   for (int round = 0; round < rounds; ++round)
     for (int k = 0; k < n * per_round; ++k) {
       Contender& c = cs[static_cast<size_t>((k + round) % n)];
-      if (Status st = timed_frame(*c.renderer, *c.scene, c.passes, c.frames, c.cpu); !st) return st;
+      if (Status st = timed_frame(*c.renderer, *c.scene, c.passes, c.frames, c.cpu, &c.gpu); !st) return st;
     }
   return ok_status();
 }
@@ -114,6 +119,10 @@ Result<ShadowCost> run_shadow_cost(const BenchOptions& o, int size) {
     c.shadow_pass_ms.emplace_back(pass, median_of(cs[0].passes[pass]));
   c.plain_surface_ms = median_of(cs[1].passes["surface"]);
   c.shadow_pixels = rs.stats().shadow_pixels;
+  if (!cs[0].gpu.empty() && !cs[1].gpu.empty()) {
+    c.gpu_shadow_frame_ms = median_of(cs[0].gpu);
+    c.gpu_plain_frame_ms = median_of(cs[1].gpu);
+  }
   return c;
 }
 

@@ -114,6 +114,7 @@ Result<Measurement> measure_with(const Scene& s, const BenchOptions& o, const Te
   Measurement m;
   std::vector<double>& frame = m.frame_samples;
   std::vector<double>& surface = m.surface_samples;
+  std::vector<double> gpu;
   for (int i = 0; i < o.warm_frames + o.timed_frames; ++i) {
     r.set_probe_state(s.probe.position, s.probe.velocity);  // undo last frame's push
     if (Status st = r.render_frame(); !st) return st.error();
@@ -126,9 +127,14 @@ Result<Measurement> measure_with(const Scene& s, const BenchOptions& o, const Te
     }
     frame.push_back(total);
     surface.push_back(surf);
+    if (r.stats().gpu_timings_ms.empty()) continue;
+    double gpu_total = 0.0;
+    for (const auto& [name, ms] : r.stats().gpu_timings_ms) gpu_total += ms;
+    gpu.push_back(gpu_total);
   }
   m.frame_ms = median(frame);
   m.surface_ms = median(surface);
+  if (!gpu.empty()) m.gpu_frame_ms = median(gpu);
   return m;
 }
 

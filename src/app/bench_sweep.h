@@ -15,6 +15,7 @@
 #pragma once
 
 #include <functional>
+#include <limits>
 #include <string>
 #include <utility>
 #include <vector>
@@ -36,6 +37,9 @@ struct BenchOptions {
 
 struct Measurement {
   double frame_ms = 0.0, surface_ms = 0.0;
+  // GL timer queries' frame (sum of the passes; docs/benchmarks.md, "GPU timers"): median over
+  // the timed frames whose results came back; NaN: none did. In bench.md, not in bench.csv.
+  double gpu_frame_ms = std::numeric_limits<double>::quiet_NaN();
   double texture_rms_sigma = 0.0, texture_vs_ideal = 0.0, texture_vs_target = 0.0;
   double displacement_rel = 0.0, distance_max_mm = 0.0, normal_deg = 0.0;
   int footprint_pixels = 0;
@@ -69,6 +73,9 @@ struct ShadowCost {
   std::vector<std::pair<std::string, double>> shadow_pass_ms;  // probe_depth, surface, reductions
   double plain_surface_ms = 0.0;
   unsigned shadow_pixels = 0;  // pixels inside the pseudo-shadow
+  // The same medians from GL timer queries (gpu_timings_ms' frame); NaN: none came back.
+  double gpu_shadow_frame_ms = std::numeric_limits<double>::quiet_NaN();
+  double gpu_plain_frame_ms = std::numeric_limits<double>::quiet_NaN();
 };
 Result<ShadowCost> run_shadow_cost(const BenchOptions& o, int size);
 

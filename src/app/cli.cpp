@@ -110,8 +110,12 @@ int Command::run(int argc, char** argv, const std::function<int()>& action) {
   } catch (const CLI::CallForHelp&) {
     std::fputs(app_.help().c_str(), stdout);
     return kExitOk;
+  } catch (const CLI::Success&) {  // an option that was the whole command (--gpu list)
+    return kExitOk;
   } catch (const UsageError& e) {
     return usage_error(make_error(e.what()));
+  } catch (const RuntimeFailure& e) {
+    return fail(make_error(e.what()));
   } catch (const CLI::ParseError& e) {
     return usage_error(make_error(parse_message(e)));
   }

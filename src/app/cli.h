@@ -33,6 +33,11 @@ inline constexpr const char* kExitStatusHelp =
 struct UsageError : std::runtime_error {
   using std::runtime_error::runtime_error;
 };
+// From an option callback that does the command's whole work and fails at run time (--gpu list
+// on an EGL without devices): one line and exit 1.
+struct RuntimeFailure : std::runtime_error {
+  using std::runtime_error::runtime_error;
+};
 
 class Command {
  public:

@@ -8,6 +8,7 @@
 #include <unistd.h>
 
 #include "app/cli.h"
+#include "gl/egl_device.h"
 #include "haptics/haptic_loop.h"
 #include "scene/scene_io.h"
 #include "tune/overrides_file.h"
@@ -70,24 +71,77 @@ void add_image_options(CLI::App& app, SceneArgs& scene) {
       ->group(kSceneGroup);
 }
 
-void add_gl_options(CLI::App& app, gl::Backend& backend) {
+std::vector<std::string> GlArgs::argv() const {
+  std::vector<std::string> out = {"--backend", gl::backend_name(backend)};
+  switch (gpu.kind) {
+    case gl::GpuChoice::Kind::kAuto: out.insert(out.end(), {"--gpu", "auto"}); break;
+    case gl::GpuChoice::Kind::kSoftware: out.insert(out.end(), {"--gpu", "software"}); break;
+    case gl::GpuChoice::Kind::kIndex: out.insert(out.end(), {"--gpu", std::to_string(gpu.index)}); break;
+    case gl::GpuChoice::Kind::kDefault:
+    case gl::GpuChoice::Kind::kList: break;
+  }
+  return out;
+}
+
+namespace {
+
+// --gpu list: runs as the option is read, so nothing else (scene, outputs) is done.
+[[noreturn]] void list_devices_and_exit() {
+  auto devices = gl::list_egl_devices();
+  if (!devices) throw RuntimeFailure("--gpu list: " + devices.error().message);
+  std::fputs("index  name  kind  render node\n", stdout);
+  std::fputs(gl::format_egl_devices(devices.value()).c_str(), stdout);
+  throw CLI::Success();
+}
+
+}  // namespace
+
+void add_gl_options(CLI::App& app, GlArgs& args) {
   app.add_option_function<std::string>(
          "--backend",
-         [&backend](const std::string& v) {
+         [&args](const std::string& v) {
            auto b = gl::parse_backend(v);
            if (!b || b.value() == gl::Backend::kGlfw)
              throw UsageError("--backend: '" + v + "' is not a headless backend (give auto, egl or osmesa)");
-           backend = b.value();
+           args.backend = b.value();
          },
          "auto (EGL, then OSMesa) | egl | osmesa")
       ->type_name("B")
       ->group(kGlGroup);
+  app.add_option_function<std::string>(
+         "--gpu",
+         [&args](const std::string& v) {
+           auto g = gl::parse_gpu(v);
+           if (!g) throw UsageError("--gpu: " + g.error().message);
+           if (g->kind == gl::GpuChoice::Kind::kList) list_devices_and_exit();
+           args.gpu = g.value();
+         },
+         "the EGL display: auto (a hardware EGL device, else Mesa's surfaceless platform, else OSMesa; says "
+         "which), list (print the EGL devices and exit), software (Mesa's software device) or N (EGL "
+         "device N of the list); default: the surfaceless platform")
+      ->type_name("G")
+      ->trigger_on_parse()
+      ->group(kGlGroup);
+}
+
+Result<std::unique_ptr<gl::Context>> open_context(const GlArgs& args, bool quiet) {
+  if (args.gpu.kind != gl::GpuChoice::Kind::kDefault && args.backend == gl::Backend::kOsmesa)
+    return make_error("--gpu: OSMesa has no EGL devices (give --backend egl or auto with --gpu)");
+  gl::ContextDesc desc;
+  desc.backend = args.backend;
+  desc.gpu = args.gpu;
+  auto context = gl::create_context(desc);
+  if (context && !quiet && args.gpu.kind == gl::GpuChoice::Kind::kAuto)
+    std::fprintf(stderr, "gpu: %s, %s\n", gl::backend_name(context.value()->backend()),
+                 context.value()->egl_device().c_str());
+  return context;
 }
 
 void add_stats_option(CLI::App& app, std::string& path) {
   app.add_option("--stats", path,
-                 "per-frame numbers of the last frame: backend, gl_renderer, reference_normal, "
-                 "displacement, max_penetration, probe_position, timings_ms per pass, skipped work")
+                 "per-frame numbers of the last frame: backend, egl_device, gl_renderer, reference_normal, "
+                 "displacement, max_penetration, probe_position, timings_ms and gpu_timings_ms per pass, "
+                 "skipped work")
       ->type_name("FILE.json")
       ->group(kOutputGroup);
 }

@@ -2,6 +2,7 @@
 // has the concern spells, checks and documents its options the same way.
 #pragma once
 
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -50,8 +51,19 @@ void add_probe_options(CLI::App& app, SceneArgs& scene);
 inline constexpr int kMaxSide = 8192;               // GL_MAX_TEXTURE_SIZE-safe on llvmpipe
 inline constexpr long long kMaxPixels = 16'777'216;  // 4096^2: keeps the padded targets < 1.2 GiB
 void add_image_options(CLI::App& app, SceneArgs& scene);
-// --backend auto|egl|osmesa (headless commands; glfw is refused: it opens a window).
-void add_gl_options(CLI::App& app, gl::Backend& backend);
+// --backend auto|egl|osmesa (headless commands; glfw is refused: it opens a window) and
+// --gpu auto|list|software|N (docs/gl-stack.md, "EGL devices"). --gpu list prints the EGL devices
+// and ends the command (exit 0, nothing written; exit 1 with one line when EGL has no devices).
+struct GlArgs {
+  gl::Backend backend = gl::Backend::kAuto;
+  gl::GpuChoice gpu;
+  // The words that give the same choice to a child `pseudoshadow` process.
+  std::vector<std::string> argv() const;
+};
+void add_gl_options(CLI::App& app, GlArgs& args);
+// The headless context the options ask for; with --gpu auto, one line on stderr says which
+// display it took (unless `quiet`).
+Result<std::unique_ptr<gl::Context>> open_context(const GlArgs& args, bool quiet = false);
 // --stats FILE.json (the per-frame numbers of the last frame, Renderer's stats_json).
 void add_stats_option(CLI::App& app, std::string& path);
 // The options of the commands that run a live 1 kHz haptic loop beside the renderer (`run`,

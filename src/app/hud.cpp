@@ -86,6 +86,7 @@ std::vector<std::string> hud_lines(const HudReadouts& r) {
       line("haptic", "%.0f Hz", r.haptic_hz),
       line("jitter p99", "%.0f us", r.jitter_p99_us),
   };
+  if (r.gpu_frame_ms) out.insert(out.begin() + 7, line("gpu frame", "%.1f ms", *r.gpu_frame_ms));
   // The texture is the per-pixel sum until its tile is baked: say the picture will not change.
   if (r.bake_progress < 1.0) out.push_back(line("texture", "baking %.0f %%", 100.0 * r.bake_progress));
   if (r.button >= 0)

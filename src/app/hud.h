@@ -31,6 +31,9 @@ namespace ps {
 struct HudReadouts {
   std::string scene;                     // the scene file's name, "default.toml"
   double frame_ms = 0.0;
+  // GL timer queries' time of the newest frame whose results came back (sum of its passes);
+  // none: no results yet (docs/benchmarks.md, "GPU timers").
+  std::optional<double> gpu_frame_ms;
   double haptic_hz = 0.0, jitter_p99_us = 0.0;
   std::optional<double> distance_mm;     // probe to surface over the shadow; none: out of reach
   double speed_mm_s = 0.0;

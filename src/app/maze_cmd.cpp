@@ -44,7 +44,7 @@ struct MazeArgs {
   std::string maze = default_maze(), participant, cues, device, out_dir, write_scene, resume, plan;
   long long seed = -1, every = 0, session = 1;
   double fps = 30.0, pace = 0.0;
-  gl::Backend backend = gl::Backend::kAuto;
+  cli::GlArgs gl_opts;
   bool quiet = false, window = false, no_clutch = false, hide_hand = false, force = false;
   double clutch_mm = MazeWindowParams{}.clutch_mm;
   cli::LiveLoopArgs live;  // the window's haptic thread and renderer: --render-threads, --spare-cpu
@@ -111,7 +111,7 @@ void declare(cli::Command& cmd, MazeArgs& a) {
                     "logged as `clutch` (default 6, the probe's radius)");
   app.add_flag("--no-clutch", a.no_clutch, "window: never put the hand back (it stays where the mouse took it)");
   app.add_flag("--hide-hand", a.hide_hand, "window: no faint ring where the hand is while a wall holds the probe");
-  cli::add_gl_options(app, a.backend);
+  cli::add_gl_options(app, a.gl_opts);
   cli::add_live_loop_options(app, a.live);
   cli::add_quiet_option(app, a.quiet);
   cmd.usage("pseudoshadow maze --participant ID --seed N --cues on|off [--device trajectory:FILE] [--out DIR]");
@@ -129,7 +129,7 @@ int run_headless(const cli::Command& cmd, const MazeArgs& a, const maze::Session
   std::unique_ptr<maze::FrameWriter> frames;
   if (a.every > 0) {
     if (Status s = prepare_output_dir(a.out_dir + "/frames/frame_00000.png"); !s) return fail(s.error());
-    auto c = gl::create_context({a.backend});
+    auto c = cli::open_context(a.gl_opts);
     if (!c) return fail(c.error());
     ctx = std::move(c.value());
     frames = std::make_unique<maze::FrameWriter>(o.desc, a.out_dir + "/frames", static_cast<int>(a.every));

@@ -25,7 +25,7 @@ constexpr const char* kDescription =
 
 struct RenderArgs {
   cli::SceneArgs scene;
-  gl::Backend backend = gl::Backend::kAuto;
+  cli::GlArgs gl_opts;
   std::string out = "render.png", stats_path;
   std::vector<std::pair<std::string, std::string>> aovs;
   bool quiet = false, show_probe = false;
@@ -55,7 +55,7 @@ void declare(cli::Command& cmd, RenderArgs& a) {
                      a.scene.add("render.frames=" + std::to_string(cli::parse_int("--frames", v, 1, 100000)), "--frames");
                    })
       ->group(cli::kSceneGroup);
-  cli::add_gl_options(app, a.backend);
+  cli::add_gl_options(app, a.gl_opts);
   app.add_option("--out", a.out, std::string("output image (default: render.png). ") + cli::kOutputRule)->type_name("IMAGE.png")->group(cli::kOutputGroup);
   cli::add_ordered(app, "--aov", "NAME=FILE",
                    "also write an AOV (repeatable): intensity, distance (float mm, NaN outside the shadow; "
@@ -108,7 +108,7 @@ Status write_outputs(const RenderArgs& a, const Renderer& r, const gl::Context& 
     if (Status s = stage_image(out, file, img.value()); !s) return s;
   }
   if (!a.stats_path.empty()) {
-    const std::string json = stats_json(r.stats(), gl::backend_name(ctx.backend()), ctx.renderer(),
+    const std::string json = stats_json(r.stats(), gl::backend_name(ctx.backend()), ctx.egl_device(), ctx.renderer(),
                                         r.scene().render.frames);
     if (Status s = out.stage_text(a.stats_path, json); !s) return s;
   }
@@ -120,9 +120,7 @@ int render(const cli::Command& cmd, const RenderArgs& a) {
   if (Status s = add_outputs(a, outputs); !s) return cmd.fail(s.error());
   auto scene = cli::load_scene_or_default(a.scene);
   if (!scene) return cmd.fail(scene.error(), cli::scene_exit_code(scene.error()));
-  gl::ContextDesc desc;
-  desc.backend = a.backend;
-  auto ctx = gl::create_context(desc);
+  auto ctx = cli::open_context(a.gl_opts, a.quiet);
   if (!ctx) return cmd.fail(ctx.error());
   RendererOptions options;
   options.expected_frames = scene->render.frames;  // a short render skips a tile bake it would not repay
@@ -133,6 +131,7 @@ int render(const cli::Command& cmd, const RenderArgs& a) {
   const int frames = scene->render.frames;
   const bool progress = !a.quiet && frames > 1 && isatty(STDERR_FILENO);
   if (Status s = run_frames(*renderer.value(), frames, progress); !s) return cmd.fail(s.error());
+  renderer.value()->poll_gpu_timings(true);  // the last frame's timers: its image is read next anyway
   if (Status s = write_outputs(a, *renderer.value(), *ctx.value(), outputs); !s) return cmd.fail(s.error());
   if (!a.quiet) {
     double frame_ms = 0.0;

@@ -28,7 +28,7 @@ constexpr const char* kDescription =
 
 struct ReplayArgs {
   cli::SceneArgs scene;
-  gl::Backend backend = gl::Backend::kAuto;
+  cli::GlArgs gl_opts;
   std::string log, out_dir, sheet, record;
   std::string events, audio;  // docs/sound.md
   std::string vibration;      // docs/vibration.md
@@ -49,7 +49,7 @@ void declare(cli::Command& cmd, ReplayArgs& a) {
       ->type_name("[KIND:]FILE");
   cli::add_int(app, "--every", "N", a.every, 1, 1'000'000, "write every N-th frame (default 1)");
   cli::add_positive(app, "--fps", "F", a.fps, 10000.0, "30", "frames per second of session time (default 30)");
-  cli::add_gl_options(app, a.backend);
+  cli::add_gl_options(app, a.gl_opts);
   app.add_option("--out", a.out_dir, std::string("writes DIR/frame_00000.png ... (required). ") + cli::kOutputRule)->type_name("DIR")->group(cli::kOutputGroup);
   app.add_option("--contact-sheet", a.sheet, "also one labelled sheet of the written frames (PNG)")
       ->type_name("FILE")
@@ -108,7 +108,7 @@ Result<std::unique_ptr<Renderer>> make_renderer(const ReplayArgs& a, const Scene
 }
 
 Result<ReplayGl> open_renderer(const ReplayArgs& a, const Scene& scene, int frames) {
-  auto ctx = gl::create_context({a.backend});
+  auto ctx = cli::open_context(a.gl_opts);
   if (!ctx) return ctx.error();
   auto renderer = make_renderer(a, scene, frames);
   if (!renderer) return renderer.error();

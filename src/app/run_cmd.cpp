@@ -179,7 +179,7 @@ void poll_device(Session& s, double now_s, bool poll_glfw) {
 
 // The scene is loaded once, before the window: its render.size is the window's size.
 Status open_session(const RunArgs& a, Scene scene, Session& s) {
-  gl::ContextDesc desc{gl::Backend::kGlfw, scene.render.width, scene.render.height, "pseudoshadow", true};
+  gl::ContextDesc desc{gl::Backend::kGlfw, scene.render.width, scene.render.height, "pseudoshadow", true, {}};
   auto ctx = gl::create_context(desc);
   if (!ctx) return ctx.error();
   s.ctx = std::move(ctx.value());
@@ -238,6 +238,11 @@ HudReadouts readouts(const Session& s, const HapticState& st, const ShadowMeasur
   const std::string& path = s.tune->scene_path();
   r.scene = path.empty() ? cli::scene_display_name(path) : std::filesystem::path(path).filename().string();
   r.frame_ms = s.frame_ms.empty() ? 0.0 : s.frame_ms.back();
+  if (const auto& gpu = s.tune->renderer().stats().gpu_timings_ms; !gpu.empty()) {
+    double total = 0.0;
+    for (const auto& [pass, ms] : gpu) total += ms;
+    r.gpu_frame_ms = total;
+  }
   r.haptic_hz = st.rate_hz;
   r.jitter_p99_us = st.jitter_p99_us;
   r.distance_mm = shadow.min_distance_mm;
@@ -547,7 +552,7 @@ int run(const cli::Command& cmd, const RunArgs& a) {
   if (!looped) return cmd.fail(looped.error());
   if (!a.stats_path.empty()) {
     const Renderer& r = s.tune->renderer();
-    const std::string json = stats_json(r.stats(), gl::backend_name(s.ctx->backend()), s.ctx->renderer(),
+    const std::string json = stats_json(r.stats(), gl::backend_name(s.ctx->backend()), s.ctx->egl_device(), s.ctx->renderer(),
                                         static_cast<int>(s.frame_ms.size()));
     if (Status st = write_file_atomic(a.stats_path, json); !st) return cmd.fail(st.error());
   }

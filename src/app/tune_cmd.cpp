@@ -30,7 +30,7 @@ constexpr const char* kDescription =
 
 struct TuneArgs {
   cli::SceneArgs scene;
-  gl::Backend backend = gl::Backend::kAuto;
+  cli::GlArgs gl_opts;
   std::string out, csv, out_dir;
   std::vector<SweepAxis> axes;
   std::string shard_text;              // --shard I/N
@@ -71,7 +71,7 @@ void declare(cli::Command& cmd, TuneArgs& a) {
       ->type_name("DIR...")
       ->expected(1, -1);
   app.add_flag("--console", a.console, "run a scripted console session read from stdin (below)");
-  cli::add_gl_options(app, a.backend);
+  cli::add_gl_options(app, a.gl_opts);
   app.add_option("--out", a.out, "the contact sheet (required for sweeps)")->type_name("SHEET.png")->group(cli::kOutputGroup);
   app.add_option("--out-dir", a.out_dir, "a shard's directory (with --shard): cell_NNNN.png and shard.json")
       ->type_name("DIR")
@@ -189,7 +189,7 @@ int tune(const cli::Command& cmd, const TuneArgs& a) {
   if (!a.console)
     if (Status s = validate_sweep({a.scene.path, a.scene.lines(), a.axes, {}}); !s)
       return cmd.fail(s.error(), cli::scene_exit_code(s.error()));
-  auto ctx = gl::create_context({a.backend});
+  auto ctx = cli::open_context(a.gl_opts);
   if (!ctx) return cmd.fail(ctx.error());
   if (a.console) return run_console_mode(cmd, a, std::move(scene.value()));
   return a.shard_text.empty() ? run_sweep(cmd, a) : run_shard(cmd, a);

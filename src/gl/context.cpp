@@ -4,6 +4,7 @@
 #include <cassert>
 
 #include "gl/context_internal.h"
+#include "gl/egl_device.h"
 
 namespace ps::gl {
 
@@ -13,6 +14,16 @@ Result<Backend> parse_backend(const std::string& name) {
   if (name == "osmesa") return Backend::kOsmesa;
   if (name == "glfw") return Backend::kGlfw;
   return make_error("unknown backend \"" + name + "\" (expected auto, egl, osmesa or glfw)");
+}
+
+Result<GpuChoice> parse_gpu(const std::string& text) {
+  using Kind = GpuChoice::Kind;
+  if (text == "auto") return GpuChoice{Kind::kAuto, -1};
+  if (text == "list") return GpuChoice{Kind::kList, -1};
+  if (text == "software") return GpuChoice{Kind::kSoftware, -1};
+  if (!text.empty() && text.size() <= 4 && text.find_first_not_of("0123456789") == std::string::npos)
+    return GpuChoice{Kind::kIndex, std::stoi(text)};
+  return make_error("unknown GPU \"" + text + "\" (expected auto, list, software or a device number)");
 }
 
 const char* backend_name(Backend backend) {
@@ -41,12 +52,50 @@ Result<std::unique_ptr<Context>> create_one(Backend backend, const ContextDesc& 
 
 }  // namespace
 
+namespace {
+
+// --gpu auto: the first hardware EGL device, else the surfaceless platform, else (backend auto)
+// OSMesa; the context's egl_device() says which and why.
+Result<std::unique_ptr<Context>> create_auto_gpu(const ContextDesc& desc) {
+  std::string why = "no hardware EGL device";
+  if (auto devices = list_egl_devices(); devices) {
+    for (const EglDeviceInfo& d : devices.value()) {
+      if (d.software) continue;
+      ContextDesc on_device = desc;
+      on_device.gpu = {GpuChoice::Kind::kIndex, d.index};
+      auto context = detail::create_egl_context(on_device);
+      if (context) {
+        context.value()->set_egl_device_note("gpu auto: the first hardware EGL device");
+        return context;
+      }
+      why = "hardware EGL device " + std::to_string(d.index) + ": " + context.error().message;
+      break;
+    }
+  } else {
+    why = devices.error().message;
+  }
+  ContextDesc fallback = desc;
+  fallback.gpu = {};
+  auto context = create_context(fallback);
+  if (context) context.value()->set_egl_device_note("gpu auto: " + why);
+  return context;
+}
+
+}  // namespace
+
 Result<std::unique_ptr<Context>> create_context(const ContextDesc& desc) {
   const std::string prefix = "no OpenGL 4.5 context: ";
-  if (desc.backend != Backend::kAuto) {
-    auto context = create_one(desc.backend, desc);
+  using Kind = GpuChoice::Kind;
+  assert(desc.gpu.kind != Kind::kList && "create_context: --gpu list is the CLI's, not a context");
+  if (desc.gpu.kind != Kind::kDefault && desc.backend != Backend::kEgl && desc.backend != Backend::kAuto)
+    return make_error(prefix + "--gpu needs the EGL backend (got " + backend_name(desc.backend) + ")");
+  if (desc.gpu.kind == Kind::kAuto) return create_auto_gpu(desc);
+  // A device asked for by name is EGL only: falling back to OSMesa would hide a missing device.
+  const Backend only = desc.gpu.kind == Kind::kDefault ? desc.backend : Backend::kEgl;
+  if (only != Backend::kAuto) {
+    auto context = create_one(only, desc);
     if (!context) {
-      return make_error(prefix + backend_name(desc.backend) + ": " + context.error().message);
+      return make_error(prefix + backend_name(only) + ": " + context.error().message);
     }
     return context;
   }

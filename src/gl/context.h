@@ -18,12 +18,28 @@ enum class Backend { kAuto, kEgl, kOsmesa, kGlfw };
 Result<Backend> parse_backend(const std::string& name);
 const char* backend_name(Backend backend);
 
+// --gpu: which EGL display a headless context opens (docs/gl-stack.md, "EGL devices").
+struct GpuChoice {
+  enum class Kind {
+    kDefault,   // no --gpu: Mesa's surfaceless platform (then OSMesa under Backend::kAuto)
+    kAuto,      // a hardware EGL device, else surfaceless, else OSMesa (under Backend::kAuto)
+    kSoftware,  // Mesa's software EGL device (EGL_MESA_device_software)
+    kIndex,     // EGL device `index` of eglQueryDevicesEXT's list
+    kList,      // not a context: the CLI prints the devices and exits
+  };
+  Kind kind = Kind::kDefault;
+  int index = -1;  // kIndex only
+};
+// "auto" | "list" | "software" | N -> GpuChoice; error names the accepted words.
+Result<GpuChoice> parse_gpu(const std::string& text);
+
 struct ContextDesc {
   Backend backend = Backend::kAuto;  // auto tries EGL, then OSMesa (never GLFW)
   // GLFW only: window size and title; headless backends ignore them.
   int window_width = 800, window_height = 600;
   std::string window_title = "pseudoshadow";
   bool visible = true;
+  GpuChoice gpu;  // EGL and auto only; OSMesa with a --gpu other than the default is an error
 };
 
 class Context {
@@ -36,9 +52,13 @@ class Context {
   // GL_RENDERER and GL_VERSION strings, read once after creation.
   const std::string& renderer() const { return renderer_; }
   const std::string& version() const { return version_; }
+  // The EGL display it runs on: "surfaceless", "device N (name)", or "none" (OSMesa, GLFW).
+  // With --gpu auto it also says why ("... (no hardware EGL device)").
+  const std::string& egl_device() const { return egl_device_; }
+  void set_egl_device_note(const std::string& note) { egl_device_ += " (" + note + ")"; }
 
  protected:
-  std::string renderer_, version_;
+  std::string renderer_, version_, egl_device_ = "none";
 };
 
 // Creates a 4.5 core context, makes it current and loads every GL entry point.

@@ -1,11 +1,13 @@
-// EGL surfaceless backend (EGL_MESA_platform_surfaceless): no window system, no default
-// framebuffer, no environment variables. Plain eglGetDisplay would need EGL_PLATFORM=surfaceless.
+// EGL backend: Mesa's surfaceless platform (EGL_MESA_platform_surfaceless) by default, or one EGL
+// device (EGL_EXT_platform_device: the NVIDIA driver's only headless path, and Mesa's software
+// device). No window system, no default framebuffer, no environment variables either way.
 #include <EGL/egl.h>
 #include <EGL/eglext.h>
 
 #include <string>
 
 #include "gl/context_internal.h"
+#include "gl/egl_device.h"
 
 namespace ps::gl::detail {
 namespace {
@@ -40,7 +42,7 @@ void* egl_loader(const char* name) { return reinterpret_cast<void*>(eglGetProcAd
 
 class EglContext final : public Context {
  public:
-  explicit EglContext(EGLDisplay display) : display_(display) {}
+  EglContext(EGLDisplay display, std::string device) : display_(display) { egl_device_ = std::move(device); }
   ~EglContext() override {
     unload_gl();
     // Order: release current, destroy the context, then terminate the display (which would
@@ -79,27 +81,65 @@ Status EglContext::init() {
   return load_gl_and_query(egl_loader, renderer_, version_);
 }
 
-Result<EGLDisplay> open_surfaceless_display() {
-  auto get_display = reinterpret_cast<PFNEGLGETPLATFORMDISPLAYEXTPROC>(
-      eglGetProcAddress("eglGetPlatformDisplayEXT"));
-  if (get_display == nullptr) return make_error("eglGetPlatformDisplayEXT not available");
-  EGLDisplay display =
-      get_display(EGL_PLATFORM_SURFACELESS_MESA, EGL_DEFAULT_DISPLAY, nullptr);
-  if (display == EGL_NO_DISPLAY) {
-    return egl_failure("eglGetPlatformDisplayEXT(EGL_PLATFORM_SURFACELESS_MESA)");
-  }
+PFNEGLGETPLATFORMDISPLAYEXTPROC platform_display_entry() {
+  return reinterpret_cast<PFNEGLGETPLATFORMDISPLAYEXTPROC>(eglGetProcAddress("eglGetPlatformDisplayEXT"));
+}
+
+Result<EGLDisplay> initialize(EGLDisplay display, const char* what) {
+  if (display == EGL_NO_DISPLAY) return egl_failure(what);
   EGLint major = 0, minor = 0;
   if (!eglInitialize(display, &major, &minor)) return egl_failure("eglInitialize");
   return display;
 }
 
+Result<EGLDisplay> open_surfaceless_display() {
+  auto get_display = platform_display_entry();
+  if (get_display == nullptr) return make_error("eglGetPlatformDisplayEXT not available");
+  return initialize(get_display(EGL_PLATFORM_SURFACELESS_MESA, EGL_DEFAULT_DISPLAY, nullptr),
+                    "eglGetPlatformDisplayEXT(EGL_PLATFORM_SURFACELESS_MESA)");
+}
+
+// The index --gpu names: N itself, or the software device's place in the list.
+Result<EglDeviceInfo> pick_device(const GpuChoice& gpu) {
+  auto devices = list_egl_devices();
+  if (!devices) return devices.error();
+  const int n = static_cast<int>(devices->size());
+  if (gpu.kind == GpuChoice::Kind::kIndex) {
+    if (gpu.index >= 0 && gpu.index < n) return (*devices)[static_cast<std::size_t>(gpu.index)];
+    return make_error("no EGL device " + std::to_string(gpu.index) + " (" + std::to_string(n) +
+                      " device" + (n == 1 ? "" : "s") + "; see --gpu list)");
+  }
+  for (const EglDeviceInfo& d : devices.value())
+    if (d.software) return d;
+  return make_error("no software EGL device (EGL_MESA_device_software; see --gpu list)");
+}
+
+Result<EGLDisplay> open_device_display(const EglDeviceInfo& info) {
+  auto devices = query_egl_devices();
+  if (!devices) return devices.error();
+  auto get_display = platform_display_entry();
+  if (get_display == nullptr) return make_error("eglGetPlatformDisplayEXT not available");
+  void* device = (*devices)[static_cast<std::size_t>(info.index)];
+  return initialize(get_display(EGL_PLATFORM_DEVICE_EXT, device, nullptr),
+                    "eglGetPlatformDisplayEXT(EGL_PLATFORM_DEVICE_EXT)");
+}
+
 }  // namespace
 
-Result<std::unique_ptr<Context>> create_egl_context(const ContextDesc& /*desc*/) {
-  auto display = open_surfaceless_display();
+Result<std::unique_ptr<Context>> create_egl_context(const ContextDesc& desc) {
+  std::string device_name = "surfaceless";
+  Result<EGLDisplay> display = make_error("unset");
+  if (desc.gpu.kind == GpuChoice::Kind::kIndex || desc.gpu.kind == GpuChoice::Kind::kSoftware) {
+    auto device = pick_device(desc.gpu);
+    if (!device) return device.error();
+    device_name = "device " + std::to_string(device->index) + " (" + device->name + ")";
+    display = open_device_display(device.value());
+  } else {
+    display = open_surfaceless_display();
+  }
   if (!display) return display.error();
   // From here the context object owns the display: its destructor terminates it on failure.
-  auto context = std::make_unique<EglContext>(display.value());
+  auto context = std::make_unique<EglContext>(display.value(), device_name);
   if (Status s = context->init(); !s) return s.error();
   return std::unique_ptr<Context>(std::move(context));
 }

@@ -5,6 +5,7 @@
 
 #include <memory>
 #include <string>
+#include <vector>
 
 #include "core/result.h"
 #include "gl/context.h"
@@ -20,7 +21,10 @@ Status load_gl_and_query(Loader loader, std::string& renderer, std::string& vers
 void unload_gl();
 
 // Each returns an error message without the "no OpenGL 4.5 context: <backend>: " prefix.
+// desc.gpu picks the display: kDefault = surfaceless; kSoftware / kIndex = that EGL device.
 Result<std::unique_ptr<Context>> create_egl_context(const ContextDesc& desc);
+// eglQueryDevicesEXT's list (EGLDeviceEXT handles as void*, so this header needs no EGL).
+Result<std::vector<void*>> query_egl_devices();
 Result<std::unique_ptr<Context>> create_osmesa_context(const ContextDesc& desc);
 Result<std::unique_ptr<Context>> create_glfw_context(const ContextDesc& desc);
 

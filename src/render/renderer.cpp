@@ -97,10 +97,24 @@ std::string strategy_note(const Material& m, const GaborStrategyChoice& choice, 
   return {};
 }
 
+// CPU wall time per pass (glFinish between passes) and, where `gpu` is given, GPU time per pass
+// from timer queries (no wait; gl/timer_query.h).
 class PassTimer {
  public:
-  PassTimer(bool enabled, FrameStats& stats) : enabled_(enabled), stats_(stats) { restart(); }
+  PassTimer(bool enabled, FrameStats& stats, gl::TimerQueries* gpu) : enabled_(enabled), stats_(stats), gpu_(gpu) {
+    restart();
+    if (gpu_ != nullptr) gpu_->begin_frame();
+  }
+  ~PassTimer() {
+    if (gpu_ == nullptr) return;
+    gpu_->end_frame();
+    stats_.gpu_timings_ms = gpu_->results();
+    stats_.gpu_timings_lag = gpu_->lag();
+  }
+  PassTimer(const PassTimer&) = delete;
+  PassTimer& operator=(const PassTimer&) = delete;
   void lap(const char* name) {
+    if (gpu_ != nullptr) gpu_->lap(name);
     if (!enabled_) return;
     glFinish();  // llvmpipe renders on flush: finishing makes the wall time the pass's time
     const auto now = std::chrono::steady_clock::now();
@@ -115,6 +129,7 @@ class PassTimer {
  private:
   bool enabled_;
   FrameStats& stats_;
+  gl::TimerQueries* gpu_;
   std::chrono::steady_clock::time_point start_;
 };
 
@@ -543,7 +558,7 @@ Status Renderer::render_frame() {
   stats_.timings_ms.clear();
   stats_.deformation = deform_stats_;
   if (Status s = advance_bake(); !s) return s;  // before the timer: a band is not the frame's work
-  PassTimer timer(options_.time_passes, stats_);
+  PassTimer timer(options_.time_passes, stats_, options_.gpu_timers ? &gpu_timers_ : nullptr);
   const BoundingSphere probe = current_probe_bounds();
   const FramePlan plan = make_plan(scene_, geometry_.surface_bounds, probe, frame_,
                                    scene_.render.depth_map_size);
@@ -595,6 +610,13 @@ Status Renderer::render_frame() {
     stats_.first_frame_ms = ms_since_creation();
   }
   return ok_status();
+}
+
+void Renderer::poll_gpu_timings(bool wait) {
+  if (!options_.gpu_timers) return;
+  gpu_timers_.poll(wait);
+  stats_.gpu_timings_ms = gpu_timers_.results();
+  stats_.gpu_timings_lag = gpu_timers_.lag();
 }
 
 Status Renderer::warm_unfiltered_variants() {

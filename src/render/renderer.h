@@ -13,6 +13,7 @@
 #include <glm/glm.hpp>
 
 #include "core/result.h"
+#include "gl/timer_query.h"
 #include "image/image.h"
 #include "passes/gabor_bake.h"
 #include "passes/gabor_block.h"
@@ -44,6 +45,9 @@ struct DeformationStats {
 struct RendererOptions {
   std::string glsl_root;          // empty: gl::default_glsl_root()
   bool time_passes = true;        // glFinish around passes for per-pass wall times
+  // GL_TIME_ELAPSED queries around the same passes (gpu_timings_ms); they never make the CPU
+  // wait (gl/timer_query.h), so the window keeps them on with time_passes off.
+  bool gpu_timers = true;
   double contrast_sigmas = 2.5;   // texture display contrast (see SurfaceFrame)
   // The thesis starts the reference plane facing the viewer and lets it converge over the
   // following frames; a headless render of one frame would then measure distances along the
@@ -105,6 +109,11 @@ struct FrameStats {
   double speed_gain = 0.0;                     // of the first shadowed material
   std::uint32_t shadow_pixels = 0, penetrating_pixels = 0;
   std::vector<std::pair<std::string, double>> timings_ms;
+  // GPU time of each pass (GL_TIME_ELAPSED), of the newest frame whose queries have come back:
+  // gpu_timings_lag frames before this one (0 on llvmpipe, which finishes each pass; usually 1
+  // on a GPU). Empty, lag -1: none back yet (docs/benchmarks.md, "GPU timers").
+  std::vector<std::pair<std::string, double>> gpu_timings_ms;
+  int gpu_timings_lag = -1;
   std::vector<std::string> skipped;
   // The Gabor tile bake, cumulative over the renderer's life. Times count from the start of
   // Renderer::create, in ms.
@@ -135,6 +144,9 @@ class Renderer {
   // the probe, capped by the image): what RendererOptions::expected_frames is weighed with.
   double textured_pixels_per_frame() const;
   const FrameStats& stats() const { return stats_; }
+  // Takes GPU timer results that have come back since the frame (wait = true: blocks until the
+  // last frame's are there, for a one-shot command about to read its image anyway).
+  void poll_gpu_timings(bool wait);
   // The baked tile material i is drawn with (ok == false: the per-pixel sum), as chosen at creation.
   const GaborBakePlan& gabor_bake_plan(size_t material) const { return materials_[material].bake_plan; }
   const Scene& scene() const { return scene_; }
@@ -192,6 +204,7 @@ class Renderer {
   const gl::Texture& color_texture() const { return surface_.color(); }
 
  private:
+  gl::TimerQueries gpu_timers_;  // per-pass GL_TIME_ELAPSED queries (RendererOptions::gpu_timers)
   // Everything the renderer keeps for one scene material (index = Scene::materials), built once
   // at creation: what was decided on the CPU, then what lives on the GPU.
   struct MaterialState {
@@ -309,7 +322,8 @@ void show_world_at_start(Renderer& renderer);
 
 // Stats as JSON (the CLI's --stats FILE): backend, renderer, reference_normal, displacement,
 // max_penetration, probe_position, timings_ms, skipped, ...
-std::string stats_json(const FrameStats& stats, const std::string& backend,
+// `egl_device`: gl::Context::egl_device().
+std::string stats_json(const FrameStats& stats, const std::string& backend, const std::string& egl_device,
                        const std::string& gl_renderer, int frames);
 
 }  // namespace ps

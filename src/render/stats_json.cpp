@@ -9,10 +9,11 @@ nlohmann::json vec(const glm::dvec3& v) { return nlohmann::json::array({v.x, v.y
 nlohmann::json ms_or_null(double ms) { return ms < 0.0 ? nlohmann::json(nullptr) : nlohmann::json(ms); }
 }  // namespace
 
-std::string stats_json(const FrameStats& s, const std::string& backend,
+std::string stats_json(const FrameStats& s, const std::string& backend, const std::string& egl_device,
                        const std::string& gl_renderer, int frames) {
   nlohmann::json j;
   j["backend"] = backend;
+  j["egl_device"] = egl_device;
   j["gl_renderer"] = gl_renderer;
   j["frames"] = frames;
   j["reference_normal"] = vec(s.reference_normal);
@@ -30,6 +31,17 @@ std::string stats_json(const FrameStats& s, const std::string& backend,
   }
   t["frame"] = total;
   j["timings_ms"] = t;
+  // GPU times of the newest frame whose timer queries came back (gpu_timings_lag frames ago);
+  // "frame" sums the passes, as above. {} and lag -1: none back yet.
+  nlohmann::json g = nlohmann::json::object();
+  double gpu_total = 0.0;
+  for (const auto& [name, ms] : s.gpu_timings_ms) {
+    g[name] = ms;
+    gpu_total += ms;
+  }
+  if (!s.gpu_timings_ms.empty()) g["frame"] = gpu_total;
+  j["gpu_timings_ms"] = g;
+  j["gpu_timings_lag"] = s.gpu_timings_lag;
   j["skipped"] = s.skipped;
   // The bake against the first frame (ms from the start of renderer creation): a window draws
   // its first frame before the tiles are ready, a headless render after (docs/architecture.md).

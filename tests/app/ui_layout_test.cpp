@@ -207,6 +207,11 @@ TEST(HudTest, ReadoutsNameEveryQuantityWithItsUnit) {
                            "haptic      998 Hz", "jitter p99  45 us"})
     EXPECT_NE(all.find(want), std::string::npos) << "missing '" << want << "' in\n" << all;
   EXPECT_EQ(all.find("baking"), std::string::npos) << "a finished bake shows no line:\n" << all;
+  EXPECT_EQ(all.find("gpu frame"), std::string::npos) << "no timer result yet: no line\n" << all;
+  r.gpu_frame_ms = 3.25;
+  all.clear();
+  for (const std::string& l : hud_lines(r)) all += l + "\n";
+  EXPECT_NE(all.find("frame       16.7 ms\ngpu frame   3.2 ms\n"), std::string::npos) << all;
 }
 
 TEST(HudTest, BakeProgressShowsUntilTheTileIsReady) {

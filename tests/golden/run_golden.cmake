@@ -83,7 +83,12 @@ message("${_reproduce}")
 
 # ---- 1. render ----
 set(_stats "${OUT_DIR}/${_name}.stats.json")
-set(_render_cmd "${EXE}" render --scene "${SCENE}" --backend "${BACKEND}" --size "${SIZE}"
+# PSEUDOSHADOW_GOLDEN_GPU: the EGL device the EGL cases render on (--gpu; default: surfaceless).
+set(_gpu "")
+if(BACKEND STREQUAL "egl" AND NOT "$ENV{PSEUDOSHADOW_GOLDEN_GPU}" STREQUAL "")
+  set(_gpu --gpu "$ENV{PSEUDOSHADOW_GOLDEN_GPU}")
+endif()
+set(_render_cmd "${EXE}" render --scene "${SCENE}" --backend "${BACKEND}" ${_gpu} --size "${SIZE}"
     --frames "${FRAMES}" --out "${_actual}" --stats "${_stats}" ${_extra})
 execute_process(COMMAND ${_render_cmd} RESULT_VARIABLE _rc OUTPUT_VARIABLE _out ERROR_VARIABLE _out)
 if(NOT _rc STREQUAL "0")
@@ -97,15 +102,17 @@ endif()
 # Goldens are llvmpipe renders: its float rounding is what the per-case limits were measured on.
 # A GPU driver rounds differently (other cos/exp precision, other FMA use), so there the case
 # reports SKIPPED (CTest's SKIP_REGULAR_EXPRESSION) instead of failing; the accuracy tests
-# against the CPU twins still run on any driver.
+# against the CPU twins still run on any driver. With PSEUDOSHADOW_GOLDEN_GPU set, a GPU render
+# is compared with the same limits instead (never regenerated), to see which cases a driver
+# needs a tolerance of its own for.
 file(READ "${_stats}" _stats_text)
 string(JSON _renderer ERROR_VARIABLE _json_error GET "${_stats_text}" gl_renderer)
 file(REMOVE "${_stats}")
 if(_json_error)
   golden_fail("golden ${_name}: the render stats have no gl_renderer (${_json_error})")
 endif()
-if(NOT _renderer MATCHES "llvmpipe")  # and never regenerate a golden from such a render
-  file(REMOVE "${_actual}")
+if(NOT _renderer MATCHES "llvmpipe" AND (_gpu STREQUAL "" OR "$ENV{UPDATE_GOLDEN}" STREQUAL "1"))
+  file(REMOVE "${_actual}")  # and never regenerate a golden from such a render
   message("SKIPPED: goldens are llvmpipe renders; ${BACKEND} renders with ${_renderer}")
   return()
 endif()

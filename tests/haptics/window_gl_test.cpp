@@ -20,7 +20,7 @@ Scene test_scene() {
 }
 
 Image render_with(gl::Backend backend, bool window_readback) {
-  gl::ContextDesc desc{backend, 160, 120, "pseudoshadow window test", true};
+  gl::ContextDesc desc{backend, 160, 120, "pseudoshadow window test", true, {}};
   auto ctx = gl::create_context(desc);
   if (!ctx) { ADD_FAILURE() << ctx.error().message; return {}; }
   auto r = Renderer::create(test_scene(), {});

@@ -152,7 +152,7 @@ void check_sliced_bake(const Scene& s, double interim_rms) {
   EXPECT_GT(rms, 0.0) << "the first frame must draw the per-pixel sum, not the tile";
 
   // The stats the --stats JSON carries say the same.
-  const auto json = nlohmann::json::parse(stats_json(first, "test", "test", 1));
+  const auto json = nlohmann::json::parse(stats_json(first, "test", "test", "test", 1));
   EXPECT_TRUE(json["gabor_tiles_ready_ms"].is_null());
   EXPECT_EQ(json["frames_before_tiles"], 1);
   EXPECT_DOUBLE_EQ(json["gabor_bake_progress"].get<double>(), first.bake_progress);
@@ -174,7 +174,7 @@ void check_sliced_bake(const Scene& s, double interim_rms) {
   // Every frame but the one that baked the last band drew with the sum; that one, the tile.
   EXPECT_EQ(r.stats().frames_before_tiles, expected_frames - 1);
   EXPECT_GT(r.stats().tiles_ready_ms, r.stats().first_frame_ms);
-  const auto done = nlohmann::json::parse(stats_json(r.stats(), "test", "test", frames));
+  const auto done = nlohmann::json::parse(stats_json(r.stats(), "test", "test", "test", frames));
   EXPECT_LT(done["first_frame_ms"].get<double>(), done["gabor_tiles_ready_ms"].get<double>());
 
   // From here on the tile: the same frame as the headless renderer's, byte for byte.
