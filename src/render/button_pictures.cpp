@@ -23,8 +23,11 @@ Result<std::string> picture_path(const std::string& scene_file) {
   if (!in) return make_error(scene_file + ": cannot read");
   const std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
   char name[64];
+  // kPictureVersion: a picture is a render, so a change that changes renders (one whose commit
+  // regenerates the golden images) bumps it, and no cache keeps a picture of the old renderer.
   std::snprintf(name, sizeof name, "/%016llx_%d.png",
-                static_cast<unsigned long long>(fnv1a(bytes + "|picture v1|" + std::to_string(kPictureSize))),
+                static_cast<unsigned long long>(fnv1a(bytes + "|picture v" + std::to_string(kPictureVersion) + "|" +
+                                                      std::to_string(kPictureSize))),
                 kPictureSize);
   return picture_cache_dir() + name;
 }

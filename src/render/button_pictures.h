@@ -6,8 +6,8 @@
 // world X/Y onto the plate (a panel facing +Z).
 // The pictures are cached as PNG files in the user's cache directory
 // ($PSEUDOSHADOW_CACHE_DIR, else $XDG_CACHE_HOME/pseudoshadow, else ~/.cache/pseudoshadow;
-// subdirectory pictures/), named by a hash of the scene file's bytes and the picture's size:
-// a picture is made again when that file changes, and only then. Written atomically (several
+// subdirectory pictures/), named by a hash of the scene file's bytes, kPictureVersion and the
+// picture's size: a picture is made again when that file or the renderer changes, and only then. Written atomically (several
 // processes may share the cache; the last writer's identical picture wins); a cached file that
 // does not read back as a kPictureSize PNG is never trusted, but made again.
 #pragma once
@@ -20,6 +20,10 @@
 namespace ps {
 
 inline constexpr int kPictureSize = 128;
+// The renderer's version in the pictures' cache names: bumped by every change that changes
+// renders (its commit regenerates the golden images), so a cache never hands back a picture of
+// an older renderer. 2: the Gabor noise's new cell seeds and the true distance by default.
+inline constexpr int kPictureVersion = 2;
 
 // The cache directory's pictures/, created if need be. When it cannot be created (no HOME, a
 // read-only home) a directory of this user's under the system's temporary directory is used

@@ -14,6 +14,12 @@ foreach(_var EXE SCENE SIZE FRAMES NAME OUT_DIR)
   endif()
 endforeach()
 
+# A cold picture cache (one per case, render/button_pictures.h): a button's picture cached by
+# an older build would stand in for this build's render of it, and a golden regenerated over a
+# warm cache would hold an older renderer's pictures (seen: universe_panel).
+if(DEFINED ENV{PSEUDOSHADOW_CACHE_DIR} AND NOT "$ENV{PSEUDOSHADOW_CACHE_DIR}" STREQUAL "")
+  file(REMOVE_RECURSE "$ENV{PSEUDOSHADOW_CACHE_DIR}")
+endif()
 execute_process(COMMAND "${EXE}" render --gpu list RESULT_VARIABLE _rc OUTPUT_VARIABLE _list ERROR_VARIABLE _list)
 if(NOT _rc STREQUAL "0" OR NOT _list MATCHES " software ")
   message("SKIPPED: no software EGL device: ${_list}")
