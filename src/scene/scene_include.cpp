@@ -84,6 +84,9 @@ Result<FileInfo> locate(const Walk& walk, const FileInfo& from, const toml::node
     shown = from.name.starts_with('<') ? resolved : fs::path(from.name).parent_path() / shown;
   }
   resolved = resolved.lexically_normal();
+  // Confined before its existence is checked (scene/path_policy.h).
+  if (Status s = walk.ctx.paths.admit(resolved, "'include' names"); !s && !name.empty())
+    return make_error(at(from, entry) + ": " + s.error().message);
   std::error_code ec;
   if (name.empty() || !fs::is_regular_file(resolved, ec)) {
     return make_error(at(from, entry) + ": 'include' file not found: " + resolved.string());
