@@ -19,9 +19,10 @@ HapticLoop::HapticLoop(Device& device, Clock& clock, const HapticLoopParams& par
                        const world::HapticScene* scene)
     : device_(device), clock_(clock), params_(params),
       period_(static_cast<std::int64_t>(std::llround(1e9 / params.rate_hz))),
+      schedule_(period_, params.schedule),
       sanitizer_(params.sanitizer), kalman_(params.kalman), periods_us_(params.keep_periods),
-      // A HUD window is 1 s of ticks; after a stall sleep_until() runs the missed ticks back to
-      // back inside one window, so room for 2 s (beyond that the HUD's p99 skips samples).
+      // A HUD window is 1 s of ticks (missed ticks are skipped, never run back to back); room
+      // for 2 s all the same (beyond that the HUD's p99 skips samples).
       window_jitter_us_(2 * static_cast<std::size_t>(std::ceil(params.rate_hz)) + 16) {
   if (scene != nullptr) {
     god_.emplace(*scene);
@@ -100,13 +101,28 @@ void HapticLoop::run_ticks(std::uint64_t n) {
 
 void HapticLoop::scheduled_tick() {
   if (!started_) {
-    start_ = next_ = last_tick_ = window_start_ = clock_.now();
+    start_ = last_tick_ = window_start_ = clock_.now();
+    schedule_.start(start_);
     started_ = true;
   } else {
-    next_ += period_;
-    clock_.sleep_until(next_);
+    clock_.sleep_until(schedule_.deadline());
+    note_wake(schedule_.woke(clock_.now()), clock_.now());
   }
   tick(clock_.now());
+}
+
+void HapticLoop::note_wake(const TickSchedule::Wake& w, Clock::Ns now) {
+  local_.skipped_ticks += w.skipped;
+  if (!w.stall) return;
+  ++local_.stalls;
+  local_.last_stall_ms = static_cast<double>(w.late.count()) * 1e-6;
+  HapticEvent e;
+  e.kind = EventKind::tick_stall;
+  e.tick = local_.tick;
+  e.time_s = params_.start_time_s + static_cast<double>((now - start_).count()) * 1e-9;
+  e.index = static_cast<int>(std::min<std::uint64_t>(w.skipped, 1u << 30));
+  e.value = local_.last_stall_ms;
+  events_.push(e);
 }
 
 void HapticLoop::update_rate(Clock::Ns now) {
@@ -374,9 +390,10 @@ void HapticLoop::add_tick_feed(TickFeed* feed) {
 
 void HapticLoop::tick(Clock::Ns now) {
   if (swap_pending_.load(std::memory_order_acquire)) adopt_pending_scene(now);
-  // T of the filter = the measured tick period: after a preemption sleep_until() runs the
-  // missed ticks back to back, and their samples are microseconds apart, not 1 ms. Clamped so
-  // a stall (debugger, suspend) cannot blow up the prediction.
+  // T of the filter = the measured tick period: a late tick's is longer, the one after it
+  // shorter (the grid does not move), and after a stall the missed ticks are skipped
+  // (tick_schedule.h), so T spans the stall. Clamped so a long stall (debugger, suspend) cannot
+  // blow up the prediction.
   const double nominal = static_cast<double>(period_.count()) * 1e-9;
   const double dt = local_.tick == 0 ? nominal
                                      : std::clamp(static_cast<double>((now - last_tick_).count()) * 1e-9, 1e-5, 0.05);
@@ -438,6 +455,8 @@ void HapticLoop::tick(Clock::Ns now) {
     detect_crossing(t);
     if (f.in_contact) local_.force_n += suggestion_force(dt);
     if (god_) local_.force_n += roll(dt);
+    local_.force_scale = schedule_.force_scale(now);
+    local_.force_n *= local_.force_scale;
     // The device feels the force in its own workspace.
     device_.write_force(glm::transpose(view_.rotation) * local_.force_n);
     if (tick_feed_count_ > 0) push_tick_sample(f, t, now);

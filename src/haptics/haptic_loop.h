@@ -28,6 +28,7 @@
 #include "haptics/kalman.h"
 #include "haptics/loop_stats.h"
 #include "haptics/tick_feed.h"
+#include "haptics/tick_schedule.h"
 #include "world/bodies.h"
 #include "world/buttons.h"
 #include "fourd/crossing.h"
@@ -61,6 +62,8 @@ struct HapticLoopParams {
   // before a woken thread of equal weight; since 6.12 a thread may ask for a shorter slice
   // (sched_setattr sched_runtime, no privilege needed) and then preempts on wake-up. 0 = leave.
   std::int64_t sched_slice_us = 100;
+  // Falling behind: missed ticks are skipped, a stall ramps the force back in (tick_schedule.h).
+  TickScheduleParams schedule;
 };
 
 // Charges a person adds and removes while the loop runs (run's C / Shift+C), published by the
@@ -118,6 +121,12 @@ struct HapticState {
   double rate_hz = 0.0;              // over the last second
   double jitter_p99_us = 0.0;        // |period - nominal|, p99 over the last second
   SanitizerCounts rejected;
+  // Falling behind (haptics/tick_schedule.h): stalls so far, ticks skipped so far, the last
+  // stall's lateness, and the force's scale this tick (1 except while ramping after a stall).
+  std::uint64_t stalls = 0;
+  std::uint64_t skipped_ticks = 0;
+  double last_stall_ms = 0.0;
+  double force_scale = 1.0;
 };
 
 class HapticLoop {
@@ -180,7 +189,9 @@ class HapticLoop {
   Device& device_;
   Clock& clock_;
   HapticLoopParams params_;
-  Clock::Ns period_, start_{0}, next_{0}, last_tick_{0}, window_start_{0};
+  Clock::Ns period_, start_{0}, last_tick_{0}, window_start_{0};
+  TickSchedule schedule_;
+  void note_wake(const TickSchedule::Wake& w, Clock::Ns now);  // counts and reports a late wake-up
   bool started_ = false;
   DeviceSanitizer sanitizer_;
   Kalman3 kalman_;
