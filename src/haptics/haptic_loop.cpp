@@ -1,5 +1,7 @@
 #include "haptics/haptic_loop.h"
 
+#include "haptics/rtkit.h"
+
 #include <pthread.h>
 #include <sched.h>
 #include <sys/prctl.h>
@@ -62,19 +64,32 @@ int request_slice(std::int64_t slice_us) {
 
 void HapticLoop::start() {
   stop_.store(false);
-  thread_ = std::thread([this] {
+  std::atomic<pid_t> tid{0};
+  thread_ = std::thread([this, &tid] {
+    tid.store(static_cast<pid_t>(syscall(SYS_gettid)));
+    tid.notify_one();
     pthread_setname_np(pthread_self(), "ps-haptic");  // shows in top -H, ps -L, /proc/<pid>/task/*/comm
     if (params_.sched_slice_us > 0) slice_error_.store(request_slice(params_.sched_slice_us));
     if (params_.timer_slack_ns > 0) prctl(PR_SET_TIMERSLACK, static_cast<unsigned long>(params_.timer_slack_ns), 0, 0, 0);
     while (!stop_.load(std::memory_order_relaxed)) scheduled_tick();
   });
-  if (params_.realtime_priority > 0) {
-    sched_param sp{};
-    sp.sched_priority = std::min(params_.realtime_priority, 99);
-    const int err = pthread_setschedparam(thread_.native_handle(), SCHED_FIFO, &sp);
-    priority_ = err == 0 ? "SCHED_FIFO " + std::to_string(sp.sched_priority)
-                         : std::string("normal (SCHED_FIFO refused: ") + std::strerror(err) + ")";
+  tid.wait(0);
+  if (params_.realtime_priority > 0) request_realtime(tid.load());
+}
+
+// SCHED_FIFO when this process may (CAP_SYS_NICE, RLIMIT_RTPRIO), else SCHED_RR through
+// RealtimeKit where the system runs it (haptics/rtkit.h), else normal priority, saying why.
+void HapticLoop::request_realtime(pid_t tid) {
+  sched_param sp{};
+  sp.sched_priority = std::min(params_.realtime_priority, 99);
+  const int err = pthread_setschedparam(thread_.native_handle(), SCHED_FIFO, &sp);
+  if (err == 0) {
+    priority_ = "SCHED_FIFO " + std::to_string(sp.sched_priority);
+    return;
   }
+  const Result<int> rr = rtkit::make_thread_realtime(tid, sp.sched_priority);
+  priority_ = rr ? "SCHED_RR " + std::to_string(rr.value()) + " (RealtimeKit)"
+                 : std::string("normal (SCHED_FIFO refused: ") + std::strerror(err) + "; " + rr.error().message + ")";
 }
 
 std::string HapticLoop::scheduling() const {

@@ -8,6 +8,8 @@
 // (tests, `replay`), deterministically.
 #pragma once
 
+#include <sys/types.h>
+
 #include <array>
 #include <atomic>
 #include <cstdint>
@@ -50,8 +52,10 @@ struct HapticLoopParams {
   // haptic thread never allocates after start, later periods are dropped).
   std::size_t keep_periods = 600'000;
   // > 0: ask for SCHED_FIFO at this priority (1..99) for the haptic thread. Needs CAP_SYS_NICE
-  // (or an RLIMIT_RTPRIO); without it the loop runs at normal priority and says so. Opt-in:
-  // the thread sleeps every tick, but a real-time thread is still a system-wide decision.
+  // (or an RLIMIT_RTPRIO); without it, SCHED_RR through RealtimeKit where the system runs it
+  // (haptics/rtkit.h, at most the daemon's maximum, 20 by default); failing both, the loop runs
+  // at normal priority and priority() says why. Opt-in: the thread sleeps every tick, but a
+  // real-time thread is still a system-wide decision.
   int realtime_priority = 0;
   // Keeping time at normal priority (docs/haptics.md, "Keeping time without privileges"):
   // the haptic thread's timer slack (prctl PR_SET_TIMERSLACK; the kernel's default is 50 us,
@@ -155,7 +159,8 @@ class HapticLoop {
   void replace_scene(std::shared_ptr<const world::HapticScene> scene, std::string_view label = {});
   const world::HapticScene* scene() const;  // the one in use (haptic thread / between ticks)
   void start();        // spawns the thread
-  // After start(): "SCHED_FIFO 80", "normal" or "normal (SCHED_FIFO refused: <why>)".
+  // After start(): "SCHED_FIFO 80", "SCHED_RR 20 (RealtimeKit)", "normal" or
+  // "normal (SCHED_FIFO refused: <why>; RealtimeKit ...: <why>)".
   const std::string& priority() const { return priority_; }
   // After the thread's first tick: the priority and the time-keeping settings in force, e.g.
   // "normal, slice 100 us, timer slack 1000 ns, wake spin 50 us" (a refused slice says why).
@@ -183,6 +188,7 @@ class HapticLoop {
 
  private:
   void scheduled_tick();  // sleep_until(next += period), then tick()
+  void request_realtime(pid_t tid);  // start(): SCHED_FIFO, else RealtimeKit's SCHED_RR
   void tick(Clock::Ns now);
   void update_rate(Clock::Ns now);
 

@@ -56,7 +56,7 @@ bool under(const fs::path& file, const fs::path& dir) {
   return f.rfind(d, 0) == 0;
 }
 
-std::string quoted(const std::string& path) {
+std::string toml_string(const std::string& path) {
   std::string out = "\"";
   for (char c : path) {
     if (c == '"' || c == '\\') out += '\\';
@@ -84,9 +84,9 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   for (std::string path; std::getline(lines, path);) {
     if (path.size() > 512) continue;
     const std::string surf = "\n[[surfaces]]\nmaterial = \"wood\"\n";
-    check("[materials.wood]\nintensity_lut = " + quoted(path) + surf);
-    check("include = [" + quoted(path) + "]\n[materials.wood]" + surf);
-    check("[materials.wood]" + surf + "[[buttons]]\naction = " + quoted("scene:" + path) + "\n");
+    check("[materials.wood]\nintensity_lut = " + toml_string(path) + surf);
+    check("include = [" + toml_string(path) + "]\n[materials.wood]" + surf);
+    check("[materials.wood]" + surf + "[[buttons]]\naction = " + toml_string("scene:" + path) + "\n");
   }
   return 0;
 }
