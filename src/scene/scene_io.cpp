@@ -9,6 +9,7 @@
 #include "core/install_layout.h"
 #include "scene/mesh.h"
 #include "scene/scene_convert.h"
+#include "scene/toml_text.h"
 
 namespace ps {
 namespace {
@@ -277,14 +278,9 @@ Result<Scene> parse_scene(std::string_view text, const std::string& source_name,
                           const std::vector<std::string>& overrides,
                           const std::vector<std::string>& allow_paths) {
   ParseContext ctx{source_name, base_dir, {}, {}, {}, PathPolicy::for_scene(base_dir, allow_paths)};
-  toml::table root;
-  try {
-    root = toml::parse(text, source_name);
-  } catch (const toml::parse_error& e) {
-    const auto line = std::max<long>(1, static_cast<long>(e.source().begin.line));
-    return make_error(source_name + ":" + std::to_string(line) + ": syntax error: " +
-                      std::string(e.description()));
-  }
+  Result<toml::table> parsed = parse_toml(text, source_name);
+  if (!parsed) return parsed.error();
+  toml::table& root = parsed.value();
   // Includes first, so --set reaches included materials too.
   if (Status s = scene_detail::resolve_includes(root, ctx); !s) return s.error();
   for (const std::string& o : overrides) {
