@@ -19,6 +19,12 @@ namespace ps {
 
 namespace {
 
+// A first line that starts like a table's header is quoted whole (up to 48 characters); any
+// other is quoted in 16 at most: the file may be of another kind, and not ours to echo.
+std::string header_excerpt(std::string_view line) {
+  return excerpt(line, line.starts_with("lut ") ? 48 : 16);
+}
+
 constexpr std::string_view kExample = " (e.g. `lut distance_mm intensity` then rows like `0.5 0.55`)";
 
 std::string_view trim(std::string_view s) {
@@ -85,7 +91,7 @@ Result<Lut> parse_lut(std::string_view text, const std::string& source_name) {
         lut.axis = LutAxis::kSpeedMmS;
       } else {
         return make_error(where + "expected the header `lut distance_mm intensity` or `lut speed_mm_s gain`, got '" +
-                          excerpt(line, 16) + "'");
+                          header_excerpt(line) + "'");
       }
       header = true;
       continue;
