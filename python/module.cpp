@@ -49,11 +49,12 @@ PYBIND11_MODULE(_core, m) {
   py::class_<psa::Renderer>(m, "Renderer")
       .def_static("open", [](const std::string& kind, const std::string& source, const std::string& base_dir,
                              const std::string& backend, const std::vector<std::string>& sets,
-                             const std::string& gpu) {
+                             const std::string& gpu, const std::vector<std::string>& allow_paths) {
         psa::OpenDesc desc;
         desc.backend = parse_backend(backend);
         desc.gpu = gpu;
         desc.set = sets;
+        desc.allow_paths = allow_paths;
         if (kind == "file") return psa::Renderer::open_file(source, desc);
         if (kind == "string") return psa::Renderer::open_string(source, "<string>", base_dir, desc);
         return psa::Renderer::open_default(desc);

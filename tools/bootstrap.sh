@@ -14,7 +14,7 @@ readonly kPackages=(
   libassimp-dev assimp-testmodels libembree-dev libimgui-dev libtomlplusplus-dev nlohmann-json3-dev
   libcli11-dev gnuplot-nox xvfb xauth clang libclang-rt-14-dev ccache dpkg-dev file
   libopenal-dev libsndfile1-dev libsdl2-dev pybind11-dev python3-dev python3-numpy python3-pytest
-  python3-matplotlib parallel xdotool
+  python3-matplotlib parallel xdotool libdbus-1-dev dbus rtkit
 )
 
 repo_root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"

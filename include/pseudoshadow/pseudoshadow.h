@@ -56,6 +56,10 @@ struct OpenDesc {
   // "KEY=VALUE" scene overrides applied when the scene is parsed, as the CLI's --set
   // (e.g. "render.size=[64,64]"); the same as calling set() afterwards, but without a rebuild.
   std::vector<std::string> set;
+  // More folders the scene may read files from (the CLI's --allow-path). A scene may read only
+  // files in its own folder tree and the shipped data, so a scene from someone else cannot read
+  // the user's other files; values given in `set` are the caller's and are not confined.
+  std::vector<std::string> allow_paths;
 };
 
 // One render call: where the probe is, how fast it moves, how many frames.

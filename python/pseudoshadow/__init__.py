@@ -73,23 +73,29 @@ class Renderer:
       hardware EGL device, else surfaceless, else OSMesa), "software" (Mesa's software EGL
       device) or a device number; stats["egl_device"] says which was taken.
     set: scene overrides applied when the scene is parsed, as {path: value} or ["path=value", ...].
+    allow_paths: more folders the scene may read files from (the CLI's --allow-path). A scene may
+      read only files in its own folder tree (base_dir's for scene_text) and the shipped data, so
+      that a submitted scene cannot read the server's other files; values in `set` are yours and
+      are not confined.
     """
 
-    def __init__(self, scene=None, backend="auto", set=None, scene_text=None, base_dir="", gpu=None):
+    def __init__(self, scene=None, backend="auto", set=None, scene_text=None, base_dir="", gpu=None,
+                 allow_paths=None):
         if scene is not None and scene_text is not None:
             raise ValueError("give scene (a file) or scene_text, not both")
         gpu_text = "" if gpu is None else str(gpu)
+        allow = [os.fspath(p) for p in (allow_paths or [])]
         sets = []
         if isinstance(set, dict):
             sets = [f"{k}={toml_value(v)}" for k, v in set.items()]
         elif set is not None:
             sets = [str(s) for s in set]
         if scene_text is not None:
-            self._r = _CoreRenderer.open("string", scene_text, str(base_dir), backend, sets, gpu_text)
+            self._r = _CoreRenderer.open("string", scene_text, str(base_dir), backend, sets, gpu_text, allow)
         elif scene is not None:
-            self._r = _CoreRenderer.open("file", os.fspath(scene), "", backend, sets, gpu_text)
+            self._r = _CoreRenderer.open("file", os.fspath(scene), "", backend, sets, gpu_text, allow)
         else:
-            self._r = _CoreRenderer.open("default", "", "", backend, sets, gpu_text)
+            self._r = _CoreRenderer.open("default", "", "", backend, sets, gpu_text, allow)
 
     def close(self):
         """Release the renderer now; with the last one open, its GL context too, after which

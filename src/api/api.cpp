@@ -108,7 +108,9 @@ Renderer Renderer::open(std::unique_ptr<Impl> impl, const OpenDesc& desc) {
 
 Renderer Renderer::open_file(const std::string& path, const OpenDesc& desc) {
   auto impl = std::make_unique<Impl>();
-  impl->parse = [path](const std::vector<std::string>& sets) { return ps::load_scene(path, sets); };
+  impl->parse = [path, allow = desc.allow_paths](const std::vector<std::string>& sets) {
+    return ps::load_scene(path, sets, allow);
+  };
   return open(std::move(impl), desc);
 }
 
@@ -117,15 +119,18 @@ Renderer Renderer::open_string(const std::string& text, const std::string& sourc
   std::error_code ec;
   const std::filesystem::path dir = std::filesystem::absolute(base_dir.empty() ? "." : base_dir, ec);
   auto impl = std::make_unique<Impl>();
-  impl->parse = [text, source_name, dir = dir.lexically_normal().string()](const std::vector<std::string>& sets) {
-    return ps::parse_scene(text, source_name, dir, sets);
+  impl->parse = [text, source_name, dir = dir.lexically_normal().string(),
+                 allow = desc.allow_paths](const std::vector<std::string>& sets) {
+    return ps::parse_scene(text, source_name, dir, sets, allow);
   };
   return open(std::move(impl), desc);
 }
 
 Renderer Renderer::open_default(const OpenDesc& desc) {
   auto impl = std::make_unique<Impl>();
-  impl->parse = [](const std::vector<std::string>& sets) { return ps::load_scene_or_default("", sets); };
+  impl->parse = [allow = desc.allow_paths](const std::vector<std::string>& sets) {
+    return ps::load_scene_or_default("", sets, allow);
+  };
   return open(std::move(impl), desc);
 }
 

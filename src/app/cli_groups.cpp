@@ -4,6 +4,7 @@
 
 #include <cstdio>
 #include <cstdlib>
+#include <filesystem>
 
 #include <unistd.h>
 
@@ -42,6 +43,12 @@ void add_scene_options(CLI::App& app, SceneArgs& scene) {
                 if (!lines) throw UsageError("--overrides: " + lines.error().message);
                 for (std::string& l : lines.value()) scene.add(std::move(l), "--overrides " + path);
               })
+      ->group(kSceneGroup);
+  app.add_option("--allow-path", scene.allow_paths,
+                 "let the scene read files in DIR too (repeatable). A scene may read only files in its "
+                 "own folder tree and the shipped data, so that a scene from someone else cannot read "
+                 "your other files (docs/scene-format.md, \"Files a scene may read\")")
+      ->type_name("DIR")
       ->group(kSceneGroup);
 }
 
@@ -148,8 +155,15 @@ void add_stats_option(CLI::App& app, std::string& path) {
 
 void add_quiet_option(CLI::App& app, bool& quiet, const std::string& help) { app.add_flag("-q,--quiet", quiet, help); }
 
+std::vector<std::string> switch_allow_paths(const SceneArgs& scene) {
+  std::vector<std::string> out = scene.allow_paths;
+  std::error_code ec;
+  if (!scene.path.empty()) out.push_back(std::filesystem::absolute(scene.path, ec).parent_path().string());
+  return out;
+}
+
 Result<Scene> load_scene_or_default(const SceneArgs& scene) {
-  auto loaded = ps::load_scene_or_default(scene.path, scene.lines());
+  auto loaded = ps::load_scene_or_default(scene.path, scene.lines(), scene.allow_paths);
   if (loaded) return loaded;
   // The loader names a bad override "--set KEY: ..."; if the last value for KEY came from
   // another option (--velocity, --size, ...), name that option instead.

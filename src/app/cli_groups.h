@@ -29,6 +29,7 @@ struct SceneArgs {
   };
   std::string path;  // empty: the built-in default scene
   std::vector<Override> overrides;
+  std::vector<std::string> allow_paths;  // --allow-path: more folders the scene may read (scene/path_policy.h)
 
   void add(std::string text, std::string option) { overrides.push_back({std::move(text), std::move(option)}); }
   std::vector<std::string> lines() const;  // the KEY=VALUE texts, in order
@@ -43,7 +44,7 @@ inline constexpr const char* kOutputRule =
     "For every output file: its directory must exist, or only its last directory may be missing "
     "(it is created); all outputs are written, or none.";
 
-// --scene FILE, --set KEY=VALUE, --overrides FILE.
+// --scene FILE, --set KEY=VALUE, --overrides FILE, --allow-path DIR.
 void add_scene_options(CLI::App& app, SceneArgs& scene);
 // --probe X,Y,Z and --velocity VX,VY,VZ (probe.position / probe.velocity overrides).
 void add_probe_options(CLI::App& app, SceneArgs& scene);
@@ -103,6 +104,10 @@ void add_quiet_option(CLI::App& app, bool& quiet, const std::string& help = "no 
 // "--set KEY: ..."); scene_exit_code() maps it to 2, any other (the file's fault) to 1.
 Result<Scene> load_scene_or_default(const SceneArgs& scene);
 int scene_exit_code(const Error& e);
+
+// The folders a scene reached by a button may read: --allow-path and the first scene's own
+// folder tree (a world's scenes may refer to each other and to files beside the first).
+std::vector<std::string> switch_allow_paths(const SceneArgs& scene);
 
 // The name used in messages and saved files for a scene path ("" = the built-in default).
 std::string scene_display_name(const std::string& path);

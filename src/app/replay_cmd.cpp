@@ -119,7 +119,7 @@ Result<ReplayGl> open_renderer(const ReplayArgs& a, const Scene& scene, int fram
 // apply to it), a renderer for it in the replay's context and its haptic scene.
 Result<SceneSwitch> switch_scene(const ReplayArgs& a, ReplayGl& gl_state, int frames, PointerLogDevice* pointer,
                                  const std::string& path) {
-  auto scene = load_scene(path);
+  auto scene = load_scene(path, {}, cli::switch_allow_paths(a.scene));
   if (!scene) return make_error("button action: " + scene.error().message);
   auto renderer = make_renderer(a, scene.value(), frames);
   if (!renderer) return renderer.error();

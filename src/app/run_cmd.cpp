@@ -188,7 +188,7 @@ Status open_session(const RunArgs& a, Scene scene, Session& s) {
   // its whole bake), so the first frame comes at once; until then the per-pixel sum is drawn.
   RendererOptions options;
   options.bake_slice_ms = 40.0;
-  auto tune = TuneSession::open({a.scene.path, a.scene.lines(), options}, std::move(scene));
+  auto tune = TuneSession::open({a.scene.path, a.scene.lines(), options, a.scene.allow_paths}, std::move(scene));
   if (!tune) return tune.error();
   s.tune = std::move(tune.value());
   s.axes = pointer_plane(s.tune->renderer());  // fixed at start so the mapping stays put
@@ -463,7 +463,7 @@ void switch_scene(const RunArgs& a, Session& s) {
   auto stay = [&path](const Error& e) {
     std::fprintf(stderr, "button: cannot switch to %s, staying: %s\n", path.c_str(), e.message.c_str());
   };
-  auto scene = load_scene(path);
+  auto scene = load_scene(path, {}, cli::switch_allow_paths(a.scene));
   if (!scene) return stay(scene.error());
   auto haptic = world::HapticScene::build(scene.value());
   if (!haptic) return stay(haptic.error());
@@ -472,7 +472,7 @@ void switch_scene(const RunArgs& a, Session& s) {
   scene->render.height = current.render.height;
   RendererOptions options;
   options.bake_slice_ms = 40.0;
-  auto tune = TuneSession::open({path, {}, options}, std::move(scene.value()));
+  auto tune = TuneSession::open({path, {}, options, cli::switch_allow_paths(a.scene)}, std::move(scene.value()));
   if (!tune) return stay(tune.error());
   if (back) s.came_from.pop_back();
   else s.came_from.push_back(s.tune->scene_path());

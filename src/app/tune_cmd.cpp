@@ -123,7 +123,7 @@ int run_merge(const cli::Command& cmd, const TuneArgs& a) {
 int run_shard(const cli::Command& cmd, const TuneArgs& a) {
   OutputSet outputs;
   if (Status s = outputs.add(a.out_dir + "/shard.json"); !s) return cmd.fail(s.error(), 1);
-  SweepJob job{a.scene.path, a.scene.lines(), a.axes, {}, a.shard};
+  SweepJob job{a.scene.path, a.scene.lines(), a.axes, {}, a.shard, a.scene.allow_paths};
   const bool tty = isatty(STDERR_FILENO);
   auto cells = render_sweep(job, [&](std::size_t done, std::size_t total, const std::string& label) {
     if (!a.quiet) print_progress(done, total, label, tty);
@@ -145,7 +145,7 @@ int run_sweep(const cli::Command& cmd, const TuneArgs& a) {
   if (Status s = outputs.add(a.out); !s) return fail(s.error(), 1);
   if (!a.csv.empty())
     if (Status s = outputs.add(a.csv); !s) return fail(s.error(), 1);
-  SweepJob job{a.scene.path, a.scene.lines(), a.axes, {}};
+  SweepJob job{a.scene.path, a.scene.lines(), a.axes, {}, {}, a.scene.allow_paths};
   const bool tty = isatty(STDERR_FILENO);
   auto cells = render_sweep(job, [&](std::size_t done, std::size_t total, const std::string& label) {
     if (!a.quiet) print_progress(done, total, label, tty);
@@ -155,7 +155,7 @@ int run_sweep(const cli::Command& cmd, const TuneArgs& a) {
 }
 
 int run_console_mode(const cli::Command& cmd, const TuneArgs& a, Scene scene) {
-  auto session = TuneSession::open({a.scene.path, a.scene.lines(), {}}, std::move(scene));
+  auto session = TuneSession::open({a.scene.path, a.scene.lines(), {}, a.scene.allow_paths}, std::move(scene));
   if (!session) return cmd.fail(session.error());
   const ConsoleResult r = run_console(*session.value(), std::cin, std::cout, std::cerr);
   return r.errors == 0 ? 0 : 1;

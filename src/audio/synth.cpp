@@ -78,6 +78,8 @@ std::vector<float> event_sound(const HapticEvent& e, const SynthParams& p) {
       if (e.value >= 0.0)  // in front: two quick bright blips
         return render({{0.0, 0.02, 1320.0, 1320.0, 0.3, 0.01}, {0.025, 0.02, 1760.0, 1760.0, 0.3, 0.01}}, r);
       return render({{0.0, 0.08, 330.0, 330.0, 0.3, 0.04}}, r);  // behind: one low, longer hum
+    case EventKind::tick_stall:  // silent: the machine's trouble, not the world's
+      return {};
   }
   return {};
 }

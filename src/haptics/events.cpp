@@ -16,6 +16,7 @@ std::string_view event_name(EventKind kind) {
     case EventKind::scene_switched: return "scene_switched";
     case EventKind::flag_toggled: return "flag_toggled";
     case EventKind::sheet_crossing: return "sheet_crossing";
+    case EventKind::tick_stall: return "tick_stall";
   }
   return "unknown";
 }

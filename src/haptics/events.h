@@ -31,6 +31,7 @@ enum class EventKind : std::uint8_t {
   scene_switched,  // label: the new scene file
   flag_toggled,    // label: the flag's name; value: its new state (0 or 1)
   sheet_crossing,  // value: +1 passing in front of another sheet, -1 behind it (4D worlds)
+  tick_stall,      // the loop woke late (haptics/tick_schedule.h); value: ms late; index: ticks skipped
 };
 
 // "contact_start", ... (the JSON "event" field); "unknown" outside the enum.

@@ -1,5 +1,7 @@
 #include "haptics/haptic_loop.h"
 
+#include "haptics/rtkit.h"
+
 #include <pthread.h>
 #include <sched.h>
 #include <sys/prctl.h>
@@ -19,9 +21,10 @@ HapticLoop::HapticLoop(Device& device, Clock& clock, const HapticLoopParams& par
                        const world::HapticScene* scene)
     : device_(device), clock_(clock), params_(params),
       period_(static_cast<std::int64_t>(std::llround(1e9 / params.rate_hz))),
+      schedule_(period_, params.schedule),
       sanitizer_(params.sanitizer), kalman_(params.kalman), periods_us_(params.keep_periods),
-      // A HUD window is 1 s of ticks; after a stall sleep_until() runs the missed ticks back to
-      // back inside one window, so room for 2 s (beyond that the HUD's p99 skips samples).
+      // A HUD window is 1 s of ticks (missed ticks are skipped, never run back to back); room
+      // for 2 s all the same (beyond that the HUD's p99 skips samples).
       window_jitter_us_(2 * static_cast<std::size_t>(std::ceil(params.rate_hz)) + 16) {
   if (scene != nullptr) {
     god_.emplace(*scene);
@@ -61,19 +64,32 @@ int request_slice(std::int64_t slice_us) {
 
 void HapticLoop::start() {
   stop_.store(false);
-  thread_ = std::thread([this] {
+  std::atomic<pid_t> tid{0};
+  thread_ = std::thread([this, &tid] {
+    tid.store(static_cast<pid_t>(syscall(SYS_gettid)));
+    tid.notify_one();
     pthread_setname_np(pthread_self(), "ps-haptic");  // shows in top -H, ps -L, /proc/<pid>/task/*/comm
     if (params_.sched_slice_us > 0) slice_error_.store(request_slice(params_.sched_slice_us));
     if (params_.timer_slack_ns > 0) prctl(PR_SET_TIMERSLACK, static_cast<unsigned long>(params_.timer_slack_ns), 0, 0, 0);
     while (!stop_.load(std::memory_order_relaxed)) scheduled_tick();
   });
-  if (params_.realtime_priority > 0) {
-    sched_param sp{};
-    sp.sched_priority = std::min(params_.realtime_priority, 99);
-    const int err = pthread_setschedparam(thread_.native_handle(), SCHED_FIFO, &sp);
-    priority_ = err == 0 ? "SCHED_FIFO " + std::to_string(sp.sched_priority)
-                         : std::string("normal (SCHED_FIFO refused: ") + std::strerror(err) + ")";
+  tid.wait(0);
+  if (params_.realtime_priority > 0) request_realtime(tid.load());
+}
+
+// SCHED_FIFO when this process may (CAP_SYS_NICE, RLIMIT_RTPRIO), else SCHED_RR through
+// RealtimeKit where the system runs it (haptics/rtkit.h), else normal priority, saying why.
+void HapticLoop::request_realtime(pid_t tid) {
+  sched_param sp{};
+  sp.sched_priority = std::min(params_.realtime_priority, 99);
+  const int err = pthread_setschedparam(thread_.native_handle(), SCHED_FIFO, &sp);
+  if (err == 0) {
+    priority_ = "SCHED_FIFO " + std::to_string(sp.sched_priority);
+    return;
   }
+  const Result<int> rr = rtkit::make_thread_realtime(tid, sp.sched_priority);
+  priority_ = rr ? "SCHED_RR " + std::to_string(rr.value()) + " (RealtimeKit)"
+                 : std::string("normal (SCHED_FIFO refused: ") + std::strerror(err) + "; " + rr.error().message + ")";
 }
 
 std::string HapticLoop::scheduling() const {
@@ -100,13 +116,28 @@ void HapticLoop::run_ticks(std::uint64_t n) {
 
 void HapticLoop::scheduled_tick() {
   if (!started_) {
-    start_ = next_ = last_tick_ = window_start_ = clock_.now();
+    start_ = last_tick_ = window_start_ = clock_.now();
+    schedule_.start(start_);
     started_ = true;
   } else {
-    next_ += period_;
-    clock_.sleep_until(next_);
+    clock_.sleep_until(schedule_.deadline());
+    note_wake(schedule_.woke(clock_.now()), clock_.now());
   }
   tick(clock_.now());
+}
+
+void HapticLoop::note_wake(const TickSchedule::Wake& w, Clock::Ns now) {
+  local_.skipped_ticks += w.skipped;
+  if (!w.stall) return;
+  ++local_.stalls;
+  local_.last_stall_ms = static_cast<double>(w.late.count()) * 1e-6;
+  HapticEvent e;
+  e.kind = EventKind::tick_stall;
+  e.tick = local_.tick;
+  e.time_s = params_.start_time_s + static_cast<double>((now - start_).count()) * 1e-9;
+  e.index = static_cast<int>(std::min<std::uint64_t>(w.skipped, 1u << 30));
+  e.value = local_.last_stall_ms;
+  events_.push(e);
 }
 
 void HapticLoop::update_rate(Clock::Ns now) {
@@ -374,9 +405,10 @@ void HapticLoop::add_tick_feed(TickFeed* feed) {
 
 void HapticLoop::tick(Clock::Ns now) {
   if (swap_pending_.load(std::memory_order_acquire)) adopt_pending_scene(now);
-  // T of the filter = the measured tick period: after a preemption sleep_until() runs the
-  // missed ticks back to back, and their samples are microseconds apart, not 1 ms. Clamped so
-  // a stall (debugger, suspend) cannot blow up the prediction.
+  // T of the filter = the measured tick period: a late tick's is longer, the one after it
+  // shorter (the grid does not move), and after a stall the missed ticks are skipped
+  // (tick_schedule.h), so T spans the stall. Clamped so a long stall (debugger, suspend) cannot
+  // blow up the prediction.
   const double nominal = static_cast<double>(period_.count()) * 1e-9;
   const double dt = local_.tick == 0 ? nominal
                                      : std::clamp(static_cast<double>((now - last_tick_).count()) * 1e-9, 1e-5, 0.05);
@@ -438,6 +470,8 @@ void HapticLoop::tick(Clock::Ns now) {
     detect_crossing(t);
     if (f.in_contact) local_.force_n += suggestion_force(dt);
     if (god_) local_.force_n += roll(dt);
+    local_.force_scale = schedule_.force_scale(now);
+    local_.force_n *= local_.force_scale;
     // The device feels the force in its own workspace.
     device_.write_force(glm::transpose(view_.rotation) * local_.force_n);
     if (tick_feed_count_ > 0) push_tick_sample(f, t, now);

@@ -8,6 +8,8 @@
 // (tests, `replay`), deterministically.
 #pragma once
 
+#include <sys/types.h>
+
 #include <array>
 #include <atomic>
 #include <cstdint>
@@ -28,6 +30,7 @@
 #include "haptics/kalman.h"
 #include "haptics/loop_stats.h"
 #include "haptics/tick_feed.h"
+#include "haptics/tick_schedule.h"
 #include "world/bodies.h"
 #include "world/buttons.h"
 #include "fourd/crossing.h"
@@ -49,8 +52,10 @@ struct HapticLoopParams {
   // haptic thread never allocates after start, later periods are dropped).
   std::size_t keep_periods = 600'000;
   // > 0: ask for SCHED_FIFO at this priority (1..99) for the haptic thread. Needs CAP_SYS_NICE
-  // (or an RLIMIT_RTPRIO); without it the loop runs at normal priority and says so. Opt-in:
-  // the thread sleeps every tick, but a real-time thread is still a system-wide decision.
+  // (or an RLIMIT_RTPRIO); without it, SCHED_RR through RealtimeKit where the system runs it
+  // (haptics/rtkit.h, at most the daemon's maximum, 20 by default); failing both, the loop runs
+  // at normal priority and priority() says why. Opt-in: the thread sleeps every tick, but a
+  // real-time thread is still a system-wide decision.
   int realtime_priority = 0;
   // Keeping time at normal priority (docs/haptics.md, "Keeping time without privileges"):
   // the haptic thread's timer slack (prctl PR_SET_TIMERSLACK; the kernel's default is 50 us,
@@ -61,6 +66,8 @@ struct HapticLoopParams {
   // before a woken thread of equal weight; since 6.12 a thread may ask for a shorter slice
   // (sched_setattr sched_runtime, no privilege needed) and then preempts on wake-up. 0 = leave.
   std::int64_t sched_slice_us = 100;
+  // Falling behind: missed ticks are skipped, a stall ramps the force back in (tick_schedule.h).
+  TickScheduleParams schedule;
 };
 
 // Charges a person adds and removes while the loop runs (run's C / Shift+C), published by the
@@ -118,6 +125,12 @@ struct HapticState {
   double rate_hz = 0.0;              // over the last second
   double jitter_p99_us = 0.0;        // |period - nominal|, p99 over the last second
   SanitizerCounts rejected;
+  // Falling behind (haptics/tick_schedule.h): stalls so far, ticks skipped so far, the last
+  // stall's lateness, and the force's scale this tick (1 except while ramping after a stall).
+  std::uint64_t stalls = 0;
+  std::uint64_t skipped_ticks = 0;
+  double last_stall_ms = 0.0;
+  double force_scale = 1.0;
 };
 
 class HapticLoop {
@@ -146,7 +159,8 @@ class HapticLoop {
   void replace_scene(std::shared_ptr<const world::HapticScene> scene, std::string_view label = {});
   const world::HapticScene* scene() const;  // the one in use (haptic thread / between ticks)
   void start();        // spawns the thread
-  // After start(): "SCHED_FIFO 80", "normal" or "normal (SCHED_FIFO refused: <why>)".
+  // After start(): "SCHED_FIFO 80", "SCHED_RR 20 (RealtimeKit)", "normal" or
+  // "normal (SCHED_FIFO refused: <why>; RealtimeKit ...: <why>)".
   const std::string& priority() const { return priority_; }
   // After the thread's first tick: the priority and the time-keeping settings in force, e.g.
   // "normal, slice 100 us, timer slack 1000 ns, wake spin 50 us" (a refused slice says why).
@@ -174,13 +188,16 @@ class HapticLoop {
 
  private:
   void scheduled_tick();  // sleep_until(next += period), then tick()
+  void request_realtime(pid_t tid);  // start(): SCHED_FIFO, else RealtimeKit's SCHED_RR
   void tick(Clock::Ns now);
   void update_rate(Clock::Ns now);
 
   Device& device_;
   Clock& clock_;
   HapticLoopParams params_;
-  Clock::Ns period_, start_{0}, next_{0}, last_tick_{0}, window_start_{0};
+  Clock::Ns period_, start_{0}, last_tick_{0}, window_start_{0};
+  TickSchedule schedule_;
+  void note_wake(const TickSchedule::Wake& w, Clock::Ns now);  // counts and reports a late wake-up
   bool started_ = false;
   DeviceSanitizer sanitizer_;
   Kalman3 kalman_;

@@ -7,6 +7,7 @@
 #include <toml++/toml.h>
 
 #include "maze/maze.h"
+#include "scene/toml_text.h"
 
 namespace ps::maze {
 
@@ -108,13 +109,9 @@ std::string check_geometry(const MazeDesc& d) {
 }  // namespace
 
 Result<MazeDesc> parse_maze_desc(const std::string& text, const std::string& source_name) {
-  toml::table root;
-  try {
-    root = toml::parse(text, source_name);
-  } catch (const toml::parse_error& e) {
-    return make_error(source_name + ":" + std::to_string(e.source().begin.line) + ": syntax error: " +
-                      std::string(e.description()));
-  }
+  Result<toml::table> parsed = parse_toml(text, source_name);
+  if (!parsed) return parsed.error();
+  toml::table& root = parsed.value();
   MazeDesc d;
   d.path = source_name;
   Reader r{source_name, {}};

@@ -1,5 +1,7 @@
 #include "scene/lut.h"
 
+#include "scene/path_policy.h"
+
 #include <algorithm>
 #include <cassert>
 #include <cerrno>
@@ -16,6 +18,12 @@
 namespace ps {
 
 namespace {
+
+// A first line that starts like a table's header is quoted whole (up to 48 characters); any
+// other is quoted in 16 at most: the file may be of another kind, and not ours to echo.
+std::string header_excerpt(std::string_view line) {
+  return excerpt(line, line.starts_with("lut ") ? 48 : 16);
+}
 
 constexpr std::string_view kExample = " (e.g. `lut distance_mm intensity` then rows like `0.5 0.55`)";
 
@@ -83,14 +91,14 @@ Result<Lut> parse_lut(std::string_view text, const std::string& source_name) {
         lut.axis = LutAxis::kSpeedMmS;
       } else {
         return make_error(where + "expected the header `lut distance_mm intensity` or `lut speed_mm_s gain`, got '" +
-                          std::string(line) + "'");
+                          header_excerpt(line) + "'");
       }
       header = true;
       continue;
     }
     LutPoint p;
     if (f.size() != 2 || !to_double(f[0], p.x) || !to_double(f[1], p.y))
-      return make_error(where + "expected a row of two finite numbers `x y`, got '" + std::string(line) + "'" +
+      return make_error(where + "expected a row of two finite numbers `x y`, got '" + excerpt(line) + "'" +
                         std::string(kExample));
     if (p.x < 0.0) return make_error(where + std::string(lut_axis_name(lut.axis)) + " " + fmt(p.x) + " must be >= 0");
     if (p.y < 0.0 || p.y > 1.0)

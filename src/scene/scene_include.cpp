@@ -11,6 +11,7 @@
 
 #include "scene/scene_convert.h"
 #include "scene/scene_io.h"
+#include "scene/toml_text.h"
 
 namespace ps::scene_detail {
 namespace {
@@ -84,6 +85,9 @@ Result<FileInfo> locate(const Walk& walk, const FileInfo& from, const toml::node
     shown = from.name.starts_with('<') ? resolved : fs::path(from.name).parent_path() / shown;
   }
   resolved = resolved.lexically_normal();
+  // Confined before its existence is checked (scene/path_policy.h).
+  if (Status s = walk.ctx.paths.admit(resolved, "'include' names"); !s && !name.empty())
+    return make_error(at(from, entry) + ": " + s.error().message);
   std::error_code ec;
   if (name.empty() || !fs::is_regular_file(resolved, ec)) {
     return make_error(at(from, entry) + ": 'include' file not found: " + resolved.string());
@@ -115,14 +119,9 @@ Result<toml::table*> load(Walk& walk, const FileInfo& from, const toml::node& en
     return make_error(at(from, entry) + ": cannot read included file " + file.name + ": " +
                       text.error().message);
   }
-  auto doc = std::make_unique<toml::table>();
-  try {
-    *doc = toml::parse(*text, file.name);
-  } catch (const toml::parse_error& e) {
-    const auto line = std::max<long>(1, static_cast<long>(e.source().begin.line));
-    return make_error(file.name + ":" + std::to_string(line) + ": syntax error: " +
-                      std::string(e.description()));
-  }
+  Result<toml::table> parsed = parse_toml(*text, file.name);
+  if (!parsed) return parsed.error();
+  auto doc = std::make_unique<toml::table>(std::move(parsed.value()));
   for (const auto& [key, node] : *doc) {
     if (key.str() == "include" || key.str() == "materials") continue;
     return make_error(at(file, node) + ": an included file may hold only 'include' and "

@@ -9,6 +9,7 @@
 #include "core/install_layout.h"
 #include "scene/mesh.h"
 #include "scene/scene_convert.h"
+#include "scene/toml_text.h"
 
 namespace ps {
 namespace {
@@ -83,7 +84,7 @@ Status read_materials(const ParseContext& ctx, const toml::table& root, Scene& s
   for (const MaterialEntry& e : entries) {
     Material material;
     if (e.included) {
-      ParseContext origin{e.included->source_name, e.included->base_dir, ctx.overridden, {}, {}};
+      ParseContext origin{e.included->source_name, e.included->base_dir, ctx.overridden, {}, {}, ctx.paths};
       if (Status s = scene_detail::read_material(origin, *e.table, e.name, material); !s) return s;
       if (std::find(used.begin(), used.end(), e.name) == used.end()) continue;
     } else if (Status s = scene_detail::read_material(ctx, *e.table, e.name, material); !s) {
@@ -274,16 +275,12 @@ Status read_sections(const ParseContext& ctx, const toml::table& root, Scene& sc
 
 Result<Scene> parse_scene(std::string_view text, const std::string& source_name,
                           const std::string& base_dir,
-                          const std::vector<std::string>& overrides) {
-  ParseContext ctx{source_name, base_dir, {}, {}, {}};
-  toml::table root;
-  try {
-    root = toml::parse(text, source_name);
-  } catch (const toml::parse_error& e) {
-    const auto line = std::max<long>(1, static_cast<long>(e.source().begin.line));
-    return make_error(source_name + ":" + std::to_string(line) + ": syntax error: " +
-                      std::string(e.description()));
-  }
+                          const std::vector<std::string>& overrides,
+                          const std::vector<std::string>& allow_paths) {
+  ParseContext ctx{source_name, base_dir, {}, {}, {}, PathPolicy::for_scene(base_dir, allow_paths)};
+  Result<toml::table> parsed = parse_toml(text, source_name);
+  if (!parsed) return parsed.error();
+  toml::table& root = parsed.value();
   // Includes first, so --set reaches included materials too.
   if (Status s = scene_detail::resolve_includes(root, ctx); !s) return s.error();
   for (const std::string& o : overrides) {
@@ -295,7 +292,8 @@ Result<Scene> parse_scene(std::string_view text, const std::string& source_name,
   return scene;
 }
 
-Result<Scene> load_scene(const std::string& path, const std::vector<std::string>& overrides) {
+Result<Scene> load_scene(const std::string& path, const std::vector<std::string>& overrides,
+                         const std::vector<std::string>& allow_paths) {
   // An ifstream opens a directory and reads nothing, which would be reported as an empty scene.
   if (std::error_code dir_ec; std::filesystem::is_directory(path, dir_ec))
     return make_error(path + ": is a directory, not a scene file (give a .toml file, e.g. scenes/default.toml)");
@@ -315,12 +313,14 @@ Result<Scene> load_scene(const std::string& path, const std::vector<std::string>
   text << in.rdbuf();
   const std::string base_dir =
       std::filesystem::absolute(std::filesystem::path(path)).parent_path().string();
-  return parse_scene(text.str(), path, base_dir, overrides);
+  return parse_scene(text.str(), path, base_dir, overrides, allow_paths);
 }
 
-Result<Scene> load_scene_or_default(const std::string& path, const std::vector<std::string>& overrides) {
-  if (path.empty()) return parse_scene(default_scene_text(), kDefaultSceneName, default_scene_base_dir(), overrides);
-  return load_scene(path, overrides);
+Result<Scene> load_scene_or_default(const std::string& path, const std::vector<std::string>& overrides,
+                                    const std::vector<std::string>& allow_paths) {
+  if (path.empty())
+    return parse_scene(default_scene_text(), kDefaultSceneName, default_scene_base_dir(), overrides, allow_paths);
+  return load_scene(path, overrides, allow_paths);
 }
 
 // Found from the binary's own location, never compiled in (core/install_layout.h).

@@ -24,17 +24,22 @@ inline constexpr std::uintmax_t kMaxSceneFileBytes = 1u << 20;
 // Errors: syntax -> "file:line: ..."; unknown key -> "file:line: unknown key 'x' in [t]; did you
 // mean 'y'?"; unknown --set key -> "--set a.b.c: unknown key; close matches: ...";
 // bad values (NaN, negative radius, ...) -> "file:line: ...".
+// The files the scene references must lie in `base_dir`'s tree, the shipped data or one of
+// `allow_paths` (scene/path_policy.h); values from `overrides` are the user's and are not confined.
 Result<Scene> parse_scene(std::string_view text, const std::string& source_name,
                           const std::string& base_dir,
-                          const std::vector<std::string>& overrides = {});
+                          const std::vector<std::string>& overrides = {},
+                          const std::vector<std::string>& allow_paths = {});
 
 // Reads `path` and parses it (missing file -> "path: cannot open scene file: <reason>").
-Result<Scene> load_scene(const std::string& path, const std::vector<std::string>& overrides = {});
+Result<Scene> load_scene(const std::string& path, const std::vector<std::string>& overrides = {},
+                         const std::vector<std::string>& allow_paths = {});
 
 // `path`, or the built-in default scene (scenes/default.toml, embedded) when `path` is empty;
 // the one place that rule is written. Messages about the default scene name kDefaultSceneName.
 inline constexpr const char* kDefaultSceneName = "<built-in default scene>";
-Result<Scene> load_scene_or_default(const std::string& path, const std::vector<std::string>& overrides = {});
+Result<Scene> load_scene_or_default(const std::string& path, const std::vector<std::string>& overrides = {},
+                                    const std::vector<std::string>& allow_paths = {});
 
 // "KEY=VALUE" with a relative file value (a key that names a file: *_lut, mesh_file,
 // albedo_texture, heightmap, a button's action "scene:FILE") made absolute against `base_dir`;

@@ -8,6 +8,7 @@
 
 #include "scene/scene_convert.h"
 #include "scene/scene_io.h"
+#include "scene/toml_text.h"
 
 namespace ps::scene_detail {
 namespace {
@@ -32,11 +33,8 @@ std::vector<std::string> split_dots(const std::string& key) {
 // VALUE is a TOML value ("0.4", "[0,0,5]", "\"x\"", "true"); anything TOML rejects (a bare
 // word such as exact_max) is taken as a string.
 toml::table parse_value(const std::string& value) {
-  try {
-    toml::table doc = toml::parse("v = " + value);
-    if (doc.size() == 1 && doc.contains("v")) return doc;
-  } catch (const toml::parse_error&) {
-  }
+  if (Result<toml::table> doc = parse_toml("v = " + value, "--set"); doc && doc->size() == 1 && doc->contains("v"))
+    return std::move(doc.value());
   toml::table doc;
   doc.insert("v", value);
   return doc;

@@ -43,6 +43,10 @@ TableReader::~TableReader() {
   }
 }
 
+bool TableReader::from_user(std::string_view key) const {
+  return ctx_.overridden.contains(path_ + "." + std::string(key));
+}
+
 std::string TableReader::where(std::string_view key) const {
   const std::string full = path_ + "." + std::string(key);
   if (auto it = ctx_.overridden.find(full); it != ctx_.overridden.end()) return it->second;
@@ -205,6 +209,10 @@ void TableReader::file(std::string_view key, std::string& out) {
   fs::path path(name);
   if (path.is_relative()) path = fs::path(ctx_.base_dir) / path;
   path = path.lexically_normal();
+  // Confined before its existence is checked: a scene must not learn which files exist elsewhere.
+  if (!from_user(key)) {
+    if (Status s = ctx_.paths.admit(path, "names"); !s) return fail(key, s.error().message);
+  }
   std::error_code ec;
   if (!fs::is_regular_file(path, ec)) {
     return fail(key, "file not found: " + path.string());

@@ -17,6 +17,7 @@
 #include <toml++/toml.h>
 
 #include "core/result.h"
+#include "scene/path_policy.h"
 #include "scene/scene_keys.h"
 
 namespace ps::scene_detail {
@@ -38,6 +39,7 @@ struct ParseContext {
   // edits these tables in place, so an override reaches an included material too.
   std::vector<std::unique_ptr<toml::table>> included_docs;
   std::map<std::string, IncludedMaterial, std::less<>> included;
+  PathPolicy paths;  // which files the scene may reference (scene/path_policy.h)
 };
 
 // Allowed interval for a number; open ends exclude the bound.
@@ -95,6 +97,7 @@ class TableReader {
   bool ok() const { return ok_; }
   Status status() const;
   std::string where(std::string_view key) const;  // "file:line" or "--set KEY"
+  bool from_user(std::string_view key) const;     // set by --set / --overrides, not the file
   const std::string& path() const { return path_; }
   const std::string& label() const { return label_; }
 

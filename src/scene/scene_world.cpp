@@ -138,6 +138,7 @@ Status read_button(const ParseContext& ctx, const toml::table& table, int index,
     if (file.is_relative()) file = fs::path(ctx.base_dir) / file;
     file = file.lexically_normal();
     std::error_code ec;
+    if (Status s = ctx.paths.admit(file, "names"); !s && !r.from_user("action")) r.fail("action", s.error().message);
     if (!fs::is_regular_file(file, ec)) r.fail("action", "scene file not found: " + file.string());
     out.action_target = file.string();
   } else {

@@ -51,6 +51,7 @@ struct SweepJob {
   std::vector<SweepAxis> axes;
   RendererOptions renderer;
   ShardSpec shard;                       // render only this shard's cells (default: all)
+  std::vector<std::string> allow_paths;  // --allow-path (scene/path_policy.h)
 };
 
 struct SweepCell {

@@ -13,10 +13,11 @@ namespace {
 struct CellInput {
   std::string scene_path;
   std::vector<std::string> overrides;
+  std::vector<std::string> allow_paths;
 };
 
 CellInput cell_input(const SweepJob& job, const std::vector<std::size_t>& cell) {
-  CellInput in{job.scene_path, job.overrides};
+  CellInput in{job.scene_path, job.overrides, job.allow_paths};
   for (std::size_t i = 0; i < job.axes.size(); ++i) {
     const std::string& v = job.axes[i].values[cell[i]];
     if (job.axes[i].key == kSceneAxisKey) in.scene_path = v;
@@ -25,7 +26,7 @@ CellInput cell_input(const SweepJob& job, const std::vector<std::size_t>& cell) 
   return in;
 }
 
-Result<Scene> load_cell(const CellInput& in) { return load_scene_or_default(in.scene_path, in.overrides); }
+Result<Scene> load_cell(const CellInput& in) { return load_scene_or_default(in.scene_path, in.overrides, in.allow_paths); }
 
 // The scene loader names a bad override "--set KEY: ..."; in a sweep it came from --sweep.
 Error as_sweep_error(const Error& e) {
@@ -43,7 +44,7 @@ Status validate_sweep(const SweepJob& job) {
   const bool scene_axis = std::any_of(job.axes.begin(), job.axes.end(),
                                       [](const SweepAxis& a) { return a.key == kSceneAxisKey; });
   if (!scene_axis)
-    if (auto base = load_cell({job.scene_path, job.overrides}); !base) return base.error();
+    if (auto base = load_cell({job.scene_path, job.overrides, job.allow_paths}); !base) return base.error();
   for (std::size_t i = 0; i < count.value(); ++i) {
     auto scene = load_cell(cell_input(job, sweep_cell(job.axes, i)));
     if (!scene) return as_sweep_error(scene.error());

@@ -10,7 +10,7 @@
 namespace ps {
 
 Result<std::unique_ptr<TuneSession>> TuneSession::open(TuneSource source) {
-  auto scene = load_scene_or_default(source.scene_path, source.overrides);
+  auto scene = load_scene_or_default(source.scene_path, source.overrides, source.allow_paths);
   if (!scene) return scene.error();
   return open(std::move(source), std::move(scene.value()));
 }
@@ -26,7 +26,7 @@ Result<std::unique_ptr<TuneSession>> TuneSession::open(TuneSource source, Scene 
 Result<Scene> TuneSession::load(const std::map<std::string, std::string>& edits) const {
   std::vector<std::string> sets = source_.overrides;
   for (const auto& [key, value] : edits) sets.push_back(key + "=" + value);
-  auto scene = load_scene_or_default(source_.scene_path, sets);
+  auto scene = load_scene_or_default(source_.scene_path, sets, source_.allow_paths);
   if (!scene) return scene;
   // Edited curves: the tables themselves (no file until the overrides are saved).
   for (const auto& [key, lut] : curve_edits_) {

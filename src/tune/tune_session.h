@@ -24,6 +24,7 @@ struct TuneSource {
   std::string scene_path;               // empty: the built-in default scene
   std::vector<std::string> overrides;   // "KEY=VALUE", in command-line order (--set, --overrides lines)
   RendererOptions renderer;
+  std::vector<std::string> allow_paths;  // --allow-path (scene/path_policy.h)
 };
 
 class TuneSession {

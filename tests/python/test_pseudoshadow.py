@@ -144,6 +144,26 @@ def test_scene_errors_carry_file_and_line_like_the_cli(tmp_path):
         ps.Renderer(backend="vulkan")
 
 
+def test_a_scene_reads_only_its_own_folder_unless_allowed(tmp_path):
+    """A submitted scene cannot make a server read other files (docs/scene-format.md, "Files a
+    scene may read"): refused with the --allow-path that admits it, as the CLI; allow_paths
+    admits it; the same file given in `set` is the caller's own."""
+    (tmp_path / "private").mkdir()
+    (tmp_path / "shared").mkdir()
+    lut = tmp_path / "private" / "curve.lut"
+    lut.write_text((SOURCE / "textures" / "intensity_thesis.lut").read_text())
+    text = f'[materials.wood]\nintensity_lut = "{lut}"\n\n[[surfaces]]\nmaterial = "wood"\n'
+    with pytest.raises(ps.Error, match=r"^<string>:2: 'intensity_lut' names .*outside the scene's folder"
+                                       r".*--allow-path " + str(tmp_path / "private")):
+        ps.Renderer(scene_text=text, base_dir=tmp_path / "shared", backend=BACKEND, set=SIZE)
+    allowed = ps.Renderer(scene_text=text, base_dir=tmp_path / "shared", backend=BACKEND, set=SIZE,
+                          allow_paths=[tmp_path / "private"])
+    plain = '[materials.wood]\n\n[[surfaces]]\nmaterial = "wood"\n'
+    by_set = ps.Renderer(scene_text=plain, base_dir=tmp_path / "shared", backend=BACKEND,
+                         set={**SIZE, "materials.wood.intensity_lut": str(lut)})
+    assert np.array_equal(allowed.render().color, by_set.render().color)
+
+
 def test_scene_text_renders_as_its_file():
     path = SCENES / "table4_1_a.toml"
     from_file = ps.Renderer(scene=path, backend=BACKEND, set=SIZE).render(aovs=["texture"])

@@ -101,8 +101,10 @@ std::string scene_with(const std::string& lines) {
 
 TEST(LutTest, MaterialKeysLoadTablesAndCheckTheirAxis) {
   const std::string speed = write_temp("speed.lut", "lut speed_mm_s gain\n0 0.2\n100 1\n");
-  auto s = test::parse(scene_with("intensity_lut = \"../textures/intensity_thesis.lut\"\n"
-                                  "[materials.stone]\nspeed_gain_lut = \"" + speed + "\"\n"));
+  // The temporary folder is outside the scene's: allowed as a user would (scene/path_policy.h).
+  auto s = parse_scene(scene_with("intensity_lut = \"../textures/intensity_thesis.lut\"\n"
+                                  "[materials.stone]\nspeed_gain_lut = \"" + speed + "\"\n"),
+                       "s.toml", test::scenes_dir(), {}, {std::filesystem::path(speed).parent_path().string()});
   ASSERT_TRUE(s.ok()) << s.error().message;
   const Material& wood = s->materials[0].name == "wood" ? s->materials[0] : s->materials[1];
   const Material& stone = s->materials[0].name == "stone" ? s->materials[0] : s->materials[1];
@@ -127,9 +129,14 @@ TEST(LutTest, MaterialKeysLoadTablesAndCheckTheirAxis) {
 
   // The wrong kind of table, a broken table, a missing file: the table's file:line, or the key's.
   const std::string bad = write_temp("bad.lut", "lut distance_mm intensity\n0 1\n0.5 2\n");
-  EXPECT_EQ(test::error_of(scene_with("intensity_lut = \"" + speed + "\"\n")),
+  const std::vector<std::string> allow = {std::filesystem::path(speed).parent_path().string()};
+  auto error_of = [&](const std::string& text) {
+    auto r = parse_scene(text, "s.toml", test::scenes_dir(), {}, allow);
+    return r ? std::string("<ok>") : r.error().message;
+  };
+  EXPECT_EQ(error_of(scene_with("intensity_lut = \"" + speed + "\"\n")),
             speed + ":1: this key needs a `lut distance_mm intensity` table, the file is a `lut speed_mm_s gain` table");
-  EXPECT_EQ(test::error_of(scene_with("intensity_lut = \"" + bad + "\"\n")),
+  EXPECT_EQ(error_of(scene_with("intensity_lut = \"" + bad + "\"\n")),
             bad + ":3: intensity 2 must be in [0, 1]");
   const std::string e = test::error_of(scene_with("speed_gain_lut = \"nope.lut\"\n"));
   EXPECT_EQ(e.rfind("s.toml:3: 'speed_gain_lut' file not found: ", 0), 0u) << e;
