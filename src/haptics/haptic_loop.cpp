@@ -127,13 +127,15 @@ void HapticLoop::update_rate(Clock::Ns now) {
   }
 }
 
-void HapticLoop::replace_scene(std::shared_ptr<const world::HapticScene> scene, std::string_view label) {
+void HapticLoop::replace_scene(std::shared_ptr<const world::HapticScene> scene, std::string_view label,
+                               std::optional<glm::dvec3> place_hand_mm) {
   std::shared_ptr<const world::HapticScene> drop;
   {
     std::lock_guard<std::mutex> lock(swap_mutex_);
     drop = std::move(retired_);  // released here, on the caller's thread
     pending_ = std::move(scene);
     pending_label_.assign(label);
+    pending_place_ = place_hand_mm;
     swap_pending_.store(true, std::memory_order_release);
   }
 }
@@ -148,10 +150,21 @@ void HapticLoop::adopt_pending_scene(Clock::Ns now) {
   swap_pending_.store(false, std::memory_order_relaxed);
   if (!pending_) return;
   const bool had_proxy = god_ && god_->initialized();
-  const glm::dvec3 proxy = local_.proxy_mm;
+  glm::dvec3 proxy = local_.proxy_mm;
   god_.emplace(*pending_);  // GodObject holds no heap memory: nothing is freed on this thread
   crossing_.reset();
-  if (had_proxy) god_->reset(proxy);
+  if (pending_place_) {
+    // The hand starts over again where it is put: at rest (a filter pulled from the old height
+    // would carry the hand through the surface), and the proxy with it.
+    proxy = *pending_place_;
+    kalman_ = Kalman3(params_.kalman);
+    have_fed_ = false;
+    god_->reset(proxy);
+    local_.proxy_mm = proxy;
+    pending_place_.reset();
+  } else if (had_proxy) {
+    god_->reset(proxy);
+  }
   // The new scene's bodies start afresh (a rare event: the vectors' old storage is freed here).
   bodies_ = world::BodySet(pending_->bodies(), pending_->fields().gravity_mm_s2());
   buttons_ = world::ButtonSet(pending_->button_shapes(), pending_->probe_radius_mm());

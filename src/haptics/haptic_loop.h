@@ -143,7 +143,11 @@ class HapticLoop {
   // event labelled `label`. The loop shares ownership; the scene it drops is released by the
   // next replace_scene() call, not on the haptic thread. Replaces a scene given at construction
   // too (that one stays the caller's).
-  void replace_scene(std::shared_ptr<const world::HapticScene> scene, std::string_view label = {});
+  // `place_hand_mm`: the hand's new position (the device's, e.g. over the surface under the
+  // pointer): the filter restarts there at rest and the proxy is put there instead of kept, so
+  // nothing the person did not do buries it (docs/window.md, "When the hand is inside geometry").
+  void replace_scene(std::shared_ptr<const world::HapticScene> scene, std::string_view label = {},
+                     std::optional<glm::dvec3> place_hand_mm = std::nullopt);
   const world::HapticScene* scene() const;  // the one in use (haptic thread / between ticks)
   void start();        // spawns the thread
   // After start(): "SCHED_FIFO 80", "normal" or "normal (SCHED_FIFO refused: <why>)".
@@ -211,6 +215,7 @@ class HapticLoop {
   std::mutex swap_mutex_;  // guards pending_, retired_
   std::shared_ptr<const world::HapticScene> pending_, retired_;
   std::string pending_label_;
+  std::optional<glm::dvec3> pending_place_;  // replace_scene's place_hand_mm, under swap_mutex_
   std::atomic<bool> swap_pending_{false};
   HapticState local_;        // haptic thread's working copy
   SampleRecorder* recorder_ = nullptr;
