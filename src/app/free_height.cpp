@@ -46,4 +46,14 @@ double FreeHeight::lift_mm(const glm::dvec3& hit_mm, const glm::dvec3& n_ws, dou
   return 0.0;
 }
 
+double buried_mm(const world::HapticScene& scene, const glm::dvec3& centre_mm) {
+  const double r = scene.probe_radius_mm();
+  // Far enough to find the way out of anything a probe could be inside of in a shipped scene.
+  constexpr double kSearchMm = 1000.0;
+  const world::Contact c = scene.closest(centre_mm, kSearchMm);
+  if (!c.hit) return 0.0;
+  const bool inside = glm::dot(centre_mm - c.point, c.normal) < 0.0;
+  return std::max(0.0, inside ? r + c.distance_mm : r - c.distance_mm);
+}
+
 }  // namespace ps

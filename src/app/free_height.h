@@ -51,4 +51,8 @@ class FreeHeight final : public SurfaceFloor {
   double top_mm_ = 200.0;
 };
 
+// How deep a probe sphere (the scene's probe radius) centred at `centre_mm` sits inside the
+// haptic geometry, mm: R - distance when its centre is outside, R + distance inside; 0 when free.
+double buried_mm(const world::HapticScene& scene, const glm::dvec3& centre_mm);
+
 }  // namespace ps

@@ -1,7 +1,7 @@
 // `run --readouts-log FILE`: one JSON line per window frame with what the readouts say (one
 // state machine, app/readout_state.h) and the positions behind it, for experimenters and for the
 // window tests (tests/window). Fields (docs/window.md, "run --readouts-log"): frame, t_s, scene,
-// state, distance_mm (null out of reach, 0 touching), pressed_mm, penetration_mm, contact,
+// state, distance_mm (null out of reach, 0 touching), pressed_mm, penetration_mm, buried_mm, contact,
 // force_n, view_offset_mm, hand_mm, proxy_mm, button ({index, depth_mm, travel_mm} or null),
 // flags (names on, or null when the scene has none), keys (key presses handled this frame).
 #pragma once
@@ -26,6 +26,10 @@ struct ReadoutsFrame {
   ProbeReadout probe;
   std::optional<double> distance_mm;  // the shadow's smallest distance (none: no shadow)
   double penetration_mm = 0.0;      // the frame's largest penetration (render side)
+  // How deep the proxy sphere sits inside the haptic geometry, mm (0: free). The render side's
+  // penetration is measured along the reference normal per pixel, so a probe beside a steep
+  // surface reads as inside it; this one is the proxy's own.
+  double buried_mm = 0.0;
   double force_n = 0.0;             // |force on the hand|
   glm::dvec3 view_offset_mm{0.0}, hand_mm{0.0}, proxy_mm{0.0};
   int button = -1;                  // pressed button (-1: none), its depth and travel

@@ -192,7 +192,16 @@ void poll_device(Session& s, double now_s, bool poll_glfw, bool view_at_rest = f
   s.floor.set_pose(st.view_rotation, st.view_offset_mm);
   s.floor.set_top_mm(std::max(glm::dot(view.camera.position - view.plane.origin, view.plane.n), 60.0));
   view.floor = &s.floor;
+  const glm::dvec3 before = s.glfw_device->read(0.0).position_mm;
   s.glfw_device->poll(now_s, view);
+  // The surface under a hovering pointer jumped (it crossed a silhouette: off a box's top onto
+  // the floor): the hand is put there rather than pulled, so neither the filter's overshoot nor
+  // the proxy's path runs through what lies between. Half the probe's radius: smooth slopes
+  // move the hand far less between two frames.
+  const glm::dvec3 after = s.glfw_device->read(0.0).position_mm;
+  if (s.loop && s.glfw_device->height_mm() >= 0.0 &&
+      std::abs(glm::dot(after - before, view.plane.n)) > 0.5 * view.probe_radius_mm)
+    s.loop->place_hand(after);
 }
 
 // The geometry felt changed (a scene switch, a reload, a panel edit, a 4D turn): the hand goes
@@ -465,6 +474,7 @@ Status log_readouts(Session& s, const HapticState& st, const ShadowMeasure& shad
   f.probe = r.probe;
   f.distance_mm = shadow.min_distance_mm;
   f.penetration_mm = r.penetration_mm;
+  f.buried_mm = s.floor.scene() ? buried_mm(*s.floor.scene(), st.proxy_mm) : 0.0;
   f.force_n = r.force_n;
   f.view_offset_mm = st.view_offset_mm;
   f.hand_mm = st.position_mm;

@@ -140,6 +140,22 @@ void HapticLoop::replace_scene(std::shared_ptr<const world::HapticScene> scene, 
   }
 }
 
+void HapticLoop::place_hand(const glm::dvec3& hand_mm) {
+  std::lock_guard<std::mutex> lock(swap_mutex_);
+  pending_place_ = hand_mm;
+  swap_pending_.store(true, std::memory_order_release);
+}
+
+// The hand starts over again where it is put: at rest (a filter pulled from the old position
+// would carry the hand through what lies between), and the proxy with it.
+void HapticLoop::place(const glm::dvec3& hand_mm) {
+  kalman_ = Kalman3(params_.kalman);
+  have_fed_ = false;
+  sanitizer_.restart();  // else it would clamp the placed sample into a 5 m/s ramp the filter takes for speed
+  if (god_) god_->reset(hand_mm);
+  local_.proxy_mm = hand_mm;
+}
+
 const world::HapticScene* HapticLoop::scene() const { return god_ ? &god_->scene() : nullptr; }
 
 void HapticLoop::adopt_pending_scene(Clock::Ns now) {
@@ -148,19 +164,18 @@ void HapticLoop::adopt_pending_scene(Clock::Ns now) {
   std::unique_lock<std::mutex> lock(swap_mutex_, std::try_to_lock);
   if (!lock.owns_lock()) return;
   swap_pending_.store(false, std::memory_order_relaxed);
-  if (!pending_) return;
+  if (!pending_) {  // a placement alone (place_hand)
+    if (pending_place_) place(*pending_place_);
+    pending_place_.reset();
+    return;
+  }
   const bool had_proxy = god_ && god_->initialized();
   glm::dvec3 proxy = local_.proxy_mm;
   god_.emplace(*pending_);  // GodObject holds no heap memory: nothing is freed on this thread
   crossing_.reset();
   if (pending_place_) {
-    // The hand starts over again where it is put: at rest (a filter pulled from the old height
-    // would carry the hand through the surface), and the proxy with it.
     proxy = *pending_place_;
-    kalman_ = Kalman3(params_.kalman);
-    have_fed_ = false;
-    god_->reset(proxy);
-    local_.proxy_mm = proxy;
+    place(proxy);
     pending_place_.reset();
   } else if (had_proxy) {
     god_->reset(proxy);

@@ -148,6 +148,10 @@ class HapticLoop {
   // nothing the person did not do buries it (docs/window.md, "When the hand is inside geometry").
   void replace_scene(std::shared_ptr<const world::HapticScene> scene, std::string_view label = {},
                      std::optional<glm::dvec3> place_hand_mm = std::nullopt);
+  // Puts the hand (and the proxy) at `hand_mm` at the next tick, as replace_scene's placement
+  // does, in the scene in use: for a hovering pointer whose surface jumped (a silhouette edge),
+  // so the proxy is not dragged through what lies between (any thread).
+  void place_hand(const glm::dvec3& hand_mm);
   const world::HapticScene* scene() const;  // the one in use (haptic thread / between ticks)
   void start();        // spawns the thread
   // After start(): "SCHED_FIFO 80", "normal" or "normal (SCHED_FIFO refused: <why>)".
@@ -191,6 +195,7 @@ class HapticLoop {
   DeviceSample last_fed_;  // the last sample given to the filter (repeats are predicted over)
   bool have_fed_ = false;
   void adopt_pending_scene(Clock::Ns now);  // haptic thread, at a tick's start
+  void place(const glm::dvec3& hand_mm);     // haptic thread: filter at rest there, proxy there
   glm::dvec3 world_forces(double t, double dt);  // fields + bodies on the probe (haptic scene)
   // [navigation]: moves the view by the hand's push past its box's walls; then (with
   // navigation or a rolling surface) turns the hand's workspace position, velocity and device

@@ -62,7 +62,7 @@ TEST(ReadoutsLogTest, OneJsonLineWithEveryField) {
   const std::string line = readouts_json_line(f);
   EXPECT_EQ(line,
             "{\"frame\": 7, \"t_s\": 1.25, \"scene\": \"panel.toml\", \"state\": \"touching\", \"distance_mm\": 0, "
-            "\"pressed_mm\": 1.5, \"penetration_mm\": 0, \"contact\": true, \"force_n\": 0.75, "
+            "\"pressed_mm\": 1.5, \"penetration_mm\": 0, \"buried_mm\": 0, \"contact\": true, \"force_n\": 0.75, "
             "\"view_offset_mm\": [0, -12.5, 0], \"hand_mm\": [1, 2, 3], \"proxy_mm\": [1, 2, 4.5], "
             "\"button\": {\"index\": 2, \"depth_mm\": 2.9, \"travel_mm\": 3}, \"flags\": [\"light\"], \"keys\": 3}");
   ReadoutsFrame out;  // out of reach: distance null, no button, a scene without flags
@@ -100,6 +100,16 @@ TEST(FreeHeightTest, LiftIsTheSurfaceUnderThePointer) {
   floor.set_pose(glm::dmat3(1.0), {60.0, 0.0, 0.0});
   EXPECT_NEAR(floor.lift_mm({0.0, 0.0, 0.0}, n, 8.0), 0.0, 0.02);
   EXPECT_NEAR(floor.lift_mm({-60.0, 0.0, 0.0}, n, 8.0), 20.0, 0.02);
+}
+
+// The proxy's own depth in the geometry: free above the sphere, touching at R, 3 mm in, and deep
+// inside (its centre 10 mm under the top: R + 10). Tolerance 1e-9: closed-form sphere distances.
+TEST(FreeHeightTest, BuriedIsTheProbesDepthInTheGeometry) {
+  const auto scene = felt(kSphereOnPlane);
+  EXPECT_EQ(buried_mm(*scene, {0.0, 0.0, 40.0}), 0.0);
+  EXPECT_NEAR(buried_mm(*scene, {0.0, 0.0, 28.0}), 0.0, 1e-9);
+  EXPECT_NEAR(buried_mm(*scene, {0.0, 0.0, 25.0}), 3.0, 1e-9);
+  EXPECT_NEAR(buried_mm(*scene, {0.0, 0.0, 10.0}), 18.0, 1e-9);
 }
 
 // Nothing under the pointer (a plane far below the reach): the mapping's plane, lift 0. A
