@@ -40,8 +40,9 @@ namespace {
 // The key list comes from app/run_keys.h (the help overlay shows the same table).
 constexpr const char* kRunNotes = R"(The probe follows the pointer: its shadow's centre sits under it, on any camera and zoom.
 Scroll raises (up) or lowers (down) it 0.5 mm per notch; PageUp/Up and PageDown/Down step it
-0.5 mm per press and repeat while held; it starts 1 mm above the surface and goes down to 4 mm
-into it. M captures the mouse (raw relative motion, 0.1 mm per count, where supported; M again
+0.5 mm per press and repeat while held; it starts 1 mm above the surface under the pointer
+(whatever is there: a sphere, a mesh, a button's face), goes down to 4 mm into it and back to
+1 mm after a scene switch, a 4D turn, a panel edit or a reload. M captures the mouse (raw relative motion, 0.1 mm per count, where supported; M again
 puts the probe back under the pointer).
 The probe itself is hidden by default (P shows it): the pseudo-shadow is the display; when
 shown it is drawn where the haptic proxy is, after the push-out. D draws the hand's own position
