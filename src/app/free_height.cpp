@@ -22,6 +22,7 @@ glm::dvec3 rest_on_buttons(const world::HapticScene& scene, glm::dvec3 p, const 
 }  // namespace
 
 double FreeHeight::lift_mm(const glm::dvec3& hit_mm, const glm::dvec3& n_ws, double r) const {
+  last_normal_ = n_ws;
   if (!scene_) return 0.0;
   const glm::dvec3 n = rotation_ * n_ws;
   const glm::dvec3 hit = rotation_ * hit_mm + offset_mm_;
@@ -36,6 +37,7 @@ double FreeHeight::lift_mm(const glm::dvec3& hit_mm, const glm::dvec3& n_ws, dou
     const world::Contact c = scene_->closest(p, params_.query_mm);
     const double gap = (c.hit ? c.distance_mm : params_.query_mm) - r;
     if (gap < params_.touch_epsilon_mm) {
+      if (c.hit) last_normal_ = glm::transpose(rotation_) * c.normal;
       p = rest_on_buttons(*scene_, p, n, r);
       return glm::dot(p - hit, n) - r;
     }
@@ -47,13 +49,12 @@ double FreeHeight::lift_mm(const glm::dvec3& hit_mm, const glm::dvec3& n_ws, dou
 }
 
 double buried_mm(const world::HapticScene& scene, const glm::dvec3& centre_mm) {
+  // The overlap only: which side of a surface is inside is not known for an open mesh (Suzanne's
+  // eyes) or a surface embedded in 4D (its sheets cross), so a centre deeper than R inside a
+  // closed solid reads as free here (the drawn probe's penetration shows it).
   const double r = scene.probe_radius_mm();
-  // Far enough to find the way out of anything a probe could be inside of in a shipped scene.
-  constexpr double kSearchMm = 1000.0;
-  const world::Contact c = scene.closest(centre_mm, kSearchMm);
-  if (!c.hit) return 0.0;
-  const bool inside = glm::dot(centre_mm - c.point, c.normal) < 0.0;
-  return std::max(0.0, inside ? r + c.distance_mm : r - c.distance_mm);
+  const world::Contact c = scene.closest(centre_mm, r);
+  return c.hit ? std::max(0.0, r - c.distance_mm) : 0.0;
 }
 
 }  // namespace ps

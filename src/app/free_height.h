@@ -42,6 +42,9 @@ class FreeHeight final : public SurfaceFloor {
   // Where the lowering starts, mm above the plane (the camera's height over it: above what it sees).
   void set_top_mm(double top_mm) { top_mm_ = top_mm; }
   double lift_mm(const glm::dvec3& hit_mm, const glm::dvec3& n, double probe_radius_mm) const override;
+  // The outward normal of the surface the last lift_mm() found, in the workspace (the plane's
+  // normal where nothing was under the pointer): the hand placed over it coasts along it.
+  const glm::dvec3& last_normal() const { return last_normal_; }
 
  private:
   FreeHeightParams params_;
@@ -49,10 +52,11 @@ class FreeHeight final : public SurfaceFloor {
   glm::dmat3 rotation_{1.0};
   glm::dvec3 offset_mm_{0.0};
   double top_mm_ = 200.0;
+  mutable glm::dvec3 last_normal_{0.0, 0.0, 1.0};  // main thread only, like every call here
 };
 
-// How deep a probe sphere (the scene's probe radius) centred at `centre_mm` sits inside the
-// haptic geometry, mm: R - distance when its centre is outside, R + distance inside; 0 when free.
+// How far a probe sphere (the scene's probe radius) centred at `centre_mm` overlaps the haptic
+// geometry, mm: R - the distance to the nearest surface; 0 when free.
 double buried_mm(const world::HapticScene& scene, const glm::dvec3& centre_mm);
 
 }  // namespace ps

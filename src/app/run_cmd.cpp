@@ -195,14 +195,13 @@ void poll_device(Session& s, double now_s, bool poll_glfw, bool view_at_rest = f
   view.floor = &s.floor;
   const glm::dvec3 before = s.glfw_device->read(0.0).position_mm;
   s.glfw_device->poll(now_s, view);
-  // The surface under a hovering pointer jumped (it crossed a silhouette: off a box's top onto
-  // the floor): the hand is put there rather than pulled, so neither the filter's overshoot nor
-  // the proxy's path runs through what lies between. Half the probe's radius: smooth slopes
-  // move the hand far less between two frames.
+  // The surface under a hovering pointer rose or fell (a slope, a silhouette: off a box's top
+  // onto the floor): the hand is put at its new height rather than pulled there, so neither the
+  // filter's coasting between two readings (4-30 a second) nor the proxy's path cuts through
+  // the surface. 0.25 mm: half a height step, so the keys' own steps are not placements.
   const glm::dvec3 after = s.glfw_device->read(0.0).position_mm;
-  if (s.loop && s.glfw_device->height_mm() >= 0.0 &&
-      std::abs(glm::dot(after - before, view.plane.n)) > 0.5 * view.probe_radius_mm)
-    s.loop->place_hand(after);
+  if (s.loop && s.glfw_device->height_mm() >= 0.0 && std::abs(glm::dot(after - before, view.plane.n)) > 0.25)
+    s.loop->place_hand(after, view.plane.n, s.floor.last_normal());
 }
 
 // The geometry felt changed (a scene switch, a reload, a panel edit, a 4D turn): the hand goes
