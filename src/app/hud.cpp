@@ -32,14 +32,6 @@ std::string line(const char* name, const char* fmt, ...) {
   return out;
 }
 
-std::string distance_text(const HudReadouts& r) {
-  if (!r.distance_mm) return "out of reach";
-  if (*r.distance_mm <= 0.0) return "touching";
-  char buf[32];
-  std::snprintf(buf, sizeof buf, "%.1f mm", *r.distance_mm);
-  return buf;
-}
-
 std::string help_text() {
   std::string text = run_keys_text("", 2);
   text += "\n";
@@ -77,16 +69,19 @@ std::vector<std::string> hud_lines(const HudReadouts& r) {
   if (scene.size() > kMaxSceneChars) scene = scene.substr(0, kMaxSceneChars - 3) + "...";
   std::vector<std::string> out = {
       line("scene", "%s", scene.c_str()),
-      line("distance", "%s", distance_text(r).c_str()),
+      line("distance", "%s", probe_distance_text(r.probe).c_str()),
       line("penetration", "%.2f mm", r.penetration_mm),
-      line("contact", "%s", r.contact ? "yes" : "no"),
+      line("contact", "%s", r.probe.state == ProbeState::kTouching ? "yes" : "no"),
       line("force", "%.2f N", r.force_n),
       line("speed", "%.0f mm/s", r.speed_mm_s),
       line("frame", "%.1f ms", r.frame_ms),
       line("haptic", "%.0f Hz", r.haptic_hz),
       line("jitter p99", "%.0f us", r.jitter_p99_us),
   };
-  if (r.gpu_frame_ms) out.insert(out.begin() + 7, line("gpu frame", "%.1f ms", *r.gpu_frame_ms));
+  // Touching: how deep the hand pressed past the proxy (what the push-out hides from the eye).
+  if (r.probe.state == ProbeState::kTouching) out.insert(out.begin() + 4, line("pressed", "%.1f mm", r.probe.pressed_mm));
+  const std::size_t frame_line = r.probe.state == ProbeState::kTouching ? 8 : 7;
+  if (r.gpu_frame_ms) out.insert(out.begin() + static_cast<std::ptrdiff_t>(frame_line), line("gpu frame", "%.1f ms", *r.gpu_frame_ms));
   // The texture is the per-pixel sum until its tile is baked: say the picture will not change.
   if (r.bake_progress < 1.0) out.push_back(line("texture", "baking %.0f %%", 100.0 * r.bake_progress));
   if (r.button >= 0)
@@ -101,7 +96,7 @@ std::vector<std::string> hud_lines(const HudReadouts& r) {
 std::string title_summary(const HudReadouts& r) {
   const std::string head = "pseudoshadow \u2014 " + r.scene + " \u2014 ";
   if (!r.error.empty()) return head + "RELOAD FAILED (last good state kept): " + r.error;
-  return head + distance_text(r);
+  return head + probe_distance_text(r.probe);
 }
 
 WindowUi::WindowUi(GLFWwindow* window) {

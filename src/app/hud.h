@@ -20,6 +20,7 @@
 
 #include <glm/glm.hpp>
 
+#include "app/readout_state.h"
 #include "app/tune_panel.h"
 #include "app/ui_layout.h"
 
@@ -35,10 +36,9 @@ struct HudReadouts {
   // none: no results yet (docs/benchmarks.md, "GPU timers").
   std::optional<double> gpu_frame_ms;
   double haptic_hz = 0.0, jitter_p99_us = 0.0;
-  std::optional<double> distance_mm;     // probe to surface over the shadow; none: out of reach
+  ProbeReadout probe;                    // out of reach / hovering d mm / touching, pressed p mm
   double speed_mm_s = 0.0;
   double penetration_mm = 0.0;
-  bool contact = false;
   double force_n = 0.0;
   double bake_progress = 1.0;            // Gabor tile bake, 0..1 (< 1: the per-pixel sum is drawn)
   std::string error;                     // a failed reload's message; empty: none

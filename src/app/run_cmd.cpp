@@ -17,7 +17,9 @@
 #include "app/cli.h"
 #include "app/cli_groups.h"
 #include "app/commands.h"
+#include "app/free_height.h"
 #include "app/hud.h"
+#include "app/readouts_log.h"
 #include "app/run_events.h"
 #include "app/run_keys.h"
 #include "app/session.h"
@@ -38,8 +40,9 @@ namespace {
 // The key list comes from app/run_keys.h (the help overlay shows the same table).
 constexpr const char* kRunNotes = R"(The probe follows the pointer: its shadow's centre sits under it, on any camera and zoom.
 Scroll raises (up) or lowers (down) it 0.5 mm per notch; PageUp/Up and PageDown/Down step it
-0.5 mm per press and repeat while held; it starts 1 mm above the surface and goes down to 4 mm
-into it. M captures the mouse (raw relative motion, 0.1 mm per count, where supported; M again
+0.5 mm per press and repeat while held; it starts 1 mm above the surface under the pointer
+(whatever is there: a sphere, a mesh, a button's face), goes down to 4 mm into it and back to
+1 mm after a scene switch, a 4D turn, a panel edit or a reload. M captures the mouse (raw relative motion, 0.1 mm per count, where supported; M again
 puts the probe back under the pointer).
 The probe itself is hidden by default (P shows it): the pseudo-shadow is the display; when
 shown it is drawn where the haptic proxy is, after the push-out. D draws the hand's own position
@@ -61,7 +64,7 @@ constexpr const char* kDescription =
 
 struct RunArgs {
   cli::SceneArgs scene;
-  std::string device = "mouse", record, stats_path, ui_report;
+  std::string device = "mouse", record, stats_path, ui_report, readouts_log;
   long long frames = 0, realtime = 0;
   cli::LiveLoopArgs live;  // --render-threads, --spare-cpu
   double quit_after_s = 0.0;
@@ -98,6 +101,11 @@ void declare(cli::Command& cmd, RunArgs& a) {
   app.add_option("--ui-report", a.ui_report,
                  "at exit, write JSON with every frame's overlay, help and panel rectangles and the "
                  "pseudo-shadow's bounding box, in window pixels")
+      ->type_name("FILE")
+      ->group(cli::kOutputGroup);
+  app.add_option("--readouts-log", a.readouts_log,
+                 "write one JSON line per frame: what the readouts say (state, distance, pressed depth, "
+                 "force), hand, proxy, view offset, button, flags, key presses (docs/window.md)")
       ->type_name("FILE")
       ->group(cli::kOutputGroup);
   app.add_option_function<std::string>(
@@ -137,7 +145,8 @@ struct Session {  // everything the window loop touches, grouped by owner thread
   GlfwInputDevice* glfw_device = nullptr;  // == device.get() for mouse/gamepad
   PointerLogDevice* pointer_device = nullptr;  // == device.get() for pointer:FILE
   SteadyClock clock;
-  std::unique_ptr<world::HapticScene> haptic_scene;  // before the loop: it must outlive the haptic thread
+  std::shared_ptr<const world::HapticScene> haptic_scene;  // before the loop: it must outlive the haptic thread
+  FreeHeight floor;                   // the surface under the pointer: the mouse's height counts from it
   std::unique_ptr<vibration::LiveVibration> vibration;  // before the loop too: the loop feeds it ticks
   std::unique_ptr<HapticLoop> loop;
   std::unique_ptr<SampleRecorder> recorder;
@@ -150,6 +159,8 @@ struct Session {  // everything the window loop touches, grouped by owner thread
   std::vector<std::string> came_from; // scenes a button switched away from (Backspace goes back)
   bool going_back = false;            // the pending switch is a Backspace: do not remember it
   std::map<std::string, std::string> haptic_edits;  // the panel's edits the haptic scene was built with
+  ReadoutsLog readouts_log;           // --readouts-log
+  int frame_keys = 0;                 // key presses handled this frame (the readouts log's `keys`)
 };
 
 Status open_device(const RunArgs& a, Session& s) {
@@ -169,12 +180,40 @@ Status open_device(const RunArgs& a, Session& s) {
 
 // The pointer devices map through the camera this frame draws with (it orbits and zooms) and
 // the window's current size (the image is stretched to it).
-void poll_device(Session& s, double now_s, bool poll_glfw) {
+// `view_at_rest`: the workspace is the world (a new haptic scene's view starts there).
+void poll_device(Session& s, double now_s, bool poll_glfw, bool view_at_rest = false) {
   int w = 0, h = 0;
   glfwGetWindowSize(s.ctx->window(), &w, &h);
-  const PointerView view = pointer_view(s.tune->renderer(), s.axes, {static_cast<double>(w), static_cast<double>(h)});
-  if (s.glfw_device && poll_glfw) s.glfw_device->poll(now_s, view);
+  PointerView view = pointer_view(s.tune->renderer(), s.axes, {static_cast<double>(w), static_cast<double>(h)});
   if (s.pointer_device) s.pointer_device->set_view(view);
+  if (!s.glfw_device || !poll_glfw) return;
+  // The mouse hovers over the surface under the pointer (app/free_height.h), lowered from the
+  // camera's height over the plane; the workspace moves with a [navigation] box or a rolling view.
+  const HapticState st = s.loop && !view_at_rest ? s.loop->state().read() : HapticState{};
+  s.floor.set_pose(st.view_rotation, st.view_offset_mm);
+  s.floor.set_top_mm(std::max(glm::dot(view.camera.position - view.plane.origin, view.plane.n), 60.0));
+  view.floor = &s.floor;
+  const glm::dvec3 before = s.glfw_device->read(0.0).position_mm;
+  s.glfw_device->poll(now_s, view);
+  // The surface under a hovering pointer rose or fell (a slope, a silhouette: off a box's top
+  // onto the floor): the hand is put at its new height rather than pulled there, so neither the
+  // filter's coasting between two readings (4-30 a second) nor the proxy's path cuts through
+  // the surface. 0.25 mm: half a height step, so the keys' own steps are not placements.
+  const glm::dvec3 after = s.glfw_device->read(0.0).position_mm;
+  if (s.loop && s.glfw_device->height_mm() >= 0.0 && std::abs(glm::dot(after - before, view.plane.n)) > 0.25)
+    s.loop->place_hand(after, view.plane.n, s.floor.last_normal());
+}
+
+// The geometry felt changed (a scene switch, a reload, a panel edit, a 4D turn): the hand goes
+// back to the hover height over the surface now under the pointer, and the proxy with it, so
+// nothing the person did not do leaves the proxy buried (docs/window.md). Recorded devices
+// (logs) keep their own positions.
+std::optional<glm::dvec3> place_hand(Session& s, std::shared_ptr<const world::HapticScene> felt, bool new_view) {
+  s.floor.set_scene(std::move(felt));
+  if (!s.glfw_device) return std::nullopt;
+  s.glfw_device->reset_height();
+  poll_device(s, s.loop->state().read().time_s, true, new_view);
+  return s.glfw_device->read(0.0).position_mm;
 }
 
 // The scene is loaded once, before the window: its render.size is the window's size.
@@ -197,7 +236,8 @@ Status open_session(const RunArgs& a, Scene scene, Session& s) {
   params.realtime_priority = static_cast<int>(a.realtime);
   auto haptic_scene = world::HapticScene::build(s.tune->renderer().scene());
   if (!haptic_scene) return haptic_scene.error();
-  s.haptic_scene = std::make_unique<world::HapticScene>(std::move(haptic_scene.value()));
+  s.haptic_scene = std::make_shared<const world::HapticScene>(std::move(haptic_scene.value()));
+  s.floor.set_scene(s.haptic_scene);  // the first sample already hovers over what is under the pointer
   s.loop = std::make_unique<HapticLoop>(*s.device, s.clock, params, s.haptic_scene.get());
   s.vibration = cli::open_live_vibration(a.live, s.tune->renderer().scene(), *s.loop);
   if (s.glfw_device || s.pointer_device) {  // they move over the plane: distance known from the start
@@ -245,10 +285,9 @@ HudReadouts readouts(const Session& s, const HapticState& st, const ShadowMeasur
   }
   r.haptic_hz = st.rate_hz;
   r.jitter_p99_us = st.jitter_p99_us;
-  r.distance_mm = shadow.min_distance_mm;
+  r.probe = probe_readout({shadow.min_distance_mm, st.in_contact, st.position_mm, st.proxy_mm});
   r.speed_mm_s = glm::length(st.velocity_mm_s);
   r.penetration_mm = s.tune->renderer().stats().max_penetration_mm;
-  r.contact = st.in_contact || r.penetration_mm > 0.0;
   r.force_n = glm::length(st.force_n);
   r.bake_progress = s.tune->renderer().stats().bake_progress;
   r.error = s.tune->last_error();
@@ -310,7 +349,7 @@ Status handle_keys(Session& s, int w, int h) {
   if (in.toggle_help) s.ui->toggle_help();
   else if (in.key_presses > 0) s.ui->hide_help();
   in.toggle_help = false;
-  in.key_presses = 0;
+  s.frame_keys = std::exchange(in.key_presses, 0);
   if (in.toggle_probe) s.tune->renderer().set_show_probe(!s.tune->renderer().show_probe());
   in.toggle_probe = false;
   if (in.toggle_device) s.tune->renderer().set_show_device(!s.tune->renderer().show_device());
@@ -401,7 +440,9 @@ void reload_haptic_scene(Session& s) {
     std::fprintf(stderr, "haptic reload failed, keeping the last good haptic world: %s\n", built.error().message.c_str());
     return;
   }
-  s.loop->replace_scene(std::make_shared<const world::HapticScene>(std::move(built.value())), s.tune->scene_path());
+  auto felt = std::make_shared<const world::HapticScene>(std::move(built.value()));
+  const std::optional<glm::dvec3> hand = place_hand(s, felt, true);  // the loop starts the scene's view afresh
+  s.loop->replace_scene(std::move(felt), s.tune->scene_path(), hand);
   s.vibration->set_scene(s.tune->renderer().scene());  // the edited materials' vibration too
 }
 
@@ -423,14 +464,45 @@ void print_summary(const Session& s) {
   else std::printf("latency sample->frame p50 %.1f ms p99 %.1f ms\n", lat.p50, lat.p99);
 }
 
+// --readouts-log: this frame's readouts, as the state machine says them, every frame.
+Status log_readouts(Session& s, const HapticState& st, const ShadowMeasure& shadow, std::uint64_t frame) {
+  const HudReadouts r = readouts(s, st, shadow);
+  ReadoutsFrame f;
+  f.frame = frame;
+  f.t_s = st.time_s;
+  f.scene = r.scene;
+  f.probe = r.probe;
+  f.distance_mm = shadow.min_distance_mm;
+  f.penetration_mm = r.penetration_mm;
+  f.buried_mm = s.floor.scene() ? buried_mm(*s.floor.scene(), st.proxy_mm) : 0.0;
+  f.force_n = r.force_n;
+  f.view_offset_mm = st.view_offset_mm;
+  f.hand_mm = st.position_mm;
+  f.proxy_mm = st.proxy_mm;
+  f.button = r.button;
+  f.button_depth_mm = r.button_depth_mm;
+  f.button_travel_mm = r.button_travel_mm;
+  const Scene& sc = s.tune->renderer().scene();
+  if (!sc.flags.empty()) {
+    f.flags.emplace();
+    for (std::size_t i = 0; i < sc.flags.size(); ++i)
+      if ((st.flags >> i) & 1u) f.flags->push_back(sc.flags[i]);
+  }
+  f.keys = s.frame_keys;
+  return s.readouts_log.write(f);
+}
+
 // Readouts, help and panel over the frame, placed around its shadow; drawn after the
-// screenshots are read back, so they are never in them.
+// screenshots are read back, so they are never in them. With --readouts-log the distance is
+// read back every frame (one more AOV read-back a frame), else 4 times a second.
 Status draw_overlays(const RunArgs& a, Session& s, const HapticState& st, std::uint64_t frame, double now_s) {
   const bool refresh = now_s - s.readouts_s >= kReadoutPeriodS;
   int w = 0, h = 0;  // ImGui's units: window coordinates, not framebuffer pixels
   glfwGetWindowSize(s.ctx->window(), &w, &h);
-  auto shadow = measure_frame_shadow(s.tune->renderer(), w, h, refresh);
+  auto shadow = measure_frame_shadow(s.tune->renderer(), w, h, refresh || s.readouts_log.is_open());
   if (!shadow) return shadow.error();
+  if (s.readouts_log.is_open())
+    if (Status r = log_readouts(s, st, shadow.value(), frame); !r) return r;
   if (refresh) {
     s.readouts = readouts(s, st, shadow.value());
     glfwSetWindowTitle(s.ctx->window(), title_summary(s.readouts).c_str());
@@ -481,8 +553,9 @@ void switch_scene(const RunArgs& a, Session& s) {
   s.tune->renderer().set_show_probe(a.show_probe);
   s.tune->renderer().set_show_device(a.show_device);
   s.axes = pointer_plane(s.tune->renderer());
-  s.loop->replace_scene(std::make_shared<const world::HapticScene>(std::move(haptic.value())),
-                       std::filesystem::path(path).filename().string());
+  auto felt = std::make_shared<const world::HapticScene>(std::move(haptic.value()));
+  const std::optional<glm::dvec3> hand = place_hand(s, felt, true);
+  s.loop->replace_scene(std::move(felt), std::filesystem::path(path).filename().string(), hand);
   s.vibration->set_scene(s.tune->renderer().scene());
   if (!a.quiet) std::printf("button: switched to %s\n", path.c_str());
 }
@@ -536,6 +609,8 @@ int run(const cli::Command& cmd, const RunArgs& a) {
   if (!live) return cmd.usage_error(live.error());
   if (Status st = open_session(a, std::move(scene.value()), s); !st) return cmd.fail(st.error());
   if (Status st = open_events(a, s); !st) return cmd.fail(st.error());
+  if (!a.readouts_log.empty())
+    if (Status st = s.readouts_log.open(a.readouts_log); !st) return cmd.fail(st.error());
   s.loop->start();
   s.vibration->start();
   // The first frame shows the device's probe, not the scene's: wait for the first tick (about
@@ -550,6 +625,7 @@ int run(const cli::Command& cmd, const RunArgs& a) {
     if (Status st = s.recorder->close(); !st) return cmd.fail(st.error());
   if (Status st = s.events->close(s.loop->events()); !st) return cmd.fail(st.error());
   if (!looped) return cmd.fail(looped.error());
+  if (Status st = s.readouts_log.close(); !st) return cmd.fail(st.error());
   if (!a.stats_path.empty()) {
     const Renderer& r = s.tune->renderer();
     const std::string json = stats_json(r.stats(), gl::backend_name(s.ctx->backend()), s.ctx->egl_device(), s.ctx->renderer(),

@@ -48,6 +48,9 @@ class GlfwInputDevice final : public Device {
   void add_scroll(double notches) { height_.scroll(notches); }
   void add_height_steps(int presses) { height_.step(presses); }
   double height_mm() const { return height_.mm(); }
+  // Back to the hover height a session starts at (after a scene switch: the new scene is not
+  // pressed into by a press made in the old one).
+  void reset_height() { height_.set(params_.height.start_mm); }
   void toggle_capture();
   // Main thread. The cursor's present position becomes the relative origin at the next poll:
   // called when GLFW may have moved its virtual cursor by something other than the person's

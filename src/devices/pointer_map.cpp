@@ -65,7 +65,9 @@ void HeightControl::set(double mm) {
 }
 
 glm::dvec3 PointerMap::centre(const PointerView& view, double height_mm) const {
-  return hit(view) + (view.probe_radius_mm + height_mm) * view.plane.n;
+  const glm::dvec3 at = hit(view);
+  const double lift = view.floor ? view.floor->lift_mm(at, view.plane.n, view.probe_radius_mm) : 0.0;
+  return at + (view.probe_radius_mm + (std::isfinite(lift) ? lift : 0.0) + height_mm) * view.plane.n;
 }
 
 void PointerMap::set_hit(const glm::dvec3& hit_mm) {

@@ -6,6 +6,8 @@
 //            person-controlled height of the probe's lowest point. The pseudo-shadow is the
 //            probe projected along n (passes/probe_depth.h), so its centre is the hit point:
 //            the shadow sits under the pointer on any camera and zoom.
+//            With view.floor set, h counts from the surface under the hit point instead
+//            (centre = hit + (R + lift + h) n): the probe hovers over whatever is there.
 //   relative (captured pointer): raw counts move the hit point along the plane, screen-aligned
 //            (right on screen = right on the plane), at a fixed mm per count.
 // Units: window positions in the units of the window size (GLFW screen coordinates, origin top
@@ -24,6 +26,17 @@ struct PlaneAxes {  // where the device moves: origin and orthonormal tangents/n
   glm::dvec3 origin{0.0}, t{1.0, 0.0, 0.0}, b{0.0, 1.0, 0.0}, n{0.0, 0.0, 1.0};
 };
 
+// The surface under the pointer, for a mapping whose height is relative to it (`run`'s mouse):
+// how far along the plane's normal n the centre of a probe sphere of radius R, lowered along
+// -n over `hit_mm` (a point on the plane), first touches a surface, minus R; 0 where nothing is
+// under it. The hover height h is then counted from that surface, not from the plane, so a
+// probe hovering at h > 0 is never inside geometry (world/free_height.h).
+class SurfaceFloor {
+ public:
+  virtual ~SurfaceFloor() = default;
+  virtual double lift_mm(const glm::dvec3& hit_mm, const glm::dvec3& n, double probe_radius_mm) const = 0;
+};
+
 // Everything the mapping needs, taken from the render thread's current state at every poll
 // (the camera orbits and zooms in `run`). Trivially copyable: it crosses threads in a Snapshot.
 struct PointerView {
@@ -32,6 +45,8 @@ struct PointerView {
   glm::dvec2 window_size{512.0, 512.0}; // in the pointer's units
   PlaneAxes plane;
   double probe_radius_mm = 8.0;         // R: sphere/capsule radius (mesh probes: an approximation)
+  // Null: the height counts from the plane. Not owned; it must outlive the view's use.
+  const SurfaceFloor* floor = nullptr;
 };
 
 // A segment of the pointer's ray: from the near plane (t = 0) to the far plane (t = 1).

@@ -28,6 +28,9 @@ class DeviceSanitizer {
   // The sample to use, or nullopt to hold the previous one.
   std::optional<DeviceSample> filter(const DeviceSample& in);
   const SanitizerCounts& counts() const { return counts_; }
+  // Forgets the last good sample (counts kept): the device was put somewhere on purpose (a
+  // placement, HapticLoop::place_hand), so the next sample is no jump to clamp.
+  void restart() { last_.reset(); }
 
  private:
   SanitizerParams params_;

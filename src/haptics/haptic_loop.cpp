@@ -158,15 +158,44 @@ void HapticLoop::update_rate(Clock::Ns now) {
   }
 }
 
-void HapticLoop::replace_scene(std::shared_ptr<const world::HapticScene> scene, std::string_view label) {
+void HapticLoop::replace_scene(std::shared_ptr<const world::HapticScene> scene, std::string_view label,
+                               std::optional<glm::dvec3> place_hand_mm) {
   std::shared_ptr<const world::HapticScene> drop;
   {
     std::lock_guard<std::mutex> lock(swap_mutex_);
     drop = std::move(retired_);  // released here, on the caller's thread
     pending_ = std::move(scene);
     pending_label_.assign(label);
+    pending_place_ = place_hand_mm;
+    pending_place_normal_.reset();
     swap_pending_.store(true, std::memory_order_release);
   }
+}
+
+void HapticLoop::place_hand(const glm::dvec3& hand_mm, const glm::dvec3& normal, const glm::dvec3& surface_normal) {
+  std::lock_guard<std::mutex> lock(swap_mutex_);
+  pending_place_ = hand_mm;
+  pending_place_normal_ = normal;
+  pending_place_surface_ = surface_normal;
+  swap_pending_.store(true, std::memory_order_release);
+}
+
+// The hand starts over again where it is put: at rest (a filter pulled from the old position
+// would carry the hand through what lies between), and the proxy with it.
+void HapticLoop::place(const glm::dvec3& hand_mm, const std::optional<glm::dvec3>& normal) {
+  if (normal && kalman_.initialized()) {
+    glm::dvec3 v = kalman_.velocity();
+    v -= glm::dot(v, *normal) * *normal;
+    const glm::dvec3& s = pending_place_surface_;
+    v -= std::min(0.0, glm::dot(v, s)) * s;  // none of it into the surface under the hand
+    kalman_.place(hand_mm, v);
+  } else {
+    kalman_ = Kalman3(params_.kalman);
+    have_fed_ = false;
+  }
+  sanitizer_.restart();  // else it would clamp the placed sample into a 5 m/s ramp the filter takes for speed
+  if (god_) god_->reset(hand_mm);
+  local_.proxy_mm = hand_mm;
 }
 
 const world::HapticScene* HapticLoop::scene() const { return god_ ? &god_->scene() : nullptr; }
@@ -177,12 +206,24 @@ void HapticLoop::adopt_pending_scene(Clock::Ns now) {
   std::unique_lock<std::mutex> lock(swap_mutex_, std::try_to_lock);
   if (!lock.owns_lock()) return;
   swap_pending_.store(false, std::memory_order_relaxed);
-  if (!pending_) return;
+  if (!pending_) {  // a placement alone (place_hand)
+    if (pending_place_) place(*pending_place_, pending_place_normal_);
+    pending_place_.reset();
+    pending_place_normal_.reset();
+    return;
+  }
   const bool had_proxy = god_ && god_->initialized();
-  const glm::dvec3 proxy = local_.proxy_mm;
+  glm::dvec3 proxy = local_.proxy_mm;
   god_.emplace(*pending_);  // GodObject holds no heap memory: nothing is freed on this thread
   crossing_.reset();
-  if (had_proxy) god_->reset(proxy);
+  if (pending_place_) {
+    proxy = *pending_place_;
+    place(proxy);
+    pending_place_.reset();
+    pending_place_normal_.reset();
+  } else if (had_proxy) {
+    god_->reset(proxy);
+  }
   // The new scene's bodies start afresh (a rare event: the vectors' old storage is freed here).
   bodies_ = world::BodySet(pending_->bodies(), pending_->fields().gravity_mm_s2());
   buttons_ = world::ButtonSet(pending_->button_shapes(), pending_->probe_radius_mm());

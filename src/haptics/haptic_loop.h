@@ -156,7 +156,17 @@ class HapticLoop {
   // event labelled `label`. The loop shares ownership; the scene it drops is released by the
   // next replace_scene() call, not on the haptic thread. Replaces a scene given at construction
   // too (that one stays the caller's).
-  void replace_scene(std::shared_ptr<const world::HapticScene> scene, std::string_view label = {});
+  // `place_hand_mm`: the hand's new position (the device's, e.g. over the surface under the
+  // pointer): the filter restarts there at rest and the proxy is put there instead of kept, so
+  // nothing the person did not do buries it (docs/window.md, "When the hand is inside geometry").
+  void replace_scene(std::shared_ptr<const world::HapticScene> scene, std::string_view label = {},
+                     std::optional<glm::dvec3> place_hand_mm = std::nullopt);
+  // Puts the hand (and the proxy) at `hand_mm` at the next tick, in the scene in use, for a
+  // hovering pointer whose surface moved along `normal` (unit) under it: the hand keeps its
+  // velocity across the normal (the texture's speed) and loses the part along it and the part
+  // into the surface now under it (`surface_normal`, outward), so neither the filter's coasting
+  // between two mouse readings nor the proxy's path cuts through the surface (any thread).
+  void place_hand(const glm::dvec3& hand_mm, const glm::dvec3& normal, const glm::dvec3& surface_normal);
   const world::HapticScene* scene() const;  // the one in use (haptic thread / between ticks)
   void start();        // spawns the thread
   // After start(): "SCHED_FIFO 80", "SCHED_RR 20 (RealtimeKit)", "normal" or
@@ -204,6 +214,8 @@ class HapticLoop {
   DeviceSample last_fed_;  // the last sample given to the filter (repeats are predicted over)
   bool have_fed_ = false;
   void adopt_pending_scene(Clock::Ns now);  // haptic thread, at a tick's start
+  // Haptic thread: the filter there (at rest, or keeping its velocity across `normal`), the proxy there.
+  void place(const glm::dvec3& hand_mm, const std::optional<glm::dvec3>& normal = std::nullopt);
   glm::dvec3 world_forces(double t, double dt);  // fields + bodies on the probe (haptic scene)
   // [navigation]: moves the view by the hand's push past its box's walls; then (with
   // navigation or a rolling surface) turns the hand's workspace position, velocity and device
@@ -228,6 +240,9 @@ class HapticLoop {
   std::mutex swap_mutex_;  // guards pending_, retired_
   std::shared_ptr<const world::HapticScene> pending_, retired_;
   std::string pending_label_;
+  std::optional<glm::dvec3> pending_place_;  // replace_scene's place_hand_mm, under swap_mutex_
+  std::optional<glm::dvec3> pending_place_normal_;  // place_hand's normal, under swap_mutex_
+  glm::dvec3 pending_place_surface_{0.0};           // place_hand's surface_normal, under swap_mutex_
   std::atomic<bool> swap_pending_{false};
   HapticState local_;        // haptic thread's working copy
   SampleRecorder* recorder_ = nullptr;

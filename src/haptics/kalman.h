@@ -29,6 +29,11 @@ class AxisKalman {
   void predict(double dt_s, const KalmanParams& params);
   double position() const { return p_; }
   double velocity() const { return v_; }
+  // Moves the state (a device put somewhere on purpose), keeping the covariance.
+  void place(double position_mm, double velocity_mm_s) {
+    p_ = position_mm;
+    v_ = velocity_mm_s;
+  }
   // Covariance [[p00, p01], [p01, p11]] (mm^2, mm^2/s, mm^2/s^2).
   double p00() const { return p00_; }
   double p01() const { return p01_; }
@@ -48,6 +53,10 @@ class Kalman3 {
   // at its velocity and the covariance grows, so the next real sample gets its full weight.
   void predict(double dt_s);
   bool initialized() const { return initialized_; }
+  // Moves an initialised state to position/velocity, covariance kept (HapticLoop::place_hand).
+  void place(const glm::dvec3& position_mm, const glm::dvec3& velocity_mm_s) {
+    for (int i = 0; i < 3; ++i) axes_[static_cast<std::size_t>(i)].place(position_mm[i], velocity_mm_s[i]);
+  }
   glm::dvec3 position() const;
   glm::dvec3 velocity() const;
   const AxisKalman& axis(int i) const { return axes_[static_cast<std::size_t>(i)]; }

@@ -181,9 +181,9 @@ TEST(HudTest, NoShadowReadsOutOfReachAndContactReadsTouching) {
   HudReadouts r;
   r.scene = "default.toml";
   EXPECT_EQ(title_summary(r), "pseudoshadow \u2014 default.toml \u2014 out of reach");
-  r.distance_mm = 1.26;
+  r.probe = probe_readout({1.26, false, {}, {}});
   EXPECT_EQ(title_summary(r), "pseudoshadow \u2014 default.toml \u2014 1.3 mm");
-  r.distance_mm = -0.4;
+  r.probe = probe_readout({-0.4, true, {}, {}});
   EXPECT_EQ(title_summary(r), "pseudoshadow \u2014 default.toml \u2014 touching");
   r.error = "glsl/surface.frag:3: error";
   EXPECT_NE(title_summary(r).find("RELOAD FAILED"), std::string::npos);
@@ -192,7 +192,7 @@ TEST(HudTest, NoShadowReadsOutOfReachAndContactReadsTouching) {
 TEST(HudTest, ReadoutsNameEveryQuantityWithItsUnit) {
   HudReadouts r;
   r.scene = "table5_1_construction_paper.toml";
-  r.distance_mm = 2.0;
+  r.probe = probe_readout({2.0, false, {}, {}});
   r.frame_ms = 16.7;
   r.haptic_hz = 998.0;
   r.jitter_p99_us = 45.0;
@@ -212,6 +212,12 @@ TEST(HudTest, ReadoutsNameEveryQuantityWithItsUnit) {
   all.clear();
   for (const std::string& l : hud_lines(r)) all += l + "\n";
   EXPECT_NE(all.find("frame       16.7 ms\ngpu frame   3.2 ms\n"), std::string::npos) << all;
+  // Touching: contact yes and the pressed depth, the distance line says so too (one state).
+  r.probe = probe_readout({std::nullopt, true, {0.0, 0.0, 6.0}, {0.0, 0.0, 8.0}});
+  all.clear();
+  for (const std::string& l : hud_lines(r)) all += l + "\n";
+  for (const char* want : {"distance    touching", "contact     yes", "pressed     2.0 mm", "frame       16.7 ms\ngpu frame"})
+    EXPECT_NE(all.find(want), std::string::npos) << "missing '" << want << "' in\n" << all;
 }
 
 TEST(HudTest, BakeProgressShowsUntilTheTileIsReady) {

@@ -257,5 +257,64 @@ TEST(HapticLoopSceneTest, ReplacedSceneIsAdoptedAtTheNextTickWithAnEvent) {
   EXPECT_NEAR(st.force_n.z, 7.2, 1e-2);
 }
 
+// A scene switch with a placement (run's mouse, issue 27): the hand hovered 1 mm over a floor at
+// z = 0 (centre z = 9, R = 8); the new scene has a 30 mm block there, so the kept proxy would sit
+// 21 mm deep in it, farther than R from any face (GodObject::reset cannot push it out). Placed at
+// the hover height over the block (z = 39) with the switch, the proxy starts there, free, and
+// the hand's filter restarts at rest there. Tolerances as above.
+TEST(HapticLoopSceneTest, ASwitchWithAPlacementNeverBuriesTheProxy) {
+  Surface floor = test::analytic(SurfaceType::kPlane);
+  floor.size_mm = {200.0, 200.0};
+  Surface block = test::analytic(SurfaceType::kBox, {0.0, 0.0, 15.0});
+  block.box_size_mm = {60.0, 60.0, 30.0};
+  auto first = HapticScene::build(test::scene_with(8.0, {floor}));
+  auto second = HapticScene::build(test::scene_with(8.0, {floor, block}));
+  ASSERT_TRUE(first && second);
+  LogDevice device({{0.0, {0, 0, 9}, 0, true}, {1.0, {0, 0, 39}, 0, true}, {4.0, {0, 0, 39}, 0, true}}, false, "hover");
+  FakeClock clock;
+  HapticLoopParams params;
+  params.keep_periods = 5000;
+  HapticLoop loop(device, clock, params, &first.value());
+  loop.run_ticks(1000);  // up to t = 0.999: the hover sample
+  EXPECT_NEAR(loop.state().read().proxy_mm.z, 9.0, kBehindTolMm);
+  loop.replace_scene(std::make_shared<const HapticScene>(std::move(second.value())), "block.toml",
+                     glm::dvec3(0.0, 0.0, 39.0));
+  loop.run_ticks(1);
+  HapticState st = loop.state().read();
+  EXPECT_NEAR(st.proxy_mm.z, 39.0, kBehindTolMm);
+  EXPECT_FALSE(st.in_contact);
+  loop.run_ticks(500);
+  st = loop.state().read();
+  EXPECT_NEAR(st.proxy_mm.z, 39.0, kBehindTolMm);
+  EXPECT_NEAR(st.position_mm.z, 39.0, 1e-6);  // at rest there: no swing from the old height
+  EXPECT_FALSE(st.in_contact);
+}
+
+// A hover placement (the surface under a moving pointer rose): the hand is put at the new height
+// with its velocity along the plane kept (the texture's speed) and none along the plane's normal,
+// nor into the surface now under it. A stroke at 100 mm/s along x read at 20 Hz; placed 5 mm
+// higher with a surface normal tilted against the stroke: the x speed keeps the part of the
+// stroke that runs along that surface. Tolerance 25 %: HeldSamplesKeepTheStrokeSpeedBetweenPolls.
+TEST(HapticLoopSceneTest, AHoverPlacementKeepsTheStrokeAlongTheSurface) {
+  Surface floor = test::analytic(SurfaceType::kPlane);
+  floor.size_mm = {400.0, 400.0};
+  auto scene = HapticScene::build(test::scene_with(8.0, {floor}));
+  ASSERT_TRUE(scene);
+  std::vector<DeviceSample> polls;
+  for (int i = 0; i <= 60; ++i) polls.push_back({0.05 * i, {100.0 * 0.05 * i - 150.0, 0, 20}, 0, true});
+  LogDevice device(polls, false, "mouse at 20 Hz");
+  FakeClock clock;
+  HapticLoop loop(device, clock, HapticLoopParams{}, &scene.value());
+  loop.run_ticks(1020);
+  const glm::dvec3 hand = loop.state().read().position_mm + glm::dvec3(0.0, 0.0, 5.0);
+  const glm::dvec3 slope = glm::normalize(glm::dvec3(-1.0, 0.0, 1.0));  // a face rising toward +x
+  loop.place_hand(hand, {0.0, 0.0, 1.0}, slope);
+  loop.run_ticks(1);
+  const HapticState st = loop.state().read();
+  EXPECT_NEAR(st.proxy_mm.z, hand.z, 1.0);  // one tick of coasting at most 0.1 mm along x
+  EXPECT_NEAR(st.velocity_mm_s.x, 50.0, 0.25 * 50.0);  // 100 minus its part into the face
+  EXPECT_GE(glm::dot(st.velocity_mm_s, slope), -1e-6);
+}
+
 }  // namespace
 }  // namespace ps::world

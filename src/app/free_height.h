@@ -1,0 +1,62 @@
+// The surface under the pointer, on the haptic geometry (world::HapticScene): `run`'s mouse
+// counts its hover height from it (devices/pointer_map.h, SurfaceFloor), so the hand - and the
+// proxy placed at it after a scene switch, a 4D turn, a panel edit or a reload - is on the free
+// side of whatever is under the pointer, and the height keys always free it (docs/window.md,
+// "When the hand is inside geometry").
+// A probe sphere of radius R is lowered along -n over the pointer's point on the plane, from
+// above everything (the camera's height over the plane), by conservative advancement (each step
+// the gap to the nearest surface, so it cannot pass through a thin shell) until it touches; a
+// button's face counts as solid (its pocket is for pressing, not for hovering).
+// Main thread; HapticScene::closest() is const and thread-safe, so the scene may be the one the
+// haptic thread uses.
+#pragma once
+
+#include <memory>
+
+#include <glm/glm.hpp>
+
+#include "devices/pointer_map.h"
+#include "world/haptic_scene.h"
+
+namespace ps {
+
+struct FreeHeightParams {
+  double query_mm = 64.0;       // radius of one closest-point query (longer steps in free space)
+  double below_plane_mm = 300.0;  // how far under the plane a surface is still "under the pointer"
+  double touch_epsilon_mm = 0.01;  // gap at which the lowered sphere counts as touching
+  int max_steps = 128;          // conservative-advancement steps (then: the plane, as without a floor)
+};
+
+class FreeHeight final : public SurfaceFloor {
+ public:
+  explicit FreeHeight(const FreeHeightParams& params = {}) : params_(params) {}
+  // The geometry felt now (null: no floor, the plane).
+  void set_scene(std::shared_ptr<const world::HapticScene> scene) { scene_ = std::move(scene); }
+  const std::shared_ptr<const world::HapticScene>& scene() const { return scene_; }
+  // Workspace -> world (a [navigation] box's offset, a rolling view's turn): the pointer moves
+  // in the workspace, the geometry is in the world.
+  void set_pose(const glm::dmat3& rotation, const glm::dvec3& offset_mm) {
+    rotation_ = rotation;
+    offset_mm_ = offset_mm;
+  }
+  // Where the lowering starts, mm above the plane (the camera's height over it: above what it sees).
+  void set_top_mm(double top_mm) { top_mm_ = top_mm; }
+  double lift_mm(const glm::dvec3& hit_mm, const glm::dvec3& n, double probe_radius_mm) const override;
+  // The outward normal of the surface the last lift_mm() found, in the workspace (the plane's
+  // normal where nothing was under the pointer): the hand placed over it coasts along it.
+  const glm::dvec3& last_normal() const { return last_normal_; }
+
+ private:
+  FreeHeightParams params_;
+  std::shared_ptr<const world::HapticScene> scene_;
+  glm::dmat3 rotation_{1.0};
+  glm::dvec3 offset_mm_{0.0};
+  double top_mm_ = 200.0;
+  mutable glm::dvec3 last_normal_{0.0, 0.0, 1.0};  // main thread only, like every call here
+};
+
+// How far a probe sphere (the scene's probe radius) centred at `centre_mm` overlaps the haptic
+// geometry, mm: R - the distance to the nearest surface; 0 when free.
+double buried_mm(const world::HapticScene& scene, const glm::dvec3& centre_mm);
+
+}  // namespace ps

@@ -1,0 +1,142 @@
+// The probe readout's state machine (app/readout_state.h), the readouts log's JSON line
+// (app/readouts_log.h) and the surface under the pointer (app/free_height.h). No GL, no window.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <string>
+
+#include "app/free_height.h"
+#include "app/readout_state.h"
+#include "app/readouts_log.h"
+#include "scene/scene_io.h"
+#include "world/haptic_scene.h"
+
+namespace ps {
+namespace {
+
+TEST(ProbeReadoutTest, OutOfReachHoveringTouching) {
+  ProbeReadoutInput in;
+  EXPECT_EQ(probe_readout(in).state, ProbeState::kOutOfReach);
+  EXPECT_EQ(probe_distance_text(probe_readout(in)), "out of reach");
+  in.distance_mm = 1.26;
+  const ProbeReadout hover = probe_readout(in);
+  EXPECT_EQ(hover.state, ProbeState::kHovering);
+  EXPECT_DOUBLE_EQ(hover.hover_mm, 1.26);
+  EXPECT_EQ(probe_distance_text(hover), "1.3 mm");
+  // The render mesh grazed without haptic contact: hovering at 0, never a negative distance.
+  in.distance_mm = -0.4;
+  EXPECT_EQ(probe_readout(in).state, ProbeState::kHovering);
+  EXPECT_EQ(probe_readout(in).hover_mm, 0.0);
+}
+
+// Contact decides first: never "out of reach" with contact (flat_torus's front sheet, issue 27),
+// and the pressed depth is the hand's distance past the proxy (the plank pressed 8 x 0.5 mm).
+TEST(ProbeReadoutTest, ContactIsTouchingWithThePressedDepth) {
+  ProbeReadoutInput in;
+  in.in_contact = true;
+  in.proxy_mm = {1.0, 2.0, 8.0};
+  in.hand_mm = {1.0, 2.0, 5.0};
+  const ProbeReadout r = probe_readout(in);
+  EXPECT_EQ(r.state, ProbeState::kTouching);
+  EXPECT_DOUBLE_EQ(r.pressed_mm, 3.0);
+  EXPECT_EQ(probe_distance_text(r), "touching");
+  in.distance_mm = 4.0;  // a stale shadow distance does not outvote the contact
+  EXPECT_EQ(probe_readout(in).state, ProbeState::kTouching);
+}
+
+TEST(ReadoutsLogTest, OneJsonLineWithEveryField) {
+  ReadoutsFrame f;
+  f.frame = 7;
+  f.t_s = 1.25;
+  f.scene = "panel.toml";
+  f.probe = {ProbeState::kTouching, 0.0, 1.5};
+  f.force_n = 0.75;
+  f.view_offset_mm = {0.0, -12.5, 0.0};
+  f.hand_mm = {1.0, 2.0, 3.0};
+  f.proxy_mm = {1.0, 2.0, 4.5};
+  f.button = 2;
+  f.button_depth_mm = 2.9;
+  f.button_travel_mm = 3.0;
+  f.flags = std::vector<std::string>{"light"};
+  f.keys = 3;
+  const std::string line = readouts_json_line(f);
+  EXPECT_EQ(line,
+            "{\"frame\": 7, \"t_s\": 1.25, \"scene\": \"panel.toml\", \"state\": \"touching\", \"distance_mm\": 0, "
+            "\"pressed_mm\": 1.5, \"penetration_mm\": 0, \"buried_mm\": 0, \"contact\": true, \"force_n\": 0.75, "
+            "\"view_offset_mm\": [0, -12.5, 0], \"hand_mm\": [1, 2, 3], \"proxy_mm\": [1, 2, 4.5], "
+            "\"button\": {\"index\": 2, \"depth_mm\": 2.9, \"travel_mm\": 3}, \"flags\": [\"light\"], \"keys\": 3}");
+  ReadoutsFrame out;  // out of reach: distance null, no button, a scene without flags
+  const std::string far = readouts_json_line(out);
+  EXPECT_NE(far.find("\"state\": \"out of reach\", \"distance_mm\": null"), std::string::npos) << far;
+  EXPECT_NE(far.find("\"button\": null, \"flags\": null"), std::string::npos) << far;
+}
+
+std::shared_ptr<const world::HapticScene> felt(const std::string& toml) {
+  auto scene = parse_scene(toml, "f.toml", ".", {});
+  EXPECT_TRUE(scene) << scene.error().message;
+  auto built = world::HapticScene::build(scene.value());
+  EXPECT_TRUE(built) << built.error().message;
+  return std::make_shared<const world::HapticScene>(std::move(built.value()));
+}
+
+constexpr const char* kSphereOnPlane =
+    "[probe]\nradius_mm = 8.0\n[materials.m]\nlambda_min = 0.5\n"
+    "[[surfaces]]\ntype = \"plane\"\nmaterial = \"m\"\n"
+    "[[surfaces]]\ntype = \"sphere\"\ncenter = [0.0, 0.0, 0.0]\nradius_mm = 20.0\nmaterial = \"m\"\n";
+
+// A sphere of radius 20 sticking out of the plane z = 0: over its top the lowered probe (R = 8)
+// rests at centre height 28, lift 20; 12 mm off its axis at sqrt(28^2 - 12^2); beside it, on the
+// plane (lift 0). Tolerance 0.02 mm: the lowering stops within touch_epsilon (0.01 mm) of contact.
+TEST(FreeHeightTest, LiftIsTheSurfaceUnderThePointer) {
+  FreeHeight floor;
+  const glm::dvec3 n(0.0, 0.0, 1.0);
+  EXPECT_EQ(floor.lift_mm({0.0, 0.0, 0.0}, n, 8.0), 0.0) << "no scene: the plane";
+  floor.set_scene(felt(kSphereOnPlane));
+  floor.set_top_mm(200.0);
+  EXPECT_NEAR(floor.lift_mm({0.0, 0.0, 0.0}, n, 8.0), 20.0, 0.02);
+  EXPECT_NEAR(floor.lift_mm({12.0, 0.0, 0.0}, n, 8.0), std::sqrt(28.0 * 28.0 - 144.0) - 8.0, 0.02);
+  EXPECT_NEAR(floor.lift_mm({60.0, 0.0, 0.0}, n, 8.0), 0.0, 0.02);
+  // The workspace moved 60 mm along x ([navigation]): its origin is now beside the sphere.
+  floor.set_pose(glm::dmat3(1.0), {60.0, 0.0, 0.0});
+  EXPECT_NEAR(floor.lift_mm({0.0, 0.0, 0.0}, n, 8.0), 0.0, 0.02);
+  EXPECT_NEAR(floor.lift_mm({-60.0, 0.0, 0.0}, n, 8.0), 20.0, 0.02);
+}
+
+// The proxy's overlap with the geometry: free above the sphere, touching at R, 3 mm in (its
+// centre 3 mm under the top: R - 5). Tolerance 1e-9: closed-form sphere distances.
+TEST(FreeHeightTest, BuriedIsTheProbesOverlapWithTheGeometry) {
+  const auto scene = felt(kSphereOnPlane);
+  EXPECT_EQ(buried_mm(*scene, {0.0, 0.0, 40.0}), 0.0);
+  EXPECT_NEAR(buried_mm(*scene, {0.0, 0.0, 28.0}), 0.0, 1e-9);
+  EXPECT_NEAR(buried_mm(*scene, {0.0, 0.0, 25.0}), 3.0, 1e-9);
+}
+
+// Nothing under the pointer (a plane far below the reach): the mapping's plane, lift 0. A
+// surface below the plane within reach: a negative lift, the probe goes down to it.
+TEST(FreeHeightTest, NothingUnderThePointerIsThePlane) {
+  FreeHeight floor;
+  floor.set_top_mm(100.0);
+  floor.set_scene(felt("[materials.m]\nlambda_min = 0.5\n[[surfaces]]\ntype = \"plane\"\ncenter = [0.0, 0.0, -1000.0]\n"
+                       "material = \"m\"\n"));
+  EXPECT_EQ(floor.lift_mm({0.0, 0.0, 0.0}, {0.0, 0.0, 1.0}, 8.0), 0.0);
+  floor.set_scene(felt("[materials.m]\nlambda_min = 0.5\n[[surfaces]]\ntype = \"plane\"\ncenter = [0.0, 0.0, -30.0]\n"
+                       "material = \"m\"\n"));
+  EXPECT_NEAR(floor.lift_mm({0.0, 0.0, 0.0}, {0.0, 0.0, 1.0}, 8.0), -30.0, 0.02);
+}
+
+// Over a flush button the probe rests on its face, not in the pocket behind it (hovering must not
+// press it): buttons_demo's slab top at z = 0, the button's pocket 4.5 mm deep.
+TEST(FreeHeightTest, AButtonsFaceIsSolidForHovering) {
+  FreeHeight floor;
+  floor.set_top_mm(200.0);
+  floor.set_scene(felt(
+      "[probe]\nradius_mm = 8.0\n[materials.m]\nlambda_min = 0.5\n"
+      "[[surfaces]]\ntype = \"box\"\ncenter = [0.0, 0.0, -5.0]\nsize_mm = [160.0, 100.0, 10.0]\nmaterial = \"m\"\n"
+      "[[buttons]]\ncenter = [-25.0, 0.0, 0.0]\nsize_mm = [30.0, 30.0]\nstiffness_n_per_mm = 0.2\ntravel_mm = 3.0\n"
+      "action = \"flag:light\"\n"));
+  EXPECT_NEAR(floor.lift_mm({-25.0, 0.0, 0.0}, {0.0, 0.0, 1.0}, 8.0), 0.0, 0.02);
+  EXPECT_NEAR(floor.lift_mm({25.0, 0.0, 0.0}, {0.0, 0.0, 1.0}, 8.0), 0.0, 0.02);
+}
+
+}  // namespace
+}  // namespace ps
