@@ -37,6 +37,9 @@ void print_report(const HapticLoop& loop, double seconds, const std::vector<doub
               static_cast<double>(periods.size()) / seconds);
   std::printf("period us:   p50 %.1f  p99 %.1f  p99.9 %.1f  max %.1f  mean %.2f\n", p.p50, p.p99, p.p999, p.max, p.mean);
   std::printf("jitter us:   p50 %.1f  p99 %.1f  p99.9 %.1f  max %.1f\n", j.p50, j.p99, j.p999, j.max);
+  const HapticState st = loop.state().read();  // falling behind: haptics/tick_schedule.h
+  std::printf("late ticks:  stalls %llu (last %.1f ms), ticks skipped %llu\n", static_cast<unsigned long long>(st.stalls),
+              st.last_stall_ms, static_cast<unsigned long long>(st.skipped_ticks));
   std::printf("frames:      %zu, ms p50 %.1f  p99 %.1f  max %.1f\n", f.count, f.p50, f.p99, f.max);
   std::printf("latency ms (device sample -> frame finished): p50 %.1f  p99 %.1f  max %.1f\n", l.p50, l.p99, l.max);
   // Seed 000 Table 1: polygons in the overall model vs those a tick examined (sampled once per
