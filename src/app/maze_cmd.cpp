@@ -45,7 +45,7 @@ struct MazeArgs {
   long long seed = -1, every = 0, session = 1;
   double fps = 30.0, pace = 0.0;
   cli::GlArgs gl_opts;
-  bool quiet = false, window = false, no_clutch = false, hide_hand = false, force = false;
+  bool quiet = false, window = false, no_clutch = false, hide_hand = false, force = false, practice = false;
   double clutch_mm = MazeWindowParams{}.clutch_mm;
   cli::LiveLoopArgs live;  // the window's haptic thread and renderer: --render-threads, --spare-cpu
 };
@@ -111,6 +111,9 @@ void declare(cli::Command& cmd, MazeArgs& a) {
                     "logged as `clutch` (default 6, the probe's radius)");
   app.add_flag("--no-clutch", a.no_clutch, "window: never put the hand back (it stays where the mouse took it)");
   app.add_flag("--hide-hand", a.hide_hand, "window: no faint ring where the hand is while a wall holds the probe");
+  app.add_flag("--practice", a.practice,
+               "window, mouse or gamepad: one unscored practice pass after the instructions, on a route of its own "
+               "(another seed), logged to DIR/practice/; Space or Enter ends it early");
   cli::add_gl_options(app, a.gl_opts);
   cli::add_live_loop_options(app, a.live);
   cli::add_quiet_option(app, a.quiet);
@@ -167,8 +170,14 @@ bool opens_window(const MazeArgs& a) {
 }
 
 int run_session_of(const cli::Command& cmd, const MazeArgs& a, const maze::SessionOptions& o) {
+  const bool live = a.device.empty() || a.device == "mouse" || a.device == "gamepad";
+  if (a.practice && !live)
+    return cmd.usage_error(make_error("--practice: a practice pass is for a participant at the window; give "
+                                      "--device mouse or gamepad (or none), not a log"));
+  if (a.practice && o.resume)
+    return cmd.usage_error(make_error("--practice: a resumed session goes on where it stopped, without practice"));
   if (opens_window(a)) {
-    const MazeWindowParams wp{a.no_clutch ? 0.0 : a.clutch_mm, !a.hide_hand};
+    const MazeWindowParams wp{a.no_clutch ? 0.0 : a.clutch_mm, !a.hide_hand, a.practice};
     return run_maze_window(cmd, o, a.device, a.live, wp);
   }
   return run_headless(cmd, a, o);

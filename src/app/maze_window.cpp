@@ -29,6 +29,12 @@ constexpr double kScoreSeconds = 5.0;  // how long a pass's score screen stays u
 // loses ticks, and says so); ~3 MiB.
 constexpr std::size_t kTrackFeedTicks = std::size_t{1} << 14;
 constexpr double kMmPerCount = 0.15;   // captured mouse: mm on the floor per raw count
+// The practice pass's seed: the session's, mixed, so its route (correct exits, room order) is
+// another one and practice teaches the task, not the answers.
+constexpr std::uint64_t kPracticeSeedMix = 0x9e3779b97f4a7c15ull;
+constexpr const char* kPracticeOver =
+    "That was the practice.\n\nThe real session starts now: a new maze, whose right exits\n"
+    "you will learn as you go.\n\nPress Space to start.";
 
 // What the window hears from GLFW, from its callbacks (installed before ImGui, which chains to
 // them): a frame can take longer than a quick tap, so polled key state would lose taps.
@@ -76,6 +82,14 @@ PlaneAxes floor_plane(const Renderer& r) {
 
 glm::dvec3 on_plane(const PlaneAxes& plane, const glm::dvec3& p) { return p - glm::dot(p - plane.origin, plane.n) * plane.n; }
 
+// The window draws `scene` from now on (a new renderer).
+Status use_scene(Window& w, const Scene& scene) {
+  auto r = Renderer::create(scene, RendererOptions{});
+  if (!r) return r.error();
+  w.renderer = std::move(r.value());
+  return ok_status();
+}
+
 Status open_device(const std::string& device, const maze::SessionOptions& o, Window& w) {
   if (device.empty() || device == "mouse" || device == "gamepad") {
     GlfwInputParams params;
@@ -106,9 +120,7 @@ Status open_window(const maze::SessionOptions& o, const std::string& device, con
   if (!ctx) return ctx.error();
   w.ctx = std::move(ctx.value());
   w.events.install(w.ctx->window());  // before ImGui (it chains to them) and before the grab
-  auto r = Renderer::create(core.scene().scene, RendererOptions{});
-  if (!r) return r.error();
-  w.renderer = std::move(r.value());
+  if (Status s = use_scene(w, core.scene().scene); !s) return s;
   w.out_dir = std::filesystem::path(o.log_path).parent_path().string();
   return open_device(device, o, w);
 }
@@ -218,9 +230,10 @@ bool take_input(Window& w, const HapticState& st) {
 // The render thread's loop: input, the session's step on the newest haptic state (a pass switch
 // brings a new renderer), the frame. Returns when the participant quits, the log device ends, or
 // kScoreSeconds after the session ended (its last score stays up that long).
+// In practice (`practice`), Space or Enter ends the pass early (reason "practice_ended").
 Status window_loop(const maze::SessionOptions& o, const MazeWindowParams& p, maze::SessionCore& core, Window& w,
                    HapticLoop& loop, TickFeed& ticks, SampleRecorder& recorder, std::string& reason,
-                   vibration::LiveVibration& vib) {
+                   vibration::LiveVibration& vib, bool practice = false) {
   Overlay ov;
   HapticState st;
   double last_flush = 0.0, end_at = -1.0, clutch_quiet_until = 0.0;
@@ -234,6 +247,10 @@ Status window_loop(const maze::SessionOptions& o, const MazeWindowParams& p, maz
     st = loop.state().read();
     if (Status s = apply_clutch(p, w, core, st, clutch_quiet_until); !s) return s;
     if (!take_input(w, st)) return ok_status();
+    if (practice && std::exchange(w.events.start, false)) {
+      reason = "practice_ended";
+      return ok_status();
+    }
     // Every tick since the last frame, so the tracker sees each room the proxy passed through
     // however long the frame took (a pass switch's new renderer, a loaded machine).
     Status stepped = ok_status();
@@ -266,11 +283,10 @@ Status window_loop(const maze::SessionOptions& o, const MazeWindowParams& p, maz
   }
 }
 
-// The instructions (the description's [instructions] text) over the start; the session's
-// clock, the haptic loop and the mouse grab wait for Space or Enter. False: the participant quit.
-Result<bool> show_instructions(const maze::SessionOptions& o, Window& w) {
+// `text` over the start; the clock waits for Space or Enter. False: the participant quit.
+Result<bool> wait_for_start(const maze::SessionOptions& o, Window& w, const std::string& text) {
   Overlay ov;
-  ov.instructions = o.desc.instructions;
+  ov.instructions = text;
   const HapticState still;  // no sample: the scene's own camera and probe at the start
   for (;;) {
     glfwWaitEventsTimeout(0.05);  // nothing moves: redraw at 20 Hz, not as fast as it can
@@ -278,12 +294,73 @@ Result<bool> show_instructions(const maze::SessionOptions& o, Window& w) {
     if (std::exchange(w.events.start, false)) break;
     if (Status s = draw(w, o.desc, still, ov, false); !s) return s.error();
   }
-  // The mouse relative (captured): the camera follows the probe, so an absolute pointer would
-  // chase it. The gamepad's stick is relative already. The grab is a new relative origin.
-  if (w.input && w.input->name() == "mouse") w.input->toggle_capture();
   w.events.screenshot = false;
   w.events.height_steps = 0;
   return true;
+}
+
+// The instructions (the description's [instructions] text) over the start; the session's
+// clock, the haptic loop and the mouse grab wait for Space or Enter. False: the participant quit.
+Result<bool> show_instructions(const maze::SessionOptions& o, Window& w) {
+  Result<bool> go = wait_for_start(o, w, o.desc.instructions);
+  // The mouse relative (captured): the camera follows the probe, so an absolute pointer would
+  // chase it. The gamepad's stick is relative already. The grab is a new relative origin.
+  if (go && go.value() && w.input && w.input->name() == "mouse") w.input->toggle_capture();
+  return go;
+}
+
+// The session's options for its practice pass: the same maze and condition, another route, one
+// pass, its own log and device stream in DIR/practice/.
+Result<maze::SessionOptions> practice_options(const maze::SessionOptions& o) {
+  maze::SessionOptions po = o;
+  const std::filesystem::path dir = std::filesystem::path(o.log_path).parent_path() / "practice";
+  std::error_code ec;
+  std::filesystem::create_directories(dir, ec);
+  if (ec) return make_error(dir.string() + ": cannot create the practice folder: " + ec.message());
+  po.log_path = (dir / "session.jsonl").string();
+  po.record_path = (dir / "device.log").string();
+  po.info.seed = o.info.seed ^ kPracticeSeedMix;
+  po.route = maze::draw_route(po.info.seed);
+  po.desc.max_passes = po.info.max_passes = 1;
+  po.resume.reset();
+  po.haptics.start_time_s = 0.0;
+  return po;
+}
+
+// The practice pass (docs/maze.md, "Practice"), then its closing screen; the window's renderer
+// is the scored session's again after it. False: the participant quit during it.
+Result<bool> run_practice(const maze::SessionOptions& o, const MazeWindowParams& p, Window& w,
+                          const cli::LiveLoopArgs& live_args, const maze::SessionCore& scored) {
+  auto po = practice_options(o);
+  if (!po) return po.error();
+  auto opened = maze::SessionCore::open(po.value());
+  if (!opened) return opened.error();
+  maze::SessionCore& core = *opened.value();
+  if (Status s = use_scene(w, core.scene().scene); !s) return s.error();
+  SteadyClock clock;
+  HapticLoop loop(*w.device, clock, po->haptics, core.haptic().get());
+  std::unique_ptr<vibration::LiveVibration> vib = cli::open_live_vibration(live_args, core.scene().scene, loop);
+  SampleRecorder recorder(po->record_path);
+  loop.set_recorder(&recorder);
+  TickFeed ticks(kTrackFeedTicks);
+  loop.add_tick_feed(&ticks);
+  std::string reason = "quit";
+  loop.start();
+  vib->start();
+  Status looped = window_loop(po.value(), p, core, w, loop, ticks, recorder, reason, *vib, true);
+  loop.stop();
+  vib->close();
+  const double end = reason == "logged" ? core.end_time_s() : loop.state().read().time_s;
+  auto result = core.finish(end, reason == "logged" ? "quit" : reason);
+  if (Status s = recorder.close(); !s) return s.error();
+  if (!looped) return looped.error();
+  if (!result) return result.error();
+  if (reason == "quit") return false;
+  if (Status s = use_scene(w, scored.scene().scene); !s) return s.error();
+  w.input->place(on_plane(floor_plane(*w.renderer), w.renderer->scene().probe.position));
+  Result<bool> go = wait_for_start(o, w, kPracticeOver);
+  w.input->rebase();  // the mouse moved while the screen waited: a new relative origin
+  return go;
 }
 
 }  // namespace
@@ -312,6 +389,7 @@ int run_maze_window(const cli::Command& cmd, const maze::SessionOptions& o, cons
     // A participant's session starts from the instructions; a log device played in the window
     // has no one to read them.
     auto go = w.input ? show_instructions(o, w) : Result<bool>(true);
+    if (go && go.value() && w.input && params.practice) go = run_practice(o, params, w, live_args, core);
     if (!go) looped = go.error();
     if (go && go.value()) {
       if (w.input) w.input->poll(o.haptics.start_time_s, pointer_view(*w.renderer, floor_plane(*w.renderer)));

@@ -19,6 +19,9 @@ struct MazeWindowParams {
   // shadow has then left the hand's place entirely. 0: no clutch.
   double clutch_mm = 6.0;
   bool show_hand = true;  // a faint ring where the hand is while a wall holds the probe away
+  // One unscored practice pass before the session (docs/maze.md, "Practice"): a route of its own,
+  // logged to DIR/practice/; Space or Enter ends it early. Live devices only.
+  bool practice = false;
 };
 
 // `device`: "mouse" (or empty), or a trajectory:/playback: log played in real time. `live`: how the
