@@ -48,6 +48,8 @@ class GlfwInputDevice final : public Device {
   void add_scroll(double notches) { height_.scroll(notches); }
   void add_height_steps(int presses) { height_.step(presses); }
   double height_mm() const { return height_.mm(); }
+  // Main thread: how deep the scene needs the hand to go (HeightControl::reach_depth).
+  void reach_depth(double depth_mm) { height_.reach_depth(depth_mm); }
   void toggle_capture();
   // Main thread. The cursor's present position becomes the relative origin at the next poll:
   // called when GLFW may have moved its virtual cursor by something other than the person's

@@ -64,6 +64,12 @@ void HeightControl::set(double mm) {
   mm_ = std::clamp(mm, params_.min_mm, params_.max_mm);
 }
 
+void HeightControl::reach_depth(double depth_mm) {
+  if (!std::isfinite(depth_mm)) return;
+  params_.min_mm = std::min(base_min_mm_, -depth_mm);
+  set(mm_);
+}
+
 glm::dvec3 PointerMap::centre(const PointerView& view, double height_mm) const {
   return hit(view) + (view.probe_radius_mm + height_mm) * view.plane.n;
 }

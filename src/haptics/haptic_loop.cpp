@@ -26,7 +26,7 @@ HapticLoop::HapticLoop(Device& device, Clock& clock, const HapticLoopParams& par
   if (scene != nullptr) {
     god_.emplace(*scene);
     bodies_ = world::BodySet(scene->bodies(), scene->fields().gravity_mm_s2());
-    buttons_ = world::ButtonSet(scene->button_shapes(), scene->probe_radius_mm());
+    buttons_ = world::ButtonSet(scene->button_shapes(), scene->probe_radius_mm(), params.forces.coupling_n_per_mm);
   }
   clock_.set_wake_spin(std::chrono::microseconds(std::max<std::int64_t>(params.wake_spin_us, 0)));
 }
@@ -154,7 +154,8 @@ void HapticLoop::adopt_pending_scene(Clock::Ns now) {
   if (had_proxy) god_->reset(proxy);
   // The new scene's bodies start afresh (a rare event: the vectors' old storage is freed here).
   bodies_ = world::BodySet(pending_->bodies(), pending_->fields().gravity_mm_s2());
-  buttons_ = world::ButtonSet(pending_->button_shapes(), pending_->probe_radius_mm());
+  buttons_ = world::ButtonSet(pending_->button_shapes(), pending_->probe_radius_mm(),
+                              params_.forces.coupling_n_per_mm);
   local_.flags = 0;  // flags are the scene's: a new scene starts with all of them off
   view_ = fourd::ViewPose{};  // and its own view
   roll_.reset();
@@ -203,7 +204,7 @@ void HapticLoop::adopt_live_charges(double t) {
 void HapticLoop::press_buttons(const glm::dvec3& anchor, double t, glm::dvec3& force) {
   if (buttons_.size() == 0) return;
   const world::HapticScene& scene = god_->scene();
-  const world::ButtonStepResult r = buttons_.step(anchor);
+  const world::ButtonStepResult r = buttons_.step(anchor, local_.position_mm);
   force += r.force_n;
   local_.button_pressed = r.pressed;
   local_.button_depth_mm = r.depth_mm;
@@ -374,6 +375,10 @@ void HapticLoop::add_tick_feed(TickFeed* feed) {
 
 void HapticLoop::tick(Clock::Ns now) {
   if (swap_pending_.load(std::memory_order_acquire)) adopt_pending_scene(now);
+  if (home_pending_.exchange(false, std::memory_order_acq_rel)) {
+    view_ = fourd::ViewPose{};
+    roll_.reset();
+  }
   // T of the filter = the measured tick period: after a preemption sleep_until() runs the
   // missed ticks back to back, and their samples are microseconds apart, not 1 ms. Clamped so
   // a stall (debugger, suspend) cannot blow up the prediction.

@@ -145,6 +145,9 @@ class HapticLoop {
   // too (that one stays the caller's).
   void replace_scene(std::shared_ptr<const world::HapticScene> scene, std::string_view label = {});
   const world::HapticScene* scene() const;  // the one in use (haptic thread / between ticks)
+  // Any thread: the view goes back where the scene started ([navigation]'s offset and a rolling
+  // surface's turn reset) at the next tick: run's Home key.
+  void request_view_home() { home_pending_.store(true, std::memory_order_release); }
   void start();        // spawns the thread
   // After start(): "SCHED_FIFO 80", "normal" or "normal (SCHED_FIFO refused: <why>)".
   const std::string& priority() const { return priority_; }
@@ -212,6 +215,7 @@ class HapticLoop {
   std::shared_ptr<const world::HapticScene> pending_, retired_;
   std::string pending_label_;
   std::atomic<bool> swap_pending_{false};
+  std::atomic<bool> home_pending_{false};
   HapticState local_;        // haptic thread's working copy
   SampleRecorder* recorder_ = nullptr;
   std::array<TickFeed*, kMaxTickFeeds> tick_feeds_{};  // the first tick_feed_count_ are set

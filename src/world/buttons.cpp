@@ -52,32 +52,50 @@ double ButtonShape::press_depth_mm(const glm::dvec3& p, double r) const {
   return over(q) ? r - q.z : 0.0;
 }
 
-ButtonSet::ButtonSet(const std::vector<ButtonShape>& shapes, double probe_radius_mm)
+ButtonSet::ButtonSet(const std::vector<ButtonShape>& shapes, double probe_radius_mm, double coupling_n_per_mm)
     : shapes_(shapes.begin(), shapes.begin() + std::min<std::size_t>(shapes.size(), kMaxButtons)),
-      radius_mm_(probe_radius_mm) {
-  armed_.fill(true);
-}
+      radius_mm_(probe_radius_mm), coupling_n_per_mm_(coupling_n_per_mm) {}
 
-ButtonStepResult ButtonSet::step(const glm::dvec3& proxy_mm) {
+ButtonStepResult ButtonSet::step(const glm::dvec3& proxy_mm, const glm::dvec3& hand_mm) {
   ButtonStepResult r;
   for (std::size_t i = 0; i < shapes_.size(); ++i) {
     const ButtonShape& b = shapes_[i];
-    const double depth = b.press_depth_mm(proxy_mm, radius_mm_);
-    if (!armed_[i]) {
-      if (depth <= 0.0) armed_[i] = true;  // the probe left it: the next push fires again
+    ButtonPhase& phase = phase_[i];
+    const glm::dvec3 q = b.to_local(proxy_mm);
+    if (!b.over(q)) {  // left sideways: ready for the next approach
+      phase = ButtonPhase::kIdle;
       continue;
     }
-    if (depth <= 0.0) continue;
+    const double depth = radius_mm_ - q.z;
+    if (depth <= -kButtonClearMm) phase = ButtonPhase::kReady;  // clear of the face: approached
+    if (depth <= 0.0) {
+      if (phase != ButtonPhase::kIdle) phase = ButtonPhase::kReady;  // out again: re-armed
+      continue;
+    }
+    if (phase == ButtonPhase::kFired) continue;
+    if (phase == ButtonPhase::kIdle) {  // in without an approach: held flush
+      const double hand_depth = std::max(0.0, b.press_depth_mm(hand_mm, radius_mm_));
+      r.force_n += (1.0 - kHeldShare) * coupling_n_per_mm_ * hand_depth * b.normal();
+      continue;
+    }
+    phase = ButtonPhase::kPressing;
     r.pressed = static_cast<int>(i);
     r.depth_mm = depth;
     if (depth >= b.travel_mm) {  // gives way: the force stops, the action fires
-      armed_[i] = false;
+      phase = ButtonPhase::kFired;
       r.fired[static_cast<std::size_t>(r.fired_count++)] = static_cast<int>(i);
       continue;
     }
     r.force_n += b.stiffness_n_per_mm * depth * b.normal();
   }
   return r;
+}
+
+double deepest_press_mm(const std::vector<ButtonShape>& shapes, double coupling_n_per_mm) {
+  double deepest = 0.0;
+  for (const ButtonShape& b : shapes)
+    deepest = std::max(deepest, b.travel_mm * (coupling_n_per_mm + b.stiffness_n_per_mm) / coupling_n_per_mm);
+  return deepest;
 }
 
 }  // namespace ps::world

@@ -53,6 +53,7 @@ Scene floor_with_button(const Button& b) {
 TEST(ButtonSetTest, SpringUntilTheTravelThenFiresExactlyOnce) {
   const ButtonShape shape = ButtonShape::make(flush_button(), 5);
   ButtonSet set({shape}, kR);
+  set.step({3.0, -2.0, kR + 2.0});  // hovering 2 mm over it: approached from the front
   auto press_to = [&](double depth_mm, int steps) {
     int fired = 0;
     for (int i = 0; i <= steps; ++i) {  // down, then back up to 2 mm above the face
@@ -187,6 +188,61 @@ TEST(ButtonLoopTest, ResistsThroughTheCouplingThenFiresOncePerPress) {
   const std::vector<HapticEvent> repeat = press_twice(6.0, &again, nullptr);
   ASSERT_EQ(repeat.size(), deep.size());
   for (std::size_t i = 0; i < deep.size(); ++i) EXPECT_EQ(event_json(repeat[i]), event_json(deep[i])) << i;
+}
+
+// Seed 002's push is along the button's normal: a probe that slides onto the button sideways with
+// the hand pressed in (over the wall beside it, the proxy resting on the face) does not press it.
+// The button holds it flush (a held button gives way by kHeldShare of the hand's depth) and never
+// fires however deep the hand goes; lifted clear of the face, the next push is a press and fires.
+TEST(ButtonSetTest, ASlideAcrossTheFaceNeverFiresALiftAndPushDoes) {
+  const ButtonShape shape = ButtonShape::make(flush_button(), 5);  // 30 x 20 mm around the origin
+  ButtonSet set({shape}, kR, 0.5);
+  int fired = 0;
+  for (int i = 0; i <= 200; ++i) {  // from 40 mm left of it to its centre, on the face, hand 6 mm in
+    const double x = -40.0 + 40.0 * i / 200.0;
+    const double proxy_depth = x > -15.0 ? 6.0 * kHeldShare : 0.0;  // what the coupling leaves it
+    const ButtonStepResult r = set.step({x, 0.0, kR - proxy_depth}, {x, 0.0, kR - 6.0});
+    fired += r.fired_count;
+    EXPECT_EQ(r.pressed, -1) << "a held button is not pressed, x " << x;
+    if (x > -15.0) {
+      // The hold's force, from the hand's depth: (1 - share) k_c x_hand (1e-12: arithmetic).
+      EXPECT_NEAR(r.force_n.z, (1.0 - kHeldShare) * 0.5 * 6.0, 1e-12) << x;
+      EXPECT_EQ(set.phase(0), ButtonPhase::kIdle);
+    }
+  }
+  // Even the proxy at the full travel, not approached: no firing.
+  for (int i = 0; i < 50; ++i) fired += set.step({0.0, 0.0, kR - 3.5}, {0.0, 0.0, kR - 9.0}).fired_count;
+  EXPECT_EQ(fired, 0);
+  // Resting on the face is not clear of it; a quarter step above it is.
+  set.step({0.0, 0.0, kR}, {0.0, 0.0, kR});
+  EXPECT_EQ(set.phase(0), ButtonPhase::kIdle);
+  set.step({0.0, 0.0, kR + kButtonClearMm}, {0.0, 0.0, kR + kButtonClearMm});
+  EXPECT_EQ(set.phase(0), ButtonPhase::kReady);
+  for (int i = 0; i <= 40; ++i) fired += set.step({0.0, 0.0, kR - 0.1 * i}).fired_count;  // down to 4 mm in
+  EXPECT_EQ(fired, 1);
+}
+
+// A scene starts (at launch, after a button's or Backspace's switch) with every button not
+// ready: a probe already in a button (the Backspace that left it sunk in the panel's Field
+// button) cannot fire it in the first tick, nor later until it has left the button.
+TEST(ButtonSetTest, NothingFiresUntilTheProbeHasLeftTheButtonAfterAStart) {
+  const ButtonShape shape = ButtonShape::make(flush_button(), 5);
+  for (const glm::dvec3 leave : {glm::dvec3(30.0, 0.0, kR - 1.0), glm::dvec3(0.0, 0.0, kR + 1.0)}) {
+    ButtonSet set({shape}, kR, 0.5);  // as after a scene switch
+    int fired = 0;
+    for (int i = 0; i < 100; ++i) fired += set.step({0.0, 0.0, kR - 3.2}, {0.0, 0.0, kR - 5.0}).fired_count;
+    EXPECT_EQ(fired, 0) << "sunk in it at the start";
+    set.step(leave);  // sideways off it, or lifted 1 mm clear
+    for (int i = 0; i <= 50; ++i) fired += set.step({0.0, 0.0, kR + 1.0 - 0.1 * i}).fired_count;  // then pushed from above
+    EXPECT_EQ(fired, 1) << "one push after leaving it";
+  }
+}
+
+// The height control must reach the depth a button fires at: travel (k_c + k) / k_c.
+TEST(ButtonSetTest, DeepestPressIsTheTravelThroughTheCoupling) {
+  const ButtonShape shape = ButtonShape::make(flush_button(), 5);
+  EXPECT_NEAR(deepest_press_mm({shape}, 0.5), 3.0 * 0.7 / 0.5, 1e-12);
+  EXPECT_EQ(deepest_press_mm({}, 0.5), 0.0);
 }
 
 }  // namespace
