@@ -172,10 +172,15 @@ Status open_device(const RunArgs& a, Session& s) {
 
 // The hand must be able to push every button of the scene past its travel through the coupling
 // (world::deepest_press_mm), with one height step to spare so that PageDown lands beyond it.
+// The height is measured from the pointer's plane (s.axes), which need not pass through a
+// button's face: Weight's plane is the camera target's, 20 mm above the floor its button sits
+// in, so that button needs 20 mm more.
 void fit_height_to_buttons(Session& s, const world::HapticScene& scene) {
   if (!s.glfw_device) return;
   const double coupling = s.loop->params().forces.coupling_n_per_mm;
-  const double deepest = world::deepest_press_mm(scene.button_shapes(), coupling);
+  double deepest = 0.0;
+  for (const world::ButtonShape& b : scene.button_shapes())
+    deepest = std::max(deepest, glm::dot(s.axes.origin - b.center, s.axes.n) + world::deepest_press_mm({b}, coupling));
   s.glfw_device->reach_depth(deepest > 0.0 ? deepest + GlfwInputParams{}.height.step_mm : 0.0);
 }
 

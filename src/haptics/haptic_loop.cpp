@@ -265,8 +265,12 @@ glm::dvec3 HapticLoop::navigate(double dt) {
   const glm::dvec3 hand = local_.position_mm;  // workspace
   glm::dvec3 v(0.0), wall(0.0);
   if (nav.enabled) {
+    // A rate control with the box as its dead zone, on the device's own position: the Kalman
+    // filter overshoots a step (a mouse jumping from the window's edge back to its centre), and
+    // the view must stop when the hand is back inside, not travel on (38 mm back in `run`).
+    const glm::dvec3 at = last_fed_.position_mm;
     const glm::dvec3 half = 0.5 * nav.box_size_mm;
-    const glm::dvec3 past = hand - glm::clamp(hand, nav.box_center - half, nav.box_center + half);
+    const glm::dvec3 past = at - glm::clamp(at, nav.box_center - half, nav.box_center + half);
     v = nav.speed_mm_s_per_mm * past;
     const double speed = glm::length(v);
     if (speed > nav.max_speed_mm_s) v *= nav.max_speed_mm_s / speed;

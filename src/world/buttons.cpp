@@ -67,7 +67,11 @@ ButtonStepResult ButtonSet::step(const glm::dvec3& proxy_mm, const glm::dvec3& h
       continue;
     }
     const double depth = radius_mm_ - q.z;
-    if (depth <= -kButtonClearMm) phase = ButtonPhase::kReady;  // clear of the face: approached
+    // Clear of the face: approached. The hand too, as it is when the probe comes at the button
+    // freely: a proxy put above the face by a scene switch while the hand is deep would
+    // otherwise count as an approach and fall into a press.
+    const double hand_depth = radius_mm_ - b.to_local(hand_mm).z;
+    if (depth <= -kButtonClearMm && hand_depth <= -kButtonClearMm) phase = ButtonPhase::kReady;
     if (depth <= 0.0) {
       if (phase != ButtonPhase::kIdle) phase = ButtonPhase::kReady;  // out again: re-armed
       continue;

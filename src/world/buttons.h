@@ -68,7 +68,8 @@ enum class ButtonPhase : std::uint8_t {
   kFired,     // gave way: no force until the probe is back out of it
 };
 
-// How far above the face the probe's lowest point must be for the face to count as approached:
+// How far above the face the probe's lowest point must be for the face to count as approached
+// (the proxy's and the hand's, ButtonSet::step):
 // a probe resting on the face (the god-object holds it within 1e-6 mm) has not left it, one
 // lifted by a quarter of a height step (0.5 mm) has.
 inline constexpr double kButtonClearMm = 0.25;

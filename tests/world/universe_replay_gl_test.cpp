@@ -236,7 +236,9 @@ TEST_P(UniverseReplayGLTest, WeightsFirstBounceRisesAsItsRestitutionSays) {
 // through the camera as the file has it (the mouse moves the hand in the workspace), the frames
 // change while the view travels and not once it has stopped (1.6 s and 2.0 s: the same bytes).
 TEST_P(UniverseReplayGLTest, FieldsViewTravelsWithTheBox) {
-  World w = open_world("field.toml", {"render.size=[64,64]", "render.depth_map_size=32"});
+  // The box the trajectory was written for (field.toml's is narrower now: UniverseMouseGLTest).
+  World w = open_world("field.toml", {"render.size=[64,64]", "render.depth_map_size=32",
+                                      "navigation.box_size_mm=[130,100,60]"});
   std::vector<Image> frames;
   glm::dvec3 offset(0.0);
   replay_world(w, "universe_field_navigate.traj", 10.0, [&](int, double, const HapticState& s, const Renderer& rr) {
