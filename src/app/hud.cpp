@@ -131,7 +131,7 @@ std::vector<std::string> hud_lines(const HudReadouts& r) {
   if (r.flags) out.push_back(line("flags on", "%s", r.flags->empty() ? "none" : r.flags->c_str()));
   if (r.view_mm) out.push_back(line("view", "%+.0f %+.0f %+.0f mm", r.view_mm->x, r.view_mm->y, r.view_mm->z));
   if (r.rolled_deg) out.push_back(line("rolled", "%.0f deg", *r.rolled_deg));
-  if (r.turn4_deg) {  // the planes the keys name (help: "1 2 3 / Shift  4D turn xy xz xw")
+  if (r.turn4_deg) {  // the planes the keys name (help: "1-3 / Shift  4D xy xz xw")
     const std::array<double, 6>& a = *r.turn4_deg;
     out.push_back(line("4D xy xz xw", "%.0f %.0f %.0f deg", a[0], a[1], a[2]));
     out.push_back(line("4D yz yw zw", "%.0f %.0f %.0f deg", a[3], a[4], a[5]));

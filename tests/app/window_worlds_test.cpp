@@ -63,9 +63,9 @@ TEST(ButtonOverlayTest, LabelsDefaultToTheTargetsName) {
   EXPECT_NE(long_label.error().message.find("label"), std::string::npos) << long_label.error().message;
 }
 
-// The boxes as `run` sizes them (ImGui's 7 x 13 px font, 8 px padding): the readouts with a
-// button line 184 x 146; the help in two columns (8 rows, a blank line, the 2-line legend) 408
-// x 159, in one column (16 rows, a blank line, the legend wrapped in 4) 212 x 289.
+// The boxes at least as large as `run` draws them (ImGui's 7 x 13 px font, 8 px padding;
+// measured in `run --ui-report` on panel.toml: readouts 170 x 146, narrow help 205 x 289): the
+// readouts 184 x 146; the help in two columns 408 x 159, in one column 212 x 289.
 UiLayoutInput window_with(const std::vector<ButtonOverlay>& buttons, UiRect shadow) {
   UiLayoutInput in;
   in.width = 1080.f;
