@@ -155,7 +155,7 @@ void HapticLoop::adopt_pending_scene(Clock::Ns now) {
   // The new scene's bodies start afresh (a rare event: the vectors' old storage is freed here).
   bodies_ = world::BodySet(pending_->bodies(), pending_->fields().gravity_mm_s2());
   buttons_ = world::ButtonSet(pending_->button_shapes(), pending_->probe_radius_mm(),
-                              params_.forces.coupling_n_per_mm);
+                              params_.forces.coupling_n_per_mm, true);  // nothing fires until the probe has left
   local_.flags = 0;  // flags are the scene's: a new scene starts with all of them off
   view_ = fourd::ViewPose{};  // and its own view
   roll_.reset();
@@ -204,7 +204,11 @@ void HapticLoop::adopt_live_charges(double t) {
 void HapticLoop::press_buttons(const glm::dvec3& anchor, double t, glm::dvec3& force) {
   if (buttons_.size() == 0) return;
   const world::HapticScene& scene = god_->scene();
-  const world::ButtonStepResult r = buttons_.step(anchor, local_.position_mm);
+  // The hand as the device gives it, not the Kalman estimate: after a scene switch the filter
+  // sweeps from the old scene's mapping of the pointer to the new one over some ticks, and that
+  // sweep can pass over a button clear of its face like an approach (run fired the panel's
+  // Weight button 20 ms after a Backspace). The raw position jumps instead.
+  const world::ButtonStepResult r = buttons_.step(anchor, local_.device_mm);
   force += r.force_n;
   local_.button_pressed = r.pressed;
   local_.button_depth_mm = r.depth_mm;

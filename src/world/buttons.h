@@ -66,6 +66,10 @@ enum class ButtonPhase : std::uint8_t {
   kReady,     // the probe is over the face and clear of it: the next push is a press
   kPressing,  // pushed in from kReady: the button's spring, fires at the travel
   kFired,     // gave way: no force until the probe is back out of it
+  // After a scene switch: held like kIdle until the hand has left the button sideways. Lifting
+  // is not enough here: for a frame or more after a switch the hand may still be mapped through
+  // the old scene's camera and plane, and the proxy starts where the old scene left it.
+  kLeaveFirst,
 };
 
 // How far above the face the probe's lowest point must be for the face to count as approached
@@ -83,7 +87,10 @@ class ButtonSet {
   ButtonSet() = default;
   // coupling_n_per_mm: the virtual coupling between hand and proxy (HapticsParams), which sets
   // the force that holds a button flush.
-  ButtonSet(const std::vector<ButtonShape>& shapes, double probe_radius_mm, double coupling_n_per_mm = 0.5);
+  // after_switch: the scene was switched to (not opened at start): every button starts in
+  // kLeaveFirst.
+  ButtonSet(const std::vector<ButtonShape>& shapes, double probe_radius_mm, double coupling_n_per_mm = 0.5,
+            bool after_switch = false);
 
   // One tick with the probe (the proxy) at proxy_mm and the hand at hand_mm. A button pressed
   // from kReady pushes back with F = k depth n while 0 < depth < travel; at depth >= travel it

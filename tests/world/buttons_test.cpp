@@ -248,6 +248,23 @@ TEST(ButtonSetTest, NothingFiresUntilTheProbeHasLeftTheButtonAfterAStart) {
     fired += set.step({0.0, 0.0, proxy_z}, {0.0, 0.0, kR - 4.5}).fired_count;
   }
   EXPECT_EQ(fired, 0);
+  // After a switch even proxy and hand both clear for a while (a hand still mapped through the
+  // old scene's plane, then the new one's) do not ready it, nor a proxy that starts beside it
+  // (where the old scene left it) and comes over it clear while the hand is deep: only the
+  // hand leaving it sideways does.
+  ButtonSet switched({shape}, kR, 0.5, true);
+  for (int i = 0; i < 50; ++i) fired += switched.step({0.0, 0.0, kR + 15.0}).fired_count;
+  for (int i = 0; i <= 50; ++i) fired += switched.step({0.0, 0.0, kR + 1.0 - 0.1 * i}).fired_count;
+  EXPECT_EQ(fired, 0) << "lifted, then pushed, without leaving it";
+  ButtonSet teleported({shape}, kR, 0.5, true);
+  for (int i = 0; i <= 100; ++i) {  // the proxy from 40 mm beside and 15 mm above onto the hand
+    const double x = std::max(0.0, 40.0 - i), z = std::max(kR - 3.2, kR + 15.0 - 0.3 * i);
+    fired += teleported.step({x, 0.0, z}, {0.0, 0.0, kR - 4.5}).fired_count;
+  }
+  EXPECT_EQ(fired, 0) << "a proxy arriving from the old scene's place";
+  switched.step({30.0, 0.0, kR + 1.0});  // off it sideways
+  for (int i = 0; i <= 50; ++i) fired += switched.step({0.0, 0.0, kR + 1.0 - 0.1 * i}).fired_count;
+  EXPECT_EQ(fired, 1);
 }
 
 // The height control must reach the depth a button fires at: travel (k_c + k) / k_c.
