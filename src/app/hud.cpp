@@ -6,6 +6,7 @@
 #include <backends/imgui_impl_glfw.h>
 #include <backends/imgui_impl_opengl3.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdarg>
 #include <cstdio>
@@ -32,10 +33,32 @@ std::string line(const char* name, const char* fmt, ...) {
   return out;
 }
 
-std::string help_text() {
-  std::string text = run_keys_text("", 2);
+// The keys in two columns and the legend under them; narrow: one column, the legend wrapped to
+// its width (where the wide box would cover a button, app/ui_layout.h).
+std::string help_text(bool narrow = false) {
+  std::string text = run_keys_text("", narrow ? 1 : 2);
   text += "\n";
-  for (const char* l : shadow_legend()) text += std::string(l) + "\n";
+  if (!narrow) {
+    for (const char* l : shadow_legend()) text += std::string(l) + "\n";
+  } else {
+    std::size_t width = 0;
+    for (std::size_t a = 0, b; (b = text.find('\n', a)) != std::string::npos; a = b + 1) width = std::max(width, b - a);
+    std::string legend;
+    for (const char* l : shadow_legend()) legend += std::string(legend.empty() ? "" : " ") + l;
+    std::string row;
+    for (std::size_t a = 0; a < legend.size();) {
+      std::size_t b = legend.find(' ', a);
+      if (b == std::string::npos) b = legend.size();
+      const std::string word = legend.substr(a, b - a);
+      if (!row.empty() && row.size() + 1 + word.size() > width) {
+        text += row + "\n";
+        row.clear();
+      }
+      row += (row.empty() ? "" : " ") + word;
+      a = b + 1;
+    }
+    if (!row.empty()) text += row + "\n";
+  }
   text.pop_back();
   return text;
 }
@@ -60,6 +83,20 @@ ImVec2 box_size(const std::string& text) {
   const ImVec2 t = ImGui::CalcTextSize(text.c_str());
   const ImVec2 pad = ImGui::GetStyle().WindowPadding;
   return ImVec2(std::ceil(t.x + 2.f * pad.x), std::ceil(t.y + 2.f * pad.y));
+}
+
+// Each button's label on its lower edge, over a dark band so it reads on any picture. Drawn
+// behind every ImGui window (the background list): the layout keeps the boxes off the buttons.
+void draw_button_labels(const std::vector<ButtonOverlay>& buttons) {
+  ImDrawList* dl = ImGui::GetBackgroundDrawList();
+  for (const ButtonOverlay& b : buttons) {
+    if (b.label.empty()) continue;
+    const ImVec2 t = ImGui::CalcTextSize(b.label.c_str());
+    const float pad = 3.f;
+    const float x = std::round(0.5f * (b.rect.x0 + b.rect.x1 - t.x)), y = std::round(b.rect.y1 - t.y - 2.f * pad);
+    dl->AddRectFilled(ImVec2(x - pad, y - pad), ImVec2(x + t.x + pad, y + t.y + pad), IM_COL32(0, 0, 0, 170), 3.f);
+    dl->AddText(ImVec2(x, y), IM_COL32(255, 255, 255, 255), b.label.c_str());
+  }
 }
 
 }  // namespace
@@ -89,7 +126,13 @@ std::vector<std::string> hud_lines(const HudReadouts& r) {
   if (r.flags) out.push_back(line("flags on", "%s", r.flags->empty() ? "none" : r.flags->c_str()));
   if (r.view_mm) out.push_back(line("view", "%+.0f %+.0f %+.0f mm", r.view_mm->x, r.view_mm->y, r.view_mm->z));
   if (r.rolled_deg) out.push_back(line("rolled", "%.0f deg", *r.rolled_deg));
+  if (r.turn4_deg) {  // the planes the keys name (help: "1-3 / Shift  4D xy xz xw")
+    const std::array<double, 6>& a = *r.turn4_deg;
+    out.push_back(line("4D xy xz xw", "%.0f %.0f %.0f deg", a[0], a[1], a[2]));
+    out.push_back(line("4D yz yw zw", "%.0f %.0f %.0f deg", a[3], a[4], a[5]));
+  }
   if (!r.error.empty()) out.push_back(line("reload", "FAILED (F1)"));
+  if (!r.notice.empty()) out.push_back(line("note", "%s", r.notice.c_str()));
   return out;
 }
 
@@ -115,7 +158,7 @@ WindowUi::~WindowUi() {
 }
 
 UiFrameReport WindowUi::draw(const HudReadouts& readouts, const ShadowMeasure& shadow, TuneSession& session,
-                             double now_s) {
+                             double now_s, const std::vector<ButtonOverlay>& buttons) {
   if (help_timeout_ && now_s >= kHelpSeconds) hide_help();
   ImGui_ImplOpenGL3_NewFrame();
   ImGui_ImplGlfw_NewFrame();
@@ -123,7 +166,7 @@ UiFrameReport WindowUi::draw(const HudReadouts& readouts, const ShadowMeasure& s
   std::string hud_text;
   for (const std::string& l : hud_lines(readouts)) hud_text += l + "\n";
   hud_text.pop_back();
-  const std::string help = help_text();
+  const std::string help = help_text(), help_narrow = help_text(true);
   const ImVec2 display = ImGui::GetIO().DisplaySize, hud_size = box_size(hud_text), help_size = box_size(help);
   UiLayoutInput in;
   in.width = display.x;
@@ -137,19 +180,28 @@ UiFrameReport WindowUi::draw(const HudReadouts& readouts, const ShadowMeasure& s
   in.help = help_;
   in.help_w = help_size.x;
   in.help_h = help_size.y;
+  if (!buttons.empty()) {  // only where buttons may need the room
+    const ImVec2 narrow_size = box_size(help_narrow);
+    in.help_narrow_w = narrow_size.x;
+    in.help_narrow_h = narrow_size.y;
+  }
+  for (const ButtonOverlay& b : buttons) in.buttons.push_back(b.rect);
+  if (ImGui::IsMousePosValid()) in.pointer = std::make_pair(ImGui::GetIO().MousePos.x, ImGui::GetIO().MousePos.y);
   in.last = placement_;
   const UiLayout layout = layout_ui(in);
   placement_ = layout.placement;
 
   UiFrameReport report;
   report.shadow = shadow.bbox;
+  report.buttons = in.buttons;
+  draw_button_labels(buttons);
   if (layout.panel) {
     UiRect dock = *layout.panel;
     dock.y1 = display.y;  // the expanded size; a collapsed panel draws its title bar only
     report.panel = panel_.draw(session, dock);
   }
   if (layout.hud) report.hud = text_box("##readouts", *layout.hud, hud_text, 0.65f);
-  if (layout.help) report.help = text_box("##help", *layout.help, help, 0.8f);
+  if (layout.help) report.help = text_box("##help", *layout.help, layout.help_narrow ? help_narrow : help, 0.8f);
   ImGui::Render();
   glBindFramebuffer(GL_FRAMEBUFFER, 0);
   ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());

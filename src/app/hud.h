@@ -14,12 +14,14 @@
 // unaffected. Drawn after screenshots (S) are read back, so they never appear in them.
 #pragma once
 
+#include <array>
 #include <optional>
 #include <string>
 #include <vector>
 
 #include <glm/glm.hpp>
 
+#include "app/button_overlay.h"
 #include "app/readout_state.h"
 #include "app/tune_panel.h"
 #include "app/ui_layout.h"
@@ -42,11 +44,14 @@ struct HudReadouts {
   double force_n = 0.0;
   double bake_progress = 1.0;            // Gabor tile bake, 0..1 (< 1: the per-pixel sum is drawn)
   std::string error;                     // a failed reload's message; empty: none
+  std::string notice;                    // a short answer to a key ("nothing to go back to"); empty: none
   int button = -1;                       // the button pressed (-1: none), how far, and its travel
   double button_depth_mm = 0.0, button_travel_mm = 0.0;
   std::optional<std::string> flags;      // the scene's flags that are on ("" none); none: no flags
   std::optional<glm::dvec3> view_mm;     // [navigation]: how far the view has moved; none: no box
   std::optional<double> rolled_deg;      // rolling manifold: how far the view has turned; none: no rolling
+  // surfaces embedded in 4D: the turn in the xy, xz, xw, yz, yw, zw planes (keys 1-6), degrees
+  std::optional<std::array<double, 6>> turn4_deg;
 };
 
 // The readouts as "name  value" lines (the box draws them in this order).
@@ -77,8 +82,10 @@ class WindowUi {
   // One ImGui frame over the default framebuffer's back buffer: lays the boxes out around
   // `shadow`, draws them and applies panel edits to `session`. `now_s`: session time, for the
   // help's timeout. Returns the rectangles drawn (window pixels).
+  // `buttons`: the scene's buttons on screen (app/button_overlay.h): each gets its label, and
+  // the readouts and help keep off them.
   UiFrameReport draw(const HudReadouts& readouts, const ShadowMeasure& shadow, TuneSession& session,
-                     double now_s);
+                     double now_s, const std::vector<ButtonOverlay>& buttons = {});
 
  private:
   TunePanel panel_;

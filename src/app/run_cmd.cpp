@@ -19,6 +19,7 @@
 #include "app/commands.h"
 #include "app/free_height.h"
 #include "app/hud.h"
+#include "app/panel_links.h"
 #include "app/readouts_log.h"
 #include "app/run_events.h"
 #include "app/run_keys.h"
@@ -158,6 +159,8 @@ struct Session {  // everything the window loop touches, grouped by owner thread
   std::string pending_scene;          // a button's scene action, carried out after this frame
   std::vector<std::string> came_from; // scenes a button switched away from (Backspace goes back)
   bool going_back = false;            // the pending switch is a Backspace: do not remember it
+  std::string notice;                 // a short answer shown in the readouts until notice_until_s
+  double notice_until_s = 0.0, now_s = 0.0;  // now_s: this frame's window time
   std::map<std::string, std::string> haptic_edits;  // the panel's edits the haptic scene was built with
   ReadoutsLog readouts_log;           // --readouts-log
   int frame_keys = 0;                 // key presses handled this frame (the readouts log's `keys`)
@@ -176,6 +179,22 @@ Status open_device(const RunArgs& a, Session& s) {
   s.device = std::move(d->device);
   s.pointer_device = d->pointer;
   return ok_status();
+}
+
+// The hand must be able to push every button of the scene past its travel through the coupling
+// (world::deepest_press_mm), with one height step to spare so that PageDown lands beyond it.
+// The height is measured from the pointer's plane (s.axes), which need not pass through a
+// button's face: Weight's plane is the camera target's, 20 mm above the floor its button sits
+// in, so that button needs 20 mm more.
+void fit_height_to_buttons(Session& s, const world::HapticScene& scene) {
+  if (!s.glfw_device) return;
+  const double coupling = s.loop->params().forces.coupling_n_per_mm;
+  double deepest = 0.0;
+  // The hover height counts from the surface under the pointer (app/free_height.h), a button's
+  // face included: the range needs the deepest press below a face, not below the plane.
+  for (const world::ButtonShape& b : scene.button_shapes())
+    deepest = std::max(deepest, world::deepest_press_mm({b}, coupling));
+  s.glfw_device->reach_depth(deepest > 0.0 ? deepest + GlfwInputParams{}.height.step_mm : 0.0);
 }
 
 // The pointer devices map through the camera this frame draws with (it orbits and zooms) and
@@ -239,6 +258,7 @@ Status open_session(const RunArgs& a, Scene scene, Session& s) {
   s.haptic_scene = std::make_shared<const world::HapticScene>(std::move(haptic_scene.value()));
   s.floor.set_scene(s.haptic_scene);  // the first sample already hovers over what is under the pointer
   s.loop = std::make_unique<HapticLoop>(*s.device, s.clock, params, s.haptic_scene.get());
+  fit_height_to_buttons(s, *s.haptic_scene);
   s.vibration = cli::open_live_vibration(a.live, s.tune->renderer().scene(), *s.loop);
   if (s.glfw_device || s.pointer_device) {  // they move over the plane: distance known from the start
     s.loop->surface().publish(initial_surface_model(s.axes, s.tune->renderer().scene().probe.radius_mm));
@@ -290,7 +310,8 @@ HudReadouts readouts(const Session& s, const HapticState& st, const ShadowMeasur
   r.penetration_mm = s.tune->renderer().stats().max_penetration_mm;
   r.force_n = glm::length(st.force_n);
   r.bake_progress = s.tune->renderer().stats().bake_progress;
-  r.error = s.tune->last_error();
+  r.error = panel_message(s.tune->last_error());  // a panel edit's error speaks of the panel
+  if (s.now_s < s.notice_until_s) r.notice = s.notice;
   const Scene& sc = s.tune->renderer().scene();
   if (st.button_pressed >= 0 && static_cast<std::size_t>(st.button_pressed) < sc.buttons.size()) {
     r.button = st.button_pressed;
@@ -304,6 +325,12 @@ HudReadouts readouts(const Session& s, const HapticState& st, const ShadowMeasur
     r.flags = on;
   }
   if (sc.navigation.enabled) r.view_mm = st.view_offset_mm;
+  // The 4D turn of the first surface embedded in 4D (keys 1-6 turn them all alike).
+  for (const Surface& x : sc.surfaces)
+    if (x.type == SurfaceType::kFourd) {
+      r.turn4_deg = x.fourd.rotation_deg;
+      break;
+    }
   // A rolling fourd surface: the angle the view has turned from the scene's (docs/fourd.md).
   if (std::any_of(sc.surfaces.begin(), sc.surfaces.end(), [](const Surface& x) { return x.fourd.roll.on; })) {
     const glm::dmat3& m = st.view_rotation;
@@ -328,6 +355,24 @@ std::string screenshot_state(const TuneSession& tune) {
 }
 
 void edit_live_charges(Session& s, bool add);  // below, with the reload
+
+// Seconds a notice stays in the readouts: long enough to read a short line.
+constexpr double kNoticeSeconds = 3.0;
+
+// Backspace always answers: back to the scene a button came from, or a notice saying there is
+// none (a scene opened directly), in the readouts and on the console.
+void go_back(Session& s) {
+  if (!s.pending_scene.empty()) return;  // a switch is already on its way
+  if (s.came_from.empty() || s.came_from.back().empty()) {
+    s.notice = "nothing to go back to";
+    s.notice_until_s = s.now_s + kNoticeSeconds;
+    s.readouts_s = -1.0;  // shown at the next frame, not at the next refresh
+    std::printf("Backspace: nothing to go back to (this scene was not opened by a button)\n");
+    return;
+  }
+  s.pending_scene = s.came_from.back();
+  s.going_back = true;
+}
 void turn_fourd_surfaces(Session& s, int (&steps)[6]);  // below: keys 1-6, a 4D turn
 
 Status handle_keys(Session& s, int w, int h) {
@@ -355,10 +400,8 @@ Status handle_keys(Session& s, int w, int h) {
   if (in.toggle_device) s.tune->renderer().set_show_device(!s.tune->renderer().show_device());
   in.toggle_device = false;
   if (in.add_charge || in.remove_charge) edit_live_charges(s, in.add_charge);
-  if (std::exchange(in.back, false) && !s.came_from.empty() && !s.came_from.back().empty() && s.pending_scene.empty()) {
-    s.pending_scene = s.came_from.back();
-    s.going_back = true;
-  }
+  if (std::exchange(in.back, false)) go_back(s);
+  if (std::exchange(in.home, false)) s.loop->request_view_home();
   in.add_charge = in.remove_charge = false;
   turn_fourd_surfaces(s, in.turn4);
   Camera cam = s.tune->renderer().scene().camera;
@@ -508,7 +551,10 @@ Status draw_overlays(const RunArgs& a, Session& s, const HapticState& st, std::u
     glfwSetWindowTitle(s.ctx->window(), title_summary(s.readouts).c_str());
     s.readouts_s = now_s;
   }
-  UiFrameReport report = s.ui->draw(s.readouts, shadow.value(), *s.tune, now_s);
+  const Scene& sc = s.tune->renderer().scene();  // its camera: the one this frame drew with
+  const auto buttons = project_buttons(sc, sc.camera, static_cast<double>(sc.render.width) / sc.render.height,
+                                       static_cast<float>(w), static_cast<float>(h));
+  UiFrameReport report = s.ui->draw(s.readouts, shadow.value(), *s.tune, now_s, buttons);
   report.frame = frame;
   if (!a.ui_report.empty()) s.ui_frames.push_back(report);
   return ok_status();
@@ -553,6 +599,7 @@ void switch_scene(const RunArgs& a, Session& s) {
   s.tune->renderer().set_show_probe(a.show_probe);
   s.tune->renderer().set_show_device(a.show_device);
   s.axes = pointer_plane(s.tune->renderer());
+  fit_height_to_buttons(s, haptic.value());
   auto felt = std::make_shared<const world::HapticScene>(std::move(haptic.value()));
   const std::optional<glm::dvec3> hand = place_hand(s, felt, true);
   s.loop->replace_scene(std::move(felt), std::filesystem::path(path).filename().string(), hand);
@@ -567,6 +614,7 @@ Status window_loop(const RunArgs& a, Session& s) {
   for (std::uint64_t frame = 0;; ++frame) {
     const auto f0 = std::chrono::steady_clock::now();
     const double now_s = std::chrono::duration<double>(f0 - t0).count();
+    s.now_s = now_s;
     glfwPollEvents();
     if (glfwWindowShouldClose(win) || s.input.quit) break;
     if ((a.frames > 0 && static_cast<long long>(frame) >= a.frames) || (a.quit_after_s > 0 && now_s >= a.quit_after_s)) break;

@@ -8,6 +8,7 @@
 #include <cmath>
 #include <cstdio>
 
+#include "app/panel_links.h"
 #include "reference/modulation.h"
 #include "tune/overrides_file.h"
 
@@ -15,35 +16,6 @@ namespace ps {
 
 namespace {
 
-constexpr double kRadToDeg = 180.0 / M_PI;
-
-// One editable number: scene key (last component), unit, slider range (the file's valid range
-// is wider; ctrl+click a slider to type any value, the scene loader still checks it).
-struct Param {
-  const char* key;
-  const char* unit;
-  float lo, hi;
-  bool log;
-  double (*get)(const Material&);
-};
-
-const Param kMaterialParams[] = {
-    {"a_min", "", 0.f, 1.f, false, [](const Material& m) { return m.gabor.a_min; }},
-    {"a_max", "", 0.f, 1.f, false, [](const Material& m) { return m.gabor.a_max; }},
-    {"lambda_min", "mm", 0.05f, 20.f, true, [](const Material& m) { return m.gabor.lambda_min_mm; }},
-    {"lambda_max", "mm", 0.05f, 20.f, true, [](const Material& m) { return m.gabor.lambda_max_mm; }},
-    {"theta_min", "deg", -180.f, 180.f, false, [](const Material& m) { return m.gabor.theta_min_rad * kRadToDeg; }},
-    {"theta_max", "deg", -180.f, 180.f, false, [](const Material& m) { return m.gabor.theta_max_rad * kRadToDeg; }},
-    {"n_min", "per kernel", 0.f, 100.f, false, [](const Material& m) { return m.gabor.n_min; }},
-    {"n_max", "per kernel", 0.f, 100.f, false, [](const Material& m) { return m.gabor.n_max; }},
-    {"onset_distance_mm", "mm", 0.f, 50.f, false, [](const Material& m) { return m.onset_distance_mm; }},
-    {"intensity_floor", "", 0.f, 1.f, false, [](const Material& m) { return m.intensity_floor; }},
-    {"intensity_scale", "", 0.f, 10.f, false, [](const Material& m) { return m.intensity_scale; }},
-    {"intensity_offset_mm", "mm", 0.01f, 20.f, true, [](const Material& m) { return m.intensity_offset_mm; }},
-    {"peak_hz", "Hz", 1.f, 1000.f, true, [](const Material& m) { return m.peak_hz; }},
-    {"bandwidth_hz", "Hz", 1.f, 1000.f, true, [](const Material& m) { return m.bandwidth_hz; }},
-    {"resistance", "", 0.f, 1.f, false, [](const Material& m) { return m.resistance; }},
-};
 
 std::string number(double v) {
   char buf[32];
@@ -121,10 +93,10 @@ void TunePanel::apply_pending(TuneSession& session) {
       const Status s = session.set_curve(e.key, e.lut);
       status_ = s ? (e.lut.empty() ? "dropped the edit of " + e.key
                                    : "set " + e.key + " (" + std::to_string(e.lut.points.size()) + " rows)")
-                  : s.error().message;
+                  : panel_message(s.error().message);
     } else {
       const Status s = session.set(e.key, e.value);
-      status_ = s ? "set " + e.key + " = " + e.value : s.error().message;
+      status_ = s ? "set " + e.key + " = " + e.value : panel_message(s.error().message);
     }
   }
   pending_.clear();
@@ -143,10 +115,12 @@ void TunePanel::material_section(TuneSession& session) {
   }
   const Material& m = scene.materials[material_];
   const std::string prefix = "materials." + m.name + ".";
-  for (const Param& p : kMaterialParams) {
+  for (const PanelParam& p : panel_material_params()) {
     float v = static_cast<float>(p.get(m));
     const std::string label = std::string(p.key) + (p.unit[0] ? std::string(" (") + p.unit + ")" : "");
-    if (slider(label, prefix + p.key, &v, 1, p.lo, p.hi, p.log)) apply(session, prefix + p.key, number(v));
+    // A min/max pair stays ordered: the partner follows the knob (linked_edits).
+    if (slider(label, prefix + p.key, &v, 1, p.lo, p.hi, p.log))
+      for (const PanelEdit& e : linked_edits(m, p.key, v)) apply(session, e.key, number(e.value));
   }
   // The texture's anti-aliasing (docs/architecture.md, "Texture filtering"): off shows what the
   // unfiltered sum aliases.
@@ -332,7 +306,7 @@ UiRect TunePanel::draw(TuneSession& session, const UiRect& dock) {
 void TunePanel::contents(TuneSession& session) {
   if (!session.last_error().empty()) {  // reload errors are long (file:line + driver log): wrap
     ImGui::PushStyleColor(ImGuiCol_Text, ImVec4(1, 0.4f, 0.3f, 1));
-    ImGui::TextWrapped("reload failed, last good state kept: %s", session.last_error().c_str());
+    ImGui::TextWrapped("not applied, last good state kept: %s", panel_message(session.last_error()).c_str());
     ImGui::PopStyleColor();
   }
   if (ImGui::CollapsingHeader("material", ImGuiTreeNodeFlags_DefaultOpen)) material_section(session);

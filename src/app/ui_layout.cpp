@@ -59,8 +59,8 @@ std::vector<Candidate> hud_corners(const UiLayoutInput& in, float x0, float x1, 
   return c;
 }
 
-std::vector<Candidate> help_places(const UiLayoutInput& in, float x0, float x1) {
-  const float w = in.help_w, h = in.help_h, cx = x0 + std::max(kEdgeMargin, std::round((x1 - x0 - w) * 0.5f));
+std::vector<Candidate> help_places(const UiLayoutInput& in, float x0, float x1, float w, float h) {
+  const float cx = x0 + std::max(kEdgeMargin, std::round((x1 - x0 - w) * 0.5f));
   const float l = x0 + kEdgeMargin, r = x1 - kEdgeMargin - w;
   const float t = kEdgeMargin, b = in.height - kEdgeMargin - h;
   return {{UiRect::at(cx, b, w, h)}, {UiRect::at(cx, t, w, h)}, {UiRect::at(l, b, w, h)},
@@ -112,21 +112,43 @@ ShadowMeasure measure_shadow(const Image& intensity, const Image* distance, int 
 
 float panel_width_for(float window_width) { return std::clamp(std::round(0.3f * window_width), 150.f, 360.f); }
 
+namespace {
+
+// The panel's side. When both sides cover the shadow (a probe larger than the room), flip only
+// for a clear gain: a shadow sliding to and fro in the middle would otherwise swap sides every
+// stroke. Once placed, never while the pointer is near a strip: it is coming for the panel.
+PanelSide panel_side(const UiLayoutInput& in, const UiRect& avoid) {
+  const PanelSide last = in.last.panel_side;
+  const PanelSide other = last == PanelSide::kRight ? PanelSide::kLeft : PanelSide::kRight;
+  const bool inside = in.pointer && in.pointer->first >= 0.f && in.pointer->first < in.width &&
+                      in.pointer->second >= 0.f && in.pointer->second < in.height;
+  if (in.last.panel_placed && inside) {
+    const UiRect near_keep = grown(panel_strip(in, last), kPanelPointerClearShare * in.panel_width);
+    const UiRect near_flip = grown(panel_strip(in, other), kPanelPointerClearShare * in.panel_width);
+    const UiRect at = UiRect::at(in.pointer->first, in.pointer->second, 1.f, 1.f);
+    if (intersects(at, near_keep) || intersects(at, near_flip)) return last;
+  }
+  const float kept = overlap_area(panel_strip(in, last), avoid), flipped = overlap_area(panel_strip(in, other), avoid);
+  return kept > 0.f && (flipped == 0.f || flipped < 0.5f * kept) ? other : last;
+}
+
+}  // namespace
+
 UiLayout layout_ui(const UiLayoutInput& in) {
   UiLayout out;
   const UiRect avoid = in.shadow ? grown(*in.shadow, kShadowMargin) : UiRect{};
-  const auto shadow_cost = [&](const UiRect& r) { return overlap_area(r, avoid); };
+  // The buttons weigh like the shadow: text over a button hides what the person must press.
+  const auto shadow_cost = [&](const UiRect& r) {
+    float c = overlap_area(r, avoid);
+    for (const UiRect& b : in.buttons) c += overlap_area(r, grown(b, kShadowMargin));
+    return c;
+  };
   out.placement = in.last;
+  out.placement.panel_placed = in.panel;
   float x0 = 0.f, x1 = in.width;  // the range the panel leaves to the boxes
   if (in.panel) {
-    const PanelSide other = in.last.panel_side == PanelSide::kRight ? PanelSide::kLeft : PanelSide::kRight;
-    const UiRect keep = panel_strip(in, in.last.panel_side), flip = panel_strip(in, other);
-    // When both sides cover the shadow (a probe larger than the room), flip only for a clear
-    // gain: a shadow sliding to and fro in the middle would otherwise swap sides every stroke.
-    const float kept = shadow_cost(keep), flipped = shadow_cost(flip);
-    const bool flip_it = kept > 0.f && (flipped == 0.f || flipped < 0.5f * kept);
-    out.placement.panel_side = flip_it ? other : in.last.panel_side;
-    out.panel = flip_it ? flip : keep;
+    out.placement.panel_side = panel_side(in, avoid);
+    out.panel = panel_strip(in, out.placement.panel_side);
     if (out.placement.panel_side == PanelSide::kRight) x1 = out.panel->x0;
     else x0 = out.panel->x1;
   }
@@ -142,13 +164,29 @@ UiLayout layout_ui(const UiLayoutInput& in) {
       return shadow_cost(r) + overlap_area(r, panel) + (hud ? overlap_area(r, *hud) : 0.f);
     };
   };
-  out.help = best(help_places(in, x0, x1), help_cost(&*out.hud)).rect;
-  if (intersects(*out.help, *out.hud)) {
-    // No room for both (text over text reads as neither): the readouts wait until the help,
-    // which is transient, hides; the help takes the place that covers the least.
-    out.help = best(help_places(in, x0, x1), help_cost(nullptr)).rect;
-    out.hud.reset();
+  const auto place = [&](float w, float h, std::optional<UiRect>& hud) {
+    UiRect r = best(help_places(in, x0, x1, w, h), help_cost(&*hud)).rect;
+    if (intersects(r, *hud)) {
+      // No room for both (text over text reads as neither): the readouts wait until the help,
+      // which is transient, hides; the help takes the place that covers the least.
+      r = best(help_places(in, x0, x1, w, h), help_cost(nullptr)).rect;
+      hud.reset();
+    }
+    return r;
+  };
+  std::optional<UiRect> hud_kept = out.hud;
+  out.help = place(in.help_w, in.help_h, hud_kept);
+  // The wide help covers the shadow or a button wherever it goes: the narrow one, if it covers less.
+  if (in.help_narrow_w > 0.f && shadow_cost(*out.help) > 0.f) {
+    std::optional<UiRect> hud_narrow = out.hud;
+    const UiRect narrow = place(in.help_narrow_w, in.help_narrow_h, hud_narrow);
+    if (shadow_cost(narrow) < shadow_cost(*out.help)) {
+      out.help = narrow;
+      out.help_narrow = true;
+      hud_kept = hud_narrow;
+    }
   }
+  out.hud = hud_kept;
   return out;
 }
 
@@ -163,7 +201,14 @@ std::string ui_report_json(int window_w, int window_h, const std::vector<UiFrame
     append_rect(out, "hud", f.hud);
     append_rect(out, "help", f.help);
     append_rect(out, "panel", f.panel);
-    out += "}";
+    out += ", \"buttons\": [";
+    for (size_t b = 0; b < f.buttons.size(); ++b) {
+      char buf[96];
+      const UiRect& r = f.buttons[b];
+      std::snprintf(buf, sizeof buf, "%s[%.1f, %.1f, %.1f, %.1f]", b ? ", " : "", r.x0, r.y0, r.x1, r.y1);
+      out += buf;
+    }
+    out += "]}";
   }
   out += "\n  ]\n}\n";
   return out;

@@ -10,6 +10,7 @@
 #include <cstdint>
 #include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "image/image.h"
@@ -51,7 +52,13 @@ enum class Corner { kTopLeft, kTopRight, kBottomLeft, kBottomRight };
 struct UiPlacement {
   PanelSide panel_side = PanelSide::kRight;
   Corner hud_corner = Corner::kTopLeft;
+  bool panel_placed = false;  // the panel has been laid out since it was last opened
 };
+
+// The panel changes sides only while the pointer is at least this share of the panel's width
+// away from both strips: the shadow (under the pointer, ~190 px wide at 1280 x 800) reaches a
+// strip before the pointer does, and a panel that fled from it could never be reached.
+constexpr float kPanelPointerClearShare = 0.5f;
 
 struct UiLayoutInput {
   float width = 0.f, height = 0.f;  // window
@@ -62,21 +69,29 @@ struct UiLayoutInput {
   float hud_w = 0.f, hud_h = 0.f;   // the readouts box
   bool help = false;                // the help box is shown
   float help_w = 0.f, help_h = 0.f;
+  // The help in one narrow column (0: none): used where the wide one would cover a button or
+  // the shadow and the narrow one covers less (the control panel's buttons fill a square).
+  float help_narrow_w = 0.f, help_narrow_h = 0.f;
+  std::vector<UiRect> buttons;      // the scene's buttons on screen (app/button_overlay.h): never covered by text
+  std::optional<std::pair<float, float>> pointer;  // the mouse in the window; none: outside it
   UiPlacement last;
 };
 
 struct UiLayout {
   std::optional<UiRect> panel, help;
   std::optional<UiRect> hud;  // none: no room beside the help, shown again once it hides
+  bool help_narrow = false;   // the help is the narrow one
   UiPlacement placement;
 };
 
 // Panel: a strip along the right edge (full height), or along the left edge when the shadow
 // would be under it; if both would cover it, the side that covers less than half of what the
-// other does, else the last frame's side. Readouts: the corner
-// of the rest of the window that keeps clear of the shadow, the farthest from it first. Help:
-// bottom or top centre of the rest, else a corner, clear of the shadow and the readouts; when
-// the two cannot both stay clear, the readouts are left out while the help shows.
+// other does, else the last frame's side. Once shown it keeps its side while the pointer is in
+// the window near either strip (kPanelPointerClearShare), so the mouse can always reach it. Readouts: the corner of the rest of the window that keeps clear of
+// the shadow and the buttons, the farthest from the shadow first. Help: bottom or top centre of
+// the rest, else a corner, clear of the shadow, the buttons and the readouts; when the two
+// cannot both stay clear, the readouts are left out while the help shows. Text never goes over
+// a button while a place clear of every button exists.
 UiLayout layout_ui(const UiLayoutInput& in);
 
 // 30 % of the window, but at least 150 px (the longest parameter name, 19 characters of the
@@ -87,9 +102,10 @@ float panel_width_for(float window_width);
 struct UiFrameReport {
   std::uint64_t frame = 0;
   std::optional<UiRect> shadow, hud, help, panel;
+  std::vector<UiRect> buttons;  // the scene's buttons on screen (app/button_overlay.h)
 };
 // {"window": [w, h], "frames": [{"frame": 0, "shadow": [x0, y0, x1, y1] or null, "hud": ...,
-//  "help": ..., "panel": ...}, ...]}
+//  "help": ..., "panel": ..., "buttons": [[x0, y0, x1, y1], ...]}, ...]}
 std::string ui_report_json(int window_w, int window_h, const std::vector<UiFrameReport>& frames);
 
 }  // namespace ps

@@ -64,6 +64,7 @@ void handle_key(WindowInput& in, int key, int action, int mods) {
   if (key == GLFW_KEY_P) in.toggle_probe = true;
   if (key == GLFW_KEY_D) in.toggle_device = true;
   if (key == GLFW_KEY_BACKSPACE) in.back = true;
+  if (key == GLFW_KEY_HOME) in.home = true;
   if (key == GLFW_KEY_C) ((mods & GLFW_MOD_SHIFT) ? in.remove_charge : in.add_charge) = true;
   if (key == GLFW_KEY_ESCAPE || key == GLFW_KEY_Q) in.quit = true;
   if (key >= GLFW_KEY_1 && key <= GLFW_KEY_6) in.turn4[key - GLFW_KEY_1] += (mods & GLFW_MOD_SHIFT) ? -1 : 1;

@@ -29,6 +29,7 @@ struct WindowInput {
   bool add_charge = false;      // C: a live charge at the proxy (docs/haptics.md, "Fields")
   bool remove_charge = false;   // Shift+C: remove the live charge nearest the proxy
   bool back = false;            // Backspace: back to the scene a button switched from
+  bool home = false;            // Home: [navigation]'s view back where the scene started
   bool toggle_help = false;     // H or ?: the help overlay
   int key_presses = 0;          // every key pressed (any key hides the help overlay)
   bool keys_captured = false;   // set by the panel while it has the keyboard: S/M/Q ignored

@@ -51,6 +51,8 @@ class GlfwInputDevice final : public Device {
   // Back to the hover height a session starts at (after a scene switch: the new scene is not
   // pressed into by a press made in the old one).
   void reset_height() { height_.set(params_.height.start_mm); }
+  // Main thread: how deep the scene needs the hand to go (HeightControl::reach_depth).
+  void reach_depth(double depth_mm) { height_.reach_depth(depth_mm); }
   void toggle_capture();
   // Main thread. The cursor's present position becomes the relative origin at the next poll:
   // called when GLFW may have moved its virtual cursor by something other than the person's

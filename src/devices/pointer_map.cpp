@@ -64,6 +64,12 @@ void HeightControl::set(double mm) {
   mm_ = std::clamp(mm, params_.min_mm, params_.max_mm);
 }
 
+void HeightControl::reach_depth(double depth_mm) {
+  if (!std::isfinite(depth_mm)) return;
+  params_.min_mm = std::min(base_min_mm_, -depth_mm);
+  set(mm_);
+}
+
 glm::dvec3 PointerMap::centre(const PointerView& view, double height_mm) const {
   const glm::dvec3 at = hit(view);
   const double lift = view.floor ? view.floor->lift_mm(at, view.plane.n, view.probe_radius_mm) : 0.0;

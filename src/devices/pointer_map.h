@@ -81,10 +81,14 @@ class HeightControl {
   void scroll(double notches) { set(mm_ + notches * params_.scroll_mm); }
   void add_mm(double dmm) { set(mm_ + dmm); }
   void set(double mm);  // clamped to [min_mm, max_mm]; NaN is ignored
+  // The scene needs the probe to go at least `depth_mm` in (its buttons' full travel through
+  // the coupling, world::deepest_press_mm): min_mm becomes -max(depth_mm, the params' own).
+  void reach_depth(double depth_mm);
   const HeightParams& params() const { return params_; }
 
  private:
   HeightParams params_;
+  double base_min_mm_ = params_.min_mm;
   double mm_;
 };
 

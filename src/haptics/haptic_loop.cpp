@@ -29,7 +29,7 @@ HapticLoop::HapticLoop(Device& device, Clock& clock, const HapticLoopParams& par
   if (scene != nullptr) {
     god_.emplace(*scene);
     bodies_ = world::BodySet(scene->bodies(), scene->fields().gravity_mm_s2());
-    buttons_ = world::ButtonSet(scene->button_shapes(), scene->probe_radius_mm());
+    buttons_ = world::ButtonSet(scene->button_shapes(), scene->probe_radius_mm(), params.forces.coupling_n_per_mm);
   }
   clock_.set_wake_spin(std::chrono::microseconds(std::max<std::int64_t>(params.wake_spin_us, 0)));
 }
@@ -226,7 +226,8 @@ void HapticLoop::adopt_pending_scene(Clock::Ns now) {
   }
   // The new scene's bodies start afresh (a rare event: the vectors' old storage is freed here).
   bodies_ = world::BodySet(pending_->bodies(), pending_->fields().gravity_mm_s2());
-  buttons_ = world::ButtonSet(pending_->button_shapes(), pending_->probe_radius_mm());
+  buttons_ = world::ButtonSet(pending_->button_shapes(), pending_->probe_radius_mm(),
+                              params_.forces.coupling_n_per_mm, true);  // nothing fires until the probe has left
   local_.flags = 0;  // flags are the scene's: a new scene starts with all of them off
   view_ = fourd::ViewPose{};  // and its own view
   roll_.reset();
@@ -275,7 +276,11 @@ void HapticLoop::adopt_live_charges(double t) {
 void HapticLoop::press_buttons(const glm::dvec3& anchor, double t, glm::dvec3& force) {
   if (buttons_.size() == 0) return;
   const world::HapticScene& scene = god_->scene();
-  const world::ButtonStepResult r = buttons_.step(anchor);
+  // The hand as the device gives it, not the Kalman estimate: after a scene switch the filter
+  // sweeps from the old scene's mapping of the pointer to the new one over some ticks, and that
+  // sweep can pass over a button clear of its face like an approach (run fired the panel's
+  // Weight button 20 ms after a Backspace). The raw position jumps instead.
+  const world::ButtonStepResult r = buttons_.step(anchor, local_.device_mm);
   force += r.force_n;
   local_.button_pressed = r.pressed;
   local_.button_depth_mm = r.depth_mm;
@@ -336,8 +341,12 @@ glm::dvec3 HapticLoop::navigate(double dt) {
   const glm::dvec3 hand = local_.position_mm;  // workspace
   glm::dvec3 v(0.0), wall(0.0);
   if (nav.enabled) {
+    // A rate control with the box as its dead zone, on the device's own position: the Kalman
+    // filter overshoots a step (a mouse jumping from the window's edge back to its centre), and
+    // the view must stop when the hand is back inside, not travel on (38 mm back in `run`).
+    const glm::dvec3 at = last_fed_.position_mm;
     const glm::dvec3 half = 0.5 * nav.box_size_mm;
-    const glm::dvec3 past = hand - glm::clamp(hand, nav.box_center - half, nav.box_center + half);
+    const glm::dvec3 past = at - glm::clamp(at, nav.box_center - half, nav.box_center + half);
     v = nav.speed_mm_s_per_mm * past;
     const double speed = glm::length(v);
     if (speed > nav.max_speed_mm_s) v *= nav.max_speed_mm_s / speed;
@@ -446,6 +455,10 @@ void HapticLoop::add_tick_feed(TickFeed* feed) {
 
 void HapticLoop::tick(Clock::Ns now) {
   if (swap_pending_.load(std::memory_order_acquire)) adopt_pending_scene(now);
+  if (home_pending_.exchange(false, std::memory_order_acq_rel)) {
+    view_ = fourd::ViewPose{};
+    roll_.reset();
+  }
   // T of the filter = the measured tick period: a late tick's is longer, the one after it
   // shorter (the grid does not move), and after a stall the missed ticks are skipped
   // (tick_schedule.h), so T spans the stall. Clamped so a long stall (debugger, suspend) cannot

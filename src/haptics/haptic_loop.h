@@ -168,6 +168,9 @@ class HapticLoop {
   // between two mouse readings nor the proxy's path cuts through the surface (any thread).
   void place_hand(const glm::dvec3& hand_mm, const glm::dvec3& normal, const glm::dvec3& surface_normal);
   const world::HapticScene* scene() const;  // the one in use (haptic thread / between ticks)
+  // Any thread: the view goes back where the scene started ([navigation]'s offset and a rolling
+  // surface's turn reset) at the next tick: run's Home key.
+  void request_view_home() { home_pending_.store(true, std::memory_order_release); }
   void start();        // spawns the thread
   // After start(): "SCHED_FIFO 80", "SCHED_RR 20 (RealtimeKit)", "normal" or
   // "normal (SCHED_FIFO refused: <why>; RealtimeKit ...: <why>)".
@@ -244,6 +247,7 @@ class HapticLoop {
   std::optional<glm::dvec3> pending_place_normal_;  // place_hand's normal, under swap_mutex_
   glm::dvec3 pending_place_surface_{0.0};           // place_hand's surface_normal, under swap_mutex_
   std::atomic<bool> swap_pending_{false};
+  std::atomic<bool> home_pending_{false};
   HapticState local_;        // haptic thread's working copy
   SampleRecorder* recorder_ = nullptr;
   std::array<TickFeed*, kMaxTickFeeds> tick_feeds_{};  // the first tick_feed_count_ are set

@@ -225,6 +225,13 @@ struct Body {
   double spring_n_per_mm = 0.1;        // spring between the proxy and the body
   double rest_length_mm = 30.0;
   double damping_n_s_per_mm = 0.0;     // along the spring
+  // Air drag, as a rate: the body's own velocity decays by 1/e in 1 / air_damping_per_s
+  // simulated seconds (F = -air_damping_per_s m v). Damps the swing across the spring, which
+  // the damping along it cannot: without it a ball keeps circling after the hand stops.
+  double air_damping_per_s = 0.0;
+  // > 0: the spring cannot stretch past this length (a band that tightens into a string), so
+  // the body stays within it of the proxy however the hand flings it. 0: unbounded.
+  double max_length_mm = 0.0;
   double radius_mm = 6.0;
   std::string material;                // its look; empty: the first surface's material
   int material_index = 0;
@@ -238,6 +245,7 @@ struct Body {
 };
 
 inline constexpr int kMaxSceneButtons = 16;
+inline constexpr std::size_t kMaxButtonLabelChars = 32;  // one short line on the button
 inline constexpr int kMaxSceneFlags = 32;  // HapticState::flags is a 32-bit mask
 
 // [[buttons]]: a flush button in a surface (seed 002 §2; docs/haptics.md, "Buttons"): a
@@ -252,6 +260,9 @@ struct Button {
   double stiffness_n_per_mm = 0.2; // its spring (softer than the wall around it)
   double travel_mm = 3.0;          // press depth at which it fires and its force stops
   std::string action;              // as written: "scene:FILE" or "flag:NAME"
+  // The text drawn on it in the window (`run`): the file's `label`, else the target scene's
+  // file name without its extension ("field" for scene:field.toml) or the flag's name.
+  std::string label;
   ButtonActionKind action_kind = ButtonActionKind::kFlag;
   std::string action_target;       // scene: the file's absolute path; flag: its name
   int flag = -1;                   // flag: index into Scene::flags

@@ -73,10 +73,11 @@ constexpr std::array kFieldKeys = {"type"sv,          "acceleration_mm_s2"sv, "f
 constexpr std::array kBodyKeys = {"mass_g"sv,      "spring_n_per_mm"sv, "rest_length_mm"sv,
                                   "damping_n_s_per_mm"sv, "radius_mm"sv, "material"sv,
                                   "position"sv,    "floor"sv,           "floor_z_mm"sv,
-                                  "restitution"sv, "time_scale"sv,      "substeps"sv};
+                                  "restitution"sv, "time_scale"sv,      "substeps"sv,
+                                  "air_damping_per_s"sv, "max_length_mm"sv};
 constexpr std::array kButtonKeys = {"center"sv,   "size_mm"sv,  "rotation_deg"sv, "stiffness_n_per_mm"sv,
                                     "travel_mm"sv, "action"sv,  "material"sv,     "visible"sv,
-                                    "picture"sv};
+                                    "picture"sv,   "label"sv};
 
 }  // namespace
 

@@ -92,6 +92,11 @@ Status read_body(const ParseContext& ctx, const toml::table& table, int index,
   r.number("spring_n_per_mm", out.spring_n_per_mm, Range::positive(100.0));
   r.number("rest_length_mm", out.rest_length_mm, Range::closed(0.0, kMaxLengthMm));
   r.number("damping_n_s_per_mm", out.damping_n_s_per_mm, Range::closed(0.0, 1.0));
+  r.number("air_damping_per_s", out.air_damping_per_s, Range::closed(0.0, 1000.0));
+  r.number("max_length_mm", out.max_length_mm, Range::closed(0.0, kMaxLengthMm));
+  r.require(out.max_length_mm == 0.0 || out.max_length_mm >= out.rest_length_mm, "max_length_mm",
+            "(" + std::to_string(out.max_length_mm) + ") must be 0 (unbounded) or >= 'rest_length_mm' (" +
+                std::to_string(out.rest_length_mm) + ")");
   r.number("radius_mm", out.radius_mm, Range::positive(kMaxLengthMm));
   r.string("material", out.material);
   r.vec3("position", out.position, kCoordinate);
@@ -119,6 +124,11 @@ Status read_button(const ParseContext& ctx, const toml::table& table, int index,
   r.string("material", out.material);
   r.boolean("visible", out.visible);
   r.boolean("picture", out.picture);
+  r.string("label", out.label);
+  // A label is read on the button in the window: one short line.
+  r.require(out.label.size() <= kMaxButtonLabelChars && out.label.find('\n') == std::string::npos, "label",
+            "must be one line of at most " + std::to_string(kMaxButtonLabelChars) + " characters (got " +
+                std::to_string(out.label.size()) + ")");
   if (!r.ok()) return r.status();
   r.require(r.has("action"), "action",
             "is required: what the button does when pushed past its travel, \"scene:FILE\" (switch to that "
@@ -141,8 +151,10 @@ Status read_button(const ParseContext& ctx, const toml::table& table, int index,
     if (Status s = ctx.paths.admit(file, "names"); !s && !r.from_user("action")) r.fail("action", s.error().message);
     if (!fs::is_regular_file(file, ec)) r.fail("action", "scene file not found: " + file.string());
     out.action_target = file.string();
+    if (out.label.empty()) out.label = fs::path(target).stem().string();
   } else {
     out.action_target = target;
+    if (out.label.empty()) out.label = target;
     if (out.picture) r.fail("picture", "needs a \"scene:FILE\" action: the picture is of the scene the button leads to");
   }
   // The probe (a sphere of radius R) must fit in the button to push it in: a narrower one

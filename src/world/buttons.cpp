@@ -52,32 +52,59 @@ double ButtonShape::press_depth_mm(const glm::dvec3& p, double r) const {
   return over(q) ? r - q.z : 0.0;
 }
 
-ButtonSet::ButtonSet(const std::vector<ButtonShape>& shapes, double probe_radius_mm)
+ButtonSet::ButtonSet(const std::vector<ButtonShape>& shapes, double probe_radius_mm, double coupling_n_per_mm,
+                     bool after_switch)
     : shapes_(shapes.begin(), shapes.begin() + std::min<std::size_t>(shapes.size(), kMaxButtons)),
-      radius_mm_(probe_radius_mm) {
-  armed_.fill(true);
+      radius_mm_(probe_radius_mm), coupling_n_per_mm_(coupling_n_per_mm) {
+  if (after_switch) phase_.fill(ButtonPhase::kLeaveFirst);
 }
 
-ButtonStepResult ButtonSet::step(const glm::dvec3& proxy_mm) {
+ButtonStepResult ButtonSet::step(const glm::dvec3& proxy_mm, const glm::dvec3& hand_mm) {
   ButtonStepResult r;
   for (std::size_t i = 0; i < shapes_.size(); ++i) {
     const ButtonShape& b = shapes_[i];
-    const double depth = b.press_depth_mm(proxy_mm, radius_mm_);
-    if (!armed_[i]) {
-      if (depth <= 0.0) armed_[i] = true;  // the probe left it: the next push fires again
+    ButtonPhase& phase = phase_[i];
+    const glm::dvec3 q = b.to_local(proxy_mm), hq = b.to_local(hand_mm);
+    // After a switch the proxy starts where the old scene left it: only the hand leaving counts.
+    if (phase == ButtonPhase::kLeaveFirst && !b.over(hq)) phase = ButtonPhase::kIdle;
+    if (!b.over(q)) {  // left sideways: ready for the next approach
+      if (phase != ButtonPhase::kLeaveFirst) phase = ButtonPhase::kIdle;
       continue;
     }
-    if (depth <= 0.0) continue;
+    const double depth = radius_mm_ - q.z, hand_depth = radius_mm_ - hq.z;
+    const bool waiting = phase == ButtonPhase::kIdle || phase == ButtonPhase::kLeaveFirst;
+    // Clear of the face: approached. The hand too, over the button and clear, as it is when the
+    // probe comes at the button freely: a proxy put above the face by a scene switch while the
+    // hand is elsewhere or deep would otherwise count as an approach and fall into a press.
+    if (phase != ButtonPhase::kLeaveFirst && depth <= -kButtonClearMm && b.over(hq) && hand_depth <= -kButtonClearMm)
+      phase = ButtonPhase::kReady;
+    if (depth <= 0.0) {
+      if (!waiting) phase = ButtonPhase::kReady;  // out again: re-armed
+      continue;
+    }
+    if (phase == ButtonPhase::kFired) continue;
+    if (phase == ButtonPhase::kIdle || phase == ButtonPhase::kLeaveFirst) {  // in without an approach: held flush
+      r.force_n += (1.0 - kHeldShare) * coupling_n_per_mm_ * std::max(0.0, b.press_depth_mm(hand_mm, radius_mm_)) * b.normal();
+      continue;
+    }
+    phase = ButtonPhase::kPressing;
     r.pressed = static_cast<int>(i);
     r.depth_mm = depth;
     if (depth >= b.travel_mm) {  // gives way: the force stops, the action fires
-      armed_[i] = false;
+      phase = ButtonPhase::kFired;
       r.fired[static_cast<std::size_t>(r.fired_count++)] = static_cast<int>(i);
       continue;
     }
     r.force_n += b.stiffness_n_per_mm * depth * b.normal();
   }
   return r;
+}
+
+double deepest_press_mm(const std::vector<ButtonShape>& shapes, double coupling_n_per_mm) {
+  double deepest = 0.0;
+  for (const ButtonShape& b : shapes)
+    deepest = std::max(deepest, b.travel_mm * (coupling_n_per_mm + b.stiffness_n_per_mm) / coupling_n_per_mm);
+  return deepest;
 }
 
 }  // namespace ps::world

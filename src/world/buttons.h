@@ -8,6 +8,7 @@
 #pragma once
 
 #include <array>
+#include <cstdint>
 #include <vector>
 
 #include <glm/glm.hpp>
@@ -48,29 +49,70 @@ struct ButtonShape {
 };
 
 struct ButtonStepResult {
-  glm::dvec3 force_n{0.0};           // the pressed buttons' springs on the probe
+  glm::dvec3 force_n{0.0};           // the buttons' springs on the probe (pressed or held flush)
   std::array<int, kMaxButtons> fired{};
   int fired_count = 0;
   int pressed = -1;                  // the button the probe presses now (-1: none)
   double depth_mm = 0.0;             // and how far
 };
 
+// A press counts only when the probe comes at the button's face from the front (seed 002's
+// push), never when it arrives sideways already below the face (a slide across the wall with
+// the hand pressed in) or was already there when the scene began (a switch or the start with
+// the probe sunk): such a button is held flush instead, and is ready for a press once the probe
+// has left it, sideways or lifted clear of its face.
+enum class ButtonPhase : std::uint8_t {
+  kIdle,      // not ready: the probe is away, or came in without approaching the face
+  kReady,     // the probe is over the face and clear of it: the next push is a press
+  kPressing,  // pushed in from kReady: the button's spring, fires at the travel
+  kFired,     // gave way: no force until the probe is back out of it
+  // After a scene switch: held like kIdle until the hand has left the button sideways. Lifting
+  // is not enough here: for a frame or more after a switch the hand may still be mapped through
+  // the old scene's camera and plane, and the proxy starts where the old scene left it.
+  kLeaveFirst,
+};
+
+// How far above the face the probe's lowest point must be for the face to count as approached
+// (the proxy's and the hand's, ButtonSet::step):
+// a probe resting on the face (the god-object holds it within 1e-6 mm) has not left it, one
+// lifted by a quarter of a height step (0.5 mm) has.
+inline constexpr double kButtonClearMm = 0.25;
+// A held button gives way by this share of the hand's depth (0.1 mm for a hand 4.5 mm in): flush
+// to the eye. Its force is taken from the hand's depth, not the proxy's, so it is stable however
+// stiff (a spring on the proxy stiffer than the coupling would oscillate).
+inline constexpr double kHeldShare = 0.02;
+
 class ButtonSet {
  public:
   ButtonSet() = default;
-  ButtonSet(const std::vector<ButtonShape>& shapes, double probe_radius_mm);
+  // coupling_n_per_mm: the virtual coupling between hand and proxy (HapticsParams), which sets
+  // the force that holds a button flush.
+  // after_switch: the scene was switched to (not opened at start): every button starts in
+  // kLeaveFirst.
+  ButtonSet(const std::vector<ButtonShape>& shapes, double probe_radius_mm, double coupling_n_per_mm = 0.5,
+            bool after_switch = false);
 
-  // One tick with the probe (the proxy) at proxy_mm: F = k depth n while an armed button is
-  // pressed by 0 < depth < travel; at depth >= travel it fires (in fired[]) and its force
-  // stops; it re-arms when the depth is back to <= 0 or the probe is no longer over it.
-  ButtonStepResult step(const glm::dvec3& proxy_mm);
+  // One tick with the probe (the proxy) at proxy_mm and the hand at hand_mm. A button pressed
+  // from kReady pushes back with F = k depth n while 0 < depth < travel; at depth >= travel it
+  // fires (in fired[]), its force stops, and it is ready again once the depth is back to <= 0
+  // or the probe has left it. A button the probe is in without having approached it is held
+  // flush (ButtonPhase) and never fires.
+  ButtonStepResult step(const glm::dvec3& proxy_mm, const glm::dvec3& hand_mm);
+  ButtonStepResult step(const glm::dvec3& proxy_mm) { return step(proxy_mm, proxy_mm); }
   std::size_t size() const { return shapes_.size(); }
-  bool armed(std::size_t i) const { return armed_[i]; }
+  ButtonPhase phase(std::size_t i) const { return phase_[i]; }
+  bool armed(std::size_t i) const { return phase_[i] == ButtonPhase::kReady || phase_[i] == ButtonPhase::kPressing; }
 
  private:
   std::vector<ButtonShape> shapes_;
-  std::array<bool, kMaxButtons> armed_{};
+  std::array<ButtonPhase, kMaxButtons> phase_{};  // all kIdle: nothing fires before an approach
   double radius_mm_ = 0.0;
+  double coupling_n_per_mm_ = 0.5;
 };
+
+// How deep the hand must go below a button's face for the proxy to reach its travel through the
+// coupling: the proxy goes in by k_c / (k_c + k) of the hand's depth, so travel (k_c + k) / k_c
+// (4.2 mm for the defaults). Zero without buttons. The height control must reach this deep.
+double deepest_press_mm(const std::vector<ButtonShape>& shapes, double coupling_n_per_mm);
 
 }  // namespace ps::world

@@ -169,10 +169,12 @@ TEST(UiLayoutTest, ReportIsJsonWithOneObjectPerFrame) {
   f.frame = 7;
   f.shadow = UiRect{1, 2, 3, 4};
   f.hud = UiRect::at(6, 6, 10.5f, 20);
+  f.buttons = {UiRect{10, 20, 30, 40}, UiRect{50, 60, 70, 80}};
   const std::string json = ui_report_json(512, 480, {f});
   EXPECT_NE(json.find("\"window\": [512, 480]"), std::string::npos) << json;
   EXPECT_NE(json.find("{\"frame\": 7, \"shadow\": [1.0, 2.0, 3.0, 4.0], \"hud\": [6.0, 6.0, 16.5, 26.0], "
-                      "\"help\": null, \"panel\": null}"),
+                      "\"help\": null, \"panel\": null, "
+                      "\"buttons\": [[10.0, 20.0, 30.0, 40.0], [50.0, 60.0, 70.0, 80.0]]}"),
             std::string::npos)
       << json;
 }
@@ -261,7 +263,8 @@ TEST(HudTest, ButtonAndFlagsShowWhenTheSceneHasThem) {
 
 TEST(RunKeysTest, EveryKeyOfTheWindowIsInTheTableOnce) {
   // The bindings of app/window_input.cpp and the mouse device, by the words the table uses.
-  for (const char* keys : {"mouse", "Shift+scroll", "PgUp / PgDn", "right drag", "scroll", "C, Shift+C", "Bksp",
+  for (const char* keys : {"mouse", "Shift+scroll", "PgUp / PgDn", "right drag", "scroll", "C, Shift+C", "Bksp", "Home",
+                           "1-3 / Shift", "4-6 / Shift",
                            "M", "P / D", "S", "F1", "H, ?", "Esc, Q"}) {
     int found = 0;
     for (const RunKey& k : run_keys()) found += std::strcmp(k.keys, keys) == 0;

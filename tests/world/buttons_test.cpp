@@ -6,8 +6,10 @@
 #include <cmath>
 #include <vector>
 
+#include "devices/pointer_map.h"
 #include "devices/sample_log.h"
 #include "haptics/haptic_loop.h"
+#include "scene/scene_io.h"
 #include "world/buttons.h"
 #include "world/god_object.h"
 #include "world/haptic_scene.h"
@@ -53,6 +55,7 @@ Scene floor_with_button(const Button& b) {
 TEST(ButtonSetTest, SpringUntilTheTravelThenFiresExactlyOnce) {
   const ButtonShape shape = ButtonShape::make(flush_button(), 5);
   ButtonSet set({shape}, kR);
+  set.step({3.0, -2.0, kR + 2.0});  // hovering 2 mm over it: approached from the front
   auto press_to = [&](double depth_mm, int steps) {
     int fired = 0;
     for (int i = 0; i <= steps; ++i) {  // down, then back up to 2 mm above the face
@@ -187,6 +190,142 @@ TEST(ButtonLoopTest, ResistsThroughTheCouplingThenFiresOncePerPress) {
   const std::vector<HapticEvent> repeat = press_twice(6.0, &again, nullptr);
   ASSERT_EQ(repeat.size(), deep.size());
   for (std::size_t i = 0; i < deep.size(); ++i) EXPECT_EQ(event_json(repeat[i]), event_json(deep[i])) << i;
+}
+
+// Seed 002's push is along the button's normal: a probe that slides onto the button sideways with
+// the hand pressed in (over the wall beside it, the proxy resting on the face) does not press it.
+// The button holds it flush (a held button gives way by kHeldShare of the hand's depth) and never
+// fires however deep the hand goes; lifted clear of the face, the next push is a press and fires.
+TEST(ButtonSetTest, ASlideAcrossTheFaceNeverFiresALiftAndPushDoes) {
+  const ButtonShape shape = ButtonShape::make(flush_button(), 5);  // 30 x 20 mm around the origin
+  ButtonSet set({shape}, kR, 0.5);
+  int fired = 0;
+  for (int i = 0; i <= 200; ++i) {  // from 40 mm left of it to its centre, on the face, hand 6 mm in
+    const double x = -40.0 + 40.0 * i / 200.0;
+    const double proxy_depth = x > -15.0 ? 6.0 * kHeldShare : 0.0;  // what the coupling leaves it
+    const ButtonStepResult r = set.step({x, 0.0, kR - proxy_depth}, {x, 0.0, kR - 6.0});
+    fired += r.fired_count;
+    EXPECT_EQ(r.pressed, -1) << "a held button is not pressed, x " << x;
+    if (x > -15.0) {
+      // The hold's force, from the hand's depth: (1 - share) k_c x_hand (1e-12: arithmetic).
+      EXPECT_NEAR(r.force_n.z, (1.0 - kHeldShare) * 0.5 * 6.0, 1e-12) << x;
+      EXPECT_EQ(set.phase(0), ButtonPhase::kIdle);
+    }
+  }
+  // Even the proxy at the full travel, not approached: no firing.
+  for (int i = 0; i < 50; ++i) fired += set.step({0.0, 0.0, kR - 3.5}, {0.0, 0.0, kR - 9.0}).fired_count;
+  EXPECT_EQ(fired, 0);
+  // Resting on the face is not clear of it; a quarter step above it is.
+  set.step({0.0, 0.0, kR}, {0.0, 0.0, kR});
+  EXPECT_EQ(set.phase(0), ButtonPhase::kIdle);
+  set.step({0.0, 0.0, kR + kButtonClearMm}, {0.0, 0.0, kR + kButtonClearMm});
+  EXPECT_EQ(set.phase(0), ButtonPhase::kReady);
+  for (int i = 0; i <= 40; ++i) fired += set.step({0.0, 0.0, kR - 0.1 * i}).fired_count;  // down to 4 mm in
+  EXPECT_EQ(fired, 1);
+}
+
+// A scene starts (at launch, after a button's or Backspace's switch) with every button not
+// ready: a probe already in a button (the Backspace that left it sunk in the panel's Field
+// button) cannot fire it in the first tick, nor later until it has left the button.
+TEST(ButtonSetTest, NothingFiresUntilTheProbeHasLeftTheButtonAfterAStart) {
+  const ButtonShape shape = ButtonShape::make(flush_button(), 5);
+  for (const glm::dvec3 leave : {glm::dvec3(30.0, 0.0, kR - 1.0), glm::dvec3(0.0, 0.0, kR + 1.0)}) {
+    ButtonSet set({shape}, kR, 0.5);  // as after a scene switch
+    int fired = 0;
+    for (int i = 0; i < 100; ++i) fired += set.step({0.0, 0.0, kR - 3.2}, {0.0, 0.0, kR - 5.0}).fired_count;
+    EXPECT_EQ(fired, 0) << "sunk in it at the start";
+    set.step(leave);  // sideways off it, or lifted 1 mm clear
+    for (int i = 0; i <= 50; ++i) fired += set.step({0.0, 0.0, kR + 1.0 - 0.1 * i}).fired_count;  // then pushed from above
+    EXPECT_EQ(fired, 1) << "one push after leaving it";
+  }
+  // Back from a world with the hand still deep: the new scene's proxy starts where the old one
+  // was, high above the face, and falls to the hand. Not an approach: held, no firing (in `run`
+  // this fired the button the probe came back over within 31 ms).
+  ButtonSet set({shape}, kR, 0.5);
+  int fired = 0;
+  for (int i = 0; i <= 100; ++i) {
+    const double proxy_z = std::max(kR - 3.2, kR + 15.0 - 0.5 * i);  // falling from 15 mm above
+    fired += set.step({0.0, 0.0, proxy_z}, {0.0, 0.0, kR - 4.5}).fired_count;
+  }
+  EXPECT_EQ(fired, 0);
+  // After a switch even proxy and hand both clear for a while (a hand still mapped through the
+  // old scene's plane, then the new one's) do not ready it, nor a proxy that starts beside it
+  // (where the old scene left it) and comes over it clear while the hand is deep: only the
+  // hand leaving it sideways does.
+  ButtonSet switched({shape}, kR, 0.5, true);
+  for (int i = 0; i < 50; ++i) fired += switched.step({0.0, 0.0, kR + 15.0}).fired_count;
+  for (int i = 0; i <= 50; ++i) fired += switched.step({0.0, 0.0, kR + 1.0 - 0.1 * i}).fired_count;
+  EXPECT_EQ(fired, 0) << "lifted, then pushed, without leaving it";
+  ButtonSet teleported({shape}, kR, 0.5, true);
+  for (int i = 0; i <= 100; ++i) {  // the proxy from 40 mm beside and 15 mm above onto the hand
+    const double x = std::max(0.0, 40.0 - i), z = std::max(kR - 3.2, kR + 15.0 - 0.3 * i);
+    fired += teleported.step({x, 0.0, z}, {0.0, 0.0, kR - 4.5}).fired_count;
+  }
+  EXPECT_EQ(fired, 0) << "a proxy arriving from the old scene's place";
+  switched.step({30.0, 0.0, kR + 1.0});  // off it sideways
+  for (int i = 0; i <= 50; ++i) fired += switched.step({0.0, 0.0, kR + 1.0 - 0.1 * i}).fired_count;
+  EXPECT_EQ(fired, 1);
+}
+
+// The height control must reach the depth a button fires at: travel (k_c + k) / k_c.
+TEST(ButtonSetTest, DeepestPressIsTheTravelThroughTheCoupling) {
+  const ButtonShape shape = ButtonShape::make(flush_button(), 5);
+  EXPECT_NEAR(deepest_press_mm({shape}, 0.5), 3.0 * 0.7 / 0.5, 1e-12);
+  EXPECT_EQ(deepest_press_mm({}, 0.5), 0.0);
+}
+
+// The mouse's height steps (0.5 mm a PageDown from 1 mm above) reach a button's full travel once
+// the range is sized by deepest_press_mm plus a step, as `run` sizes it: 11 presses for the
+// panel's buttons (3 mm travel, 0.2 N/mm). With the fixed 4 mm range of before, the hand stopped
+// at 4.0 mm, the proxy at 4.0 x 0.5 / 0.7 = 2.86 mm ("2.9 of 3.0 mm") and no press ever fired.
+TEST(ButtonSetTest, PageDownReachesTheFullTravel) {
+  const double coupling = HapticLoopParams{}.forces.coupling_n_per_mm;
+  const ButtonShape shape = ButtonShape::make(flush_button(), 5);
+  const double share = coupling / (coupling + shape.stiffness_n_per_mm);  // the proxy's part of the hand's depth
+  auto presses_to_fire = [&](HeightControl h) {
+    for (int presses = 1; presses <= 60; ++presses) {
+      h.step(-1);
+      if (-h.mm() * share >= shape.travel_mm) return presses;
+    }
+    return -1;  // never
+  };
+  const HeightParams params;
+  EXPECT_EQ(presses_to_fire(HeightControl(params)), -1) << "the fixed range stops short";
+  HeightControl sized(params);
+  sized.reach_depth(deepest_press_mm({shape}, coupling) + params.step_mm);
+  EXPECT_EQ(presses_to_fire(sized), 11);
+}
+
+// On the control panel through the loop: the hand pressed 4.5 mm into the wall beside the
+// Weight button slides across it (a mouse moving with PageDown held down): nothing fires, the
+// proxy stays within 0.1 mm of the face (held flush). Lifted 2 mm clear and pushed in again,
+// it fires exactly once.
+TEST(ButtonLoopTest, OnThePanelASlideDoesNotFireAPushDoes) {
+  auto scene = load_scene(std::string(PS_SOURCE_DIR) + "/scenes/universe/panel.toml");
+  ASSERT_TRUE(scene) << scene.error().message;
+  auto hs = HapticScene::build(scene.value());
+  ASSERT_TRUE(hs) << hs.error().message;
+  const double r = scene->probe.radius_mm, in = r - 4.5, up = r + 2.0;
+  // The Weight button: centre (40, 35), 56 mm wide; the wall's face at z = 0.
+  LogDevice device({{0.0, {90, 35, up}, 0, true}, {0.3, {90, 35, in}, 0, true}, {0.5, {90, 35, in}, 0, true},
+                    {1.5, {40, 35, in}, 0, true}, {2.0, {40, 35, in}, 0, true}, {2.3, {40, 35, up}, 0, true},
+                    {2.6, {40, 35, up}, 0, true}, {3.0, {40, 35, in}, 0, true}, {3.5, {40, 35, in}, 0, true}},
+                   true, "slide then push");
+  FakeClock clock;
+  HapticLoop loop(device, clock, HapticLoopParams{}, &hs.value());
+  int fired_sliding = 0, fired_pushing = 0;
+  double deepest_held = 0.0;
+  for (int i = 0; i < 3500; ++i) {
+    loop.run_ticks(1);
+    const HapticState st = loop.state().read();
+    if (st.time_s > 1.0 && st.time_s < 2.0) deepest_held = std::max(deepest_held, r - st.proxy_mm.z);
+    loop.events().drain([&](const HapticEvent& e) {
+      if (e.kind == EventKind::button_fired) ++(e.time_s < 2.3 ? fired_sliding : fired_pushing);
+    });
+  }
+  EXPECT_EQ(fired_sliding, 0);
+  EXPECT_LT(deepest_held, 0.1) << "held flush: 2 % of the hand's 4.5 mm";
+  EXPECT_EQ(fired_pushing, 1);
 }
 
 }  // namespace

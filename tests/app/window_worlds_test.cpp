@@ -1,0 +1,184 @@
+// What a person with a mouse meets in `run`'s window, without a window (issue 27 §3, §5): the
+// buttons' rectangles and labels on screen, text overlays kept off them, a panel that stays put
+// while the pointer comes for it, and panel sliders that cannot offer a value the scene format
+// refuses (app/button_overlay.h, app/ui_layout.h, app/panel_links.h).
+#include <gtest/gtest.h>
+
+#include <cstdio>
+#include <string>
+#include <vector>
+
+#include "app/button_overlay.h"
+#include "app/panel_links.h"
+#include "app/ui_layout.h"
+#include "devices/pointer_map.h"
+#include "render/camera.h"
+#include "scene/scene_io.h"
+
+namespace ps {
+namespace {
+
+std::string scene_file(const std::string& name) { return std::string(PS_SOURCE_DIR) + "/scenes/" + name; }
+
+std::vector<ButtonOverlay> panel_buttons(float w, float h) {
+  auto scene = load_scene(scene_file("universe/panel.toml"));
+  EXPECT_TRUE(scene) << scene.error().message;
+  if (!scene) return {};
+  const Scene& sc = scene.value();
+  return project_buttons(sc, sc.camera, static_cast<double>(sc.render.width) / sc.render.height, w, h);
+}
+
+// The control panel's four buttons land on screen as four disjoint rectangles, each around the
+// projection of its face's centre, labelled from the file (panel.toml's `label`s).
+TEST(ButtonOverlayTest, ThePanelsButtonsAreFourLabelledRectanglesOnScreen) {
+  const std::vector<ButtonOverlay> b = panel_buttons(1080.f, 600.f);
+  ASSERT_EQ(b.size(), 4u);
+  const std::vector<std::string> labels = {"Illusion", "Weight", "Field", "Poly"};
+  auto scene = load_scene(scene_file("universe/panel.toml"));
+  ASSERT_TRUE(scene);
+  PointerView view;
+  view.camera = scene->camera;
+  view.aspect = 1080.0 / 600.0;
+  view.window_size = {1080.0, 600.0};
+  for (std::size_t i = 0; i < b.size(); ++i) {
+    std::printf("button %s: [%.0f, %.0f, %.0f, %.0f]\n", b[i].label.c_str(), b[i].rect.x0, b[i].rect.y0, b[i].rect.x1, b[i].rect.y1);
+    EXPECT_EQ(b[i].label, labels[i]);
+    EXPECT_GT(b[i].rect.width(), 40.f) << "a 56 mm button is large on screen";
+    const glm::dvec2 c = project_to_window(view, scene->buttons[i].center);
+    EXPECT_TRUE(b[i].rect.x0 < c.x && c.x < b[i].rect.x1 && b[i].rect.y0 < c.y && c.y < b[i].rect.y1) << i;
+    for (std::size_t j = 0; j < i; ++j) EXPECT_FALSE(intersects(b[i].rect, b[j].rect)) << i << " " << j;
+  }
+}
+
+// A button's label defaults to its target's file name; a flag button's to the flag.
+TEST(ButtonOverlayTest, LabelsDefaultToTheTargetsName) {
+  auto worlds = load_scene(scene_file("universe/weight.toml"), {"buttons.0.label=\"\""});
+  ASSERT_TRUE(worlds) << worlds.error().message;
+  EXPECT_EQ(worlds->buttons[0].label, "panel");
+  auto demo = load_scene(scene_file("buttons_demo.toml"));
+  ASSERT_TRUE(demo) << demo.error().message;
+  EXPECT_EQ(demo->buttons[0].label, demo->buttons[0].action_target);  // a flag: its name
+  auto long_label = load_scene(scene_file("universe/weight.toml"), {"buttons.0.label=\"" + std::string(40, 'x') + "\""});
+  ASSERT_FALSE(long_label);
+  EXPECT_NE(long_label.error().message.find("label"), std::string::npos) << long_label.error().message;
+}
+
+// The boxes at least as large as `run` draws them (ImGui's 7 x 13 px font, 8 px padding;
+// measured in `run --ui-report` on panel.toml: readouts 170 x 146, narrow help 205 x 289): the
+// readouts 184 x 146; the help in two columns 408 x 159, in one column 212 x 289.
+UiLayoutInput window_with(const std::vector<ButtonOverlay>& buttons, UiRect shadow) {
+  UiLayoutInput in;
+  in.width = 1080.f;
+  in.height = 600.f;
+  in.shadow = shadow;
+  in.hud_w = 184.f;
+  in.hud_h = 146.f;
+  in.help = true;
+  in.help_w = 408.f;
+  in.help_h = 159.f;
+  in.help_narrow_w = 212.f;
+  in.help_narrow_h = 289.f;
+  for (const ButtonOverlay& b : buttons) in.buttons.push_back(b.rect);
+  return in;
+}
+
+// At start on the control panel, in its window (1080 x 600, the file's render.size), with the
+// shadow in the middle or over a button, neither the help nor the readouts cover a button;
+// with the help gone the readouts still do not.
+TEST(UiLayoutTest, TextNeverCoversTheControlPanelsButtons) {
+  const std::vector<ButtonOverlay> buttons = panel_buttons(1080.f, 600.f);
+  ASSERT_EQ(buttons.size(), 4u);
+  for (const UiRect shadow : {UiRect{490, 250, 590, 350}, UiRect{300, 80, 400, 180}, UiRect{680, 420, 780, 520}}) {
+    UiLayoutInput in = window_with(buttons, shadow);
+    const UiLayout start = layout_ui(in);
+    ASSERT_TRUE(start.help && start.hud) << "both fit beside the buttons";
+    EXPECT_TRUE(start.help_narrow) << "the wide help has no room beside the buttons";
+    for (const ButtonOverlay& b : buttons) {
+      EXPECT_FALSE(intersects(*start.help, b.rect)) << "help over " << b.label;
+      EXPECT_FALSE(intersects(*start.hud, b.rect)) << "readouts over " << b.label;
+    }
+    EXPECT_FALSE(intersects(*start.help, *start.hud));
+    in.help = false;
+    const UiLayout later = layout_ui(in);
+    ASSERT_TRUE(later.hud);
+    for (const ButtonOverlay& b : buttons) EXPECT_FALSE(intersects(*later.hud, b.rect)) << "readouts over " << b.label;
+  }
+}
+
+// The pointer walks from the window's centre to the panel on the right at 4 px a frame, its
+// shadow (190 px wide, centred on it) reaching the strip long before the pointer: the panel
+// stays on the right all the way and while the pointer is over it. Away from both strips, a
+// shadow under the right strip still sends the panel left (the old rule).
+TEST(UiLayoutTest, ThePanelStaysPutWhileThePointerComesForIt) {
+  UiLayoutInput in;
+  in.width = 1280.f;
+  in.height = 800.f;
+  in.panel = true;
+  in.panel_width = panel_width_for(in.width);
+  in.panel_height = in.height;
+  in.hud_w = 184.f;
+  in.hud_h = 133.f;
+  UiPlacement last;
+  for (float x = 640.f; x <= 1270.f; x += 4.f) {
+    in.pointer = std::make_pair(x, 400.f);
+    in.shadow = UiRect{x - 95.f, 305.f, x + 95.f, 495.f};
+    in.last = last;
+    const UiLayout l = layout_ui(in);
+    ASSERT_EQ(l.placement.panel_side, PanelSide::kRight) << "pointer at x " << x;
+    last = l.placement;
+  }
+  // The pointer outside the window (it left to the desktop): the shadow decides again.
+  in.pointer.reset();
+  in.shadow = UiRect{1000.f, 305.f, 1190.f, 495.f};
+  in.last = last;
+  EXPECT_EQ(layout_ui(in).placement.panel_side, PanelSide::kLeft);
+  // Just opened (not placed yet), with the pointer near the right strip: placed by the shadow.
+  in.pointer = std::make_pair(1095.f, 400.f);
+  in.last = UiPlacement{};
+  EXPECT_EQ(layout_ui(in).placement.panel_side, PanelSide::kLeft);
+}
+
+// Every min/max pair the loader checks stays ordered: dragging lambda_min from 1 to 16.98 over a
+// lambda_max of 1.6 (issue 27's drag) moves lambda_max along first, and every edit the panel
+// makes leaves a scene the loader accepts.
+TEST(PanelLinksTest, AMinSliderPastItsMaxMovesTheMaxAlong) {
+  auto scene = load_scene(scene_file("default.toml"), {"materials.wood.lambda_min=1", "materials.wood.lambda_max=1.6"});
+  ASSERT_TRUE(scene) << scene.error().message;
+  const Material& wood = scene->materials[0];
+  ASSERT_EQ(wood.name, "wood");
+  const std::vector<PanelEdit> e = linked_edits(wood, "lambda_min", 16.98);
+  ASSERT_EQ(e.size(), 2u);
+  EXPECT_EQ(e[0].key, "materials.wood.lambda_max");
+  EXPECT_DOUBLE_EQ(e[0].value, 16.98);
+  EXPECT_EQ(e[1].key, "materials.wood.lambda_min");
+  EXPECT_EQ(linked_edits(wood, "lambda_min", 1.2).size(), 1u) << "inside the range: the partner stays";
+  const std::vector<PanelEdit> down = linked_edits(wood, "lambda_max", 0.5);
+  ASSERT_EQ(down.size(), 2u);
+  EXPECT_EQ(down[0].key, "materials.wood.lambda_min");
+  EXPECT_EQ(linked_edits(wood, "theta_min", 170.0).size(), 1u) << "reversed theta is allowed by the format";
+}
+
+std::string number(double v) { return std::to_string(v); }
+
+// Every slider's two ends, applied as the panel applies them (linked_edits, one --set each, in
+// order), give a scene the loader accepts: the ranges lie inside the scene format's limits.
+TEST(PanelLinksTest, EverySlidersEndsAreValidSceneValues) {
+  auto base = load_scene(scene_file("default.toml"));
+  ASSERT_TRUE(base) << base.error().message;
+  for (const PanelParam& p : panel_material_params())
+    for (const double v : {static_cast<double>(p.lo), static_cast<double>(p.hi)}) {
+      std::vector<std::string> sets;
+      for (const PanelEdit& e : linked_edits(base->materials[0], p.key, v)) sets.push_back(e.key + "=" + number(e.value));
+      auto scene = load_scene(scene_file("default.toml"), sets);
+      EXPECT_TRUE(scene) << p.key << " = " << v << ": " << (scene ? "" : scene.error().message);
+    }
+}
+
+TEST(PanelLinksTest, MessagesSpeakOfThePanel) {
+  EXPECT_EQ(panel_message("--set materials.wood.n_min: 'n_min' (5) must be <= 'n_max' (2)"),
+            "panel: materials.wood.n_min: 'n_min' (5) must be <= 'n_max' (2)");
+  EXPECT_EQ(panel_message("scenes/x.toml:3: bad"), "scenes/x.toml:3: bad");
+}
+
+}  // namespace
+}  // namespace ps
