@@ -85,7 +85,7 @@ struct Renderer::Impl {
     if (renderer && context) context->make_current();
   }
   // Where the probe is now: pushed by the frames rendered so far, or as set.
-  const ps::Probe& probe() const { return renderer ? renderer->scene().probe : scene.probe; }
+  const ps::Probe& probe() const { return renderer ? renderer->probe() : scene.probe; }
 };
 
 Renderer::Renderer(std::unique_ptr<Impl> impl) : impl_(std::move(impl)) {}

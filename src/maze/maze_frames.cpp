@@ -2,6 +2,7 @@
 
 #include <cstdio>
 
+#include "frame/haptic_frame.h"
 #include "image/image.h"
 #include "maze/maze_screen.h"
 
@@ -17,9 +18,8 @@ Status FrameWriter::on_frame(const FrameView& v) {
     renderer_ = std::move(r.value());
     stale_ = false;
   }
-  renderer_->set_camera(follow_camera(desc_, v.state.proxy_mm));
-  renderer_->set_probe_state(v.state.proxy_mm, v.state.velocity_mm_s);
-  if (Status s = renderer_->render_frame(); !s) return s;
+  const HapticFrameSources maze{.proxy_only = true, .camera = follow_camera(desc_, v.state.proxy_mm)};
+  if (auto f = renderer_->render(haptic_frame_input(*renderer_, v.state, maze)); !f) return f.error();
   Image im = renderer_->read_color();
   stamp_label(im, v.label);
   char name[48];

@@ -48,8 +48,7 @@ Status render_picture(const std::string& scene_file, const std::string& path) {
   options.expected_frames = 1;
   auto r = Renderer::create(scene.value(), options);
   if (!r) return r.error();
-  show_world_at_start(*r.value());
-  if (Status s = r.value()->render_frame(); !s) return s;
+  if (auto f = r.value()->render(start_frame_input(r.value()->scene())); !f) return f.error();
   return write_image(path, r.value()->read_color());
 }
 

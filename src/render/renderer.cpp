@@ -23,6 +23,12 @@ namespace ps {
 
 namespace {
 
+bool same_camera(const Camera& a, const Camera& b) {
+  return a.projection == b.projection && a.position == b.position && a.target == b.target && a.up == b.up &&
+         a.fov_y_deg == b.fov_y_deg && a.ortho_height_mm == b.ortho_height_mm && a.near_mm == b.near_mm &&
+         a.far_mm == b.far_mm;
+}
+
 Aabb mesh_bounds(const Mesh& m) { return {m.bounds_min, m.bounds_max}; }
 
 // Surface::visual_stretch: positions scaled along the surface's local axes about its centre,
@@ -143,6 +149,9 @@ Result<std::unique_ptr<Renderer>> Renderer::create(const Scene& scene, const Ren
   if (options.button_pictures)
     if (Status s = make_button_pictures(r->scene_); !s) return s.error();
   if (Status s = make_field_maps(r->scene_); !s) return s.error();
+  r->probe_ = r->scene_.probe;
+  r->camera_ = r->scene_.camera;
+  r->light_ = r->scene_.light;
   if (r->options_.glsl_root.empty()) r->options_.glsl_root = gl::default_glsl_root();
   r->frame_ = make_plane_frame(toward_viewer(scene.camera));
   for (Status (Renderer::*step)() : {&Renderer::upload_surfaces, &Renderer::load_probe_mesh,
@@ -204,7 +213,7 @@ DeformationStats Renderer::step_deformation(double dt_s) {
   st.surfaces = static_cast<int>(deformed_.size());
   // The probe's sphere: a sphere probe, or a capsule's tip cap (Probe::position is its centre);
   // a mesh probe's bounding sphere would dent far more than the mesh touches, so it does not press.
-  const Probe& p = scene_.probe;
+  const Probe& p = probe_;
   const glm::dvec3 centre = p.shape == ProbeShape::kMesh ? glm::dvec3(std::nan("")) : p.position;
   bool moved = false;
   for (Deformed& d : deformed_) {
@@ -235,10 +244,10 @@ std::vector<glm::dvec3> Renderer::deformed_vertices(int surface) const {
 }
 
 Status Renderer::load_probe_mesh() {
-  if (scene_.probe.shape != ProbeShape::kMesh) return ok_status();  // analytic: nothing to load
-  auto mesh = load_mesh_file(scene_.probe.mesh_file);
+  if (probe_.shape != ProbeShape::kMesh) return ok_status();  // analytic: nothing to load
+  auto mesh = load_mesh_file(probe_.mesh_file);
   if (!mesh) return mesh.error();
-  transform_mesh(mesh.value(), scene_.probe.mesh_scale, glm::dvec3(0.0), glm::dvec3(0.0));
+  transform_mesh(mesh.value(), probe_.mesh_scale, glm::dvec3(0.0), glm::dvec3(0.0));
   geometry_.probe_mesh_bounds = mesh_bounds(mesh.value());
   geometry_.probe_mesh = GpuMesh::upload(mesh.value());
   return ok_status();
@@ -300,12 +309,12 @@ bool Renderer::naive_is_less_work(const Material& m, int tile_texels) const {
 double Renderer::textured_pixels_per_frame() const {
   const double image = static_cast<double>(scene_.render.width) * scene_.render.height;
   const BoundingSphere b = current_probe_bounds();
-  const Camera& c = scene_.camera;
+  const Camera& c = camera_;
   double pixels_per_mm = 0.0;
   if (c.projection == Projection::kOrthographic) {
     pixels_per_mm = scene_.render.height / std::max(c.ortho_height_mm, 1e-9);
   } else {
-    const double distance = glm::length(scene_.probe.position - c.position) - b.radius;
+    const double distance = glm::length(probe_.position - c.position) - b.radius;
     if (distance <= c.near_mm) return image;
     pixels_per_mm = scene_.render.height / (2.0 * distance * std::tan(glm::radians(c.fov_y_deg) * 0.5));
   }
@@ -380,7 +389,7 @@ std::shared_ptr<gl::Texture> Renderer::reusable_tile(const Material& m, const Ga
 }
 
 Status Renderer::prime_reference_plane() {
-  FramePlan plan = make_plan(scene_, geometry_.surface_bounds, current_probe_bounds(), frame_,
+  FramePlan plan = make_plan(scene_, camera_, geometry_.surface_bounds, current_probe_bounds(), frame_,
                              scene_.render.depth_map_size);
   plan.surface_shadow.assign(plan.surface_shadow.size(), false);
   plan.surface_textured.assign(plan.surface_textured.size(), false);
@@ -391,47 +400,51 @@ Status Renderer::prime_reference_plane() {
 }
 
 void Renderer::set_probe_state(const glm::dvec3& position, const glm::dvec3& velocity) {
-  scene_.probe.position = position;
-  scene_.probe.velocity = velocity;
+  probe_.position = position;
+  probe_.velocity = velocity;
 }
 
-void Renderer::set_view_pose(const glm::dvec3& offset, const glm::dmat3& rotation) {
-  if (offset == view_offset_ && rotation == view_rotation_) return;
-  // From the old view to the new one: x -> R_new R_old^T (x - t_old) + t_new.
-  const glm::dmat3 turn = rotation * glm::transpose(view_rotation_);
-  auto point = [&](const glm::dvec3& x) { return turn * (x - view_offset_) + offset; };
-  scene_.camera.position = point(scene_.camera.position);
-  scene_.camera.target = point(scene_.camera.target);
-  if (rotation != view_rotation_) {
-    scene_.camera.up = turn * scene_.camera.up;
-    scene_.light.direction = turn * scene_.light.direction;
+void Renderer::set_view_pose(const ViewPose& pose) {
+  camera_ = carried_camera(camera_, view_, pose);
+  light_.direction = carried_direction(light_.direction, view_, pose);
+  view_ = pose;
+}
+
+void Renderer::apply(const FrameInput& in) {
+  if (in.probe) set_probe_state(in.probe->position_mm, in.probe->velocity_mm_s);
+  if (std::isfinite(in.time_s)) advance_deformation(in.time_s);
+  if (in.camera) camera_ = *in.camera;
+  if (in.view) set_view_pose(*in.view);
+  if (in.device_mm) device_position_ = *in.device_mm;
+  if (in.sheet) {
+    sheet_ = *in.sheet;
+    add_path_point();
   }
-  view_offset_ = offset;
-  view_rotation_ = rotation;
+  if (in.bodies_mm)
+    body_positions_.assign(in.bodies_mm->begin(),
+                           in.bodies_mm->begin() + std::min(in.bodies_mm->size(), scene_.bodies.size()));
+  if (in.markers) markers_ = *in.markers;
 }
 
-Camera Renderer::workspace_camera() const {
-  Camera c = scene_.camera;
-  const glm::dmat3 back = glm::transpose(view_rotation_);
-  c.position = back * (c.position - view_offset_);
-  c.target = back * (c.target - view_offset_);
-  c.up = back * c.up;
-  return c;
+Result<FrameStats> Renderer::render(const FrameInput& input) {
+  apply(input);
+  if (Status s = render_frame(); !s) return s.error();
+  return stats_;
 }
 
 BoundingSphere Renderer::current_probe_bounds() const {
-  const Probe& p = scene_.probe;
+  const Probe& p = probe_;
   const Aabb& b = geometry_.probe_mesh_bounds;
   return probe_bounds(p, b.min + p.position, b.max + p.position);
 }
 
 ProbeInput Renderer::probe_input() const {
   ProbeInput in;
-  if (scene_.probe.shape == ProbeShape::kMesh) {
+  if (probe_.shape == ProbeShape::kMesh) {
     in.mesh = &geometry_.probe_mesh;
-    in.model = glm::translate(glm::dmat4(1.0), scene_.probe.position);
+    in.model = glm::translate(glm::dmat4(1.0), probe_.position);
   } else {
-    in.capsule = capsule_of(scene_.probe);
+    in.capsule = capsule_of(probe_);
   }
   return in;
 }
@@ -439,19 +452,19 @@ ProbeInput Renderer::probe_input() const {
 std::vector<SurfaceDraw> Renderer::surface_draws(const FramePlan& plan) {
   const double aspect = static_cast<double>(scene_.render.width) / scene_.render.height;
   SurfaceFrame fr;
-  fr.view_proj = view_projection(scene_.camera, aspect);
+  fr.view_proj = view_projection(camera_, aspect);
   fr.plane = frame_;
   fr.window_center_uv = plan.window.center_uv;
   fr.window_half_mm = plan.window.half_size_mm;
   fr.depth_map_size = scene_.render.depth_map_size;
-  fr.light = &scene_.light;
+  fr.light = &light_;
   fr.contrast_sigmas = options_.contrast_sigmas;
   fr.surface_normal_distance = scene_.render.shadow_distance == ShadowDistance::kSurfaceNormal;
   const BoundingSphere probe = current_probe_bounds();
   fr.probe_height_lo_mm = glm::dot(probe.center, frame_.n) - probe.radius;
   fr.probe_height_hi_mm = glm::dot(probe.center, frame_.n) + probe.radius;
-  if (scene_.probe.shape != ProbeShape::kMesh && options_.closed_form_normal_distance)
-    fr.probe_capsule = capsule_of(scene_.probe);
+  if (probe_.shape != ProbeShape::kMesh && options_.closed_form_normal_distance)
+    fr.probe_capsule = capsule_of(probe_);
   const std::vector<SphereCaster> bodies = body_casters();
   std::vector<SurfaceDraw> draws;
   bool gain_recorded = false;
@@ -460,7 +473,7 @@ std::vector<SurfaceDraw> Renderer::surface_draws(const FramePlan& plan) {
     const size_t mi = static_cast<size_t>(scene_.surfaces[i].material_index);
     const Material& m = scene_.materials[mi];
     const MaterialState& ms = materials_[mi];
-    const double gain = speed_gain(m, frame_, scene_.probe.velocity);
+    const double gain = speed_gain(m, frame_, probe_.velocity);
     if (plan.surface_shadow[i] && !gain_recorded) {
       stats_.speed_gain = gain;
       gain_recorded = true;
@@ -482,13 +495,13 @@ std::vector<SurfaceDraw> Renderer::surface_draws(const FramePlan& plan) {
     d.gabor_filter_skipped = filter_negligible_ && (ms.gabor_tile || !ms.bake_plan.ok);
     const Geometry::Sheets& sheets = geometry_.surface_sheets[i];
     if (!sheets.w4.empty()) {
-      // The probe's sheet: the haptic proxy's (set_probe_sheet), else the nearest vertex's. The
+      // The probe's sheet: the haptic proxy's (FrameInput::sheet), else the nearest vertex's. The
       // band is 15 % of the surface's w range: wide enough for the sheet's own w change across
       // the shadow window (a few mm), far narrower than the w gap where sheets cross.
-      double w = sheet_w4_;
-      if (sheet_surface_ != static_cast<int>(i)) {
+      double w = sheet_.w4;
+      if (sheet_.surface != static_cast<int>(i)) {
         float best = std::numeric_limits<float>::infinity();
-        const glm::vec3 probe(scene_.probe.position);
+        const glm::vec3 probe(probe_.position);
         for (std::size_t v = 0; v < sheets.positions.size(); ++v) {
           const glm::vec3 dv = sheets.positions[v] - probe;
           const float d2 = glm::dot(dv, dv);
@@ -500,9 +513,9 @@ std::vector<SurfaceDraw> Renderer::surface_draws(const FramePlan& plan) {
       d.wireframe = spec.wireframe;
       d.block.sheet.w = static_cast<float>(spec.crossing_diagram_mm);
       if (spec.cutaway_mm > 0.0 || spec.crossing_diagram_mm > 0.0) {
-        const Camera& cam = scene_.camera;
+        const Camera& cam = camera_;
         const bool persp = cam.projection == Projection::kPerspective;
-        d.block.cutaway = glm::vec4(glm::vec3(scene_.probe.position), static_cast<float>(spec.cutaway_mm));
+        d.block.cutaway = glm::vec4(glm::vec3(probe_.position), static_cast<float>(spec.cutaway_mm));
         d.block.eye = persp ? glm::vec4(glm::vec3(cam.position), 1.0f)
                             : glm::vec4(glm::vec3(glm::normalize(cam.target - cam.position)), 0.0f);
       }
@@ -512,17 +525,10 @@ std::vector<SurfaceDraw> Renderer::surface_draws(const FramePlan& plan) {
   return draws;
 }
 
-namespace {
-bool same_camera(const Camera& a, const Camera& b) {
-  return a.projection == b.projection && a.position == b.position && a.target == b.target && a.up == b.up &&
-         a.fov_y_deg == b.fov_y_deg && a.ortho_height_mm == b.ortho_height_mm && a.near_mm == b.near_mm &&
-         a.far_mm == b.far_mm;
-}
-}  // namespace
 
 ReductionResult Renderer::mean_visible_normal(bool& reduced) {
-  reduced = !normal_mean_.valid || !same_camera(normal_mean_.camera, scene_.camera);
-  if (reduced) normal_mean_ = {true, scene_.camera, reductions_.mean_normal(surface_)};
+  reduced = !normal_mean_.valid || !same_camera(normal_mean_.camera, camera_);
+  if (reduced) normal_mean_ = {true, camera_, reductions_.mean_normal(surface_)};
   return normal_mean_.result;
 }
 
@@ -545,13 +551,13 @@ void Renderer::apply_reductions(const ReductionResult& r, const FramePlan& plan)
       disp = r.weighted_displacement;
   }
   if (!std::isfinite(disp.x) || !std::isfinite(disp.y) || !std::isfinite(disp.z)) disp = glm::dvec3(0.0);
-  scene_.probe.position += disp;
+  probe_.position += disp;
   stats_.displacement = disp;
   stats_.max_penetration_mm = r.max_penetration_mm;
   stats_.shadow_pixels = r.covered_fragments;
   stats_.penetrating_pixels = r.penetrating_fragments;
   stats_.reference_normal = frame_.n;
-  stats_.probe_position = scene_.probe.position;
+  stats_.probe_position = probe_.position;
 }
 
 Status Renderer::render_frame() {
@@ -560,7 +566,7 @@ Status Renderer::render_frame() {
   if (Status s = advance_bake(); !s) return s;  // before the timer: a band is not the frame's work
   PassTimer timer(options_.time_passes, stats_, options_.gpu_timers ? &gpu_timers_ : nullptr);
   const BoundingSphere probe = current_probe_bounds();
-  const FramePlan plan = make_plan(scene_, geometry_.surface_bounds, probe, frame_,
+  const FramePlan plan = make_plan(scene_, camera_, geometry_.surface_bounds, probe, frame_,
                                    scene_.render.depth_map_size);
   stats_.skipped = plan.skipped;
   if (!plan.shadow_active || !filter_lod()) filter_negligible_ = false;  // no measure to go by
@@ -650,10 +656,6 @@ void Renderer::run_probe_depth(const FramePlan& plan, const BoundingSphere& prob
   probe_depth_.run(in);
 }
 
-void Renderer::set_body_positions(std::span<const glm::dvec3> centres) {
-  body_positions_.assign(centres.begin(), centres.begin() + std::min(centres.size(), scene_.bodies.size()));
-}
-
 // The bodies drawn this frame as shadow casters (spheres of their radius), in scene order.
 std::vector<SphereCaster> Renderer::body_casters() const {
   std::vector<SphereCaster> out;
@@ -662,9 +664,9 @@ std::vector<SphereCaster> Renderer::body_casters() const {
   return out;
 }
 
-void Renderer::set_probe_sheet(int surface, double w4) {
-  sheet_surface_ = surface;
-  sheet_w4_ = w4;
+void Renderer::add_path_point() {
+  const int surface = sheet_.surface;
+  const double w4 = sheet_.w4;
   const bool on_sheet = surface >= 0 && static_cast<std::size_t>(surface) < geometry_.surface_sheets.size() &&
                         !geometry_.surface_sheets[static_cast<std::size_t>(surface)].w4.empty();
   if (!show_path_ || !on_sheet) {
@@ -674,7 +676,7 @@ void Renderer::set_probe_sheet(int surface, double w4) {
   const Geometry::Sheets& sheets = geometry_.surface_sheets[static_cast<std::size_t>(surface)];
   const double range = sheets.w_max - sheets.w_min;
   const glm::dvec3 colour = fourd::depth_colour(range > 0.0 ? (w4 - sheets.w_min) / range : 0.5);
-  const glm::dvec3 p = scene_.probe.position;
+  const glm::dvec3 p = probe_.position;
   // A tube from the last point, unless the probe left the sheet since (lifted and put down).
   constexpr double kPathRadiusMm = 0.6;
   const bool joined = !path_.empty() && !path_break_;
@@ -683,21 +685,14 @@ void Renderer::set_probe_sheet(int surface, double w4) {
   path_.push_back({joined ? path_.back().b : p, p, kPathRadiusMm, colour});
 }
 
-void show_world_at_start(Renderer& renderer) {
-  const Scene& sc = renderer.scene();
-  const std::vector<glm::dvec3> bodies = start_positions(sc);
-  renderer.set_body_positions(bodies);
-  renderer.set_markers(world_markers(sc, sc.probe.position, bodies));
-}
-
 void Renderer::run_world_view() {
   if (!world_view_ready_) {
     if (!body_view_.init(options_.glsl_root, surface_) || !ghost_view_.init(options_.glsl_root, surface_)) return;
     world_view_ready_ = true;
   }
   ProbeViewPass::Inputs in;
-  in.view_proj = view_projection(scene_.camera, static_cast<double>(scene_.render.width) / scene_.render.height);
-  in.light = &scene_.light;
+  in.view_proj = view_projection(camera_, static_cast<double>(scene_.render.width) / scene_.render.height);
+  in.light = &light_;
   for (std::size_t i = 0; i < body_positions_.size(); ++i) {
     const Body& b = scene_.bodies[i];
     const std::size_t m = static_cast<std::size_t>(b.material_index);
@@ -716,7 +711,7 @@ void Renderer::run_world_view() {
   if (show_device_) {
     // The probe's shape at the device, faint: where the hand is, against where the proxy is drawn.
     in.probe = probe_input();
-    const glm::dvec3 shift = device_position_ - scene_.probe.position;
+    const glm::dvec3 shift = device_position_ - probe_.position;
     in.probe.capsule.a += shift;
     in.probe.capsule.b += shift;
     in.probe.model = glm::translate(glm::dmat4(1.0), shift) * in.probe.model;
@@ -728,8 +723,8 @@ void Renderer::run_world_view() {
 
 void Renderer::run_probe_view() {
   ProbeViewPass::Inputs in;
-  in.view_proj = view_projection(scene_.camera, static_cast<double>(scene_.render.width) / scene_.render.height);
-  in.light = &scene_.light;
+  in.view_proj = view_projection(camera_, static_cast<double>(scene_.render.width) / scene_.render.height);
+  in.light = &light_;
   in.probe = probe_input();  // after this frame's displacement
   probe_view_.run(in);
 }

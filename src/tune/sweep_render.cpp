@@ -68,9 +68,10 @@ Result<std::vector<SweepCell>> render_sweep(const SweepJob& job, const SweepProg
     options.expected_frames = scene->render.frames;  // as `render` does, so a cell equals its render
     auto renderer = Renderer::create(scene.value(), options);
     if (!renderer) return renderer.error();
-    show_world_at_start(*renderer.value());  // as `render` does: bodies, charges, bands
+    // As `render` does: the bodies, charges and bands where the scene starts them.
+    const FrameInput start = start_frame_input(renderer.value()->scene());
     for (int f = 0; f < scene->render.frames; ++f)
-      if (Status s = renderer.value()->render_frame(); !s) return s.error();
+      if (auto s = renderer.value()->render(f == 0 ? start : FrameInput{}); !s) return s.error();
     cell.image = renderer.value()->read_color();
     cell.stats = renderer.value()->stats();
     for (const auto& [name, ms] : cell.stats.timings_ms) cell.frame_ms += ms;

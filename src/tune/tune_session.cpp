@@ -69,8 +69,8 @@ Status TuneSession::rebuild(const std::map<std::string, std::string>& edits, boo
     return fresh.error();
   }
   if (renderer_ && keep_probe)
-    fresh.value()->set_probe_state(renderer_->scene().probe.position, renderer_->scene().probe.velocity);
-  if (renderer_ && keep_camera) fresh.value()->set_camera(renderer_->scene().camera);
+    fresh.value()->set_probe_state(renderer_->probe().position, renderer_->probe().velocity);
+  if (renderer_ && keep_camera) fresh.value()->set_camera(renderer_->camera());
   if (renderer_) fresh.value()->set_show_probe(renderer_->show_probe());
   if (renderer_) fresh.value()->set_show_device(renderer_->show_device());
   renderer_ = std::move(fresh.value());

@@ -245,7 +245,7 @@ TEST_P(UniverseReplayGLTest, FieldsViewTravelsWithTheBox) {
   });
   ASSERT_EQ(frames.size(), 21u);
   EXPECT_GT(offset.x, 140.0);
-  const Camera& cam = w.renderer->scene().camera;
+  const Camera& cam = w.renderer->camera();
   EXPECT_EQ(cam.target, w.scene.camera.target + offset);
   EXPECT_EQ(cam.position, w.scene.camera.position + offset);
   const PointerView view = pointer_view(*w.renderer, pointer_plane(*w.renderer));
