@@ -43,6 +43,9 @@ render_all() {
   [ -x "${bin}" ] || die "no ${bin}: build the pseudoshadow target first"
   rm -rf "${out}" && mkdir -p "${out}/scenes" "${out}/walks" "${out}/maze" || die "cannot make ${out}"
   cd "${repo_root}" || die "no ${repo_root}"
+  # A cold picture cache: button pictures and field maps are made by this binary, not found.
+  PSEUDOSHADOW_CACHE_DIR="$(mktemp -d)" || die "no temporary directory"
+  export PSEUDOSHADOW_CACHE_DIR
   for f in scenes/*.toml scenes/universe/*.toml scenes/fourd/*.toml; do
     name="$(echo "${f%.toml}" | sed 's|^scenes/||; s|/|_|g')"
     "${bin}" render --scene "${f}" --size 256x256 --frames 2 --out "${out}/scenes/${name}.png" \
@@ -68,6 +71,7 @@ render_all() {
     "${bin}" maze --maze "${maze}" --participant P02 --seed 8 --cues off --device "trajectory:${out}/maze/p02.traj" \
       --out "${out}/maze/p02" --every 45 > "${out}/maze/p02.txt" 2>&1 ||
     echo "maze P02: failed (see ${out}/maze/p02.txt)"
+  rm -rf "${PSEUDOSHADOW_CACHE_DIR}"
   echo "byte_identity: $(find "${out}" -name '*.png' | wc -l) images, $(find "${out}" -type f ! -name '*.png' | wc -l) other files in ${out}"
 }
 

@@ -2,6 +2,7 @@
 // with its --set overrides (src/scene), a headless context (src/gl) and ps::Renderer
 // (src/render), used exactly as `pseudoshadow render` uses them, so a first render() equals the
 // CLI's image byte for byte. Error values become pseudoshadow::Error here, at the boundary.
+#include "prepare/prepare.h"
 #include "pseudoshadow/pseudoshadow.h"
 
 #include <algorithm>
@@ -200,7 +201,7 @@ Frame Renderer::render(const RenderDesc& desc) {
     m.scene.render.frames = frames;
     ps::RendererOptions options;
     options.expected_frames = frames;
-    m.renderer = value_or_throw(ps::Renderer::create(m.scene, options));
+    m.renderer = value_or_throw(ps::open_renderer(m.scene, options));
   } else {
     m.renderer->set_probe_state(position, velocity);
   }

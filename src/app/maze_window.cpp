@@ -17,6 +17,7 @@
 #include "devices/sample_log.h"
 #include "gl/context.h"
 #include "maze/maze_screen.h"
+#include "prepare/prepare.h"
 #include "render/present.h"
 #include "frame/haptic_frame.h"
 #include "render/renderer.h"
@@ -107,7 +108,7 @@ Status open_window(const maze::SessionOptions& o, const std::string& device, con
   if (!ctx) return ctx.error();
   w.ctx = std::move(ctx.value());
   w.events.install(w.ctx->window());  // before ImGui (it chains to them) and before the grab
-  auto r = Renderer::create(core.scene().scene, RendererOptions{});
+  auto r = open_renderer(core.scene().scene, RendererOptions{});
   if (!r) return r.error();
   w.renderer = std::move(r.value());
   w.out_dir = std::filesystem::path(o.log_path).parent_path().string();
@@ -249,7 +250,7 @@ Status window_loop(const maze::SessionOptions& o, const MazeWindowParams& p, maz
       return ok_status();
     }
     if (core.take_scene_changed()) {
-      auto r = Renderer::create(core.scene().scene, RendererOptions{});
+      auto r = open_renderer(core.scene().scene, RendererOptions{});
       if (!r) return r.error();
       w.renderer = std::move(r.value());
       vib.set_scene(core.scene().scene);  // the next room's materials

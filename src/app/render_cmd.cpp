@@ -11,6 +11,7 @@
 #include "app/commands.h"
 #include "core/output_set.h"
 #include "gl/context.h"
+#include "prepare/prepare.h"
 #include "render/renderer.h"
 
 namespace ps {
@@ -127,7 +128,7 @@ int render(const cli::Command& cmd, const RenderArgs& a) {
   if (!ctx) return cmd.fail(ctx.error());
   RendererOptions options;
   options.expected_frames = scene->render.frames;  // a short render skips a tile bake it would not repay
-  auto renderer = Renderer::create(scene.value(), options);
+  auto renderer = open_renderer(scene.value(), options);
   if (!renderer) return cmd.fail(renderer.error());
   renderer.value()->set_show_probe(a.show_probe);
   const int frames = scene->render.frames;

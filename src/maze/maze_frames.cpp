@@ -5,6 +5,7 @@
 #include "frame/haptic_frame.h"
 #include "image/image.h"
 #include "maze/maze_screen.h"
+#include "prepare/prepare.h"
 
 namespace ps::maze {
 
@@ -13,7 +14,7 @@ Status FrameWriter::on_frame(const FrameView& v) {
   if (every_ <= 0 || v.index % every_ != 0) return ok_status();
   if (stale_ || !renderer_) {
     renderer_.reset();  // the old one's GL objects go before the new one's are made
-    auto r = Renderer::create(v.scene.scene, RendererOptions{});
+    auto r = open_renderer(v.scene.scene, RendererOptions{});
     if (!r) return r.error();
     renderer_ = std::move(r.value());
     stale_ = false;

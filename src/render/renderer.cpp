@@ -2,8 +2,6 @@
 
 #include "fourd/fourd_mesh.h"  // depth_colour: the probe path on 4D sheets
 
-#include "render/button_pictures.h"
-#include "render/field_map.h"
 
 #include <algorithm>
 #include <limits>
@@ -146,9 +144,6 @@ Result<std::unique_ptr<Renderer>> Renderer::create(const Scene& scene, const Ren
   r->created_at_ = std::chrono::steady_clock::now();
   r->scene_ = scene;
   r->options_ = options;
-  if (options.button_pictures)
-    if (Status s = make_button_pictures(r->scene_); !s) return s.error();
-  if (Status s = make_field_maps(r->scene_); !s) return s.error();
   r->probe_ = r->scene_.probe;
   r->camera_ = r->scene_.camera;
   r->light_ = r->scene_.light;

@@ -71,9 +71,6 @@ struct RendererOptions {
   // image) the naive sum is drawn instead and nothing is baked (docs/benchmarks.md, "Time to
   // the first image"). 0 = unknown (the window): bake.
   int expected_frames = 0;
-  // Picture buttons get their pictures (render/button_pictures.h) before anything is built;
-  // false for the pictures' own renders.
-  bool button_pictures = true;
   // true: the pseudo-shadow variants, the AOV target and the shadow's reductions cover only the
   // footprint's screen rectangle (FramePlan::shadow_rect), the weighted row sums only the box of
   // penetrating pixels. false: the whole image and whole rows, as before; the results are the
@@ -153,7 +150,7 @@ class Renderer {
   void poll_gpu_timings(bool wait);
   // The baked tile material i is drawn with (ok == false: the per-pixel sum), as chosen at creation.
   const GaborBakePlan& gabor_bake_plan(size_t material) const { return materials_[material].bake_plan; }
-  // The scene as given to create() (after its pictures and field maps): never changed by a frame.
+  // The scene as given to create() (prepared: prepare/prepare.h): never changed by a frame.
   const Scene& scene() const { return scene_; }
   const PlaneFrame& reference() const { return frame_; }
   // The probe now: the scene's, moved by set_probe_state, FrameInput::probe and each frame's

@@ -1,8 +1,9 @@
-// Rendering a sweep: every cell through Renderer::create + render_frame, like `render`.
+// Rendering a sweep: every cell through open_renderer + render, like `render`.
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
 
+#include "prepare/prepare.h"
 #include "scene/scene_io.h"
 #include "tune/sweep.h"
 
@@ -66,7 +67,7 @@ Result<std::vector<SweepCell>> render_sweep(const SweepJob& job, const SweepProg
     if (!scene) return as_sweep_error(scene.error());
     RendererOptions options = job.renderer;
     options.expected_frames = scene->render.frames;  // as `render` does, so a cell equals its render
-    auto renderer = Renderer::create(scene.value(), options);
+    auto renderer = open_renderer(scene.value(), options);
     if (!renderer) return renderer.error();
     // As `render` does: the bodies, charges and bands where the scene starts them.
     const FrameInput start = start_frame_input(renderer.value()->scene());

@@ -1,3 +1,4 @@
+#include "prepare/prepare.h"
 #include "tune/tune_session.h"
 
 #include <filesystem>
@@ -63,7 +64,7 @@ Status TuneSession::rebuild(const std::map<std::string, std::string>& edits, boo
   }
   RendererOptions options = source_.renderer;
   if (keep_tiles) options.reuse_tiles_from = renderer_.get();  // edits only: shaders unchanged
-  auto fresh = Renderer::create(scene.value(), options);
+  auto fresh = open_renderer(scene.value(), options);
   if (!fresh) {
     last_error_ = fresh.error().message;
     return fresh.error();
