@@ -14,6 +14,7 @@
 #include "gl/shader.h"
 #include "reference/modulation.h"
 #include "render/camera.h"
+#include "render/material_gpu.h"
 #include "scene/mesh.h"
 #include "world/deformable.h"
 
@@ -47,58 +48,6 @@ void stretch_mesh(Mesh& m, const Surface& s) {
     m.bounds_max = glm::max(m.bounds_max, q);
   }
   for (glm::vec3& n : m.normals) n = glm::vec3(glm::normalize(to_n * glm::dvec3(n)));
-}
-
-Result<gl::Texture> upload_albedo(const std::string& path) {
-  auto img = read_image(path);
-  if (!img) return img.error();
-  const Image& im = img.value();
-  std::vector<std::uint8_t> rgba(static_cast<size_t>(im.width) * im.height * 4, 255);
-  for (int y = 0; y < im.height; ++y)
-    for (int x = 0; x < im.width; ++x)
-      for (int c = 0; c < 4; ++c) {
-        const int src = std::min(c, im.channels - 1);
-        const float v = (c == 3 && im.channels < 4) ? 1.0f : im.at(x, im.height - 1 - y, src);
-        rgba[(static_cast<size_t>(y) * im.width + x) * 4 + c] =
-            static_cast<std::uint8_t>(std::clamp(v, 0.0f, 1.0f) * 255.0f + 0.5f);
-      }
-  const int levels = 1 + static_cast<int>(std::floor(std::log2(std::max(im.width, im.height))));
-  gl::Texture t = gl::make_texture_2d(im.width, im.height, GL_RGBA8, levels);
-  glTextureSubImage2D(t.id(), 0, 0, 0, im.width, im.height, GL_RGBA, GL_UNSIGNED_BYTE, rgba.data());
-  glGenerateTextureMipmap(t.id());
-  glTextureParameteri(t.id(), GL_TEXTURE_MIN_FILTER, GL_LINEAR_MIPMAP_LINEAR);
-  glTextureParameteri(t.id(), GL_TEXTURE_WRAP_S, GL_REPEAT);
-  glTextureParameteri(t.id(), GL_TEXTURE_WRAP_T, GL_REPEAT);
-  return t;
-}
-
-// What --stats says about a textured material's Gabor strategy: auto's choice and why, or a
-// baked strategy's fallback to the naive sum; empty when there is nothing to say.
-std::string strategy_note(const Material& m, const GaborStrategyChoice& choice, double shadow_window_mm) {
-  const GaborBakePlan& plan = choice.plan;
-  char note[200];
-  if (m.gabor.strategy == GaborParams::Strategy::kAuto) {
-    if (plan.ok)
-      std::snprintf(note, sizeof note, "material '%s': Gabor sum replaced by a baked %d^2 tile "
-                    "(%s lookup, %.0f mm period, RMS %.4f sigma vs naive)", m.name.c_str(), plan.texels,
-                    plan.linear ? "bilinear" : "Hermite", plan.period_mm, choice.rms_vs_naive);
-    else if (choice.best_period_mm == 0.0)
-      std::snprintf(note, sizeof note, "material '%s': naive Gabor sum (too fine for a %d^2 tile)",
-                    m.name.c_str(), kMaxBakeTexels);
-    else if (choice.best_period_mm < shadow_window_mm)
-      std::snprintf(note, sizeof note, "material '%s': naive Gabor sum (a tile would repeat every "
-                    "%.1f mm, inside the %.1f mm shadow)", m.name.c_str(), choice.best_period_mm,
-                    shadow_window_mm);
-    else
-      std::snprintf(note, sizeof note, "material '%s': naive Gabor sum (no tile within %.0f %% "
-                    "sigma of it: best %.4f)", m.name.c_str(), kAutoBakeSelectRms * 100.0, choice.rms_vs_naive);
-    return note;
-  }
-  if (!plan.ok && (m.gabor.strategy == GaborParams::Strategy::kBaked ||
-                   m.gabor.strategy == GaborParams::Strategy::kBakedLinear))
-    return "material '" + m.name + "': too fine for a baked tile "
-           "(lambda_max / lambda_min too large), naive Gabor used";
-  return {};
 }
 
 // CPU wall time per pass (glFinish between passes) and, where `gpu` is given, GPU time per pass
@@ -249,51 +198,15 @@ Status Renderer::load_probe_mesh() {
 }
 
 Status Renderer::load_materials() {
-  // The pseudo-shadow lives in a square window as wide as the probe's bounding diameter
-  // (plan.cpp): a baked tile chosen by "auto" must be at least that long so no shadow shows a
-  // repeat. (Editing the probe's size builds a new Renderer, so this is chosen again.)
-  const double shadow_window_mm = 2.0 * current_probe_bounds().radius;
-  const std::uint32_t seed = scene_.render.seed;
-  materials_.resize(scene_.materials.size());
-  for (size_t i = 0; i < materials_.size(); ++i) {
-    const Material& m = scene_.materials[i];
-    MaterialState& ms = materials_[i];
-    if (!m.albedo_texture.empty()) {
-      auto t = upload_albedo(m.albedo_texture);
-      if (!t) return t.error();
-      ms.albedo = std::move(t.value());
-    }
-    if (!m.intensity_lut.empty()) ms.intensity_lut = make_intensity_lut_buffer(m.intensity_lut);
-    ms.gabor_setup = make_gabor_setup(m.gabor);
-    if (m.textured) {
-      // Less work than even the smallest tile auto could pick: decided before auto measures
-      // its candidates' error (a CPU sum costing about as much as a small frame).
-      const int smallest = smallest_auto_tile_texels(m.gabor, ms.gabor_setup, shadow_window_mm);
-      if (naive_is_less_work(m, smallest)) {
-        ms.strategy_note = naive_note(m, smallest);
-      } else {
-        const GaborStrategyChoice choice = choose_gabor_tile(m.gabor, ms.gabor_setup, seed, shadow_window_mm);
-        ms.bake_plan = choice.plan;
-        ms.strategy_note = strategy_note(m, choice, shadow_window_mm);
-        if (choice.plan.ok && naive_is_less_work(m, choice.plan.texels)) {
-          ms.strategy_note = naive_note(m, choice.plan.texels);
-          ms.bake_plan = GaborBakePlan{};
-        }
-      }
-    }
-    ms.gabor_block = make_gabor_block(m.gabor, ms.gabor_setup, ms.bake_plan, seed);
+  // Editing the probe's size builds a new Renderer, so the strategy is chosen again.
+  const StrategyInputs in{2.0 * current_probe_bounds().radius, scene_.render.seed, options_.expected_frames,
+                          textured_pixels_per_frame()};
+  for (const Material& m : scene_.materials) {
+    auto ms = load_material_gpu(m, in);
+    if (!ms) return ms.error();
+    materials_.push_back(std::move(ms.value()));
   }
   return ok_status();
-}
-
-// "auto" picked a tile, but the frames this renderer will draw need less texture work than
-// the bake: the per-pixel sum evaluates at most width x height pixels a frame (every pixel in
-// the shadow), the bake evaluates texels^2 samples of the same sum once.
-bool Renderer::naive_is_less_work(const Material& m, int tile_texels) const {
-  if (m.gabor.strategy != GaborParams::Strategy::kAuto || tile_texels <= 0 || options_.expected_frames <= 0)
-    return false;
-  const double pixels = static_cast<double>(options_.expected_frames) * textured_pixels_per_frame();
-  return pixels <= static_cast<double>(tile_texels) * tile_texels;
 }
 
 // An upper bound on the pixels a frame textures: the pseudo-shadow's square window (as wide as
@@ -317,14 +230,6 @@ double Renderer::textured_pixels_per_frame() const {
   return std::min(image, side_px * side_px);
 }
 
-std::string Renderer::naive_note(const Material& m, int tile_texels) const {
-  char note[200];
-  std::snprintf(note, sizeof note, "material '%s': naive Gabor sum (%d frame%s of <= %.0f textured pixels "
-                "are less work than baking a %d^2 tile)", m.name.c_str(), options_.expected_frames,
-                options_.expected_frames == 1 ? "" : "s", textured_pixels_per_frame(), tile_texels);
-  return note;
-}
-
 Status Renderer::init_passes() {
   const RenderSettings& rs = scene_.render;
   if (Status s = probe_depth_.init(options_.glsl_root, {rs.depth_map_size}); !s) return s;
@@ -339,7 +244,7 @@ Status Renderer::init_passes() {
 Status Renderer::bake_gabor_tiles() {
   tiles_.set_params({options_.bake_slice_ms});
   for (size_t i = 0; i < materials_.size(); ++i) {
-    MaterialState& ms = materials_[i];
+    MaterialGpu& ms = materials_[i];
     if (!ms.bake_plan.ok) continue;
     ms.gabor_tile = reusable_tile(scene_.materials[i], ms.bake_plan);
     if (!ms.gabor_tile) tiles_.add(i, ms.gabor_block, ms.bake_plan);
@@ -373,14 +278,7 @@ double Renderer::ms_since_creation() const {
 std::shared_ptr<gl::Texture> Renderer::reusable_tile(const Material& m, const GaborBakePlan& plan) const {
   const Renderer* old = options_.reuse_tiles_from;
   if (!old || old->scene_.render.seed != scene_.render.seed) return nullptr;
-  for (size_t k = 0; k < old->materials_.size(); ++k) {
-    const MaterialState& o = old->materials_[k];
-    if (o.gabor_tile && old->scene_.materials[k].gabor == m.gabor && o.bake_plan.linear == plan.linear &&
-        o.bake_plan.texels == plan.texels && o.bake_plan.period_cells == plan.period_cells &&
-        o.bake_plan.filtered_levels == plan.filtered_levels)
-      return o.gabor_tile;
-  }
-  return nullptr;
+  return ps::reusable_tile(old->materials_, old->scene_.materials, m, plan);
 }
 
 Status Renderer::prime_reference_plane() {
@@ -467,7 +365,7 @@ std::vector<SurfaceDraw> Renderer::surface_draws(const FramePlan& plan) {
     if (!scene_.surfaces[i].visible) continue;  // a hidden object: felt (haptics), never drawn
     const size_t mi = static_cast<size_t>(scene_.surfaces[i].material_index);
     const Material& m = scene_.materials[mi];
-    const MaterialState& ms = materials_[mi];
+    const MaterialGpu& ms = materials_[mi];
     const double gain = speed_gain(m, frame_, probe_.velocity);
     if (plan.surface_shadow[i] && !gain_recorded) {
       stats_.speed_gain = gain;
@@ -567,7 +465,7 @@ Status Renderer::render_frame() {
   if (!plan.shadow_active || !filter_lod()) filter_negligible_ = false;  // no measure to go by
   stats_.gabor_filter_skipped = filter_negligible_;
   stats_.gabor_filter_need = 0.0;
-  for (const MaterialState& ms : materials_)
+  for (const MaterialGpu& ms : materials_)
     if (!ms.strategy_note.empty()) stats_.skipped.push_back(ms.strategy_note);
   timer.lap("plan");
   if (plan.shadow_active) {
@@ -625,7 +523,7 @@ Status Renderer::warm_unfiltered_variants() {
     const auto mi = static_cast<std::size_t>(scene_.surfaces[i].material_index);
     const Material& m = scene_.materials[mi];
     if (!has_texture(m) || m.gabor.filter != GaborParams::Filter::kAnalytic) continue;
-    const MaterialState& ms = materials_[mi];
+    const MaterialGpu& ms = materials_[mi];
     // As surface_draws() will draw it once its tile is there (the key of SurfacePass::program).
     const int baked = ms.bake_plan.ok ? (ms.bake_plan.linear ? 2 : 1) : 0;
     if (Status s = surface_.warm(ms.gabor_setup.stratified_count > 0, baked, 2, static_cast<bool>(ms.intensity_lut)); !s)

@@ -23,6 +23,7 @@
 #include "passes/surface.h"
 #include "render/aov.h"
 #include "render/frame_input.h"
+#include "render/material_gpu.h"
 #include "render/plan.h"
 #include "render/tile_bake.h"
 #include "render/world_markers.h"
@@ -198,17 +199,6 @@ class Renderer {
 
  private:
   gl::TimerQueries gpu_timers_;  // per-pass GL_TIME_ELAPSED queries (RendererOptions::gpu_timers)
-  // Everything the renderer keeps for one scene material (index = Scene::materials), built once
-  // at creation: what was decided on the CPU, then what lives on the GPU.
-  struct MaterialState {
-    GaborSetup gabor_setup;
-    GaborBakePlan bake_plan;    // ok == false: not baked (naive or stratified sum)
-    std::string strategy_note;  // auto's choice or baked's fallback, for stats.skipped; empty: none
-    GaborBlock gabor_block;     // the Gabor uniforms (with the tile plan), packed once
-    gl::Texture albedo;         // empty: no albedo texture
-    std::shared_ptr<gl::Texture> gabor_tile;  // null: none; shared with reuse_tiles_from
-    gl::Buffer intensity_lut;   // empty: no intensity_lut (the formula); passes/surface.h IntensityLutBlock
-  };
   // The scene's meshes on the GPU.
   struct Geometry {
     std::vector<GpuMesh> surface_meshes;  // index = Scene::surfaces
@@ -238,9 +228,6 @@ class Renderer {
   double ms_since_creation() const;
   Status prime_reference_plane();
   std::shared_ptr<gl::Texture> reusable_tile(const Material& m, const GaborBakePlan& plan) const;
-  // expected_frames' per-pixel work is at most a tile_texels^2 bake (false when unknown).
-  bool naive_is_less_work(const Material& m, int tile_texels) const;
-  std::string naive_note(const Material& m, int tile_texels) const;
   // Per frame.
   BoundingSphere current_probe_bounds() const;
   ProbeInput probe_input() const;
@@ -261,7 +248,7 @@ class Renderer {
   PlaneFrame frame_;
   FrameStats stats_;
   Geometry geometry_;
-  std::vector<MaterialState> materials_;
+  std::vector<MaterialGpu> materials_;  // index = Scene::materials (render/material_gpu.h)
   TileBaker tiles_;           // the tiles still to bake (all of them at once unless sliced)
   std::chrono::steady_clock::time_point created_at_;  // start of create(): the stats' time origin
   // The last mean visible normal and the camera it was reduced for. The normal target holds
