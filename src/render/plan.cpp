@@ -4,7 +4,7 @@
 #include <cmath>
 #include <sstream>
 
-#include "render/camera.h"
+#include "scene/camera.h"
 
 namespace ps {
 

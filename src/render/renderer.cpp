@@ -13,7 +13,7 @@
 
 #include "gl/shader.h"
 #include "reference/modulation.h"
-#include "render/camera.h"
+#include "scene/camera.h"
 #include "render/material_gpu.h"
 #include "scene/mesh.h"
 #include "world/deformable.h"

@@ -21,7 +21,7 @@
 #include "pipeline/scenes.h"
 #include "reference/body_shadow.h"
 #include "reference/modulation.h"
-#include "render/camera.h"
+#include "scene/camera.h"
 #include "render/renderer.h"
 #include "support/gl_test.h"
 
