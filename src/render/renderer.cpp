@@ -342,22 +342,64 @@ ProbeInput Renderer::probe_input() const {
   return in;
 }
 
-std::vector<SurfaceDraw> Renderer::surface_draws(const FramePlan& plan) {
-  const double aspect = static_cast<double>(scene_.render.width) / scene_.render.height;
+namespace {
+
+// What every surface of the frame shares: the camera, the reference plane, the depth window, the
+// light and the probe's height range (and its capsule, for the closed-form distance).
+SurfaceFrame surface_frame(const RenderSettings& rs, const Camera& camera, const Light& light, const PlaneFrame& frame,
+                           const FramePlan& plan, const BoundingSphere& probe, const Probe& p,
+                           const RendererOptions& options) {
   SurfaceFrame fr;
-  fr.view_proj = view_projection(camera_, aspect);
-  fr.plane = frame_;
+  fr.view_proj = view_projection(camera, static_cast<double>(rs.width) / rs.height);
+  fr.plane = frame;
   fr.window_center_uv = plan.window.center_uv;
   fr.window_half_mm = plan.window.half_size_mm;
-  fr.depth_map_size = scene_.render.depth_map_size;
-  fr.light = &light_;
-  fr.contrast_sigmas = options_.contrast_sigmas;
-  fr.surface_normal_distance = scene_.render.shadow_distance == ShadowDistance::kSurfaceNormal;
-  const BoundingSphere probe = current_probe_bounds();
-  fr.probe_height_lo_mm = glm::dot(probe.center, frame_.n) - probe.radius;
-  fr.probe_height_hi_mm = glm::dot(probe.center, frame_.n) + probe.radius;
-  if (probe_.shape != ProbeShape::kMesh && options_.closed_form_normal_distance)
-    fr.probe_capsule = capsule_of(probe_);
+  fr.depth_map_size = rs.depth_map_size;
+  fr.light = &light;
+  fr.contrast_sigmas = options.contrast_sigmas;
+  fr.surface_normal_distance = rs.shadow_distance == ShadowDistance::kSurfaceNormal;
+  fr.probe_height_lo_mm = glm::dot(probe.center, frame.n) - probe.radius;
+  fr.probe_height_hi_mm = glm::dot(probe.center, frame.n) + probe.radius;
+  if (p.shape != ProbeShape::kMesh && options.closed_form_normal_distance) fr.probe_capsule = capsule_of(p);
+  return fr;
+}
+
+// The w of the vertex nearest the probe (`fallback` when none is nearer than infinity: a NaN probe).
+double nearest_w(std::span<const glm::vec3> positions, std::span<const float> w4, const glm::dvec3& probe_mm,
+                 double fallback) {
+  double w = fallback;
+  float best = std::numeric_limits<float>::infinity();
+  const glm::vec3 probe(probe_mm);
+  for (std::size_t v = 0; v < positions.size(); ++v) {
+    const glm::vec3 dv = positions[v] - probe;
+    const float d2 = glm::dot(dv, dv);
+    if (d2 < best) best = d2, w = w4[v];
+  }
+  return w;
+}
+
+// A surface embedded in 4D shows the pseudo-shadow on the probe's sheet `w` only: the band is
+// 15 % of the surface's w range, wide enough for the sheet's own w change across the shadow
+// window (a few mm), far narrower than the w gap where sheets cross. Its cutaway and crossing
+// diagram need the probe and the eye.
+void set_sheet(SurfaceDraw& d, const fourd::Spec& spec, double w, float w_range, const Camera& cam,
+               const glm::dvec3& probe_mm) {
+  d.block.sheet = glm::vec4(1.0f, static_cast<float>(w), 0.15f * w_range, 0.0f);
+  d.wireframe = spec.wireframe;
+  d.block.sheet.w = static_cast<float>(spec.crossing_diagram_mm);
+  if (spec.cutaway_mm > 0.0 || spec.crossing_diagram_mm > 0.0) {
+    const bool persp = cam.projection == Projection::kPerspective;
+    d.block.cutaway = glm::vec4(glm::vec3(probe_mm), static_cast<float>(spec.cutaway_mm));
+    d.block.eye = persp ? glm::vec4(glm::vec3(cam.position), 1.0f)
+                        : glm::vec4(glm::vec3(glm::normalize(cam.target - cam.position)), 0.0f);
+  }
+}
+
+}  // namespace
+
+std::vector<SurfaceDraw> Renderer::surface_draws(const FramePlan& plan) {
+  const SurfaceFrame fr = surface_frame(scene_.render, camera_, light_, frame_, plan, current_probe_bounds(),
+                                         probe_, options_);
   const std::vector<SphereCaster> bodies = body_casters();
   std::vector<SurfaceDraw> draws;
   bool gain_recorded = false;
@@ -388,30 +430,11 @@ std::vector<SurfaceDraw> Renderer::surface_draws(const FramePlan& plan) {
     d.gabor_filter_skipped = filter_negligible_ && (ms.gabor_tile || !ms.bake_plan.ok);
     const Geometry::Sheets& sheets = geometry_.surface_sheets[i];
     if (!sheets.w4.empty()) {
-      // The probe's sheet: the haptic proxy's (FrameInput::sheet), else the nearest vertex's. The
-      // band is 15 % of the surface's w range: wide enough for the sheet's own w change across
-      // the shadow window (a few mm), far narrower than the w gap where sheets cross.
-      double w = sheet_.w4;
-      if (sheet_.surface != static_cast<int>(i)) {
-        float best = std::numeric_limits<float>::infinity();
-        const glm::vec3 probe(probe_.position);
-        for (std::size_t v = 0; v < sheets.positions.size(); ++v) {
-          const glm::vec3 dv = sheets.positions[v] - probe;
-          const float d2 = glm::dot(dv, dv);
-          if (d2 < best) best = d2, w = sheets.w4[v];
-        }
-      }
-      d.block.sheet = glm::vec4(1.0f, static_cast<float>(w), 0.15f * (sheets.w_max - sheets.w_min), 0.0f);
-      const fourd::Spec& spec = scene_.surfaces[i].fourd;
-      d.wireframe = spec.wireframe;
-      d.block.sheet.w = static_cast<float>(spec.crossing_diagram_mm);
-      if (spec.cutaway_mm > 0.0 || spec.crossing_diagram_mm > 0.0) {
-        const Camera& cam = camera_;
-        const bool persp = cam.projection == Projection::kPerspective;
-        d.block.cutaway = glm::vec4(glm::vec3(probe_.position), static_cast<float>(spec.cutaway_mm));
-        d.block.eye = persp ? glm::vec4(glm::vec3(cam.position), 1.0f)
-                            : glm::vec4(glm::vec3(glm::normalize(cam.target - cam.position)), 0.0f);
-      }
+      // The probe's sheet: the haptic proxy's (FrameInput::sheet), else the nearest vertex's.
+      const double w = sheet_.surface == static_cast<int>(i)
+                           ? sheet_.w4
+                           : nearest_w(sheets.positions, sheets.w4, probe_.position, sheet_.w4);
+      set_sheet(d, scene_.surfaces[i].fourd, w, sheets.w_max - sheets.w_min, camera_, probe_.position);
     }
     draws.push_back(std::move(d));
   }
