@@ -2,6 +2,7 @@
 // with its --set overrides (src/scene), a headless context (src/gl) and ps::Renderer
 // (src/render), used exactly as `pseudoshadow render` uses them, so a first render() equals the
 // CLI's image byte for byte. Error values become pseudoshadow::Error here, at the boundary.
+#include "prepare/prepare.h"
 #include "pseudoshadow/pseudoshadow.h"
 
 #include <algorithm>
@@ -85,7 +86,7 @@ struct Renderer::Impl {
     if (renderer && context) context->make_current();
   }
   // Where the probe is now: pushed by the frames rendered so far, or as set.
-  const ps::Probe& probe() const { return renderer ? renderer->scene().probe : scene.probe; }
+  const ps::Probe& probe() const { return renderer ? renderer->probe() : scene.probe; }
 };
 
 Renderer::Renderer(std::unique_ptr<Impl> impl) : impl_(std::move(impl)) {}
@@ -205,7 +206,7 @@ Frame Renderer::render(const RenderDesc& desc) {
     m.scene.render.frames = frames;
     ps::RendererOptions options;
     options.expected_frames = frames;
-    m.renderer = value_or_throw(ps::Renderer::create(m.scene, options));
+    m.renderer = value_or_throw(ps::open_renderer(m.scene, options));
   } else {
     m.renderer->set_probe_state(position, velocity);
   }

@@ -10,6 +10,7 @@
 #include "app/commands.h"
 #include "app/session.h"
 #include "gl/context.h"
+#include "prepare/prepare.h"
 
 namespace ps {
 
@@ -116,7 +117,7 @@ int bench(const cli::Command& cmd, const BenchArgs& a) {
   if (!live) return cmd.usage_error(live.error());
   auto ctx = cli::open_context(a.gl_opts);
   if (!ctx) return cmd.fail(ctx.error());
-  auto renderer = Renderer::create(scene.value(), {});
+  auto renderer = open_renderer(scene.value(), {});
   if (!renderer) return cmd.fail(renderer.error());
   glm::dvec3 center = scene->probe.position;
   if (!std::isnan(a.circle_z_mm)) center.z = a.circle_z_mm;

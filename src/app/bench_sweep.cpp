@@ -5,6 +5,7 @@
 #include <limits>
 #include <memory>
 
+#include "prepare/prepare.h"
 #include "reference/gabor.h"
 #include "render/renderer.h"
 
@@ -108,7 +109,7 @@ void frame_errors(const Scene& s, const Renderer& r, const TextureRefs& refs, Me
 
 Result<Measurement> measure_with(const Scene& s, const BenchOptions& o, const TextureRefs& refs,
                                  bool errors = true) {
-  auto rr = Renderer::create(s, {});
+  auto rr = open_renderer(s, {});
   if (!rr) return rr.error();
   Renderer& r = *rr.value();
   Measurement m;

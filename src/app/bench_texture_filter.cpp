@@ -6,7 +6,7 @@
 #include <vector>
 
 #include "render/renderer.h"
-#include "render/texture_aliasing.h"
+#include "measure/texture_aliasing.h"
 
 namespace ps::bench {
 

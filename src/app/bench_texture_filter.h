@@ -1,6 +1,6 @@
 // `pseudoshadow bench --texture-filter`: what the Gabor texture's analytic filtering costs and
 // what it buys, in one run (docs/benchmarks.md, "Texture filtering"). For each view of
-// render/texture_aliasing.h (top-down and 15-degree grazing, lambda = 2 px) and each strategy
+// measure/texture_aliasing.h (top-down and 15-degree grazing, lambda = 2 px) and each strategy
 // (naive, baked_linear, baked), the unfiltered and the filtered texture: the frame's and the
 // surface pass's median wall time (long-lived renderers, tiles baked at creation, frames
 // alternated in rounds so load from other processes hits all alike) and the error against the

@@ -76,22 +76,24 @@ struct Answers {
 // The probe of one stimulus `t_s` seconds into the trial: over the plane at the distance, or
 // gliding along +x at the speed with the view following it, so the shadow stays in the middle and
 // the texture it reveals slides through it (the texture is what moves on screen).
-void place_probe(Renderer& r, calibrate::CurveKind kind, double x, double t_s) {
+FrameInput placed_probe(calibrate::CurveKind kind, double x, double t_s) {
+  FrameInput in;
   if (kind == calibrate::CurveKind::kDistance) {
-    r.set_probe_state({0.0, 0.0, kProbeRadiusMm + x}, {0.0, 0.0, 0.0});
-    return;
+    in.probe = ProbeMotion{{0.0, 0.0, kProbeRadiusMm + x}, {0.0, 0.0, 0.0}};
+    return in;
   }
   const double along = std::fmod(x * t_s, kWrapMm);
-  r.set_probe_state({along, 0.0, kProbeRadiusMm + kSpeedGapMm}, {x, 0.0, 0.0});
-  r.set_view_offset({along, 0.0, 0.0});
+  in.probe = ProbeMotion{{along, 0.0, kProbeRadiusMm + kSpeedGapMm}, {x, 0.0, 0.0}};
+  in.view = ViewPose{{along, 0.0, 0.0}};
+  return in;
 }
 
 // Both stimuli into one RGBA8 image, left then right, bottom row first (GL's order).
-Status draw_pair(Renderer& left, Renderer& right, std::vector<std::uint8_t>& rgba) {
+Status draw_pair(Renderer& left, Renderer& right, const FrameInput (&input)[2], std::vector<std::uint8_t>& rgba) {
   rgba.assign(static_cast<std::size_t>(2 * kSide) * kSide * 4, 255);
   for (int side = 0; side < 2; ++side) {
     Renderer& r = side == 0 ? left : right;
-    if (Status s = r.render_frame(); !s) return s;
+    if (auto f = r.render(input[side]); !f) return f.error();
     const Image img = r.read_color();  // top row first
     for (int y = 0; y < kSide; ++y)
       for (int x = 0; x < kSide; ++x)
@@ -192,9 +194,9 @@ Status run_calibrate_window(calibrate::Calibration& cal, const CalibrateWindowPa
     }
     const calibrate::Trial& t = cal.current();
     const double now = glfwGetTime() - trial_start;
-    place_probe(*left.value(), kind, t.comparison_left ? t.comparison : t.reference, now);
-    place_probe(*right.value(), kind, t.comparison_left ? t.reference : t.comparison, now);
-    if (Status st = draw_pair(*left.value(), *right.value(), rgba); !st) return st;
+    const FrameInput input[2] = {placed_probe(kind, t.comparison_left ? t.comparison : t.reference, now),
+                                 placed_probe(kind, t.comparison_left ? t.reference : t.comparison, now)};
+    if (Status st = draw_pair(*left.value(), *right.value(), input, rgba); !st) return st;
     glTextureSubImage2D(pair.id(), 0, 0, 0, 2 * kSide, kSide, GL_RGBA, GL_UNSIGNED_BYTE, rgba.data());
     present(win, &pair, question, progress_text(cal));
     shown = cal.trials().size();

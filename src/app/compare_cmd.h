@@ -1,6 +1,6 @@
 // `pseudoshadow compare A B [--fail T] [--failpercent P] [--hardfail H] [--diff OUT]`: pixel comparison of two
 // image files for golden tests. Exit codes: 0 pass, 1 fail, 2 error (unreadable file, size
-// mismatch, bad arguments). Built as the library ps_compare_cmd (src/image/CMakeLists.txt).
+// mismatch, bad arguments). Built as the library ps_compare_cmd (src/app/CMakeLists.txt).
 #pragma once
 
 namespace ps {

@@ -17,7 +17,9 @@
 #include "devices/sample_log.h"
 #include "gl/context.h"
 #include "maze/maze_screen.h"
+#include "prepare/prepare.h"
 #include "render/present.h"
+#include "frame/haptic_frame.h"
 #include "render/renderer.h"
 
 namespace ps {
@@ -77,14 +79,14 @@ struct Window {  // context first: the renderer's GL objects die before it
 
 // The floor under the camera target: the plane the captured mouse moves the probe over.
 PlaneAxes floor_plane(const Renderer& r) {
-  return {r.scene().camera.target, glm::dvec3(1, 0, 0), glm::dvec3(0, 1, 0), glm::dvec3(0, 0, 1)};
+  return {r.camera().target, glm::dvec3(1, 0, 0), glm::dvec3(0, 1, 0), glm::dvec3(0, 0, 1)};
 }
 
 glm::dvec3 on_plane(const PlaneAxes& plane, const glm::dvec3& p) { return p - glm::dot(p - plane.origin, plane.n) * plane.n; }
 
 // The window draws `scene` from now on (a new renderer).
 Status use_scene(Window& w, const Scene& scene) {
-  auto r = Renderer::create(scene, RendererOptions{});
+  auto r = open_renderer(scene, RendererOptions{});
   if (!r) return r.error();
   w.renderer = std::move(r.value());
   return ok_status();
@@ -100,7 +102,7 @@ Status open_device(const std::string& device, const maze::SessionOptions& o, Win
     // The hand starts where the probe starts: its point on the floor under the probe's start.
     const PlaneAxes plane = floor_plane(*w.renderer);
     // A resumed session: where the probe waits, in the hall of the last room left.
-    m->place(on_plane(plane, o.resume ? maze::resume_place(o.desc, *o.resume) : w.renderer->scene().probe.position));
+    m->place(on_plane(plane, o.resume ? maze::resume_place(o.desc, *o.resume) : w.renderer->probe().position));
     w.input = m.get();
     w.device = std::move(m);
     return ok_status();
@@ -167,11 +169,8 @@ void draw_hand(const Window& w, const HapticState& st) {
 // Renders the state, stamps a screenshot if asked (the frame plus the label, as headless
 // frames have it), blits, draws the overlay.
 Status draw(Window& w, const maze::MazeDesc& desc, const HapticState& st, const Overlay& ov, bool screenshot) {
-  if (st.have_sample) {
-    w.renderer->set_camera(maze::follow_camera(desc, st.proxy_mm));
-    w.renderer->set_probe_state(st.proxy_mm, st.velocity_mm_s);
-  }
-  if (Status s = w.renderer->render_frame(); !s) return s;
+  const HapticFrameSources maze{.proxy_only = true, .camera = maze::follow_camera(desc, st.proxy_mm)};
+  if (auto f = w.renderer->render(haptic_frame_input(*w.renderer, st, maze)); !f) return f.error();
   if (screenshot) {
     Image im = w.renderer->read_color();
     maze::stamp_label(im, ov.label);
@@ -268,7 +267,7 @@ Status window_loop(const maze::SessionOptions& o, const MazeWindowParams& p, maz
       return ok_status();
     }
     if (core.take_scene_changed()) {
-      auto r = Renderer::create(core.scene().scene, RendererOptions{});
+      auto r = open_renderer(core.scene().scene, RendererOptions{});
       if (!r) return r.error();
       w.renderer = std::move(r.value());
       vib.set_scene(core.scene().scene);  // the next room's materials

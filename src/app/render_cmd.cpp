@@ -11,6 +11,7 @@
 #include "app/commands.h"
 #include "core/output_set.h"
 #include "gl/context.h"
+#include "prepare/prepare.h"
 #include "render/renderer.h"
 
 namespace ps {
@@ -76,10 +77,13 @@ void declare(cli::Command& cmd, RenderArgs& a) {
   cli::add_quiet_option(app, a.quiet);
 }
 
+// The first frame shows the world where the scene starts it (bodies, charges, bands); the probe
+// then moves by each frame's displacement.
 Status run_frames(Renderer& r, int frames, bool progress) {
   const auto t0 = std::chrono::steady_clock::now();
+  const FrameInput start = start_frame_input(r.scene());
   for (int i = 0; i < frames; ++i) {
-    if (Status s = r.render_frame(); !s) return s;
+    if (auto s = r.render(i == 0 ? start : FrameInput{}); !s) return s.error();
     if (progress) {
       const double secs = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
       std::fprintf(stderr, "\rframe %d/%d  %.1f s", i + 1, frames, secs);
@@ -124,10 +128,9 @@ int render(const cli::Command& cmd, const RenderArgs& a) {
   if (!ctx) return cmd.fail(ctx.error());
   RendererOptions options;
   options.expected_frames = scene->render.frames;  // a short render skips a tile bake it would not repay
-  auto renderer = Renderer::create(scene.value(), options);
+  auto renderer = open_renderer(scene.value(), options);
   if (!renderer) return cmd.fail(renderer.error());
   renderer.value()->set_show_probe(a.show_probe);
-  show_world_at_start(*renderer.value());
   const int frames = scene->render.frames;
   const bool progress = !a.quiet && frames > 1 && isatty(STDERR_FILENO);
   if (Status s = run_frames(*renderer.value(), frames, progress); !s) return cmd.fail(s.error());

@@ -14,6 +14,7 @@
 #include "devices/sample_log.h"
 #include "gl/context.h"
 #include "image/text.h"
+#include "prepare/prepare.h"
 #include "scene/scene_io.h"
 #include "vibration/track.h"
 
@@ -99,7 +100,7 @@ struct ReplayGl {  // context first: the renderers' GL objects die before it
 Result<std::unique_ptr<Renderer>> make_renderer(const ReplayArgs& a, const Scene& scene, int frames) {
   RendererOptions options;
   options.expected_frames = frames;  // a short replay skips a tile bake it would not repay
-  auto renderer = Renderer::create(scene, options);
+  auto renderer = open_renderer(scene, options);
   if (!renderer) return renderer.error();
   renderer.value()->set_show_probe(a.show_probe);
   renderer.value()->set_show_device(a.show_device);

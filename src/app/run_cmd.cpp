@@ -342,15 +342,14 @@ HudReadouts readouts(const Session& s, const HapticState& st, const ShadowMeasur
 std::string screenshot_state(const TuneSession& tune) {
   const Renderer& r = tune.renderer();
   std::map<std::string, std::string> state = tune.edits();
-  const Scene& sc = r.scene();
-  state["camera.position"] = cli::override_value(sc.camera.position);
-  state["camera.target"] = cli::override_value(sc.camera.target);
-  state["camera.up"] = cli::override_value(sc.camera.up);
-  // A rolling view turned the light with the camera (Renderer::set_view_pose).
-  if (r.view_rotation() != glm::dmat3(1.0)) state["light.direction"] = cli::override_value(sc.light.direction);
+  state["camera.position"] = cli::override_value(r.camera().position);
+  state["camera.target"] = cli::override_value(r.camera().target);
+  state["camera.up"] = cli::override_value(r.camera().up);
+  // A rolling view turned the light with the camera (FrameInput::view).
+  if (r.view_rotation() != glm::dmat3(1.0)) state["light.direction"] = cli::override_value(r.light().direction);
   // The frame was drawn before its displacement moved the probe.
-  state["probe.position"] = cli::override_value(sc.probe.position - r.stats().displacement);
-  state["probe.velocity"] = cli::override_value(sc.probe.velocity);
+  state["probe.position"] = cli::override_value(r.probe().position - r.stats().displacement);
+  state["probe.velocity"] = cli::override_value(r.probe().velocity);
   return format_overrides(state, cli::scene_display_name(tune.scene_path()));
 }
 
@@ -404,7 +403,7 @@ Status handle_keys(Session& s, int w, int h) {
   if (std::exchange(in.home, false)) s.loop->request_view_home();
   in.add_charge = in.remove_charge = false;
   turn_fourd_surfaces(s, in.turn4);
-  Camera cam = s.tune->renderer().scene().camera;
+  Camera cam = s.tune->renderer().camera();
   apply_orbit_zoom(in, cam);
   s.tune->renderer().set_camera(cam);
   for (; in.screenshots > 0; --in.screenshots) {

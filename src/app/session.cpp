@@ -4,43 +4,25 @@
 #include <cstdio>
 #include <filesystem>
 
-#include "world/deformable.h"
+#include "frame/haptic_frame.h"
 
 namespace ps {
 
 Status drive_frame(Renderer& renderer, HapticLoop& loop, std::uint64_t frame, HapticState& state) {
   state = loop.state().read();
-  const Probe& probe = renderer.scene().probe;
-  // The proxy as drawn: stretched near an Illusion object (visual_position; identity elsewhere),
-  // pressed into a deformable surface by the coupling's share of the hand's depth
-  // (world::pressed_position), which then dents under it (Renderer::advance_deformation).
-  const glm::dvec3 pressed = world::pressed_position(renderer.scene(), state.contact_surface, state.proxy_mm,
-                                                     state.position_mm, loop.params().forces.coupling_n_per_mm);
-  const glm::dvec3 shown = state.have_sample ? visual_position(renderer.scene(), pressed) : probe.position;
-  if (state.have_sample) renderer.set_probe_state(shown, state.velocity_mm_s);
-  if (state.have_sample) renderer.advance_deformation(state.time_s);
-  renderer.set_view_pose(state.view_offset_mm, state.view_rotation);
-  if (state.have_sample) renderer.set_device_position(state.device_mm);
-  renderer.set_probe_sheet(state.sheet_surface, state.sheet_w4);
-  const std::span<const glm::dvec3> bodies(state.body_mm.data(), static_cast<std::size_t>(state.body_count));
-  renderer.set_body_positions(bodies);
-  const LiveCharges live = loop.live_charges().read();
-  std::vector<ChargeMarker> charges;
-  for (int i = 0; i < live.count; ++i) charges.push_back({live.position[i], live.charge_n_mm2[i]});
-  std::vector<WorldMarker> markers = world_markers(renderer.scene(), shown, bodies, charges, state.field_force_n);
-  // The rolling manifold's rubber band, while the view rolls with a tether on (docs/fourd.md).
-  const std::vector<Surface>& surfaces = renderer.scene().surfaces;
-  if (state.roll_facet >= 0 && state.sheet_surface >= 0 && static_cast<std::size_t>(state.sheet_surface) < surfaces.size() &&
-      surfaces[static_cast<std::size_t>(state.sheet_surface)].fourd.roll.tether_alpha_n_per_mm4 > 0.0)
-    markers.push_back(rubber_band_marker(shown, renderer.scene().camera));
-  renderer.set_markers(std::move(markers));
-  if (Status s = renderer.render_frame(); !s) return s;
+  HapticFrameSources sources;
+  sources.coupling_n_per_mm = loop.params().forces.coupling_n_per_mm;
+  sources.charges = loop.live_charges().read();
+  const FrameInput input = haptic_frame_input(renderer, state, sources);
+  const glm::dvec3 shown = drawn_probe(renderer, input);
+  const auto drawn = renderer.render(input);
+  if (!drawn) return drawn.error();
   // The camera this frame drew with, as the workspace sees it: the rolling manifold's centre.
   loop.view_axes().publish({true, world::view_axes_of(renderer.workspace_camera())});
-  const FrameStats& st = renderer.stats();
+  const FrameStats& st = drawn.value();
   // The render thread is the only writer of surface(), so reading back its own last value is safe.
   const SurfaceModel model = update_surface_model(loop.surface().read(), st.reference_normal, shown,
-                                                  probe.radius_mm, st.max_penetration_mm,
+                                                  renderer.probe().radius_mm, st.max_penetration_mm,
                                                   st.shadow_pixels > 0, frame);
   loop.surface().publish(model);
   return ok_status();
@@ -48,7 +30,7 @@ Status drive_frame(Renderer& renderer, HapticLoop& loop, std::uint64_t frame, Ha
 
 PlaneAxes pointer_plane(const Renderer& renderer) {
   const PlaneFrame& f = renderer.reference();
-  return {renderer.scene().camera.target, f.t, f.b, f.n};
+  return {renderer.camera().target, f.t, f.b, f.n};
 }
 
 PointerView pointer_view(const Renderer& renderer, const PlaneAxes& plane, glm::dvec2 window_size) {

@@ -5,7 +5,7 @@
 
 #include <glm/gtc/matrix_transform.hpp>
 
-#include "render/camera.h"
+#include "scene/camera.h"
 
 namespace ps {
 

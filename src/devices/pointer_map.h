@@ -1,7 +1,7 @@
 // Pointer -> probe: where a pointer on the window puts the probe, without GL or GLFW, so the
 // mouse of `run`, the scripted pointer device and the tests share one mapping.
 //   absolute (the default): the pointer's ray through the scene camera (the same matrices the
-//            renderer draws with, render/camera.h) meets the reference plane at the hit point;
+//            renderer draws with, scene/camera.h) meets the reference plane at the hit point;
 //            the probe hovers over it: centre = hit + (R + h) n, R the probe radius, h the
 //            person-controlled height of the probe's lowest point. The pseudo-shadow is the
 //            probe projected along n (passes/probe_depth.h), so its centre is the hit point:

@@ -2,8 +2,10 @@
 
 #include <cstdio>
 
+#include "frame/haptic_frame.h"
 #include "image/image.h"
 #include "maze/maze_screen.h"
+#include "prepare/prepare.h"
 
 namespace ps::maze {
 
@@ -12,14 +14,13 @@ Status FrameWriter::on_frame(const FrameView& v) {
   if (every_ <= 0 || v.index % every_ != 0) return ok_status();
   if (stale_ || !renderer_) {
     renderer_.reset();  // the old one's GL objects go before the new one's are made
-    auto r = Renderer::create(v.scene.scene, RendererOptions{});
+    auto r = open_renderer(v.scene.scene, RendererOptions{});
     if (!r) return r.error();
     renderer_ = std::move(r.value());
     stale_ = false;
   }
-  renderer_->set_camera(follow_camera(desc_, v.state.proxy_mm));
-  renderer_->set_probe_state(v.state.proxy_mm, v.state.velocity_mm_s);
-  if (Status s = renderer_->render_frame(); !s) return s;
+  const HapticFrameSources maze{.proxy_only = true, .camera = follow_camera(desc_, v.state.proxy_mm)};
+  if (auto f = renderer_->render(haptic_frame_input(*renderer_, v.state, maze)); !f) return f.error();
   Image im = renderer_->read_color();
   stamp_label(im, v.label);
   char name[48];

@@ -4,7 +4,7 @@
 #include <cmath>
 #include <sstream>
 
-#include "render/camera.h"
+#include "scene/camera.h"
 
 namespace ps {
 
@@ -107,6 +107,11 @@ PixelRect footprint_screen_rect(const Camera& camera, int width, int height, con
 
 FramePlan make_plan(const Scene& scene, const std::vector<Aabb>& bounds,
                     const BoundingSphere& probe, const PlaneFrame& frame, int depth_map_size) {
+  return make_plan(scene, scene.camera, bounds, probe, frame, depth_map_size);
+}
+
+FramePlan make_plan(const Scene& scene, const Camera& camera, const std::vector<Aabb>& bounds,
+                    const BoundingSphere& probe, const PlaneFrame& frame, int depth_map_size) {
   FramePlan plan;
   const size_t n = scene.surfaces.size();
   plan.surface_shadow.assign(n, false);
@@ -137,7 +142,7 @@ FramePlan make_plan(const Scene& scene, const std::vector<Aabb>& bounds,
   if (plan.shadow_active) {
     double lo = 0.0, hi = 0.0;
     shadowed_height_range(bounds, plan.surface_shadow, frame, lo, hi);
-    plan.shadow_rect = footprint_screen_rect(scene.camera, scene.render.width, scene.render.height, frame,
+    plan.shadow_rect = footprint_screen_rect(camera, scene.render.width, scene.render.height, frame,
                                              plan.window, depth_map_size, lo, hi);
   }
   return plan;

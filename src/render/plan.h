@@ -65,6 +65,10 @@ PixelRect footprint_screen_rect(const Camera& camera, int width, int height, con
 bool has_texture(const Material& m);
 
 // `depth_map_size` sets the margin: the window is the probe's bounding disc plus one texel.
+// `camera`: the one the frame draws with (the scene's moved by the view, Renderer::camera()).
+FramePlan make_plan(const Scene& scene, const Camera& camera, const std::vector<Aabb>& surface_bounds,
+                    const BoundingSphere& probe, const PlaneFrame& frame, int depth_map_size);
+// The scene's own camera.
 FramePlan make_plan(const Scene& scene, const std::vector<Aabb>& surface_bounds,
                     const BoundingSphere& probe, const PlaneFrame& frame, int depth_map_size);
 

@@ -2,8 +2,6 @@
 
 #include "fourd/fourd_mesh.h"  // depth_colour: the probe path on 4D sheets
 
-#include "render/button_pictures.h"
-#include "render/field_map.h"
 
 #include <algorithm>
 #include <limits>
@@ -15,13 +13,20 @@
 
 #include "gl/shader.h"
 #include "reference/modulation.h"
-#include "render/camera.h"
+#include "scene/camera.h"
+#include "render/material_gpu.h"
 #include "scene/mesh.h"
 #include "world/deformable.h"
 
 namespace ps {
 
 namespace {
+
+bool same_camera(const Camera& a, const Camera& b) {
+  return a.projection == b.projection && a.position == b.position && a.target == b.target && a.up == b.up &&
+         a.fov_y_deg == b.fov_y_deg && a.ortho_height_mm == b.ortho_height_mm && a.near_mm == b.near_mm &&
+         a.far_mm == b.far_mm;
+}
 
 Aabb mesh_bounds(const Mesh& m) { return {m.bounds_min, m.bounds_max}; }
 
@@ -43,58 +48,6 @@ void stretch_mesh(Mesh& m, const Surface& s) {
     m.bounds_max = glm::max(m.bounds_max, q);
   }
   for (glm::vec3& n : m.normals) n = glm::vec3(glm::normalize(to_n * glm::dvec3(n)));
-}
-
-Result<gl::Texture> upload_albedo(const std::string& path) {
-  auto img = read_image(path);
-  if (!img) return img.error();
-  const Image& im = img.value();
-  std::vector<std::uint8_t> rgba(static_cast<size_t>(im.width) * im.height * 4, 255);
-  for (int y = 0; y < im.height; ++y)
-    for (int x = 0; x < im.width; ++x)
-      for (int c = 0; c < 4; ++c) {
-        const int src = std::min(c, im.channels - 1);
-        const float v = (c == 3 && im.channels < 4) ? 1.0f : im.at(x, im.height - 1 - y, src);
-        rgba[(static_cast<size_t>(y) * im.width + x) * 4 + c] =
-            static_cast<std::uint8_t>(std::clamp(v, 0.0f, 1.0f) * 255.0f + 0.5f);
-      }
-  const int levels = 1 + static_cast<int>(std::floor(std::log2(std::max(im.width, im.height))));
-  gl::Texture t = gl::make_texture_2d(im.width, im.height, GL_RGBA8, levels);
-  glTextureSubImage2D(t.id(), 0, 0, 0, im.width, im.height, GL_RGBA, GL_UNSIGNED_BYTE, rgba.data());
-  glGenerateTextureMipmap(t.id());
-  glTextureParameteri(t.id(), GL_TEXTURE_MIN_FILTER, GL_LINEAR_MIPMAP_LINEAR);
-  glTextureParameteri(t.id(), GL_TEXTURE_WRAP_S, GL_REPEAT);
-  glTextureParameteri(t.id(), GL_TEXTURE_WRAP_T, GL_REPEAT);
-  return t;
-}
-
-// What --stats says about a textured material's Gabor strategy: auto's choice and why, or a
-// baked strategy's fallback to the naive sum; empty when there is nothing to say.
-std::string strategy_note(const Material& m, const GaborStrategyChoice& choice, double shadow_window_mm) {
-  const GaborBakePlan& plan = choice.plan;
-  char note[200];
-  if (m.gabor.strategy == GaborParams::Strategy::kAuto) {
-    if (plan.ok)
-      std::snprintf(note, sizeof note, "material '%s': Gabor sum replaced by a baked %d^2 tile "
-                    "(%s lookup, %.0f mm period, RMS %.4f sigma vs naive)", m.name.c_str(), plan.texels,
-                    plan.linear ? "bilinear" : "Hermite", plan.period_mm, choice.rms_vs_naive);
-    else if (choice.best_period_mm == 0.0)
-      std::snprintf(note, sizeof note, "material '%s': naive Gabor sum (too fine for a %d^2 tile)",
-                    m.name.c_str(), kMaxBakeTexels);
-    else if (choice.best_period_mm < shadow_window_mm)
-      std::snprintf(note, sizeof note, "material '%s': naive Gabor sum (a tile would repeat every "
-                    "%.1f mm, inside the %.1f mm shadow)", m.name.c_str(), choice.best_period_mm,
-                    shadow_window_mm);
-    else
-      std::snprintf(note, sizeof note, "material '%s': naive Gabor sum (no tile within %.0f %% "
-                    "sigma of it: best %.4f)", m.name.c_str(), kAutoBakeSelectRms * 100.0, choice.rms_vs_naive);
-    return note;
-  }
-  if (!plan.ok && (m.gabor.strategy == GaborParams::Strategy::kBaked ||
-                   m.gabor.strategy == GaborParams::Strategy::kBakedLinear))
-    return "material '" + m.name + "': too fine for a baked tile "
-           "(lambda_max / lambda_min too large), naive Gabor used";
-  return {};
 }
 
 // CPU wall time per pass (glFinish between passes) and, where `gpu` is given, GPU time per pass
@@ -140,9 +93,9 @@ Result<std::unique_ptr<Renderer>> Renderer::create(const Scene& scene, const Ren
   r->created_at_ = std::chrono::steady_clock::now();
   r->scene_ = scene;
   r->options_ = options;
-  if (options.button_pictures)
-    if (Status s = make_button_pictures(r->scene_); !s) return s.error();
-  if (Status s = make_field_maps(r->scene_); !s) return s.error();
+  r->probe_ = r->scene_.probe;
+  r->camera_ = r->scene_.camera;
+  r->light_ = r->scene_.light;
   if (r->options_.glsl_root.empty()) r->options_.glsl_root = gl::default_glsl_root();
   r->frame_ = make_plane_frame(toward_viewer(scene.camera));
   for (Status (Renderer::*step)() : {&Renderer::upload_surfaces, &Renderer::load_probe_mesh,
@@ -204,7 +157,7 @@ DeformationStats Renderer::step_deformation(double dt_s) {
   st.surfaces = static_cast<int>(deformed_.size());
   // The probe's sphere: a sphere probe, or a capsule's tip cap (Probe::position is its centre);
   // a mesh probe's bounding sphere would dent far more than the mesh touches, so it does not press.
-  const Probe& p = scene_.probe;
+  const Probe& p = probe_;
   const glm::dvec3 centre = p.shape == ProbeShape::kMesh ? glm::dvec3(std::nan("")) : p.position;
   bool moved = false;
   for (Deformed& d : deformed_) {
@@ -235,61 +188,25 @@ std::vector<glm::dvec3> Renderer::deformed_vertices(int surface) const {
 }
 
 Status Renderer::load_probe_mesh() {
-  if (scene_.probe.shape != ProbeShape::kMesh) return ok_status();  // analytic: nothing to load
-  auto mesh = load_mesh_file(scene_.probe.mesh_file);
+  if (probe_.shape != ProbeShape::kMesh) return ok_status();  // analytic: nothing to load
+  auto mesh = load_mesh_file(probe_.mesh_file);
   if (!mesh) return mesh.error();
-  transform_mesh(mesh.value(), scene_.probe.mesh_scale, glm::dvec3(0.0), glm::dvec3(0.0));
+  transform_mesh(mesh.value(), probe_.mesh_scale, glm::dvec3(0.0), glm::dvec3(0.0));
   geometry_.probe_mesh_bounds = mesh_bounds(mesh.value());
   geometry_.probe_mesh = GpuMesh::upload(mesh.value());
   return ok_status();
 }
 
 Status Renderer::load_materials() {
-  // The pseudo-shadow lives in a square window as wide as the probe's bounding diameter
-  // (plan.cpp): a baked tile chosen by "auto" must be at least that long so no shadow shows a
-  // repeat. (Editing the probe's size builds a new Renderer, so this is chosen again.)
-  const double shadow_window_mm = 2.0 * current_probe_bounds().radius;
-  const std::uint32_t seed = scene_.render.seed;
-  materials_.resize(scene_.materials.size());
-  for (size_t i = 0; i < materials_.size(); ++i) {
-    const Material& m = scene_.materials[i];
-    MaterialState& ms = materials_[i];
-    if (!m.albedo_texture.empty()) {
-      auto t = upload_albedo(m.albedo_texture);
-      if (!t) return t.error();
-      ms.albedo = std::move(t.value());
-    }
-    if (!m.intensity_lut.empty()) ms.intensity_lut = make_intensity_lut_buffer(m.intensity_lut);
-    ms.gabor_setup = make_gabor_setup(m.gabor);
-    if (m.textured) {
-      // Less work than even the smallest tile auto could pick: decided before auto measures
-      // its candidates' error (a CPU sum costing about as much as a small frame).
-      const int smallest = smallest_auto_tile_texels(m.gabor, ms.gabor_setup, shadow_window_mm);
-      if (naive_is_less_work(m, smallest)) {
-        ms.strategy_note = naive_note(m, smallest);
-      } else {
-        const GaborStrategyChoice choice = choose_gabor_tile(m.gabor, ms.gabor_setup, seed, shadow_window_mm);
-        ms.bake_plan = choice.plan;
-        ms.strategy_note = strategy_note(m, choice, shadow_window_mm);
-        if (choice.plan.ok && naive_is_less_work(m, choice.plan.texels)) {
-          ms.strategy_note = naive_note(m, choice.plan.texels);
-          ms.bake_plan = GaborBakePlan{};
-        }
-      }
-    }
-    ms.gabor_block = make_gabor_block(m.gabor, ms.gabor_setup, ms.bake_plan, seed);
+  // Editing the probe's size builds a new Renderer, so the strategy is chosen again.
+  const StrategyInputs in{2.0 * current_probe_bounds().radius, scene_.render.seed, options_.expected_frames,
+                          textured_pixels_per_frame()};
+  for (const Material& m : scene_.materials) {
+    auto ms = load_material_gpu(m, in);
+    if (!ms) return ms.error();
+    materials_.push_back(std::move(ms.value()));
   }
   return ok_status();
-}
-
-// "auto" picked a tile, but the frames this renderer will draw need less texture work than
-// the bake: the per-pixel sum evaluates at most width x height pixels a frame (every pixel in
-// the shadow), the bake evaluates texels^2 samples of the same sum once.
-bool Renderer::naive_is_less_work(const Material& m, int tile_texels) const {
-  if (m.gabor.strategy != GaborParams::Strategy::kAuto || tile_texels <= 0 || options_.expected_frames <= 0)
-    return false;
-  const double pixels = static_cast<double>(options_.expected_frames) * textured_pixels_per_frame();
-  return pixels <= static_cast<double>(tile_texels) * tile_texels;
 }
 
 // An upper bound on the pixels a frame textures: the pseudo-shadow's square window (as wide as
@@ -300,25 +217,17 @@ bool Renderer::naive_is_less_work(const Material& m, int tile_texels) const {
 double Renderer::textured_pixels_per_frame() const {
   const double image = static_cast<double>(scene_.render.width) * scene_.render.height;
   const BoundingSphere b = current_probe_bounds();
-  const Camera& c = scene_.camera;
+  const Camera& c = camera_;
   double pixels_per_mm = 0.0;
   if (c.projection == Projection::kOrthographic) {
     pixels_per_mm = scene_.render.height / std::max(c.ortho_height_mm, 1e-9);
   } else {
-    const double distance = glm::length(scene_.probe.position - c.position) - b.radius;
+    const double distance = glm::length(probe_.position - c.position) - b.radius;
     if (distance <= c.near_mm) return image;
     pixels_per_mm = scene_.render.height / (2.0 * distance * std::tan(glm::radians(c.fov_y_deg) * 0.5));
   }
   const double side_px = 2.0 * b.radius * pixels_per_mm;
   return std::min(image, side_px * side_px);
-}
-
-std::string Renderer::naive_note(const Material& m, int tile_texels) const {
-  char note[200];
-  std::snprintf(note, sizeof note, "material '%s': naive Gabor sum (%d frame%s of <= %.0f textured pixels "
-                "are less work than baking a %d^2 tile)", m.name.c_str(), options_.expected_frames,
-                options_.expected_frames == 1 ? "" : "s", textured_pixels_per_frame(), tile_texels);
-  return note;
 }
 
 Status Renderer::init_passes() {
@@ -335,7 +244,7 @@ Status Renderer::init_passes() {
 Status Renderer::bake_gabor_tiles() {
   tiles_.set_params({options_.bake_slice_ms});
   for (size_t i = 0; i < materials_.size(); ++i) {
-    MaterialState& ms = materials_[i];
+    MaterialGpu& ms = materials_[i];
     if (!ms.bake_plan.ok) continue;
     ms.gabor_tile = reusable_tile(scene_.materials[i], ms.bake_plan);
     if (!ms.gabor_tile) tiles_.add(i, ms.gabor_block, ms.bake_plan);
@@ -369,18 +278,11 @@ double Renderer::ms_since_creation() const {
 std::shared_ptr<gl::Texture> Renderer::reusable_tile(const Material& m, const GaborBakePlan& plan) const {
   const Renderer* old = options_.reuse_tiles_from;
   if (!old || old->scene_.render.seed != scene_.render.seed) return nullptr;
-  for (size_t k = 0; k < old->materials_.size(); ++k) {
-    const MaterialState& o = old->materials_[k];
-    if (o.gabor_tile && old->scene_.materials[k].gabor == m.gabor && o.bake_plan.linear == plan.linear &&
-        o.bake_plan.texels == plan.texels && o.bake_plan.period_cells == plan.period_cells &&
-        o.bake_plan.filtered_levels == plan.filtered_levels)
-      return o.gabor_tile;
-  }
-  return nullptr;
+  return ps::reusable_tile(old->materials_, old->scene_.materials, m, plan);
 }
 
 Status Renderer::prime_reference_plane() {
-  FramePlan plan = make_plan(scene_, geometry_.surface_bounds, current_probe_bounds(), frame_,
+  FramePlan plan = make_plan(scene_, camera_, geometry_.surface_bounds, current_probe_bounds(), frame_,
                              scene_.render.depth_map_size);
   plan.surface_shadow.assign(plan.surface_shadow.size(), false);
   plan.surface_textured.assign(plan.surface_textured.size(), false);
@@ -391,67 +293,113 @@ Status Renderer::prime_reference_plane() {
 }
 
 void Renderer::set_probe_state(const glm::dvec3& position, const glm::dvec3& velocity) {
-  scene_.probe.position = position;
-  scene_.probe.velocity = velocity;
+  probe_.position = position;
+  probe_.velocity = velocity;
 }
 
-void Renderer::set_view_pose(const glm::dvec3& offset, const glm::dmat3& rotation) {
-  if (offset == view_offset_ && rotation == view_rotation_) return;
-  // From the old view to the new one: x -> R_new R_old^T (x - t_old) + t_new.
-  const glm::dmat3 turn = rotation * glm::transpose(view_rotation_);
-  auto point = [&](const glm::dvec3& x) { return turn * (x - view_offset_) + offset; };
-  scene_.camera.position = point(scene_.camera.position);
-  scene_.camera.target = point(scene_.camera.target);
-  if (rotation != view_rotation_) {
-    scene_.camera.up = turn * scene_.camera.up;
-    scene_.light.direction = turn * scene_.light.direction;
+void Renderer::set_view_pose(const ViewPose& pose) {
+  camera_ = carried_camera(camera_, view_, pose);
+  light_.direction = carried_direction(light_.direction, view_, pose);
+  view_ = pose;
+}
+
+void Renderer::apply(const FrameInput& in) {
+  if (in.probe) set_probe_state(in.probe->position_mm, in.probe->velocity_mm_s);
+  if (std::isfinite(in.time_s)) advance_deformation(in.time_s);
+  if (in.camera) camera_ = *in.camera;
+  if (in.view) set_view_pose(*in.view);
+  if (in.device_mm) device_position_ = *in.device_mm;
+  if (in.sheet) {
+    sheet_ = *in.sheet;
+    add_path_point();
   }
-  view_offset_ = offset;
-  view_rotation_ = rotation;
+  if (in.bodies_mm)
+    body_positions_.assign(in.bodies_mm->begin(),
+                           in.bodies_mm->begin() + std::min(in.bodies_mm->size(), scene_.bodies.size()));
+  if (in.markers) markers_ = *in.markers;
 }
 
-Camera Renderer::workspace_camera() const {
-  Camera c = scene_.camera;
-  const glm::dmat3 back = glm::transpose(view_rotation_);
-  c.position = back * (c.position - view_offset_);
-  c.target = back * (c.target - view_offset_);
-  c.up = back * c.up;
-  return c;
+Result<FrameStats> Renderer::render(const FrameInput& input) {
+  apply(input);
+  if (Status s = render_frame(); !s) return s.error();
+  return stats_;
 }
 
 BoundingSphere Renderer::current_probe_bounds() const {
-  const Probe& p = scene_.probe;
+  const Probe& p = probe_;
   const Aabb& b = geometry_.probe_mesh_bounds;
   return probe_bounds(p, b.min + p.position, b.max + p.position);
 }
 
 ProbeInput Renderer::probe_input() const {
   ProbeInput in;
-  if (scene_.probe.shape == ProbeShape::kMesh) {
+  if (probe_.shape == ProbeShape::kMesh) {
     in.mesh = &geometry_.probe_mesh;
-    in.model = glm::translate(glm::dmat4(1.0), scene_.probe.position);
+    in.model = glm::translate(glm::dmat4(1.0), probe_.position);
   } else {
-    in.capsule = capsule_of(scene_.probe);
+    in.capsule = capsule_of(probe_);
   }
   return in;
 }
 
-std::vector<SurfaceDraw> Renderer::surface_draws(const FramePlan& plan) {
-  const double aspect = static_cast<double>(scene_.render.width) / scene_.render.height;
+namespace {
+
+// What every surface of the frame shares: the camera, the reference plane, the depth window, the
+// light and the probe's height range (and its capsule, for the closed-form distance).
+SurfaceFrame surface_frame(const RenderSettings& rs, const Camera& camera, const Light& light, const PlaneFrame& frame,
+                           const FramePlan& plan, const BoundingSphere& probe, const Probe& p,
+                           const RendererOptions& options) {
   SurfaceFrame fr;
-  fr.view_proj = view_projection(scene_.camera, aspect);
-  fr.plane = frame_;
+  fr.view_proj = view_projection(camera, static_cast<double>(rs.width) / rs.height);
+  fr.plane = frame;
   fr.window_center_uv = plan.window.center_uv;
   fr.window_half_mm = plan.window.half_size_mm;
-  fr.depth_map_size = scene_.render.depth_map_size;
-  fr.light = &scene_.light;
-  fr.contrast_sigmas = options_.contrast_sigmas;
-  fr.surface_normal_distance = scene_.render.shadow_distance == ShadowDistance::kSurfaceNormal;
-  const BoundingSphere probe = current_probe_bounds();
-  fr.probe_height_lo_mm = glm::dot(probe.center, frame_.n) - probe.radius;
-  fr.probe_height_hi_mm = glm::dot(probe.center, frame_.n) + probe.radius;
-  if (scene_.probe.shape != ProbeShape::kMesh && options_.closed_form_normal_distance)
-    fr.probe_capsule = capsule_of(scene_.probe);
+  fr.depth_map_size = rs.depth_map_size;
+  fr.light = &light;
+  fr.contrast_sigmas = options.contrast_sigmas;
+  fr.surface_normal_distance = rs.shadow_distance == ShadowDistance::kSurfaceNormal;
+  fr.probe_height_lo_mm = glm::dot(probe.center, frame.n) - probe.radius;
+  fr.probe_height_hi_mm = glm::dot(probe.center, frame.n) + probe.radius;
+  if (p.shape != ProbeShape::kMesh && options.closed_form_normal_distance) fr.probe_capsule = capsule_of(p);
+  return fr;
+}
+
+// The w of the vertex nearest the probe (`fallback` when none is nearer than infinity: a NaN probe).
+double nearest_w(std::span<const glm::vec3> positions, std::span<const float> w4, const glm::dvec3& probe_mm,
+                 double fallback) {
+  double w = fallback;
+  float best = std::numeric_limits<float>::infinity();
+  const glm::vec3 probe(probe_mm);
+  for (std::size_t v = 0; v < positions.size(); ++v) {
+    const glm::vec3 dv = positions[v] - probe;
+    const float d2 = glm::dot(dv, dv);
+    if (d2 < best) best = d2, w = w4[v];
+  }
+  return w;
+}
+
+// A surface embedded in 4D shows the pseudo-shadow on the probe's sheet `w` only: the band is
+// 15 % of the surface's w range, wide enough for the sheet's own w change across the shadow
+// window (a few mm), far narrower than the w gap where sheets cross. Its cutaway and crossing
+// diagram need the probe and the eye.
+void set_sheet(SurfaceDraw& d, const fourd::Spec& spec, double w, float w_range, const Camera& cam,
+               const glm::dvec3& probe_mm) {
+  d.block.sheet = glm::vec4(1.0f, static_cast<float>(w), 0.15f * w_range, 0.0f);
+  d.wireframe = spec.wireframe;
+  d.block.sheet.w = static_cast<float>(spec.crossing_diagram_mm);
+  if (spec.cutaway_mm > 0.0 || spec.crossing_diagram_mm > 0.0) {
+    const bool persp = cam.projection == Projection::kPerspective;
+    d.block.cutaway = glm::vec4(glm::vec3(probe_mm), static_cast<float>(spec.cutaway_mm));
+    d.block.eye = persp ? glm::vec4(glm::vec3(cam.position), 1.0f)
+                        : glm::vec4(glm::vec3(glm::normalize(cam.target - cam.position)), 0.0f);
+  }
+}
+
+}  // namespace
+
+std::vector<SurfaceDraw> Renderer::surface_draws(const FramePlan& plan) {
+  const SurfaceFrame fr = surface_frame(scene_.render, camera_, light_, frame_, plan, current_probe_bounds(),
+                                         probe_, options_);
   const std::vector<SphereCaster> bodies = body_casters();
   std::vector<SurfaceDraw> draws;
   bool gain_recorded = false;
@@ -459,8 +407,8 @@ std::vector<SurfaceDraw> Renderer::surface_draws(const FramePlan& plan) {
     if (!scene_.surfaces[i].visible) continue;  // a hidden object: felt (haptics), never drawn
     const size_t mi = static_cast<size_t>(scene_.surfaces[i].material_index);
     const Material& m = scene_.materials[mi];
-    const MaterialState& ms = materials_[mi];
-    const double gain = speed_gain(m, frame_, scene_.probe.velocity);
+    const MaterialGpu& ms = materials_[mi];
+    const double gain = speed_gain(m, frame_, probe_.velocity);
     if (plan.surface_shadow[i] && !gain_recorded) {
       stats_.speed_gain = gain;
       gain_recorded = true;
@@ -482,47 +430,21 @@ std::vector<SurfaceDraw> Renderer::surface_draws(const FramePlan& plan) {
     d.gabor_filter_skipped = filter_negligible_ && (ms.gabor_tile || !ms.bake_plan.ok);
     const Geometry::Sheets& sheets = geometry_.surface_sheets[i];
     if (!sheets.w4.empty()) {
-      // The probe's sheet: the haptic proxy's (set_probe_sheet), else the nearest vertex's. The
-      // band is 15 % of the surface's w range: wide enough for the sheet's own w change across
-      // the shadow window (a few mm), far narrower than the w gap where sheets cross.
-      double w = sheet_w4_;
-      if (sheet_surface_ != static_cast<int>(i)) {
-        float best = std::numeric_limits<float>::infinity();
-        const glm::vec3 probe(scene_.probe.position);
-        for (std::size_t v = 0; v < sheets.positions.size(); ++v) {
-          const glm::vec3 dv = sheets.positions[v] - probe;
-          const float d2 = glm::dot(dv, dv);
-          if (d2 < best) best = d2, w = sheets.w4[v];
-        }
-      }
-      d.block.sheet = glm::vec4(1.0f, static_cast<float>(w), 0.15f * (sheets.w_max - sheets.w_min), 0.0f);
-      const fourd::Spec& spec = scene_.surfaces[i].fourd;
-      d.wireframe = spec.wireframe;
-      d.block.sheet.w = static_cast<float>(spec.crossing_diagram_mm);
-      if (spec.cutaway_mm > 0.0 || spec.crossing_diagram_mm > 0.0) {
-        const Camera& cam = scene_.camera;
-        const bool persp = cam.projection == Projection::kPerspective;
-        d.block.cutaway = glm::vec4(glm::vec3(scene_.probe.position), static_cast<float>(spec.cutaway_mm));
-        d.block.eye = persp ? glm::vec4(glm::vec3(cam.position), 1.0f)
-                            : glm::vec4(glm::vec3(glm::normalize(cam.target - cam.position)), 0.0f);
-      }
+      // The probe's sheet: the haptic proxy's (FrameInput::sheet), else the nearest vertex's.
+      const double w = sheet_.surface == static_cast<int>(i)
+                           ? sheet_.w4
+                           : nearest_w(sheets.positions, sheets.w4, probe_.position, sheet_.w4);
+      set_sheet(d, scene_.surfaces[i].fourd, w, sheets.w_max - sheets.w_min, camera_, probe_.position);
     }
     draws.push_back(std::move(d));
   }
   return draws;
 }
 
-namespace {
-bool same_camera(const Camera& a, const Camera& b) {
-  return a.projection == b.projection && a.position == b.position && a.target == b.target && a.up == b.up &&
-         a.fov_y_deg == b.fov_y_deg && a.ortho_height_mm == b.ortho_height_mm && a.near_mm == b.near_mm &&
-         a.far_mm == b.far_mm;
-}
-}  // namespace
 
 ReductionResult Renderer::mean_visible_normal(bool& reduced) {
-  reduced = !normal_mean_.valid || !same_camera(normal_mean_.camera, scene_.camera);
-  if (reduced) normal_mean_ = {true, scene_.camera, reductions_.mean_normal(surface_)};
+  reduced = !normal_mean_.valid || !same_camera(normal_mean_.camera, camera_);
+  if (reduced) normal_mean_ = {true, camera_, reductions_.mean_normal(surface_)};
   return normal_mean_.result;
 }
 
@@ -545,13 +467,13 @@ void Renderer::apply_reductions(const ReductionResult& r, const FramePlan& plan)
       disp = r.weighted_displacement;
   }
   if (!std::isfinite(disp.x) || !std::isfinite(disp.y) || !std::isfinite(disp.z)) disp = glm::dvec3(0.0);
-  scene_.probe.position += disp;
+  probe_.position += disp;
   stats_.displacement = disp;
   stats_.max_penetration_mm = r.max_penetration_mm;
   stats_.shadow_pixels = r.covered_fragments;
   stats_.penetrating_pixels = r.penetrating_fragments;
   stats_.reference_normal = frame_.n;
-  stats_.probe_position = scene_.probe.position;
+  stats_.probe_position = probe_.position;
 }
 
 Status Renderer::render_frame() {
@@ -560,13 +482,13 @@ Status Renderer::render_frame() {
   if (Status s = advance_bake(); !s) return s;  // before the timer: a band is not the frame's work
   PassTimer timer(options_.time_passes, stats_, options_.gpu_timers ? &gpu_timers_ : nullptr);
   const BoundingSphere probe = current_probe_bounds();
-  const FramePlan plan = make_plan(scene_, geometry_.surface_bounds, probe, frame_,
+  const FramePlan plan = make_plan(scene_, camera_, geometry_.surface_bounds, probe, frame_,
                                    scene_.render.depth_map_size);
   stats_.skipped = plan.skipped;
   if (!plan.shadow_active || !filter_lod()) filter_negligible_ = false;  // no measure to go by
   stats_.gabor_filter_skipped = filter_negligible_;
   stats_.gabor_filter_need = 0.0;
-  for (const MaterialState& ms : materials_)
+  for (const MaterialGpu& ms : materials_)
     if (!ms.strategy_note.empty()) stats_.skipped.push_back(ms.strategy_note);
   timer.lap("plan");
   if (plan.shadow_active) {
@@ -624,7 +546,7 @@ Status Renderer::warm_unfiltered_variants() {
     const auto mi = static_cast<std::size_t>(scene_.surfaces[i].material_index);
     const Material& m = scene_.materials[mi];
     if (!has_texture(m) || m.gabor.filter != GaborParams::Filter::kAnalytic) continue;
-    const MaterialState& ms = materials_[mi];
+    const MaterialGpu& ms = materials_[mi];
     // As surface_draws() will draw it once its tile is there (the key of SurfacePass::program).
     const int baked = ms.bake_plan.ok ? (ms.bake_plan.linear ? 2 : 1) : 0;
     if (Status s = surface_.warm(ms.gabor_setup.stratified_count > 0, baked, 2, static_cast<bool>(ms.intensity_lut)); !s)
@@ -650,10 +572,6 @@ void Renderer::run_probe_depth(const FramePlan& plan, const BoundingSphere& prob
   probe_depth_.run(in);
 }
 
-void Renderer::set_body_positions(std::span<const glm::dvec3> centres) {
-  body_positions_.assign(centres.begin(), centres.begin() + std::min(centres.size(), scene_.bodies.size()));
-}
-
 // The bodies drawn this frame as shadow casters (spheres of their radius), in scene order.
 std::vector<SphereCaster> Renderer::body_casters() const {
   std::vector<SphereCaster> out;
@@ -662,9 +580,9 @@ std::vector<SphereCaster> Renderer::body_casters() const {
   return out;
 }
 
-void Renderer::set_probe_sheet(int surface, double w4) {
-  sheet_surface_ = surface;
-  sheet_w4_ = w4;
+void Renderer::add_path_point() {
+  const int surface = sheet_.surface;
+  const double w4 = sheet_.w4;
   const bool on_sheet = surface >= 0 && static_cast<std::size_t>(surface) < geometry_.surface_sheets.size() &&
                         !geometry_.surface_sheets[static_cast<std::size_t>(surface)].w4.empty();
   if (!show_path_ || !on_sheet) {
@@ -674,7 +592,7 @@ void Renderer::set_probe_sheet(int surface, double w4) {
   const Geometry::Sheets& sheets = geometry_.surface_sheets[static_cast<std::size_t>(surface)];
   const double range = sheets.w_max - sheets.w_min;
   const glm::dvec3 colour = fourd::depth_colour(range > 0.0 ? (w4 - sheets.w_min) / range : 0.5);
-  const glm::dvec3 p = scene_.probe.position;
+  const glm::dvec3 p = probe_.position;
   // A tube from the last point, unless the probe left the sheet since (lifted and put down).
   constexpr double kPathRadiusMm = 0.6;
   const bool joined = !path_.empty() && !path_break_;
@@ -683,21 +601,14 @@ void Renderer::set_probe_sheet(int surface, double w4) {
   path_.push_back({joined ? path_.back().b : p, p, kPathRadiusMm, colour});
 }
 
-void show_world_at_start(Renderer& renderer) {
-  const Scene& sc = renderer.scene();
-  const std::vector<glm::dvec3> bodies = start_positions(sc);
-  renderer.set_body_positions(bodies);
-  renderer.set_markers(world_markers(sc, sc.probe.position, bodies));
-}
-
 void Renderer::run_world_view() {
   if (!world_view_ready_) {
     if (!body_view_.init(options_.glsl_root, surface_) || !ghost_view_.init(options_.glsl_root, surface_)) return;
     world_view_ready_ = true;
   }
   ProbeViewPass::Inputs in;
-  in.view_proj = view_projection(scene_.camera, static_cast<double>(scene_.render.width) / scene_.render.height);
-  in.light = &scene_.light;
+  in.view_proj = view_projection(camera_, static_cast<double>(scene_.render.width) / scene_.render.height);
+  in.light = &light_;
   for (std::size_t i = 0; i < body_positions_.size(); ++i) {
     const Body& b = scene_.bodies[i];
     const std::size_t m = static_cast<std::size_t>(b.material_index);
@@ -716,7 +627,7 @@ void Renderer::run_world_view() {
   if (show_device_) {
     // The probe's shape at the device, faint: where the hand is, against where the proxy is drawn.
     in.probe = probe_input();
-    const glm::dvec3 shift = device_position_ - scene_.probe.position;
+    const glm::dvec3 shift = device_position_ - probe_.position;
     in.probe.capsule.a += shift;
     in.probe.capsule.b += shift;
     in.probe.model = glm::translate(glm::dmat4(1.0), shift) * in.probe.model;
@@ -728,8 +639,8 @@ void Renderer::run_world_view() {
 
 void Renderer::run_probe_view() {
   ProbeViewPass::Inputs in;
-  in.view_proj = view_projection(scene_.camera, static_cast<double>(scene_.render.width) / scene_.render.height);
-  in.light = &scene_.light;
+  in.view_proj = view_projection(camera_, static_cast<double>(scene_.render.width) / scene_.render.height);
+  in.light = &light_;
   in.probe = probe_input();  // after this frame's displacement
   probe_view_.run(in);
 }

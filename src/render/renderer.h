@@ -22,6 +22,8 @@
 #include "passes/reductions.h"
 #include "passes/surface.h"
 #include "render/aov.h"
+#include "render/frame_input.h"
+#include "render/material_gpu.h"
 #include "render/plan.h"
 #include "render/tile_bake.h"
 #include "render/world_markers.h"
@@ -32,7 +34,7 @@ namespace world {
 class Deformable;
 }
 
-// What the last advance_deformation() did (all deformable surfaces together).
+// What the last deformation step did (all deformable surfaces together; FrameInput::time_s).
 struct DeformationStats {
   int surfaces = 0;               // deformable surfaces in the scene
   int substeps = 0;
@@ -70,9 +72,6 @@ struct RendererOptions {
   // image) the naive sum is drawn instead and nothing is baked (docs/benchmarks.md, "Time to
   // the first image"). 0 = unknown (the window): bake.
   int expected_frames = 0;
-  // Picture buttons get their pictures (render/button_pictures.h) before anything is built;
-  // false for the pictures' own renders.
-  bool button_pictures = true;
   // true: the pseudo-shadow variants, the AOV target and the shadow's reductions cover only the
   // footprint's screen rectangle (FramePlan::shadow_rect), the weighted row sums only the box of
   // penetrating pixels. false: the whole image and whole rows, as before; the results are the
@@ -135,7 +134,10 @@ class Renderer {
  public:
   static Result<std::unique_ptr<Renderer>> create(const Scene& scene, const RendererOptions& options);
 
-  Status render_frame();
+  // One frame: `input` replaces what it gives of the probe, the camera, the view and the world
+  // view (render/frame_input.h), then plan -> passes -> reductions. The scene is never modified.
+  Result<FrameStats> render(const FrameInput& input);
+  Status render_frame();  // render({}): the probe where the last frame left it, the rest held
   Image read_color() const;                        // RGB, top row first, image size
   Result<Image> read_aov(Aov aov) const;
   Result<Image> read_aov(const std::string& name) const;  // unknown name: error listing aov_names()
@@ -149,53 +151,45 @@ class Renderer {
   void poll_gpu_timings(bool wait);
   // The baked tile material i is drawn with (ok == false: the per-pixel sum), as chosen at creation.
   const GaborBakePlan& gabor_bake_plan(size_t material) const { return materials_[material].bake_plan; }
+  // The scene as given to create() (prepared: prepare/prepare.h): never changed by a frame.
   const Scene& scene() const { return scene_; }
   const PlaneFrame& reference() const { return frame_; }
+  // The probe now: the scene's, moved by set_probe_state, FrameInput::probe and each frame's
+  // displacement (the pseudo-haptic loop).
+  const Probe& probe() const { return probe_; }
   void set_probe_state(const glm::dvec3& position, const glm::dvec3& velocity);
-  void set_camera(const Camera& camera) { scene_.camera = camera; }  // orbit/zoom in the window
-  // [navigation]: the view has moved by `offset` (HapticState::view_offset_mm) since the scene
-  // opened; the camera (as set, orbits included) moves with it. scene().camera is the moved one.
-  void set_view_offset(const glm::dvec3& offset) { set_view_pose(offset, view_rotation_); }
-  const glm::dvec3& view_offset() const { return view_offset_; }
-  // A rolling fourd surface (fourd/rolling.h): the view has also turned, world = rotation *
-  // workspace + offset (HapticState::view_rotation, view_offset_mm). The camera (orbits
-  // included) and the light turn with it, so the surface rolls under a light fixed to the viewer.
-  void set_view_pose(const glm::dvec3& offset, const glm::dmat3& rotation);
-  const glm::dmat3& view_rotation() const { return view_rotation_; }
+  // The camera and light the next frame draws with: the scene's, carried along as the view's
+  // pose changes (FrameInput::view; render/frame_input.h carried_camera).
+  const Camera& camera() const { return camera_; }
+  const Light& light() const { return light_; }
   // The camera as the device's workspace sees it (before the view's offset and turn).
-  Camera workspace_camera() const;
+  Camera workspace_camera() const { return unposed_camera(camera_, view_); }
+  // The world camera from now on (an orbit in the window, a camera kept across a reload).
+  void set_camera(const Camera& camera) { camera_ = camera; }
+  const ViewPose& view() const { return view_; }
+  const glm::dmat3& view_rotation() const { return view_.rotation; }
   // Draw the probe (the displayed proxy) over the image after the pseudo-shadow; off by default.
   // Changes the colour image only, never the AOVs, the reference plane or the displacement.
   void set_show_probe(bool show) { show_probe_ = show; }
   bool show_probe() const { return show_probe_; }
-  // The scene's bodies (Scene::bodies, in order) at these centres, drawn as spheres of their
-  // radius in their material's albedo after the pseudo-shadow (colour only, like the probe),
-  // each casting its own analytic pseudo-shadow on the surfaces within the receiving material's
-  // influence distance (colour only: the AOVs, reductions and displacement stay the probe's;
-  // reference/body_shadow.h). Fewer centres than bodies: the rest are neither drawn nor cast.
-  void set_body_positions(std::span<const glm::dvec3> centres);
-  // Charges, bands and the force arrow (render/world_markers.h), drawn like the bodies after the
-  // pseudo-shadow (colour only). Empty: none.
-  void set_markers(std::vector<WorldMarker> markers) { markers_ = std::move(markers); }
-  // The device's own position, drawn as a faint ghost of the probe when shown, so the gap
-  // between hand and proxy (pseudo-haptic coupling) can be seen. Off by default.
-  void set_device_position(const glm::dvec3& position) { device_position_ = position; }
-  // The sheet of a surface embedded in 4D the probe keeps to (HapticState::sheet_surface and
-  // sheet_w4): that surface shows the pseudo-shadow on this sheet only (docs/fourd.md).
-  // surface -1 (the default, and `render` without haptics): the sheet of the vertex nearest
-  // the probe.
-  // With set_show_path(true), each call on a sheet also adds the probe's position (as last set
-  // by set_probe_state) to its path, drawn after the pseudo-shadow as a tube coloured by w
+  // The bodies (FrameInput::bodies_mm) are drawn as spheres of their radius in their material's
+  // albedo after the pseudo-shadow (colour only, like the probe), each casting its own analytic
+  // pseudo-shadow on the surfaces within the receiving material's influence distance (colour
+  // only: the AOVs, reductions and displacement stay the probe's; reference/body_shadow.h). Fewer
+  // centres than bodies: the rest are neither drawn nor cast. Markers (render/world_markers.h) are
+  // drawn like the bodies. The device (FrameInput::device_mm) is drawn as a faint ghost of the
+  // probe when shown, so the gap between hand and proxy (pseudo-haptic coupling) can be seen.
+  // On a surface embedded in 4D, the probe's sheet (FrameInput::sheet) shows the pseudo-shadow on
+  // that sheet only (docs/fourd.md); with set_show_path(true) each frame given a sheet also adds
+  // the probe's position to its path, drawn after the pseudo-shadow as a tube coloured by w
   // (fourd::depth_colour over the surface's w range; seed 000 Fig. 5c).
-  void set_probe_sheet(int surface, double w4);
   void set_show_path(bool show) { show_path_ = show; }
   void set_show_device(bool show) { show_device_ = show; }
   bool show_device() const { return show_device_; }
-  // Seed 002 §6's bendable polygons (world/deformable.h): moves every deformable surface's
-  // drawn vertices on to session time `time_s` with the probe where set_probe_state put it, and
-  // uploads them. The first call only sets the clock; create() settles the surfaces for 1 s with
-  // the scene's probe (what `render` shows). No deformable surface: nothing.
-  DeformationStats advance_deformation(double time_s);
+  // Seed 002 §6's bendable polygons (world/deformable.h): FrameInput::time_s moves every
+  // deformable surface's drawn vertices on to that session time with the probe where the input
+  // put it, and uploads them. The first time only sets the clock; create() settles the surfaces
+  // for 1 s with the scene's probe (what `render` shows). No deformable surface: nothing.
   const DeformationStats& deformation() const { return deform_stats_; }
   // The welded vertices of deformable surface `surface` now (world mm); empty if not deformable.
   std::vector<glm::dvec3> deformed_vertices(int surface) const;
@@ -205,17 +199,6 @@ class Renderer {
 
  private:
   gl::TimerQueries gpu_timers_;  // per-pass GL_TIME_ELAPSED queries (RendererOptions::gpu_timers)
-  // Everything the renderer keeps for one scene material (index = Scene::materials), built once
-  // at creation: what was decided on the CPU, then what lives on the GPU.
-  struct MaterialState {
-    GaborSetup gabor_setup;
-    GaborBakePlan bake_plan;    // ok == false: not baked (naive or stratified sum)
-    std::string strategy_note;  // auto's choice or baked's fallback, for stats.skipped; empty: none
-    GaborBlock gabor_block;     // the Gabor uniforms (with the tile plan), packed once
-    gl::Texture albedo;         // empty: no albedo texture
-    std::shared_ptr<gl::Texture> gabor_tile;  // null: none; shared with reuse_tiles_from
-    gl::Buffer intensity_lut;   // empty: no intensity_lut (the formula); passes/surface.h IntensityLutBlock
-  };
   // The scene's meshes on the GPU.
   struct Geometry {
     std::vector<GpuMesh> surface_meshes;  // index = Scene::surfaces
@@ -245,9 +228,6 @@ class Renderer {
   double ms_since_creation() const;
   Status prime_reference_plane();
   std::shared_ptr<gl::Texture> reusable_tile(const Material& m, const GaborBakePlan& plan) const;
-  // expected_frames' per-pixel work is at most a tile_texels^2 bake (false when unknown).
-  bool naive_is_less_work(const Material& m, int tile_texels) const;
-  std::string naive_note(const Material& m, int tile_texels) const;
   // Per frame.
   BoundingSphere current_probe_bounds() const;
   ProbeInput probe_input() const;
@@ -268,7 +248,7 @@ class Renderer {
   PlaneFrame frame_;
   FrameStats stats_;
   Geometry geometry_;
-  std::vector<MaterialState> materials_;
+  std::vector<MaterialGpu> materials_;  // index = Scene::materials (render/material_gpu.h)
   TileBaker tiles_;           // the tiles still to bake (all of them at once unless sliced)
   std::chrono::steady_clock::time_point created_at_;  // start of create(): the stats' time origin
   // The last mean visible normal and the camera it was reduced for. The normal target holds
@@ -300,25 +280,27 @@ class Renderer {
   bool filter_lod() const {
     return options_.filter_lod && (options_.expected_frames <= 0 || options_.expected_frames >= kFilterLodMinFrames);
   }
-  glm::dvec3 view_offset_{0.0};
-  glm::dmat3 view_rotation_{1.0};
-  int sheet_surface_ = -1;  // set_probe_sheet
-  double sheet_w4_ = 0.0;
+  // The frame state a renderer holds between frames (FrameInput replaces it).
+  Probe probe_;
+  Camera camera_;
+  Light light_;  // the scene's light, turned with the camera
+  ViewPose view_;
+  ProbeSheet sheet_;
+  void apply(const FrameInput& input);
+  void set_view_pose(const ViewPose& pose);
+  void add_path_point();           // the probe on its sheet, to the path (show_path_)
+  DeformationStats advance_deformation(double time_s);
   bool show_path_ = false;
   bool path_break_ = true;
   std::vector<WorldMarker> path_;  // the probe's path on 4D sheets: segments coloured by w
   void run_world_view();           // bodies and the device ghost, over the colour image
   ProbeViewPass body_view_, ghost_view_;  // initialised on first use (own mesh caches)
   bool world_view_ready_ = false;
-  std::vector<glm::dvec3> body_positions_;
+  std::vector<glm::dvec3> body_positions_;  // at most Scene::bodies.size()
   std::vector<WorldMarker> markers_;
   glm::dvec3 device_position_{0.0};
   bool show_device_ = false;
 };
-
-// The scene's bodies at their start positions and its markers (charges, bands) with the
-// scene's probe: how a scene looks before any haptic tick (`render`, button pictures).
-void show_world_at_start(Renderer& renderer);
 
 // Stats as JSON (the CLI's --stats FILE): backend, renderer, reference_normal, displacement,
 // max_penetration, probe_position, timings_ms, skipped, ...

@@ -2,7 +2,7 @@
 // Universe": "show what people would rather look at than feel"): each charge as a small ball,
 // red when it pushes the probe away (q > 0) and blue when it pulls (q < 0); each body's band
 // from the probe to the body; the force the fields put on the probe as an arrow from the probe
-// (20 mm per newton). Drawn by Renderer::set_markers over the image, colour only, like the
+// (20 mm per newton). Drawn from FrameInput::markers over the image, colour only, like the
 // bodies. Scene-only: `replay`/`run` pass the haptic state's probe, bodies, live charges and force.
 #pragma once
 

@@ -69,7 +69,7 @@ Status validate_sweep(const SweepJob& job);
 using SweepProgress = std::function<void(std::size_t done, std::size_t total, const std::string& label)>;
 
 // Renders every cell of job.shard (needs a current GL context); each cell: load_scene with the
-// overrides, Renderer::create, render.frames frames, read_color. `progress` after each cell
+// overrides, open_renderer, render.frames frames, read_color. `progress` after each cell
 // (done and total count the shard's cells).
 Result<std::vector<SweepCell>> render_sweep(const SweepJob& job, const SweepProgress& progress);
 

@@ -1,8 +1,9 @@
-// Rendering a sweep: every cell through Renderer::create + render_frame, like `render`.
+// Rendering a sweep: every cell through open_renderer + render, like `render`.
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
 
+#include "prepare/prepare.h"
 #include "scene/scene_io.h"
 #include "tune/sweep.h"
 
@@ -67,11 +68,12 @@ Result<std::vector<SweepCell>> render_sweep(const SweepJob& job, const SweepProg
     if (!scene) return as_sweep_error(scene.error());
     RendererOptions options = job.renderer;
     options.expected_frames = scene->render.frames;  // as `render` does, so a cell equals its render
-    auto renderer = Renderer::create(scene.value(), options);
+    auto renderer = open_renderer(scene.value(), options);
     if (!renderer) return renderer.error();
-    show_world_at_start(*renderer.value());  // as `render` does: bodies, charges, bands
+    // As `render` does: the bodies, charges and bands where the scene starts them.
+    const FrameInput start = start_frame_input(renderer.value()->scene());
     for (int f = 0; f < scene->render.frames; ++f)
-      if (Status s = renderer.value()->render_frame(); !s) return s.error();
+      if (auto s = renderer.value()->render(f == 0 ? start : FrameInput{}); !s) return s.error();
     cell.image = renderer.value()->read_color();
     cell.stats = renderer.value()->stats();
     for (const auto& [name, ms] : cell.stats.timings_ms) cell.frame_ms += ms;

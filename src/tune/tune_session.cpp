@@ -1,3 +1,4 @@
+#include "prepare/prepare.h"
 #include "tune/tune_session.h"
 
 #include <filesystem>
@@ -63,14 +64,14 @@ Status TuneSession::rebuild(const std::map<std::string, std::string>& edits, boo
   }
   RendererOptions options = source_.renderer;
   if (keep_tiles) options.reuse_tiles_from = renderer_.get();  // edits only: shaders unchanged
-  auto fresh = Renderer::create(scene.value(), options);
+  auto fresh = open_renderer(scene.value(), options);
   if (!fresh) {
     last_error_ = fresh.error().message;
     return fresh.error();
   }
   if (renderer_ && keep_probe)
-    fresh.value()->set_probe_state(renderer_->scene().probe.position, renderer_->scene().probe.velocity);
-  if (renderer_ && keep_camera) fresh.value()->set_camera(renderer_->scene().camera);
+    fresh.value()->set_probe_state(renderer_->probe().position, renderer_->probe().velocity);
+  if (renderer_ && keep_camera) fresh.value()->set_camera(renderer_->camera());
   if (renderer_) fresh.value()->set_show_probe(renderer_->show_probe());
   if (renderer_) fresh.value()->set_show_device(renderer_->show_device());
   renderer_ = std::move(fresh.value());

@@ -21,8 +21,7 @@ std::uint32_t shadow_pixels(const Scene& scene, double sheet_w) {
   auto r = Renderer::create(scene, {});
   EXPECT_TRUE(r) << r.error().message;
   if (!r) return 0;
-  r.value()->set_probe_sheet(0, sheet_w);
-  const Status s = r.value()->render_frame();
+  const auto s = r.value()->render({.sheet = ProbeSheet{0, sheet_w}});
   EXPECT_TRUE(s) << s.error().message;
   return r.value()->stats().shadow_pixels;
 }
@@ -56,11 +55,10 @@ TEST_P(FourdGLTest, ProbePathIsColouredByDepth) {
     auto r = Renderer::create(scene.value(), {});
     EXPECT_TRUE(r) << r.error().message;
     r.value()->set_show_path(show);
-    for (int i = 0; i <= 20; ++i) {
-      r.value()->set_probe_state(glm::dvec3(-10.0 + i, 0.0, 0.0), glm::dvec3(0.0));
-      r.value()->set_probe_sheet(0, w);
-    }
-    EXPECT_TRUE(r.value()->render_frame());
+    // One frame per point: each frame given a sheet adds the probe's position to the path.
+    for (int i = 0; i <= 20; ++i)
+      EXPECT_TRUE(r.value()->render({.probe = ProbeMotion{glm::dvec3(-10.0 + i, 0.0, 0.0), glm::dvec3(0.0)},
+                                     .sheet = ProbeSheet{0, w}}));
     const Image im = r.value()->read_color();
     glm::dvec3 sum(0.0);
     pixels = 0;

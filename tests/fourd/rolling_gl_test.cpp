@@ -75,7 +75,7 @@ WalkFrame walk(bool roll) {
     out.have = true;
     out.centroid_px_x = sx / out.shadow_pixels;
     out.centroid_px_y = sy / out.shadow_pixels;
-    const Camera& cam = rr.scene().camera;  // the world camera this frame drew with
+    const Camera& cam = rr.camera();  // the world camera this frame drew with
     PointerView v;
     v.camera = cam;
     v.window_size = {static_cast<double>(in.width), static_cast<double>(in.height)};

@@ -81,7 +81,7 @@ shell_line(_repro_compare "${EXE}" compare "${GOLDEN}" "${_name}.png" ${_limits}
 set(_reproduce "golden ${_name}: reproduce with\n  ${_repro_render}\n  ${_repro_compare}")
 message("${_reproduce}")
 
-# A cold picture cache (one per case, render/button_pictures.h): a button's picture cached by
+# A cold picture cache (one per case, prepare/button_pictures.h): a button's picture cached by
 # an older build would stand in for this build's render of it, and a golden regenerated over a
 # warm cache would hold an older renderer's pictures (seen: universe_panel).
 if(DEFINED ENV{PSEUDOSHADOW_CACHE_DIR} AND NOT "$ENV{PSEUDOSHADOW_CACHE_DIR}" STREQUAL "")

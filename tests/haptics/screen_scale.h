@@ -5,7 +5,7 @@
 
 #include <glm/glm.hpp>
 
-#include "render/camera.h"
+#include "scene/camera.h"
 #include "scene/scene.h"
 
 namespace ps::test {

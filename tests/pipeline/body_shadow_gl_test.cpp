@@ -21,7 +21,7 @@
 #include "pipeline/scenes.h"
 #include "reference/body_shadow.h"
 #include "reference/modulation.h"
-#include "render/camera.h"
+#include "scene/camera.h"
 #include "render/renderer.h"
 #include "support/gl_test.h"
 
@@ -102,7 +102,7 @@ struct Frame {
   FrameStats stats;
 };
 
-// One frame of `s` with the bodies at `bodies` (empty: set_body_positions is never called).
+// One frame of `s` with the bodies at `bodies` (empty: the frame input gives no bodies).
 std::optional<Frame> render(const Scene& s, const std::vector<glm::dvec3>& bodies) {
   auto made = Renderer::create(s, {});
   if (!made.ok()) {
@@ -110,8 +110,9 @@ std::optional<Frame> render(const Scene& s, const std::vector<glm::dvec3>& bodie
     return std::nullopt;
   }
   Renderer& r = *made.value();
-  if (!bodies.empty()) r.set_body_positions(bodies);
-  if (Status f = r.render_frame(); !f) {
+  FrameInput in;
+  if (!bodies.empty()) in.bodies_mm = bodies;
+  if (auto f = r.render(in); !f) {
     ADD_FAILURE() << f.error().message;
     return std::nullopt;
   }
@@ -251,8 +252,7 @@ TEST_P(BodyShadowGLTest, DarkensMonotonicallyAsTheBodyApproaches) {
     int lightened = 0, darkened = 0;
     for (double gap = 13.0; gap >= -3.0; gap -= 0.375) {
       const glm::dvec3 ball = ball_at_gap(gap);
-      r.set_body_positions(std::vector<glm::dvec3>{ball});
-      ASSERT_TRUE(r.render_frame().ok());
+      ASSERT_TRUE(r.render({.bodies_mm = std::vector<glm::dvec3>{ball}}).ok());
       Image c = r.read_color();
       if (prev)
         for (int y = 0; y < s.render.height; ++y)
@@ -347,7 +347,7 @@ TEST_P(BodyShadowGLTest, NothingBeyondTheInfluenceDistance) {
 }
 
 // A scene's bodies cast nothing until they have positions: byte-identical to the scene without
-// bodies (the renderer draws and casts only what set_body_positions gave it).
+// bodies (the renderer draws and casts only what FrameInput::bodies_mm gave it).
 TEST_P(BodyShadowGLTest, BodiesWithoutPositionsCastNothing) {
   Scene s = body_scene(128, false, 8.0 + 1.0);
   s.bodies.push_back(s.bodies[0]);

@@ -16,7 +16,7 @@
 #include <gtest/gtest.h>
 
 #include "pipeline/scenes.h"
-#include "render/camera.h"
+#include "scene/camera.h"
 #include "render/renderer.h"
 #include "scene/scene_io.h"
 #include "support/gl_test.h"

@@ -1,6 +1,6 @@
 // Gabor texture anti-aliasing (docs/architecture.md, "Texture filtering"): the filtered texture
 // against the same view rendered 8 x 8 larger and box-filtered down, top-down and at a
-// 15-degree grazing view (render/texture_aliasing.h), and against its CPU twin.
+// 15-degree grazing view (measure/texture_aliasing.h), and against its CPU twin.
 #include <cmath>
 #include <cstdio>
 #include <memory>
@@ -11,7 +11,7 @@
 
 #include "reference/gabor.h"
 #include "render/renderer.h"
-#include "render/texture_aliasing.h"
+#include "measure/texture_aliasing.h"
 #include "support/gl_test.h"
 
 namespace ps {

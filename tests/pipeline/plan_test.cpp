@@ -5,7 +5,7 @@
 #include <gtest/gtest.h>
 
 #include "pipeline/scenes.h"
-#include "render/camera.h"
+#include "scene/camera.h"
 #include "render/plan.h"
 
 namespace ps {

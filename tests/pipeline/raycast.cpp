@@ -2,7 +2,7 @@
 
 #include <cmath>
 
-#include "render/camera.h"
+#include "scene/camera.h"
 
 namespace ps::test {
 

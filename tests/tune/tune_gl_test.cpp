@@ -91,7 +91,7 @@ TEST_P(TuneGLTest, ReloadPicksUpASceneChangeAndKeepsTheProbe) {
   replace_in_file(scene_, "albedo = [0.85, 0.85, 0.85]", "albedo = [0.2, 0.85, 0.85]");
   ASSERT_TRUE(s->reload_if_changed());
   EXPECT_EQ(s->last_error(), "");
-  EXPECT_EQ(s->renderer().scene().probe.position, probe);
+  EXPECT_EQ(s->renderer().probe().position, probe);
   EXPECT_EQ(s->renderer().stats().bake_ms, 0.0);  // only the albedo changed: the tile is shared
   const Image after = frame(*s);
   EXPECT_NE(after.pixels, before.pixels);

@@ -14,6 +14,7 @@
 
 #include "app/session.h"
 #include "devices/sample_log.h"
+#include "prepare/prepare.h"
 #include "scene/scene_io.h"
 #include "support/gl_test.h"
 #include "world/deformable.h"
@@ -48,9 +49,8 @@ World open_world(const std::string& file, const std::vector<std::string>& sets, 
   EXPECT_TRUE(haptic) << haptic.error().message;
   if (haptic) w.haptic.emplace(std::move(haptic.value()));
   RendererOptions ro;
-  ro.button_pictures = false;
   ro.expected_frames = expected_frames;
-  auto renderer = Renderer::create(w.scene, ro);
+  auto renderer = open_renderer(w.scene, ro, {.button_pictures = false});
   EXPECT_TRUE(renderer) << renderer.error().message;
   if (renderer) w.renderer = std::move(renderer.value());
   return w;
@@ -248,7 +248,7 @@ TEST_P(UniverseReplayGLTest, FieldsViewTravelsWithTheBox) {
   });
   ASSERT_EQ(frames.size(), 21u);
   EXPECT_GT(offset.x, 140.0);
-  const Camera& cam = w.renderer->scene().camera;
+  const Camera& cam = w.renderer->camera();
   EXPECT_EQ(cam.target, w.scene.camera.target + offset);
   EXPECT_EQ(cam.position, w.scene.camera.position + offset);
   const PointerView view = pointer_view(*w.renderer, pointer_plane(*w.renderer));

@@ -10,7 +10,7 @@
 
 #include "devices/sample_log.h"
 #include "haptics/haptic_loop.h"
-#include "render/field_map.h"
+#include "prepare/field_map.h"
 #include "render/world_markers.h"
 #include "scene/scene_io.h"
 #include "world/haptic_scene.h"

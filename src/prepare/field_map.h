@@ -5,7 +5,7 @@
 // or where the probe's centre is when it rests on that top if that is higher, on
 // a kFieldMapSize square grid covering the surface, log-scaled between the 2nd and 98th
 // percentiles and coloured dark blue (weak: the weak spots) through magenta to yellow (strong).
-// The map is the surface's albedo texture (a PNG in the picture cache, render/button_pictures.h,
+// The map is the surface's albedo texture (a PNG in the picture cache, prepare/picture_cache.h,
 // named by a hash of everything it depends on). Live charges added in `run` are not in it.
 #pragma once
 

@@ -1,4 +1,4 @@
-#include "render/camera.h"
+#include "scene/camera.h"
 
 #include <glm/gtc/matrix_transform.hpp>
 

@@ -1,16 +1,15 @@
-#include "render/button_pictures.h"
+#include "prepare/button_pictures.h"
 
 #include <cstdint>
 #include <cstdio>
-#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <iterator>
 
-#include <unistd.h>
-
 #include "core/hash.h"
 #include "image/image.h"
+#include "prepare/picture_cache.h"
+#include "prepare/prepare.h"
 #include "render/renderer.h"
 #include "scene/scene_io.h"
 
@@ -44,29 +43,15 @@ Status render_picture(const std::string& scene_file, const std::string& path) {
   if (!scene) return scene.error();
   scene->render.width = scene->render.height = kPictureSize;
   RendererOptions options;
-  options.button_pictures = false;  // a panel and its worlds may lead to each other
   options.expected_frames = 1;
-  auto r = Renderer::create(scene.value(), options);
+  // No pictures of its own: a panel and its worlds may lead to each other.
+  auto r = open_renderer(scene.value(), options, {.button_pictures = false});
   if (!r) return r.error();
-  show_world_at_start(*r.value());
-  if (Status s = r.value()->render_frame(); !s) return s;
+  if (auto f = r.value()->render(start_frame_input(r.value()->scene())); !f) return f.error();
   return write_image(path, r.value()->read_color());
 }
 
 }  // namespace
-
-std::string picture_cache_dir() {
-  std::string dir;
-  if (const char* d = std::getenv("PSEUDOSHADOW_CACHE_DIR"); d != nullptr && *d != '\0') dir = std::string(d) + "/pictures";
-  else if (const char* x = std::getenv("XDG_CACHE_HOME"); x != nullptr && *x != '\0') dir = std::string(x) + "/pseudoshadow/pictures";
-  else if (const char* h = std::getenv("HOME"); h != nullptr && *h != '\0') dir = std::string(h) + "/.cache/pseudoshadow/pictures";
-  std::error_code ec;
-  if (!dir.empty() && (std::filesystem::create_directories(dir, ec), !ec) && access(dir.c_str(), W_OK) == 0) return dir;
-  const std::string tmp = (std::filesystem::temp_directory_path(ec) / ("pseudoshadow-" + std::to_string(getuid()))).string() +
-                          "/pictures";
-  std::filesystem::create_directories(tmp, ec);
-  return tmp;
-}
 
 Status make_button_pictures(Scene& scene) {
   for (const Button& b : scene.buttons) {

@@ -1,4 +1,4 @@
-#include "render/field_map.h"
+#include "prepare/field_map.h"
 
 #include <algorithm>
 #include <cmath>
@@ -7,7 +7,7 @@
 #include <vector>
 
 #include "core/hash.h"
-#include "render/button_pictures.h"
+#include "prepare/picture_cache.h"
 #include "world/fields.h"
 
 namespace ps {

@@ -1,4 +1,4 @@
-#include "render/texture_aliasing.h"
+#include "measure/texture_aliasing.h"
 
 #include <cmath>
 #include <memory>
