@@ -2,7 +2,7 @@
 
 #include <algorithm>
 
-#include "render/camera.h"
+#include "scene/camera.h"
 #include "scene/mesh.h"
 
 namespace ps {

@@ -12,7 +12,7 @@
 #include "app/panel_links.h"
 #include "app/ui_layout.h"
 #include "devices/pointer_map.h"
-#include "render/camera.h"
+#include "scene/camera.h"
 #include "scene/scene_io.h"
 
 namespace ps {

@@ -54,11 +54,16 @@ def parse_walk(path):
             if not words:
                 continue
             op, args = words[0], words[1:]
-            checks = {"free": False, "unburied": False, "sheets": False, "still": False, "expect": None}
+            checks = {"free": False, "unburied": False, "sheets": False, "still": False, "expect": None,
+                      "scene": None, "switches": None, "home": False}
             plain = []
             for w in args:
-                if w in ("free", "unburied", "sheets", "still"):
+                if w in ("free", "unburied", "sheets", "still", "home"):
                     checks[w] = True
+                elif w.startswith("scene="):
+                    checks["scene"] = w[len("scene="):]
+                elif w.startswith("switches="):
+                    checks["switches"] = int(w[len("switches="):])
                 elif w.startswith("expect="):
                     want = set(w[len("expect="):].split("|"))
                     if not want <= STATES:
@@ -214,6 +219,18 @@ def check_step(step, frames, report):
         report["max_rest_drift_mm"] = max(report["max_rest_drift_mm"], drift)
         if drift > DRIFT_TOL_MM:
             out.append(f"{where}: the view drifted {drift:.2f} mm while the pointer rested")
+    if step["scene"] is not None and os.path.basename(frames[-1]["scene"]) != step["scene"]:
+        out.append(f"{where}: scene {frames[-1]['scene']} at frame {frames[-1]['frame']}, expected {step['scene']}")
+    if step["switches"] is not None:
+        names = [f["scene"] for f in frames]
+        switches = sum(1 for a, b in zip(names, names[1:]) if a != b)
+        report["switches"] = report.get("switches", 0) + switches
+        if switches != step["switches"]:
+            out.append(f"{where}: {switches} scene switches ({' -> '.join(dict.fromkeys(names))}), expected {step['switches']}")
+    if step["home"]:
+        off = sum(x * x for x in frames[-1]["view_offset_mm"]) ** 0.5
+        if off > DRIFT_TOL_MM:
+            out.append(f"{where}: the view is {off:.2f} mm from home at frame {frames[-1]['frame']}")
     if step["expect"]:
         state = frames[-1]["state"].replace(" ", "_")
         if state not in step["expect"]:
@@ -248,7 +265,11 @@ def walk(args):
             # A step's frames: the states drawn from its start (plus SETTLE_S: the keys or motion
             # before it are still being handled) to its end.
             span = [f for f in win.frames() if t0 + SETTLE_S <= f["t_s"] <= t1]
-            if step["expect"] or not span:  # the state the step ended in, as the next frame drew it
+            if step["switches"] is not None:  # a switch the step causes may come before SETTLE_S, or after it
+                span = [f for f in win.frames() if f["t_s"] < t0][-1:] + [f for f in win.frames() if t0 <= f["t_s"] <= t1]
+                win.wait_frames_after(t1 + 1.0)
+                span += [f for f in win.frames() if t1 < f["t_s"] <= t1 + 1.0]
+            if step["expect"] or step["scene"] or step["home"] or not span:  # the state the step ended in
                 span += [f for f in win.frames() if f["t_s"] > t1][:1]
             failures += check_step(step, span, report)
         win.wait_frames_after(win.now_t())  # every key sent handled before the count

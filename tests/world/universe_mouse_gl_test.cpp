@@ -47,7 +47,6 @@ std::vector<Frame> drive(const std::string& file, const std::vector<Point>& scri
   auto haptic = world::HapticScene::build(scene.value());
   EXPECT_TRUE(haptic) << haptic.error().message;
   RendererOptions ro;
-  ro.button_pictures = false;
   ro.expected_frames = 50;
   auto renderer = Renderer::create(scene.value(), ro);
   EXPECT_TRUE(renderer) << renderer.error().message;
