@@ -12,17 +12,7 @@ file(WRITE ${WORK}/sub/o.overrides.toml "materials.wood.intensity_lut = \"side.l
 file(WRITE ${WORK}/sub/scene.toml
      "[materials.wood]\nintensity_lut = \"side.lut\"\n\n[[surfaces]]\nmaterial = \"wood\"\n")
 
-function(expect_render status regex)
-  execute_process(COMMAND ${EXE} render --size 16 --out out.png -q ${ARGN}
-                  WORKING_DIRECTORY ${WORK} RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
-  message("render ${ARGN} -> ${rc}: ${out}${err}")
-  if(NOT "${rc}" STREQUAL "${status}")
-    message(FATAL_ERROR "render ${ARGN}: expected exit status ${status}, got ${rc}")
-  endif()
-  if(NOT "${out}${err}" MATCHES "${regex}")
-    message(FATAL_ERROR "render ${ARGN}: output does not match \"${regex}\"")
-  endif()
-endfunction()
+include(${CMAKE_CURRENT_LIST_DIR}/expect_render.cmake)
 
 # --set: the working directory (issue: it was the default scene's directory).
 expect_render(0 "" --set materials.wood.intensity_lut=my.lut)

@@ -12,20 +12,8 @@ file(WRITE ${WORK}/shared/scene.toml
 file(WRITE ${WORK}/shared/leak.toml
      "[materials.wood]\nintensity_lut = \"${WORK}/private/passwd\"\n\n[[surfaces]]\nmaterial = \"wood\"\n")
 
-function(expect_render status regex)
-  execute_process(COMMAND ${EXE} render --size 16 --out out.png -q ${ARGN}
-                  WORKING_DIRECTORY ${WORK} RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
-  message("render ${ARGN} -> ${rc}: ${out}${err}")
-  if(NOT "${rc}" STREQUAL "${status}")
-    message(FATAL_ERROR "render ${ARGN}: expected exit status ${status}, got ${rc}")
-  endif()
-  if(NOT "${out}${err}" MATCHES "${regex}")
-    message(FATAL_ERROR "render ${ARGN}: output does not match \"${regex}\"")
-  endif()
-  if("${out}${err}" MATCHES "PRIVATE-REST")
-    message(FATAL_ERROR "render ${ARGN}: the output quotes the private file")
-  endif()
-endfunction()
+set(FORBID "PRIVATE-REST")  # the private file's rest of line
+include(${CMAKE_CURRENT_LIST_DIR}/expect_render.cmake)
 
 expect_render(1 "shared/scene.toml:2: 'intensity_lut' names '.*/private/curve.lut', outside the scene's folder.*--allow-path .*/private"
               --scene shared/scene.toml)

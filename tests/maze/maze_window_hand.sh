@@ -40,16 +40,10 @@ start_from_instructions() {
   t_space=$(date +%s.%N)
 }
 
-# Session seconds of the newest sample in the device stream (written once a second).
-stream_time() { tail -n 1 "$out/$1/device.log.partial" 2>/dev/null | awk '{print $1 + 0}'; }
-
-wait_stream_past() {  # $1 session, $2 seconds
-  for _ in $(seq 200); do
-    awk -v t="$(stream_time "$1")" -v s="$2" 'BEGIN { exit !(t + 0 >= s) }' && return 0
-    sleep 0.1
-  done
-  fail "session $1: device stream never reached $2 s"
-}
+source "$(dirname "$0")/window_stream.sh"
+# Session seconds of session $1's newest sample; waiting for session $1 to reach $2 seconds.
+stream_time() { stream_time_of "$out/$1/device.log.partial"; }
+wait_stream_past() { wait_stream_file_past "$out/$1/device.log.partial" "$2"; }
 
 quit_session() {
   xdotool key Escape

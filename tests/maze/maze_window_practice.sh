@@ -14,15 +14,7 @@ rm -rf "$out"
 mkdir -p "$out"
 fail() { echo "maze_window_practice: $*" >&2; [ -f "$out/run.txt" ] && cat "$out/run.txt" >&2; exit 1; }
 
-# Session seconds of the newest sample in a device stream (written about once a second).
-stream_time() { tail -n 1 "$1" 2>/dev/null | awk '{print $1 + 0}'; }
-wait_stream_past() {  # $1 stream, $2 seconds
-  for _ in $(seq 300); do
-    awk -v t="$(stream_time "$1")" -v s="$2" 'BEGIN { exit !(t + 0 >= s) }' && return 0
-    sleep 0.1
-  done
-  fail "$1 never reached $2 s"
-}
+source "$(dirname "$0")/window_stream.sh"
 
 xdotool mousemove 640 400
 "$exe" maze --maze "$maze" --participant P --seed 11 --cues on --practice --out "$out/s" >"$out/run.txt" 2>&1 &
@@ -30,10 +22,10 @@ pid=$!
 timeout 30 xdotool search --sync --onlyvisible --name "pseudoshadow maze - P" >/dev/null || fail "no window after 30 s"
 sleep 1
 xdotool key space                      # instructions -> practice
-wait_stream_past "$out/s/practice/device.log.partial" 1.5
+wait_stream_file_past "$out/s/practice/device.log.partial" 1.5
 xdotool mousemove_relative -- 60 0     # the practice's hand moves 60 x 0.15 = 9 mm
 sleep 0.5
-wait_stream_past "$out/s/practice/device.log.partial" 3.0
+wait_stream_file_past "$out/s/practice/device.log.partial" 3.0
 xdotool key space                      # ends the practice
 sleep 1
 xdotool mousemove_relative -- 80 0     # while the "real session" screen waits

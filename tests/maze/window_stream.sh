@@ -1,0 +1,14 @@
+# Sourced by the maze window tests: reading the device stream a live session writes about once a
+# second (DIR/device.log.partial). Needs a `fail MESSAGE` function in the sourcing script.
+
+# Session seconds of the newest sample in stream file $1.
+stream_time_of() { tail -n 1 "$1" 2>/dev/null | awk '{print $1 + 0}'; }
+
+# Waits (at most 30 s) until stream file $1 reaches $2 session seconds.
+wait_stream_file_past() {
+  for _ in $(seq 300); do
+    awk -v t="$(stream_time_of "$1")" -v s="$2" 'BEGIN { exit !(t + 0 >= s) }' && return 0
+    sleep 0.1
+  done
+  fail "$1 never reached $2 s"
+}
