@@ -32,7 +32,6 @@ PathPolicy PathPolicy::for_scene(const std::string& scene_dir, const std::vector
   PathPolicy p;
   p.confined_ = true;
   p.scene_dir_ = scene_dir;
-  p.allowed_ = allowed;
   p.roots_.push_back(canonical_or_normal(scene_dir));
   // The shipped data: in the build tree its entries are links to the sources, so each entry's
   // target is a root too.

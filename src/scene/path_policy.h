@@ -34,14 +34,9 @@ class PathPolicy {
   // and comes first ("names": "'albedo_texture' names '/x.png', outside the scene's folder ...").
   Status admit(const std::filesystem::path& file, const std::string& what) const;
 
-  bool confined() const { return confined_; }
-  // The folders given with --allow-path, as given (a scene switch keeps them).
-  const std::vector<std::string>& allowed() const { return allowed_; }
-
  private:
   bool confined_ = false;
   std::string scene_dir_;
-  std::vector<std::string> allowed_;
   std::vector<std::filesystem::path> roots_;  // canonical
 };
 
