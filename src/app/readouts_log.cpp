@@ -54,7 +54,8 @@ std::string readouts_json_line(const ReadoutsFrame& f) {
          ", \"contact\": " + (p.state == ProbeState::kTouching ? "true" : "false") + ", \"force_n\": " + num(f.force_n) +
          ", \"view_offset_mm\": " + vec(f.view_offset_mm) + ", \"hand_mm\": " + vec(f.hand_mm) +
          ", \"proxy_mm\": " + vec(f.proxy_mm) + ", \"button\": " + button + ", \"flags\": " + flags +
-         ", \"keys\": " + std::to_string(f.keys) + "}";
+         ", \"keys\": " + std::to_string(f.keys) +
+         ", \"haptic_hz\": " + num(f.haptic_hz) + ", \"jitter_p99_us\": " + num(f.jitter_p99_us) + "}";
 }
 
 ReadoutsLog::~ReadoutsLog() { (void)close(); }

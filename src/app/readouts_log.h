@@ -3,7 +3,8 @@
 // window tests (tests/window). Fields (docs/window.md, "run --readouts-log"): frame, t_s, scene,
 // state, distance_mm (null out of reach, 0 touching), pressed_mm, penetration_mm, buried_mm, contact,
 // force_n, view_offset_mm, hand_mm, proxy_mm, button ({index, depth_mm, travel_mm} or null),
-// flags (names on, or null when the scene has none), keys (key presses handled this frame).
+// flags (names on, or null when the scene has none), keys (key presses handled this frame),
+// haptic_hz and jitter_p99_us (the haptic loop over the last second: what tools/soak.sh follows).
 #pragma once
 
 #include <cstdint>
@@ -36,6 +37,8 @@ struct ReadoutsFrame {
   double button_depth_mm = 0.0, button_travel_mm = 0.0;
   std::optional<std::vector<std::string>> flags;  // the flags on; none: the scene has no flags
   int keys = 0;                     // key presses handled this frame
+  double haptic_hz = 0.0;           // the haptic loop's rate over the last second
+  double jitter_p99_us = 0.0;       // |period - nominal|, p99 over the last second
 };
 
 // The frame as one JSON line (no newline); numbers with up to 4 decimals (0.1 um: far below any

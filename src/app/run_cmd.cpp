@@ -531,6 +531,8 @@ Status log_readouts(Session& s, const HapticState& st, const ShadowMeasure& shad
       if ((st.flags >> i) & 1u) f.flags->push_back(sc.flags[i]);
   }
   f.keys = s.frame_keys;
+  f.haptic_hz = r.haptic_hz;
+  f.jitter_p99_us = r.jitter_p99_us;
   return s.readouts_log.write(f);
 }
 
