@@ -305,7 +305,9 @@ HudReadouts readouts(const Session& s, const HapticState& st, const ShadowMeasur
   }
   r.haptic_hz = st.rate_hz;
   r.jitter_p99_us = st.jitter_p99_us;
-  r.probe = probe_readout({shadow.min_distance_mm, st.in_contact, st.position_mm, st.proxy_mm});
+  // A button's face pushing back is a touch too (the proxy rests on it while it travels).
+  const bool on_button = st.button_pressed >= 0 && st.button_depth_mm > 0.0;
+  r.probe = probe_readout({shadow.min_distance_mm, st.in_contact || on_button, st.position_mm, st.proxy_mm});
   r.speed_mm_s = glm::length(st.velocity_mm_s);
   r.penetration_mm = s.tune->renderer().stats().max_penetration_mm;
   r.force_n = glm::length(st.force_n);
