@@ -55,7 +55,8 @@ std::string readouts_json_line(const ReadoutsFrame& f) {
          ", \"view_offset_mm\": " + vec(f.view_offset_mm) + ", \"hand_mm\": " + vec(f.hand_mm) +
          ", \"proxy_mm\": " + vec(f.proxy_mm) + ", \"button\": " + button + ", \"flags\": " + flags +
          ", \"keys\": " + std::to_string(f.keys) +
-         ", \"haptic_hz\": " + num(f.haptic_hz) + ", \"jitter_p99_us\": " + num(f.jitter_p99_us) + "}";
+         ", \"haptic_hz\": " + num(f.haptic_hz) + ", \"jitter_p99_us\": " + num(f.jitter_p99_us) +
+         ", \"dent_mm\": " + (f.dent_mm ? num(*f.dent_mm) : std::string("null")) + "}";
 }
 
 ReadoutsLog::~ReadoutsLog() { (void)close(); }

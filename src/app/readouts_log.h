@@ -4,7 +4,8 @@
 // state, distance_mm (null out of reach, 0 touching), pressed_mm, penetration_mm, buried_mm, contact,
 // force_n, view_offset_mm, hand_mm, proxy_mm, button ({index, depth_mm, travel_mm} or null),
 // flags (names on, or null when the scene has none), keys (key presses handled this frame),
-// haptic_hz and jitter_p99_us (the haptic loop over the last second: what tools/soak.sh follows).
+// haptic_hz and jitter_p99_us (the haptic loop over the last second: what tools/soak.sh follows),
+// dent_mm (the deepest dent of a deformable surface as drawn; null when the scene has none).
 #pragma once
 
 #include <cstdint>
@@ -39,6 +40,7 @@ struct ReadoutsFrame {
   int keys = 0;                     // key presses handled this frame
   double haptic_hz = 0.0;           // the haptic loop's rate over the last second
   double jitter_p99_us = 0.0;       // |period - nominal|, p99 over the last second
+  std::optional<double> dent_mm;    // largest vertex displacement of the deformable surfaces
 };
 
 // The frame as one JSON line (no newline); numbers with up to 4 decimals (0.1 um: far below any

@@ -535,6 +535,7 @@ Status log_readouts(Session& s, const HapticState& st, const ShadowMeasure& shad
   f.keys = s.frame_keys;
   f.haptic_hz = r.haptic_hz;
   f.jitter_p99_us = r.jitter_p99_us;
+  if (const DeformationStats& d = s.tune->renderer().deformation(); d.surfaces > 0) f.dent_mm = d.max_displacement_mm;
   return s.readouts_log.write(f);
 }
 

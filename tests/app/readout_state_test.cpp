@@ -61,17 +61,19 @@ TEST(ReadoutsLogTest, OneJsonLineWithEveryField) {
   f.keys = 3;
   f.haptic_hz = 999.5;
   f.jitter_p99_us = 12.25;
+  f.dent_mm = 2.5;
   const std::string line = readouts_json_line(f);
   EXPECT_EQ(line,
             "{\"frame\": 7, \"t_s\": 1.25, \"scene\": \"panel.toml\", \"state\": \"touching\", \"distance_mm\": 0, "
             "\"pressed_mm\": 1.5, \"penetration_mm\": 0, \"buried_mm\": 0, \"contact\": true, \"force_n\": 0.75, "
             "\"view_offset_mm\": [0, -12.5, 0], \"hand_mm\": [1, 2, 3], \"proxy_mm\": [1, 2, 4.5], "
             "\"button\": {\"index\": 2, \"depth_mm\": 2.9, \"travel_mm\": 3}, \"flags\": [\"light\"], \"keys\": 3, "
-            "\"haptic_hz\": 999.5, \"jitter_p99_us\": 12.25}");
+            "\"haptic_hz\": 999.5, \"jitter_p99_us\": 12.25, \"dent_mm\": 2.5}");
   ReadoutsFrame out;  // out of reach: distance null, no button, a scene without flags
   const std::string far = readouts_json_line(out);
   EXPECT_NE(far.find("\"state\": \"out of reach\", \"distance_mm\": null"), std::string::npos) << far;
   EXPECT_NE(far.find("\"button\": null, \"flags\": null"), std::string::npos) << far;
+  EXPECT_NE(far.find("\"dent_mm\": null}"), std::string::npos) << far;  // no deformable surface
 }
 
 std::shared_ptr<const world::HapticScene> felt(const std::string& toml) {

@@ -55,13 +55,16 @@ def parse_walk(path):
                 continue
             op, args = words[0], words[1:]
             checks = {"free": False, "unburied": False, "sheets": False, "still": False, "expect": None,
-                      "scene": None, "switches": None, "home": False}
+                      "scene": None, "switches": None, "home": False,
+                      "dent_min": None, "dent_max": None}
             plain = []
             for w in args:
                 if w in ("free", "unburied", "sheets", "still", "home"):
                     checks[w] = True
                 elif w.startswith("scene="):
                     checks["scene"] = w[len("scene="):]
+                elif w.startswith("dent_min=") or w.startswith("dent_max="):
+                    checks[w[:8]] = float(w[9:])
                 elif w.startswith("switches="):
                     checks["switches"] = int(w[len("switches="):])
                 elif w.startswith("expect="):
@@ -231,6 +234,14 @@ def check_step(step, frames, report):
         off = sum(x * x for x in frames[-1]["view_offset_mm"]) ** 0.5
         if off > DRIFT_TOL_MM:
             out.append(f"{where}: the view is {off:.2f} mm from home at frame {frames[-1]['frame']}")
+    if step["dent_min"] is not None:
+        deepest = max((f.get("dent_mm") or 0.0) for f in frames)
+        report["max_dent_mm"] = max(report.get("max_dent_mm", 0.0), deepest)
+        if deepest < step["dent_min"]:
+            out.append(f"{where}: the deepest dent was {deepest:.2f} mm, expected at least {step['dent_min']} mm")
+    if step["dent_max"] is not None and (frames[-1].get("dent_mm") or 0.0) > step["dent_max"]:
+        out.append(f"{where}: still dented {frames[-1]['dent_mm']:.2f} mm at frame {frames[-1]['frame']}, "
+                   f"expected at most {step['dent_max']} mm")
     if step["expect"]:
         state = frames[-1]["state"].replace(" ", "_")
         if state not in step["expect"]:
@@ -269,7 +280,7 @@ def walk(args):
                 span = [f for f in win.frames() if f["t_s"] < t0][-1:] + [f for f in win.frames() if t0 <= f["t_s"] <= t1]
                 win.wait_frames_after(t1 + 1.0)
                 span += [f for f in win.frames() if t1 < f["t_s"] <= t1 + 1.0]
-            if step["expect"] or step["scene"] or step["home"] or not span:  # the state the step ended in
+            if step["expect"] or step["scene"] or step["home"] or step["dent_max"] is not None or not span:  # the state the step ended in
                 span += [f for f in win.frames() if f["t_s"] > t1][:1]
             failures += check_step(step, span, report)
         win.wait_frames_after(win.now_t())  # every key sent handled before the count
@@ -300,7 +311,8 @@ def walk(args):
     print(f"walk {os.path.basename(args.scene)}: {len(frames)} frames; while hovering: proxy buried "
           f"{report['max_hover_buried_mm']:.2f} mm, grazing {report['max_hover_pressed_mm']:.2f} mm, drawn penetration "
           f"{report['max_rest_penetration_mm']:.2f} mm at rest ({report['max_sweep_penetration_mm']:.2f} sweeping); taps counted {keys_counted} of {win.keys_sent}, "
-          f"view drift at rest {report['max_rest_drift_mm']:.2f} mm")
+          f"view drift at rest {report['max_rest_drift_mm']:.2f} mm"
+          + (f", deepest dent {report['max_dent_mm']:.2f} mm" if "max_dent_mm" in report else ""))
     for f in failures:
         print(f"FAIL {f}")
     return 1 if failures else 0
