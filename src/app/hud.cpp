@@ -187,6 +187,7 @@ UiFrameReport WindowUi::draw(const HudReadouts& readouts, const ShadowMeasure& s
   }
   for (const ButtonOverlay& b : buttons) in.buttons.push_back(b.rect);
   if (ImGui::IsMousePosValid()) in.pointer = std::make_pair(ImGui::GetIO().MousePos.x, ImGui::GetIO().MousePos.y);
+  in.now_s = ImGui::GetTime();
   in.last = placement_;
   const UiLayout layout = layout_ui(in);
   placement_ = layout.placement;

@@ -640,7 +640,7 @@ Status window_loop(const RunArgs& a, Session& s) {
       s.haptic_edits = s.tune->edits();
       reload_haptic_scene(s);
     }
-    s.input.keys_captured = s.ui->panel().wants_input();
+    s.input.keys_captured = s.ui->panel().wants_keys();
     glfwSwapBuffers(win);
     const auto f1 = std::chrono::steady_clock::now();
     s.frame_ms.push_back(std::chrono::duration<double, std::milli>(f1 - f0).count());

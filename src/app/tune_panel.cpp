@@ -83,6 +83,8 @@ bool TunePanel::wants_input() const {
   return visible_ && (ImGui::GetIO().WantCaptureMouse || ImGui::GetIO().WantCaptureKeyboard);
 }
 
+bool TunePanel::wants_keys() const { return visible_ && ImGui::GetIO().WantTextInput; }
+
 void TunePanel::apply(TuneSession&, const std::string& key, const std::string& value) {
   pending_.push_back({key, value, false, Lut{}});
 }

@@ -36,6 +36,10 @@ class TunePanel {
   bool collapsed() const { return collapsed_; }
   // True while the panel has the mouse/keyboard (the probe should then ignore them).
   bool wants_input() const;
+  // True while a text field of the panel takes typed keys (a Ctrl+click on a slider): only then
+  // are the window's keys (S, Q, Esc, PageDown...) the panel's. A pointer over the panel, or a
+  // slider just dragged, leaves every key to the window.
+  bool wants_keys() const;
 
   // Inside an ImGui frame: builds the panel in `dock` (window pixels) and applies edits to
   // `session`. Returns the rectangle it covers (its title bar only when collapsed).

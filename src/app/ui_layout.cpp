@@ -147,7 +147,16 @@ UiLayout layout_ui(const UiLayoutInput& in) {
   out.placement.panel_placed = in.panel;
   float x0 = 0.f, x1 = in.width;  // the range the panel leaves to the boxes
   if (in.panel) {
-    out.placement.panel_side = panel_side(in, avoid);
+    const PanelSide want = panel_side(in, avoid);
+    out.placement.flip_wanted_since_s.reset();
+    if (!in.last.panel_placed || want == in.last.panel_side) {
+      out.placement.panel_side = want;  // just opened: placed at once
+    } else {
+      const double since = in.last.flip_wanted_since_s.value_or(in.now_s);
+      const bool flip = in.now_s - since >= kPanelFlipDwellS;
+      out.placement.panel_side = flip ? want : in.last.panel_side;
+      if (!flip) out.placement.flip_wanted_since_s = since;
+    }
     out.panel = panel_strip(in, out.placement.panel_side);
     if (out.placement.panel_side == PanelSide::kRight) x1 = out.panel->x0;
     else x0 = out.panel->x1;

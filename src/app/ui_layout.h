@@ -53,12 +53,19 @@ struct UiPlacement {
   PanelSide panel_side = PanelSide::kRight;
   Corner hud_corner = Corner::kTopLeft;
   bool panel_placed = false;  // the panel has been laid out since it was last opened
+  // Since when (UiLayoutInput::now_s) the other side has been wanted without a break; none: it is not.
+  std::optional<double> flip_wanted_since_s;
 };
 
 // The panel changes sides only while the pointer is at least this share of the panel's width
 // away from both strips: the shadow (under the pointer, ~190 px wide at 1280 x 800) reaches a
 // strip before the pointer does, and a panel that fled from it could never be reached.
 constexpr float kPanelPointerClearShare = 0.5f;
+// ... and only once the other side has been wanted for this long without a break: a pointer
+// that leaves the panel for the scene and comes back (a flick, a glance) finds it where it was,
+// though the shadow under the pointer was under the panel a frame ago. A shadow that really
+// rests under the panel sends it over within a second.
+constexpr double kPanelFlipDwellS = 0.75;
 
 struct UiLayoutInput {
   float width = 0.f, height = 0.f;  // window
@@ -74,6 +81,7 @@ struct UiLayoutInput {
   float help_narrow_w = 0.f, help_narrow_h = 0.f;
   std::vector<UiRect> buttons;      // the scene's buttons on screen (app/button_overlay.h): never covered by text
   std::optional<std::pair<float, float>> pointer;  // the mouse in the window; none: outside it
+  double now_s = 0.0;               // a clock in seconds (kPanelFlipDwellS)
   UiPlacement last;
 };
 
@@ -87,7 +95,8 @@ struct UiLayout {
 // Panel: a strip along the right edge (full height), or along the left edge when the shadow
 // would be under it; if both would cover it, the side that covers less than half of what the
 // other does, else the last frame's side. Once shown it keeps its side while the pointer is in
-// the window near either strip (kPanelPointerClearShare), so the mouse can always reach it. Readouts: the corner of the rest of the window that keeps clear of
+// the window near either strip (kPanelPointerClearShare), so the mouse can always reach it, and
+// changes side only after wanting to for kPanelFlipDwellS. Readouts: the corner of the rest of the window that keeps clear of
 // the shadow and the buttons, the farthest from the shadow first. Help: bottom or top centre of
 // the rest, else a corner, clear of the shadow, the buttons and the readouts; when the two
 // cannot both stay clear, the readouts are left out while the help shows. Text never goes over

@@ -127,15 +127,56 @@ TEST(UiLayoutTest, ThePanelStaysPutWhileThePointerComesForIt) {
     ASSERT_EQ(l.placement.panel_side, PanelSide::kRight) << "pointer at x " << x;
     last = l.placement;
   }
-  // The pointer outside the window (it left to the desktop): the shadow decides again.
+  // The pointer outside the window (it left to the desktop): the shadow decides again, once it
+  // has wanted the other side for kPanelFlipDwellS without a break.
   in.pointer.reset();
   in.shadow = UiRect{1000.f, 305.f, 1190.f, 495.f};
   in.last = last;
+  in.now_s = 10.0;
+  const UiLayout wait = layout_ui(in);
+  EXPECT_EQ(wait.placement.panel_side, PanelSide::kRight) << "not before the dwell";
+  in.last = wait.placement;
+  in.now_s = 10.0 + kPanelFlipDwellS;
   EXPECT_EQ(layout_ui(in).placement.panel_side, PanelSide::kLeft);
   // Just opened (not placed yet), with the pointer near the right strip: placed by the shadow.
   in.pointer = std::make_pair(1095.f, 400.f);
   in.last = UiPlacement{};
   EXPECT_EQ(layout_ui(in).placement.panel_side, PanelSide::kLeft);
+}
+
+// The pointer on the panel's slider flicks to the window's centre and back (issue 27's flicks,
+// ~2000-4000 px/s, one or two 30 ms frames in the middle): the shadow measured on those frames is
+// still under the right strip, but the panel waits kPanelFlipDwellS before it changes side, so
+// the pointer finds it where it left it. (Without the dwell it went left at the first frame.)
+TEST(UiLayoutTest, APointerFlickingAwayAndBackFindsThePanelWhereItWas) {
+  UiLayoutInput in;
+  in.width = 512.f;
+  in.height = 512.f;
+  in.panel = true;
+  in.panel_width = panel_width_for(in.width);
+  in.panel_height = in.height;
+  in.hud_w = 184.f;
+  in.hud_h = 133.f;
+  UiPlacement last;
+  const auto frame = [&](float x, float shadow_x, double t) {
+    in.pointer = std::make_pair(x, 157.f);
+    in.shadow = UiRect{shadow_x - 95.f, 60.f, shadow_x + 95.f, 250.f};
+    in.now_s = t;
+    in.last = last;
+    last = layout_ui(in).placement;
+    return last.panel_side;
+  };
+  ASSERT_EQ(frame(256.f, 256.f, 0.0), PanelSide::kRight);  // opened with the shadow in the middle
+  for (int i = 1; i <= 10; ++i) ASSERT_EQ(frame(428.f, 428.f, 0.03 * i), PanelSide::kRight) << "on the panel";
+  // At the centre for two frames, the shadow lagging a frame behind the pointer.
+  EXPECT_EQ(frame(256.f, 428.f, 0.33), PanelSide::kRight);
+  EXPECT_EQ(frame(256.f, 400.f, 0.36), PanelSide::kRight);
+  EXPECT_EQ(frame(428.f, 428.f, 0.39), PanelSide::kRight) << "back on the slider";
+  // A shadow that rests under the panel with the pointer away from it (a probe parked at the
+  // right, the pointer just beyond the clear margin) sends it over after the dwell.
+  double t = 0.42;
+  for (; t < 0.42 + kPanelFlipDwellS - 0.01; t += 0.03) ASSERT_EQ(frame(256.f, 420.f, t), PanelSide::kRight);
+  EXPECT_EQ(frame(256.f, 420.f, 0.42 + kPanelFlipDwellS), PanelSide::kLeft);
 }
 
 // Every min/max pair the loader checks stays ordered: dragging lambda_min from 1 to 16.98 over a

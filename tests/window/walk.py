@@ -56,13 +56,15 @@ def parse_walk(path):
             op, args = words[0], words[1:]
             checks = {"free": False, "unburied": False, "sheets": False, "still": False, "expect": None,
                       "scene": None, "switches": None, "home": False,
-                      "dent_min": None, "dent_max": None}
+                      "dent_min": None, "dent_max": None, "panel_still": False, "valid": False, "edited": None}
             plain = []
             for w in args:
-                if w in ("free", "unburied", "sheets", "still", "home"):
+                if w in ("free", "unburied", "sheets", "still", "home", "panel_still", "valid"):
                     checks[w] = True
                 elif w.startswith("scene="):
                     checks["scene"] = w[len("scene="):]
+                elif w.startswith("edited="):
+                    checks["edited"] = w[len("edited="):]
                 elif w.startswith("dent_min=") or w.startswith("dent_max="):
                     checks[w[:8]] = float(w[9:])
                 elif w.startswith("switches="):
@@ -74,7 +76,7 @@ def parse_walk(path):
                     checks["expect"] = want
                 else:
                     plain.append(w)
-            arity = {"move": (2, 2), "sweep": (5, 5), "wait": (1, 1), "key": (1, 3), "hold": (2, 2),
+            arity = {"move": (2, 2), "sweep": (5, 5), "drag": (5, 5), "save": (0, 0), "wait": (1, 1), "key": (1, 3), "hold": (2, 2),
                      "scroll": (2, 2), "shot": (0, 0)}
             if op not in arity:
                 fail_input(path, n, f"unknown step '{op}' ({', '.join(arity)})")
@@ -155,7 +157,11 @@ class Window:
         op, a = step["op"], step["args"]
         if op == "move":
             self.xdo("mousemove", *self.at(a[0], a[1]))
-        elif op == "sweep":
+        elif op in ("sweep", "drag"):
+            if op == "drag":  # the left button held from the first point to the last
+                self.xdo("mousemove", *self.at(a[0], a[1]))
+                time.sleep(0.1)
+                self.xdo("mousedown", "1")
             n = max(2, int(float(a[4]) / 0.03))
             for i in range(n + 1):
                 t = i / n
@@ -163,6 +169,9 @@ class Window:
                 fy = float(a[1]) + t * (float(a[3]) - float(a[1]))
                 self.xdo("mousemove", *self.at(fx, fy))
                 time.sleep(float(a[4]) / n)
+            if op == "drag":
+                time.sleep(0.1)
+                self.xdo("mouseup", "1")
         elif op == "wait":
             time.sleep(float(a[0]))
         elif op == "key":
@@ -180,6 +189,10 @@ class Window:
             for _ in range(int(a[1])):
                 self.xdo("click", "4" if a[0] == "up" else "5")
                 time.sleep(0.03)
+        elif op == "save":  # S: screenshot_NNNN.png and its .overrides.toml in the walk's folder
+            self.xdo("key", "--delay", "0", "s")
+            self.keys_sent += 1
+            time.sleep(0.5)
         elif op == "shot" and shots:
             self.xdo("key", "--delay", "0", "s")
             self.keys_sent += 1
@@ -249,12 +262,58 @@ def check_step(step, frames, report):
     return out
 
 
+def check_panel(out_dir, still_steps, report):
+    """After the window closed: the panel's rectangle (--ui-report, by frame) on every frame of
+    each panel_still step is shown and the same - it does not jump away from the pointer."""
+    if not still_steps:
+        return []
+    with open(os.path.join(out_dir, "ui.json"), encoding="utf-8") as f:
+        ui = {fr["frame"]: fr for fr in json.load(f)["frames"]}
+    out = []
+    for step, frames in still_steps:
+        rects = [ui[n]["panel"] for n in frames if n in ui]
+        where = f"walk line {step['line']} ({step['op']})"
+        report["panel_frames_checked"] = report.get("panel_frames_checked", 0) + len(rects)
+        if not rects or any(r is None for r in rects):
+            out.append(f"{where}: the panel is not shown on every frame of the step")
+        elif len({tuple(r) for r in rects}) > 1:
+            out.append(f"{where}: the panel moved while the pointer came to it: {rects[0]} -> "
+                       f"{next(r for r in rects if r != rects[0])}")
+    return out
+
+
+def check_saves(out_dir, saves):
+    """After the window closed: each checked `save` step's override file (the panel's edits as
+    `run` saved them beside the screenshot) keeps every min <= max pair and holds the edited key."""
+    out = []
+    for step, index in saves:
+        where = f"walk line {step['line']} (save)"
+        path = os.path.join(out_dir, f"screenshot_{index:04d}.overrides.toml")
+        if not os.path.exists(path):
+            out.append(f"{where}: no {os.path.basename(path)}: the S tap saved nothing")
+            continue
+        values = {}
+        with open(path, encoding="utf-8") as f:
+            for line in f:
+                if "=" in line and not line.lstrip().startswith("#"):
+                    k, v = (x.strip() for x in line.split("=", 1))
+                    values[k] = v
+        if step["edited"] and not any(k.endswith(step["edited"]) for k in values):
+            out.append(f"{where}: the panel's edit of {step['edited']} is not in {os.path.basename(path)}")
+        for k, v in values.items():
+            if step["valid"] and k.endswith("_min") and k[:-4] + "_max" in values:
+                lo, hi = float(v), float(values[k[:-4] + "_max"])
+                if lo > hi:
+                    out.append(f"{where}: {k} = {lo} > {k[:-4]}_max = {hi}: the panel broke an invariant")
+    return out
+
+
 def walk(args):
     steps = parse_walk(args.walk)
     os.makedirs(args.out, exist_ok=True)
     log = os.path.join(args.out, "readouts.jsonl")
-    for name in ("readouts.jsonl", "ui.json", "events.jsonl"):
-        if os.path.exists(os.path.join(args.out, name)):
+    for name in os.listdir(args.out):  # a rerun's files only
+        if name in ("readouts.jsonl", "ui.json", "events.jsonl") or name.startswith("screenshot_"):
             os.remove(os.path.join(args.out, name))
     shots = os.environ.get("WINDOW_SHOTS", "")
     cmd = [os.path.abspath(args.exe), "run", "--scene", os.path.abspath(args.scene), "--readouts-log", log,
@@ -265,7 +324,7 @@ def walk(args):
     win = Window(proc, log)
     report = {"max_rest_penetration_mm": 0.0, "max_sweep_penetration_mm": 0.0, "max_hover_pressed_mm": 0.0,
               "max_hover_buried_mm": 0.0, "max_rest_drift_mm": 0.0}
-    failures = []
+    failures, panel_steps, save_steps, saved = [], [], [], 0
     try:
         win.wait_ready(args.start_timeout)
         for step in steps:
@@ -283,6 +342,13 @@ def walk(args):
             if step["expect"] or step["scene"] or step["home"] or step["dent_max"] is not None or not span:  # the state the step ended in
                 span += [f for f in win.frames() if f["t_s"] > t1][:1]
             failures += check_step(step, span, report)
+            if step["panel_still"]:  # every frame from the step's start (a flick's are few) to the one after it
+                during = [f for f in win.frames() if t0 <= f["t_s"] <= t1] + [f for f in win.frames() if f["t_s"] > t1][:1]
+                panel_steps.append((step, [f["frame"] for f in during]))
+            if step["op"] == "save" or (step["op"] == "shot" and shots):
+                saved += 1
+                if step["op"] == "save" and (step["valid"] or step["edited"]):
+                    save_steps.append((step, saved - 1))
         win.wait_frames_after(win.now_t())  # every key sent handled before the count
         keys_counted = sum(f["keys"] for f in win.frames())
         win.xdo("key", "--delay", "0", "Escape")  # the closing tap: it must close the window
@@ -300,6 +366,8 @@ def walk(args):
             proc.kill()
             proc.wait()
         console.close()
+    if proc.returncode == 0:
+        failures += check_panel(args.out, panel_steps, report) + check_saves(args.out, save_steps)
     if keys_counted != win.keys_sent:
         failures.append(f"taps counted {keys_counted} of {win.keys_sent} sent")
     if shots:
@@ -312,7 +380,8 @@ def walk(args):
           f"{report['max_hover_buried_mm']:.2f} mm, grazing {report['max_hover_pressed_mm']:.2f} mm, drawn penetration "
           f"{report['max_rest_penetration_mm']:.2f} mm at rest ({report['max_sweep_penetration_mm']:.2f} sweeping); taps counted {keys_counted} of {win.keys_sent}, "
           f"view drift at rest {report['max_rest_drift_mm']:.2f} mm"
-          + (f", deepest dent {report['max_dent_mm']:.2f} mm" if "max_dent_mm" in report else ""))
+          + (f", deepest dent {report['max_dent_mm']:.2f} mm" if "max_dent_mm" in report else "")
+          + (f", panel still on {report['panel_frames_checked']} frames" if "panel_frames_checked" in report else ""))
     for f in failures:
         print(f"FAIL {f}")
     return 1 if failures else 0
