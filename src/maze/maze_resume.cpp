@@ -5,6 +5,8 @@
 
 #include <nlohmann/json.hpp>
 
+#include "core/json_int.h"
+
 namespace ps::maze {
 
 namespace {
@@ -27,20 +29,20 @@ void read_start(const json& j, ResumePoint& r) {
       r.planned.push_back(o);
     }
   info.participant = j.at("participant").get<std::string>();
-  info.session = j.value("session", 1);
+  info.session = json_int_or(j, "session", 1);
   info.cues = j.at("cues").get<bool>();
-  info.seed = j.at("seed").get<std::uint64_t>();
+  info.seed = json_int<std::uint64_t>(j.at("seed"), "seed");
   info.maze_path = j.at("maze").get<std::string>();
   info.device = j.at("device").get<std::string>();
   info.device_log = j.at("device_log").get<std::string>();
-  info.max_passes = j.at("max_passes").get<int>();
+  info.max_passes = json_int<int>(j.at("max_passes"), "max_passes");
 }
 
 // A branch line back into the trial the tracker logged (the fields the score and the summary use).
 Trial read_trial(const json& j) {
   Trial t;
-  t.pass = j.at("pass").get<int>() - 1;
-  t.index = j.at("room").get<int>() - 1;
+  t.pass = json_int<int>(j.at("pass"), "pass") - 1;
+  t.index = json_int<int>(j.at("room"), "room") - 1;
   t.cue = parse_name<Cue>(j.at("cue"), &parse_cue, "cue");
   t.chosen = parse_name<Exit>(j.at("exit"), &parse_exit, "exit");
   t.correct = parse_name<Exit>(j.at("correct_exit"), &parse_exit, "exit");
@@ -56,7 +58,7 @@ void read_line(const json& j, ResumePoint& r) {
   if (type == "session_start") {
     read_start(j, r);
   } else if (type == "pass_start") {
-    r.current_started = j.at("pass").get<int>() == static_cast<int>(r.done.size()) + 1;
+    r.current_started = json_int<int>(j.at("pass"), "pass") == static_cast<int>(r.done.size()) + 1;
     r.time_s = std::max(r.time_s, j.at("time_s").get<double>());
   } else if (type == "branch") {
     const Trial t = read_trial(j);

@@ -10,6 +10,7 @@
 #include <nlohmann/json.hpp>
 
 #include "core/file_io.h"
+#include "core/json_int.h"
 #include "maze/maze_log.h"
 
 namespace ps::maze {
@@ -36,24 +37,24 @@ void read_line(ParticipantSummary& p, const json& j, const std::string& where) {
   if (j.contains("time_s")) p.total_time_s = std::max(p.total_time_s, j.at("time_s").get<double>());
   if (type == "session_start") {
     p.participant = j.at("participant").get<std::string>();
-    p.session = j.value("session", 1);
+    p.session = json_int_or(j, "session", 1);
     p.condition = j.at("condition").get<std::string>();
-    p.seed = j.at("seed").get<std::uint64_t>();
+    p.seed = json_int<std::uint64_t>(j.at("seed"), "seed");
   } else if (type == "branch") {
     const auto c = static_cast<std::size_t>(cue_index(j.at("cue"), where));
     ++p.trials[c];
     if (!j.at("correct").get<bool>()) ++p.errors[c];
     p.room_time_s[c] += j.at("room_time_s").get<double>();
-    RoomTrial r{j.value("pass", 0), j.value("room", 0), j.at("cue").get<std::string>(), j.value("exit", std::string()),
+    RoomTrial r{json_int_or(j, "pass", 0), json_int_or(j, "room", 0), j.at("cue").get<std::string>(), j.value("exit", std::string()),
                 j.at("correct").get<bool>(), j.at("room_time_s").get<double>(), j.value("path_mm", 0.0), {}};
     if (j.contains("contacts"))
       for (int k = 0; k < 4; ++k)
-        r.contacts[static_cast<std::size_t>(k)] = j.at("contacts").value(surface_kind_name(static_cast<SurfaceKind>(k)), 0);
+        r.contacts[static_cast<std::size_t>(k)] = json_int_or(j.at("contacts"), surface_kind_name(static_cast<SurfaceKind>(k)), 0);
     p.rooms.push_back(std::move(r));
   } else if (type == "pass_end") {
     ++p.passes;
     p.pass_time_s.push_back(j.at("pass_time_s").get<double>());
-    p.pass_correct.push_back(j.at("correct").get<int>());
+    p.pass_correct.push_back(json_int<int>(j.at("correct"), "correct"));
   } else if (type == "resumed") {  // one session, interrupted: what follows continues it
     ++p.resumed;
     p.ended = false;
@@ -61,7 +62,7 @@ void read_line(ParticipantSummary& p, const json& j, const std::string& where) {
   } else if (type == "session_end") {
     p.ended = true;
     p.end_reason = j.at("reason").get<std::string>();
-    p.trials_to_criterion = j.at("trials_to_criterion").is_null() ? 0 : j.at("trials_to_criterion").get<int>();
+    p.trials_to_criterion = j.at("trials_to_criterion").is_null() ? 0 : json_int<int>(j.at("trials_to_criterion"), "trials_to_criterion");
   }
 }
 

@@ -8,6 +8,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "core/json_int.h"
 #include "image/image.h"
 
 namespace ps {
@@ -93,7 +94,7 @@ Result<MergedSweep> merge_shards(const std::vector<std::string>& dirs) {
         return make_error(path + ": not a sweep shard of this version (format " + doc.at("format").dump() + ")");
       std::vector<SweepAxis> axes;
       for (const auto& a : doc.at("axes")) axes.push_back({a.at("key").get<std::string>(), a.at("values").get<std::vector<std::string>>()});
-      const std::size_t n = doc.at("cells_total").get<std::size_t>();
+      const auto n = json_int<std::size_t>(doc.at("cells_total"), "cells_total");
       given += (given.empty() ? "" : ", ") + doc.at("shard").at(0).dump() + "/" + doc.at("shard").at(1).dump();
       if (first_dir.empty()) {
         out.axes = axes;
@@ -103,7 +104,7 @@ Result<MergedSweep> merge_shards(const std::vector<std::string>& dirs) {
         return make_error(path + ": a shard of another sweep than " + first_dir + " (its axes or cell count differ)");
       }
       for (const auto& c : doc.at("cells")) {
-        const std::size_t index = c.at("index").get<std::size_t>();
+        const auto index = json_int<std::size_t>(c.at("index"), "index");
         if (index >= total) return make_error(path + ": cell " + std::to_string(index) + " is outside the sweep's " + std::to_string(total) + " cells");
         if (auto [it, fresh] = owner.emplace(index, dir); !fresh)
           return make_error(path + ": cell " + std::to_string(index) + " (" + c.at("label").get<std::string>() +
@@ -111,8 +112,8 @@ Result<MergedSweep> merge_shards(const std::vector<std::string>& dirs) {
         SweepCell cell;
         cell.index = sweep_cell(out.axes, index);
         cell.label = c.at("label").get<std::string>();
-        cell.stats.shadow_pixels = c.at("shadow_pixels").get<std::uint32_t>();
-        cell.stats.penetrating_pixels = c.at("penetrating_pixels").get<std::uint32_t>();
+        cell.stats.shadow_pixels = json_int<std::uint32_t>(c.at("shadow_pixels"), "shadow_pixels");
+        cell.stats.penetrating_pixels = json_int<std::uint32_t>(c.at("penetrating_pixels"), "penetrating_pixels");
         cell.stats.max_penetration_mm = c.at("max_penetration_mm").get<double>();
         cell.stats.speed_gain = c.at("speed_gain").get<double>();
         cell.frame_ms = c.at("frame_ms").get<double>();
@@ -121,7 +122,7 @@ Result<MergedSweep> merge_shards(const std::vector<std::string>& dirs) {
         cell.image = std::move(image.value());
         cells.push_back(std::move(cell));
       }
-    } catch (const nlohmann::json::exception& e) {
+    } catch (const std::exception& e) {  // nlohmann's, and json_int's range errors
       return make_error(path + ": damaged shard manifest: " + e.what());
     }
   }

@@ -201,5 +201,32 @@ TEST(MazeSummaryTest, BadLinesNameFileAndLine) {
   EXPECT_NE(f.error().message.find("first.jsonl:1: "), std::string::npos) << f.error().message;
 }
 
+// A number where a whole number belongs: fuzz_maze_log's finding ("seed": 7.7e47 was converted to
+// an integer by a cast that is undefined behaviour out of range), and a fraction or a negative
+// count that the cast used to truncate or wrap. Each is refused at file:line, naming the key; a
+// whole number written as a float (3.0, as a hand-edited log may have it) is still read.
+TEST(MazeSummaryTest, NumbersThatAreNoWholeNumbersInRangeAreRefusedAtFileLine) {
+  const std::string dir = test::temp_dir("summary_ints");
+  const std::string start = R"({"type":"session_start","participant":"X","condition":"cues_on","seed":)";
+  const std::pair<const char*, const char*> cases[] = {
+      {"7.77e47}", "'seed' must be a whole number in range, got 7.77e+47"},
+      {"-1}", "'seed' must be a whole number in range, got -1"},
+      {"2.5}", "'seed' must be a whole number in range, got 2.5"},
+      {R"(1, "session": 1e300})", "'session' must be a whole number in range"},
+      {R"(1, "session": 4294967296})", "'session' must be a whole number in range"}};
+  for (const auto& [tail, message] : cases) {
+    std::ofstream(dir + "/n.jsonl") << start << tail << "\n";
+    auto r = summarize_log(dir + "/n.jsonl");
+    ASSERT_FALSE(r) << tail;
+    EXPECT_NE(r.error().message.find("n.jsonl:1: "), std::string::npos) << r.error().message;
+    EXPECT_NE(r.error().message.find(message), std::string::npos) << r.error().message;
+  }
+  std::ofstream(dir + "/ok.jsonl") << start << R"(3.0, "session": 2})" << "\n";
+  auto ok = summarize_log(dir + "/ok.jsonl");
+  ASSERT_TRUE(ok) << ok.error().message;
+  EXPECT_EQ(ok->seed, 3u);
+  EXPECT_EQ(ok->session, 2);
+}
+
 }  // namespace
 }  // namespace ps::maze
