@@ -7,8 +7,8 @@
 #   window_panel.png     the same stroke with the parameter panel (F1) docked beside the shadow
 # then checks, on every frame of the session's `--ui-report`, that no overlay rectangle
 # intersects the shadow's bounding box (measured on the frame's pixels). Screenshots are X
-# window dumps (xwd) converted to PNG by the few lines of Python below (standard library only:
-# zlib), cropped to the window. Not part of CI: GUI input timing on a loaded machine is not
+# window dumps (xwd) converted to PNG by tools/xwd_png.py (standard library only: zlib), cropped
+# to the window. Not part of CI: GUI input timing on a loaded machine is not
 # deterministic (tests/app's run_ui_report_* tests check the same rectangles in CI).
 # Needs xvfb, xdotool, x11-apps (xwd), python3 and the build.
 # Usage: tools/window_check_xvfb.sh [WORK_DIR] [SCENE]
@@ -26,50 +26,6 @@ done
 mkdir -p "${work}"
 cd "${work}"
 rm -f ./*.xwd window_*.png ui_report.json
-cat > xwd.py <<'PY'
-"""xwd.py png|black FILE.xwd X Y W H [OUT.png]: crop an X window dump to the window and write
-it as PNG, or exit 0 if that region is all black (the window has not drawn its first frame)."""
-import struct, sys, zlib
-
-
-def xwd_rows(src, x0, y0, w, h):
-    """The RGB rows (each led by PNG filter byte 0) of the window at x0, y0, w x h in a
-    TrueColor ZPixmap X window dump of depth 24 (Xvfb: 3 bytes a pixel, lines padded)."""
-    d = open(src, "rb").read()
-    hdr = struct.unpack(">25I", d[:100])
-    header_size, fmt, depth, width, height = hdr[0], hdr[2], hdr[3], hdr[4], hdr[5]
-    byte_order, bpp, line_bytes, ncolors = hdr[7], hdr[11], hdr[12], hdr[19]
-    stride = bpp // 8
-    if fmt != 2 or depth != 24 or stride not in (3, 4):
-        sys.exit(f"window_check: {src}: expected a depth-24 ZPixmap dump (format {fmt}, depth {depth}, {bpp} bpp)")
-    red_mask = hdr[14]
-    pix = d[header_size + 12 * ncolors:]
-    rows = []
-    for y in range(y0, y0 + h):
-        line = pix[y * line_bytes:(y + 1) * line_bytes]
-        row = bytearray(b"\0")  # PNG filter type 0
-        for x in range(x0, x0 + w):
-            p = int.from_bytes(line[stride * x:stride * x + stride], "little" if byte_order == 0 else "big")
-            r, g, b = (p >> 16) & 255, (p >> 8) & 255, p & 255
-            row += bytes((r, g, b) if red_mask == 0xFF0000 else (b, g, r))
-        rows.append(bytes(row))
-    return rows
-
-def write_png(rows, w, h, dst):
-    def chunk(t, c):
-        return struct.pack(">I", len(c)) + t + c + struct.pack(">I", zlib.crc32(t + c) & 0xFFFFFFFF)
-    png = b"\x89PNG\r\n\x1a\n" + chunk(b"IHDR", struct.pack(">IIBBBBB", w, h, 8, 2, 0, 0, 0))
-    png += chunk(b"IDAT", zlib.compress(b"".join(rows), 9)) + chunk(b"IEND", b"")
-    open(dst, "wb").write(png)
-
-
-mode, src = sys.argv[1], sys.argv[2]
-x0, y0, w, h = map(int, sys.argv[3:7])
-rows = xwd_rows(src, x0, y0, w, h)
-if mode == "black":
-    sys.exit(0 if all(not any(r[1:]) for r in rows) else 1)
-write_png(rows, w, h, sys.argv[7])
-PY
 
 source "${repo}/tools/xvfb_display.sh"
 
@@ -78,12 +34,12 @@ source "${repo}/tools/xvfb_display.sh"
 run_pid=$!
 win="$(xdotool search --sync --name '^pseudoshadow' | head -n 1)"
 eval "$(xdotool getwindowgeometry --shell "${win}")"  # X, Y, WIDTH, HEIGHT
-shot() { xwd -root -silent > "$1.xwd"; python3 xwd.py png "$1.xwd" "${X}" "${Y}" "${WIDTH}" "${HEIGHT}" "$1.png"; }
+shot() { xwd -root -silent > "$1.xwd"; python3 "${repo}/tools/xwd_png.py" png "$1.xwd" "${X}" "${Y}" "${WIDTH}" "${HEIGHT}" "$1.png"; }
 # The first frame waits for the shaders' JIT and the Gabor tile bake (seconds on a loaded
 # machine): poll until the window is not black, then give the probe time to come down.
 for _ in $(seq 120); do
   xwd -root -silent > first.xwd
-  python3 xwd.py black first.xwd "${X}" "${Y}" "${WIDTH}" "${HEIGHT}" || break
+  python3 "${repo}/tools/xwd_png.py" black first.xwd "${X}" "${Y}" "${WIDTH}" "${HEIGHT}" || break
   sleep 0.5
 done
 # The pointer rests a little left of the window's centre: the shadow (1 mm above the plank at

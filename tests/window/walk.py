@@ -9,7 +9,9 @@ and checks each step's frames (walk files: tests/window/walks/*.walk, format in 
 
 Exit 0 pass, 1 a check failed, 2 bad input, 77 skipped (no xvfb-run or xdotool). With the
 environment variable WINDOW_SHOTS=FOLDER, every `shot` step saves the window's own screenshot
-(S) there as <scene>_NN.png. Standard library only.
+(S) there as <scene>_NN.png and, where xwd (x11-apps) is installed, the window as the person sees
+it (overlays included) as <walk>_win_NN.png; OUT/report.json has the walk's numbers
+(tools/walk_strips.sh makes both into docs/window_walks.md). Standard library only.
 """
 import argparse
 import json
@@ -96,6 +98,7 @@ class Window:
         self.proc, self.log_path, self.keys_sent = proc, log_path, 0
         self.wid, self.x, self.y, self.w, self.h = None, 0, 0, 1, 1
         self.offset_s = 0.0  # wall clock (time.monotonic) minus the window's session time t_s
+        self.stem, self.window_shots = "", 0  # WINDOW_SHOTS: the scene's name, dumps taken
 
     def xdo(self, *args):
         subprocess.run(["xdotool", *args], check=True, stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
@@ -197,6 +200,22 @@ class Window:
             self.xdo("key", "--delay", "0", "s")
             self.keys_sent += 1
             time.sleep(0.5)
+            self.dump_window(shots)
+
+    def dump_window(self, folder):
+        """With xwd (x11-apps): the window as the person sees it, overlays included, as
+        <folder>/<scene>_win_NN.png (tools/xwd_png.py crops the root window's dump)."""
+        if shutil.which("xwd") is None:
+            return
+        self.window_shots += 1
+        name = os.path.join(folder, f"{self.stem}_win_{self.window_shots - 1:02d}")
+        os.makedirs(folder, exist_ok=True)
+        with open(name + ".xwd", "wb") as f:
+            subprocess.run(["xwd", "-root", "-silent"], stdout=f, check=True)
+        sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "tools"))
+        import xwd_png  # noqa: E402  (only where screenshots are asked for)
+        xwd_png.write_png(xwd_png.xwd_rows(name + ".xwd", self.x, self.y, self.w, self.h), self.w, self.h, name + ".png")
+        os.remove(name + ".xwd")
 
 
 def check_step(step, frames, report):
@@ -241,6 +260,9 @@ def check_step(step, frames, report):
         names = [f["scene"] for f in frames]
         switches = sum(1 for a, b in zip(names, names[1:]) if a != b)
         report["switches"] = report.get("switches", 0) + switches
+        if switches and step["op"] == "key":  # key presses the window handled up to the switch
+            first = next(i for i in range(1, len(names)) if names[i] != names[i - 1])
+            report.setdefault("presses_to_switch", []).append(sum(f["keys"] for f in frames[1:first + 1]))
         if switches != step["switches"]:
             out.append(f"{where}: {switches} scene switches ({' -> '.join(dict.fromkeys(names))}), expected {step['switches']}")
     if step["home"]:
@@ -308,6 +330,10 @@ def check_saves(out_dir, saves):
     return out
 
 
+def win_scene_stem(args):
+    return os.path.splitext(os.path.basename(args.scene))[0]
+
+
 def walk(args):
     steps = parse_walk(args.walk)
     os.makedirs(args.out, exist_ok=True)
@@ -322,6 +348,8 @@ def walk(args):
     console = open(os.path.join(args.out, "console.txt"), "w")
     proc = subprocess.Popen(cmd, cwd=args.out, stdout=console, stderr=subprocess.STDOUT)
     win = Window(proc, log)
+    walk_name = os.path.splitext(os.path.basename(args.walk))[0]
+    win.stem = walk_name if walk_name not in ("default", win_scene_stem(args)) else win_scene_stem(args)
     report = {"max_rest_penetration_mm": 0.0, "max_sweep_penetration_mm": 0.0, "max_hover_pressed_mm": 0.0,
               "max_hover_buried_mm": 0.0, "max_rest_drift_mm": 0.0}
     failures, panel_steps, save_steps, saved = [], [], [], 0
@@ -384,6 +412,9 @@ def walk(args):
           + (f", panel still on {report['panel_frames_checked']} frames" if "panel_frames_checked" in report else ""))
     for f in failures:
         print(f"FAIL {f}")
+    with open(os.path.join(args.out, "report.json"), "w", encoding="utf-8") as f:  # tools/walk_strips.sh
+        json.dump({"walk": win.stem, "scene": os.path.basename(args.scene), "frames": len(frames), **report,
+                   "taps_counted": keys_counted, "taps_sent": win.keys_sent, "failures": failures}, f, indent=1)
     return 1 if failures else 0
 
 
