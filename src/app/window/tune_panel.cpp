@@ -16,7 +16,6 @@ namespace ps {
 
 namespace {
 
-
 std::string number(double v) {
   char buf[32];
   std::snprintf(buf, sizeof buf, "%.7g", v);
@@ -25,39 +24,6 @@ std::string number(double v) {
 
 std::string vec_text(const float* v) {
   return "[" + number(v[0]) + "," + number(v[1]) + "," + number(v[2]) + "]";
-}
-
-// A slider whose value lives in the panel while it is dragged and is applied (one renderer
-// rebuild) when released or typed: rebuilding on every drag step would cost a JIT each frame.
-struct ActiveEdit {
-  std::string key;
-  float value[3] = {0, 0, 0};
-};
-ActiveEdit g_active;  // the single item ImGui can have active; render thread only
-std::map<std::string, UiRect>* g_rects = nullptr;  // the drawing panel's knob_rects_
-
-void record_rect(const std::string& key) {
-  if (g_rects == nullptr) return;
-  const ImVec2 a = ImGui::GetItemRectMin(), b = ImGui::GetItemRectMax();
-  (*g_rects)[key] = {a.x, a.y, b.x, b.y};
-}
-
-// The label on its own line (wrapped, never cut), the slider below it across the panel.
-bool slider(const std::string& label, const std::string& key, float* v, int n, float lo, float hi, bool log) {
-  if (g_active.key == key) std::copy(g_active.value, g_active.value + n, v);
-  ImGui::TextWrapped("%s", label.c_str());
-  ImGui::SetNextItemWidth(-FLT_MIN);
-  const std::string id = "##" + key;
-  const ImGuiSliderFlags flags = log ? ImGuiSliderFlags_Logarithmic : 0;
-  if (n == 1) ImGui::SliderFloat(id.c_str(), v, lo, hi, "%.4g", flags);
-  else ImGui::DragFloat3(id.c_str(), v, (hi - lo) / 400.f, lo, hi, "%.3g");
-  record_rect(key);
-  if (ImGui::IsItemActive()) {
-    g_active.key = key;
-    std::copy(v, v + n, g_active.value);
-  }
-  if (ImGui::IsItemDeactivated() && g_active.key == key) g_active.key.clear();
-  return ImGui::IsItemDeactivatedAfterEdit();
 }
 
 // A curve over x in [x_lo, x_hi] whose tooltip names the axis value under the mouse in its
@@ -78,6 +44,30 @@ void curve(const char* id, const float* y, int n, const char* caption, double x_
 }
 
 }  // namespace
+
+void TunePanel::record_rect(const std::string& key) {
+  const ImVec2 a = ImGui::GetItemRectMin(), b = ImGui::GetItemRectMax();
+  knob_rects_[key] = {a.x, a.y, b.x, b.y};
+}
+
+// The label on its own line (wrapped, never cut), the slider below it across the panel.
+bool TunePanel::slider(const std::string& label, const std::string& key, float* v, int n, float lo, float hi,
+                       bool log) {
+  if (active_.key == key) std::copy(active_.value, active_.value + n, v);
+  ImGui::TextWrapped("%s", label.c_str());
+  ImGui::SetNextItemWidth(-FLT_MIN);
+  const std::string id = "##" + key;
+  const ImGuiSliderFlags flags = log ? ImGuiSliderFlags_Logarithmic : 0;
+  if (n == 1) ImGui::SliderFloat(id.c_str(), v, lo, hi, "%.4g", flags);
+  else ImGui::DragFloat3(id.c_str(), v, (hi - lo) / 400.f, lo, hi, "%.3g");
+  record_rect(key);
+  if (ImGui::IsItemActive()) {
+    active_.key = key;
+    std::copy(v, v + n, active_.value);
+  }
+  if (ImGui::IsItemDeactivated() && active_.key == key) active_.key.clear();
+  return ImGui::IsItemDeactivatedAfterEdit();
+}
 
 bool TunePanel::wants_input() const {
   return visible_ && (ImGui::GetIO().WantCaptureMouse || ImGui::GetIO().WantCaptureKeyboard);
@@ -234,14 +224,14 @@ void TunePanel::curve_editor(TuneSession& session, const Material& m, bool inten
     if (i > 0) ImGui::SameLine(0.f, spacing);
     const std::string id = key + "#" + std::to_string(i);
     float y = static_cast<float>(cur->points[static_cast<std::size_t>(i)].y);
-    if (g_active.key == id) y = g_active.value[0];
+    if (active_.key == id) y = active_.value[0];
     ImGui::PushID(i);
     ImGui::VSliderFloat("##row", ImVec2(w, 80.f), &y, 0.f, 1.f, "");
-    if (ImGui::IsItemActive()) g_active = {id, {y, 0.f, 0.f}};
+    if (ImGui::IsItemActive()) active_ = {id, {y, 0.f, 0.f}};
     if (ImGui::IsItemHovered() || ImGui::IsItemActive())
       ImGui::SetTooltip("%s = %.4g %s\n%s %.3f", intensity ? "d" : "speed", cur->points[static_cast<std::size_t>(i)].x,
                         intensity ? "mm" : "mm/s", intensity ? "intensity" : "gain", y);
-    if (ImGui::IsItemDeactivated() && g_active.key == id) g_active.key.clear();
+    if (ImGui::IsItemDeactivated() && active_.key == id) active_.key.clear();
     if (ImGui::IsItemDeactivatedAfterEdit()) {
       Lut lut = *cur;
       lut.points[static_cast<std::size_t>(i)].y = y;
@@ -293,11 +283,9 @@ UiRect TunePanel::draw(TuneSession& session, const UiRect& dock) {
   // every section at once), so the curves and the save button stay reachable.
   const bool open = ImGui::Begin("parameters (F1)", nullptr, kDocked);
   knob_rects_.clear();
-  g_rects = &knob_rects_;
   collapsed_ = ImGui::IsWindowCollapsed();
   const ImVec2 pos = ImGui::GetWindowPos(), size = ImGui::GetWindowSize();
   if (open) contents(session);
-  g_rects = nullptr;
   ImGui::End();
   apply_pending(session);  // after the sections, which read the scene the edits rebuild
   return UiRect::at(pos.x, pos.y, size.x, size.y);

@@ -67,6 +67,15 @@ class TunePanel {
     Lut lut;
   };
   std::vector<PendingEdit> pending_;
+  // A slider whose value lives in the panel while it is dragged and is applied (one renderer
+  // rebuild) when released or typed: rebuilding on every drag step would cost a JIT each frame.
+  struct ActiveEdit {
+    std::string key;
+    float value[3] = {0, 0, 0};
+  };
+  ActiveEdit active_;  // the single item ImGui can have active
+  bool slider(const std::string& label, const std::string& key, float* v, int n, float lo, float hi, bool log);
+  void record_rect(const std::string& key);  // where the last item was drawn, into knob_rects_
 
   bool visible_ = false;
   bool collapsed_ = false;
