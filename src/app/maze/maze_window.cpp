@@ -1,30 +1,26 @@
 #include "app/maze/maze_window.h"
 
-#define GLFW_INCLUDE_NONE
-#include <GLFW/glfw3.h>
-#include <imgui.h>
-
-#include <backends/imgui_impl_glfw.h>
-#include <backends/imgui_impl_opengl3.h>
-
-#include "app/window/imgui_scope.h"
-
 #include <cstdio>
 #include <filesystem>
 
+#include "app/maze/maze_frame.h"
 #include "app/session/session.h"
-#include "devices/glfw_input.h"
+#include "app/window/imgui_scope.h"
 #include "devices/sample_log.h"
-#include "gl/context.h"
 #include "maze/maze_screen.h"
 #include "prepare/prepare.h"
-#include "render/present.h"
-#include "frame/haptic_frame.h"
-#include "render/renderer.h"
 
 namespace ps {
 
 namespace {
+
+using maze_window::draw;
+using maze_window::Events;
+using maze_window::floor_plane;
+using maze_window::on_plane;
+using maze_window::Overlay;
+using maze_window::score_text;
+using maze_window::Window;
 
 constexpr double kScoreSeconds = 5.0;  // how long a pass's score screen stays up
 // Ticks the tracker's feed holds between two frames: 16 s at 1 kHz (a frame that takes longer
@@ -38,51 +34,25 @@ constexpr const char* kPracticeOver =
     "That was the practice.\n\nThe real session starts now: a new maze, whose right exits\n"
     "you will learn as you go.\n\nPress Space to start.";
 
-// What the window hears from GLFW, from its callbacks (installed before ImGui, which chains to
-// them): a frame can take longer than a quick tap, so polled key state would lose taps.
-struct Events {
-  bool quit = false, screenshot = false, start = false;  // start: Space or Enter (the instructions)
-  int height_steps = 0;  // PageUp/Up +1, PageDown/Down -1 (0.5 mm each, HeightControl); repeats count
-  // GLFW moved its virtual cursor without the person moving the mouse (the pointer entered the
-  // window, focus came back and the cursor was grabbed again): the next poll rebases on it.
-  bool rebase = false;
-  static Events& of(GLFWwindow* win) { return *static_cast<Events*>(glfwGetWindowUserPointer(win)); }
-  static void on_key(GLFWwindow* win, int key, int /*scancode*/, int action, int /*mods*/) {
-    if (action == GLFW_RELEASE) return;
-    Events& e = of(win);
-    if (key == GLFW_KEY_PAGE_UP || key == GLFW_KEY_UP) ++e.height_steps;
-    if (key == GLFW_KEY_PAGE_DOWN || key == GLFW_KEY_DOWN) --e.height_steps;
-    if (action != GLFW_PRESS) return;  // a held S or Esc acts once
-    if (key == GLFW_KEY_S) e.screenshot = true;
-    if (key == GLFW_KEY_ESCAPE || key == GLFW_KEY_Q) e.quit = true;
-    if (key == GLFW_KEY_SPACE || key == GLFW_KEY_ENTER || key == GLFW_KEY_KP_ENTER) e.start = true;
-  }
-  static void on_enter(GLFWwindow* win, int /*entered*/) { of(win).rebase = true; }
-  static void on_focus(GLFWwindow* win, int /*focused*/) { of(win).rebase = true; }
-  void install(GLFWwindow* win) {
-    glfwSetWindowUserPointer(win, this);
-    glfwSetKeyCallback(win, &Events::on_key);
-    glfwSetCursorEnterCallback(win, &Events::on_enter);
-    glfwSetWindowFocusCallback(win, &Events::on_focus);
+// One pass's live machinery (the practice pass and the scored session each have their own): the
+// haptic loop on the window's device, its vibration, the device stream's recorder and the
+// tracker's tick feed, drained by each frame. Built before the pass starts (run_pass).
+struct LivePass {
+  SteadyClock clock;
+  HapticLoop loop;
+  // Destroyed before the loop that feeds it: both are stopped first (end_pass).
+  std::unique_ptr<vibration::LiveVibration> vib;
+  SampleRecorder recorder;
+  TickFeed ticks{kTrackFeedTicks};
+  std::string reason = "quit";  // why the pass ended: session_end's reason
+  LivePass(Window& w, const maze::SessionOptions& o, const maze::SessionCore& core, const cli::LiveLoopArgs& live)
+      : loop(*w.device, clock, o.haptics, core.haptic().get()),
+        vib(cli::open_live_vibration(live, core.scene().scene, loop)),
+        recorder(o.record_path) {
+    loop.set_recorder(&recorder);
+    loop.add_tick_feed(&ticks);
   }
 };
-
-struct Window {  // context first: the renderer's GL objects die before it
-  std::unique_ptr<gl::Context> ctx;
-  std::unique_ptr<Renderer> renderer;
-  std::unique_ptr<Device> device;
-  GlfwInputDevice* input = nullptr;  // == device.get() for the mouse or gamepad
-  Events events;                     // its callbacks point here: it lives as long as the window
-  std::string out_dir;
-  int screenshots = 0;
-};
-
-// The floor under the camera target: the plane the captured mouse moves the probe over.
-PlaneAxes floor_plane(const Renderer& r) {
-  return {r.camera().target, glm::dvec3(1, 0, 0), glm::dvec3(0, 1, 0), glm::dvec3(0, 0, 1)};
-}
-
-glm::dvec3 on_plane(const PlaneAxes& plane, const glm::dvec3& p) { return p - glm::dot(p - plane.origin, plane.n) * plane.n; }
 
 // The window draws `scene` from now on (a new renderer).
 Status use_scene(Window& w, const Scene& scene) {
@@ -127,75 +97,6 @@ Status open_window(const maze::SessionOptions& o, const std::string& device, con
   return open_device(device, o, w);
 }
 
-void text_window(const char* id, ImVec2 pos, const std::string& text, float scale) {
-  ImGui::SetNextWindowPos(pos);
-  ImGui::SetNextWindowBgAlpha(0.75f);
-  ImGui::Begin(id, nullptr, ImGuiWindowFlags_NoDecoration | ImGuiWindowFlags_AlwaysAutoResize | ImGuiWindowFlags_NoInputs);
-  ImGui::SetWindowFontScale(scale);
-  ImGui::TextUnformatted(text.c_str());
-  ImGui::End();
-}
-
-std::string score_text(const maze::PassScore& s, bool cues) {
-  std::string t = "Pass " + std::to_string(s.pass + 1) + ": " + std::to_string(s.correct()) + " of 6 rooms right\n";
-  for (const maze::Trial& r : s.trials)
-    t += "\nroom " + std::to_string(r.index + 1) + (cues ? "" : std::string("  ") + maze::cue_label(r.cue)) + "  " +
-         maze::exit_name(r.chosen) + "  " + (r.ok ? "RIGHT" : "WRONG");
-  return t;
-}
-
-// What the window shows over the frame: the label (cues off), the last score for a while.
-struct Overlay {
-  std::string label, score, instructions;
-  double score_until = -1.0;
-  bool done = false, show_hand = false;
-};
-
-// A faint ring where the hand is, once a wall holds the probe away from it: the participant sees
-// how far the hand has run on (the clutch brings it back past MazeWindowParams::clutch_mm).
-void draw_hand(const Window& w, const HapticState& st) {
-  const PlaneAxes plane = floor_plane(*w.renderer);
-  const glm::dvec3 hand = on_plane(plane, st.device_mm);
-  if (glm::length(hand - on_plane(plane, st.proxy_mm)) < 0.5) return;  // under the probe: nothing to show
-  int ww = 0, wh = 0;
-  glfwGetWindowSize(w.ctx->window(), &ww, &wh);
-  const PointerView view = pointer_view(*w.renderer, plane, glm::dvec2(ww, wh));
-  const glm::dvec2 c = project_to_window(view, hand);
-  const double r = glm::length(project_to_window(view, hand + view.probe_radius_mm * plane.t) - c);
-  ImGui::GetBackgroundDrawList()->AddCircle(ImVec2(static_cast<float>(c.x), static_cast<float>(c.y)),
-                                            static_cast<float>(r), IM_COL32(255, 255, 255, 90), 32, 2.0f);
-}
-
-// Renders the state, stamps a screenshot if asked (the frame plus the label, as headless
-// frames have it), blits, draws the overlay.
-Status draw(Window& w, const maze::MazeDesc& desc, const HapticState& st, const Overlay& ov, bool screenshot) {
-  const HapticFrameSources maze{.proxy_only = true, .camera = maze::follow_camera(desc, st.proxy_mm)};
-  if (auto f = w.renderer->render(haptic_frame_input(*w.renderer, st, maze)); !f) return f.error();
-  if (screenshot) {
-    Image im = w.renderer->read_color();
-    maze::stamp_label(im, ov.label);
-    char name[48];
-    std::snprintf(name, sizeof name, "/screenshot_%04d.png", w.screenshots++);
-    if (Status s = write_image(w.out_dir + name, im); !s) return s;
-  }
-  int fw = 0, fh = 0;
-  glfwGetFramebufferSize(w.ctx->window(), &fw, &fh);
-  present_to_default_framebuffer(*w.renderer, fw, fh);
-  ImGui_ImplOpenGL3_NewFrame();
-  ImGui_ImplGlfw_NewFrame();
-  ImGui::NewFrame();
-  if (ov.show_hand && st.have_sample) draw_hand(w, st);
-  if (!ov.instructions.empty()) text_window("##instructions", ImVec2(30, 60), ov.instructions, 1.3f);
-  if (!ov.label.empty()) text_window("##label", ImVec2(10, 10), ov.label, 2.0f);
-  if (st.time_s < ov.score_until) text_window("##score", ImVec2(40, 80), ov.score, 1.6f);
-  if (ov.done) text_window("##done", ImVec2(40, fh - 60.0f), "The session is over.", 1.6f);
-  ImGui::Render();
-  ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
-  glfwSwapBuffers(w.ctx->window());
-  return ok_status();
-}
-
-
 // The clutch (docs/maze.md, "A hand a wall has stopped"): a mouse has no force to hold the hand
 // at a wall, so the hand runs on while the wall holds the probe. Once it has overshot by more
 // than clutch_mm along the floor, the hand is put back under the probe and that is logged.
@@ -226,13 +127,36 @@ bool take_input(Window& w, const HapticState& st) {
   return true;
 }
 
-// The render thread's loop: input, the session's step on the newest haptic state (a pass switch
-// brings a new renderer), the frame. Returns when the participant quits, the log device ends, or
-// kScoreSeconds after the session ended (its last score stays up that long).
-// In practice (`practice`), Space or Enter ends the pass early (reason "practice_ended").
+// Returns when the participant quits, the log device ends, or the pass is over (pass_over).
+// Every tick since the last frame, so the tracker sees each room the proxy passed through
+// however long the frame took (a pass switch's new renderer, a loaded machine).
+Status step_session(maze::SessionCore& core, LivePass& pass, const maze::ScoreFn& on_score) {
+  Status stepped = ok_status();
+  pass.ticks.drain([&](const TickSample& t) {
+    if (stepped && !core.finished()) stepped = core.step(t, pass.loop, on_score);
+  });
+  return stepped;
+}
+
+// A pass switch brings a new renderer and the next room's materials.
+Status follow_scene(maze::SessionCore& core, Window& w, LivePass& pass) {
+  if (!core.take_scene_changed()) return ok_status();
+  if (Status s = use_scene(w, core.scene().scene); !s) return s;
+  pass.vib->set_scene(core.scene().scene);
+  return ok_status();
+}
+
+// The pass is over: kScoreSeconds after the session ended (its last score stays up that long),
+// or when a log device has played to its end.
+bool pass_over(const Window& w, const HapticState& st, double end_at, std::string& reason) {
+  if (end_at >= 0.0) return st.time_s > end_at;
+  if (w.device->duration_s() < 0.0 || st.time_s <= w.device->duration_s()) return false;
+  reason = "device_ended";
+  return true;
+}
+
 Status window_loop(const maze::SessionOptions& o, const MazeWindowParams& p, maze::SessionCore& core, Window& w,
-                   HapticLoop& loop, TickFeed& ticks, SampleRecorder& recorder, std::string& reason,
-                   vibration::LiveVibration& vib, bool practice = false) {
+                   LivePass& pass, bool practice) {
   Overlay ov;
   HapticState st;
   double last_flush = 0.0, end_at = -1.0, clutch_quiet_until = 0.0;
@@ -243,43 +167,57 @@ Status window_loop(const maze::SessionOptions& o, const MazeWindowParams& p, maz
   };
   for (;;) {
     glfwPollEvents();
-    st = loop.state().read();
+    st = pass.loop.state().read();
     if (Status s = apply_clutch(p, w, core, st, clutch_quiet_until); !s) return s;
     if (!take_input(w, st)) return ok_status();
     if (practice && std::exchange(w.events.start, false)) {
-      reason = "practice_ended";
+      pass.reason = "practice_ended";
       return ok_status();
     }
-    // Every tick since the last frame, so the tracker sees each room the proxy passed through
-    // however long the frame took (a pass switch's new renderer, a loaded machine).
-    Status stepped = ok_status();
-    ticks.drain([&](const TickSample& t) {
-      if (stepped && !core.finished()) stepped = core.step(t, loop, on_score);
-    });
-    if (!stepped) return stepped;
+    if (Status s = step_session(core, pass, on_score); !s) return s;
     if (core.finished() && end_at < 0.0) {
       end_at = st.time_s + kScoreSeconds;
-      reason = "logged";
+      pass.reason = "logged";
       ov.done = true;
     }
-    if ((end_at >= 0.0 && st.time_s > end_at) || (end_at < 0.0 && w.device->duration_s() >= 0.0 && st.time_s > w.device->duration_s())) {
-      if (end_at < 0.0) reason = "device_ended";
-      return ok_status();
-    }
-    if (core.take_scene_changed()) {
-      auto r = open_renderer(core.scene().scene, RendererOptions{});
-      if (!r) return r.error();
-      w.renderer = std::move(r.value());
-      vib.set_scene(core.scene().scene);  // the next room's materials
-    }
+    if (pass_over(w, st, end_at, pass.reason)) return ok_status();
+    if (Status s = follow_scene(core, w, pass); !s) return s;
     ov.label = core.label();
     ov.show_hand = p.show_hand && w.input;
     if (Status s = draw(w, o.desc, st, ov, std::exchange(w.events.screenshot, false)); !s) return s;
     if (st.time_s - last_flush >= 1.0) {  // the device stream, about once a second
       last_flush = st.time_s;
-      if (Status s = recorder.flush(); !s) return s;
+      if (Status s = pass.recorder.flush(); !s) return s;
     }
   }
+}
+
+// The render thread's loop: input, the session's step on the newest haptic state, the frame,
+// with the pass's haptic thread and vibration running. In practice (`practice`), Space or Enter
+// ends the pass early (reason "practice_ended").
+Status run_pass(const maze::SessionOptions& o, const MazeWindowParams& p, maze::SessionCore& core, Window& w,
+                LivePass& pass, bool practice) {
+  pass.loop.start();
+  pass.vib->start();
+  return window_loop(o, p, core, w, pass, practice);
+}
+
+// Stops the pass and logs its end at the time it ended: at the criterion (or max_passes) that is
+// the tick the tracker saw it, not when its score screen closed. The scored session (not
+// `practice`) warns when frames came too far apart for the tracker's feed.
+Result<maze::SessionResult> end_pass(const maze::SessionOptions& o, maze::SessionCore& core, LivePass& pass,
+                                     const Status& looped, bool practice) {
+  pass.loop.stop();
+  pass.vib->close();
+  const bool logged = pass.reason == "logged";
+  const double end_time = logged ? core.end_time_s() : std::max(o.haptics.start_time_s, pass.loop.state().read().time_s);
+  auto result = core.finish(end_time, logged ? "quit" : pass.reason);
+  if (Status s = pass.recorder.close(); !s) return s.error();
+  if (!looped) return looped.error();
+  if (const std::uint64_t lost = pass.ticks.dropped(); lost > 0 && !practice)
+    std::fprintf(stderr, "warning: the maze's tracker missed %llu ticks: frames more than %.0f s apart\n",
+                 static_cast<unsigned long long>(lost), static_cast<double>(kTrackFeedTicks) / o.haptics.rate_hz);
+  return result;
 }
 
 // `text` over the start; the clock waits for Space or Enter. False: the participant quit.
@@ -336,25 +274,10 @@ Result<bool> run_practice(const maze::SessionOptions& o, const MazeWindowParams&
   if (!opened) return opened.error();
   maze::SessionCore& core = *opened.value();
   if (Status s = use_scene(w, core.scene().scene); !s) return s.error();
-  SteadyClock clock;
-  HapticLoop loop(*w.device, clock, po->haptics, core.haptic().get());
-  std::unique_ptr<vibration::LiveVibration> vib = cli::open_live_vibration(live_args, core.scene().scene, loop);
-  SampleRecorder recorder(po->record_path);
-  loop.set_recorder(&recorder);
-  TickFeed ticks(kTrackFeedTicks);
-  loop.add_tick_feed(&ticks);
-  std::string reason = "quit";
-  loop.start();
-  vib->start();
-  Status looped = window_loop(po.value(), p, core, w, loop, ticks, recorder, reason, *vib, true);
-  loop.stop();
-  vib->close();
-  const double end = reason == "logged" ? core.end_time_s() : loop.state().read().time_s;
-  auto result = core.finish(end, reason == "logged" ? "quit" : reason);
-  if (Status s = recorder.close(); !s) return s.error();
-  if (!looped) return looped.error();
-  if (!result) return result.error();
-  if (reason == "quit") return false;
+  LivePass pass(w, po.value(), core, live_args);
+  const Status looped = run_pass(po.value(), p, core, w, pass, true);
+  if (auto result = end_pass(po.value(), core, pass, looped, true); !result) return result.error();
+  if (pass.reason == "quit") return false;
   if (Status s = use_scene(w, scored.scene().scene); !s) return s.error();
   w.input->place(on_plane(floor_plane(*w.renderer), w.renderer->scene().probe.position));
   Result<bool> go = wait_for_start(o, w, kPracticeOver);
@@ -373,15 +296,7 @@ int run_maze_window(const cli::Command& cmd, const maze::SessionOptions& o, cons
   maze::SessionCore& core = *opened.value();
   Window w;
   if (Status s = open_window(o, device, core, w); !s) return cmd.fail(s.error());
-  SteadyClock clock;
-  std::unique_ptr<vibration::LiveVibration> vib;  // before the loop: it feeds it ticks
-  HapticLoop loop(*w.device, clock, o.haptics, core.haptic().get());
-  vib = cli::open_live_vibration(live_args, core.scene().scene, loop);
-  SampleRecorder recorder(o.record_path);
-  loop.set_recorder(&recorder);
-  TickFeed track_ticks(kTrackFeedTicks);  // the tracker's ticks, drained by each frame
-  loop.add_tick_feed(&track_ticks);
-  std::string reason = "quit";
+  LivePass pass(w, o, core, live_args);
   Status looped = ok_status();
   {
     ImGuiScope imgui(w.ctx->window());
@@ -392,22 +307,10 @@ int run_maze_window(const cli::Command& cmd, const maze::SessionOptions& o, cons
     if (!go) looped = go.error();
     if (go && go.value()) {
       if (w.input) w.input->poll(o.haptics.start_time_s, pointer_view(*w.renderer, floor_plane(*w.renderer)));
-      loop.start();
-      vib->start();
-      looped = window_loop(o, params, core, w, loop, track_ticks, recorder, reason, *vib);
+      looped = run_pass(o, params, core, w, pass, false);
     }
   }
-  loop.stop();
-  vib->close();
-  // The session's end is logged at the time it ended: at the criterion (or max_passes) that is
-  // the tick the tracker saw it, not when its score screen closed.
-  const double end_time = reason == "logged" ? core.end_time_s() : std::max(o.haptics.start_time_s, loop.state().read().time_s);
-  auto result = core.finish(end_time, reason == "logged" ? "quit" : reason);
-  if (Status s = recorder.close(); !s) return cmd.fail(s.error());
-  if (!looped) return cmd.fail(looped.error());
-  if (const std::uint64_t lost = track_ticks.dropped(); lost > 0)
-    std::fprintf(stderr, "warning: the maze's tracker missed %llu ticks: frames more than %.0f s apart\n",
-                 static_cast<unsigned long long>(lost), static_cast<double>(kTrackFeedTicks) / o.haptics.rate_hz);
+  auto result = end_pass(o, core, pass, looped, false);
   if (!result) return cmd.fail(result.error());
   std::printf("maze: %s after %d pass%s (%s), %.1f s; log %s\n", o.info.participant.c_str(), result->passes,
               result->passes == 1 ? "" : "es", result->reason.c_str(), result->time_s, o.log_path.c_str());
