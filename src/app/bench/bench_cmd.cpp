@@ -63,10 +63,8 @@ void declare(cli::Command& cmd, BenchArgs& a) {
                "timed warm frames per configuration and round (default 3); every configuration is measured "
                "in 3 round-robin rounds, the median over all its timed frames is reported");
   cli::add_gl_options(app, a.gl_opts);
-  app.add_option("--out-dir", a.out_dir,
-                 "output directory (default bench_out): bench.csv, bench.md, bench.png, bench_ratios.png")
-      ->type_name("DIR")
-      ->group(cli::kOutputGroup);
+  cli::add_output(app, "--out-dir", a.out_dir, "DIR",
+                  "output directory (default bench_out): bench.csv, bench.md, bench.png, bench_ratios.png");
   app.add_flag("--plot-only", a.plot_only,
                "only draw bench.png and bench_ratios.png again from the bench.csv already in --out-dir "
                "(no sweep; needs gnuplot)")

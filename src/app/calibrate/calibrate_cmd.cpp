@@ -48,16 +48,9 @@ void declare(cli::Command& cmd, CalibrateArgs& a) {
   cli::add_scene_options(app, a.scene);
   app.add_option("--material", a.material, "the material whose curve is calibrated (default: the scene's first)")
       ->type_name("NAME");
-  app.add_option_function<std::string>(
-         "--curve",
-         [&a](const std::string& v) {
-           if (v != "distance" && v != "speed")
-             throw cli::UsageError("--curve: expected distance or speed, e.g. --curve distance (got '" + v + "')");
-           a.curve = v;
-         },
-         "distance: distance -> intensity (\"which pseudo-shadow is closer?\"); speed: speed -> texture gain "
-         "(\"which texture is moving faster?\") (required)")
-      ->type_name("distance|speed");
+  cli::add_choice(app, "--curve", "distance|speed", a.curve, {"distance", "speed"}, "distance",
+                  "distance: distance -> intensity (\"which pseudo-shadow is closer?\"); speed: speed -> texture gain "
+                  "(\"which texture is moving faster?\") (required)");
   app.add_option("--references", a.references,
                  "reference points, increasing, mm or mm/s (default distance 1,2,4,8; speed 0.2,0.4,0.6,0.8 x the "
                  "speed where the material's gain first peaks, peak_hz x lambda_min)")
@@ -65,15 +58,8 @@ void declare(cli::Command& cmd, CalibrateArgs& a) {
   cli::add_positive(app, "--range", "MAX", a.range, 1e5, "10",
                     "the table is equalised over [0, MAX] (default: 1.25 x the last reference for distance, the "
                     "gain's first peak for speed)");
-  app.add_option_function<std::string>(
-         "--observer",
-         [&a](const std::string& v) {
-           if (v != "human" && v != "simulated")
-             throw cli::UsageError("--observer: expected human or simulated, e.g. --observer simulated (got '" + v + "')");
-           a.observer = v;
-         },
-         "human (default): a window, answers from the arrow keys; simulated: the scripted observer, headless")
-      ->type_name("human|simulated");
+  cli::add_choice(app, "--observer", "human|simulated", a.observer, {"human", "simulated"}, "simulated",
+                  "human (default): a window, answers from the arrow keys; simulated: the scripted observer, headless");
   cli::add_positive(app, "--observer-jnd", "J", a.observer_jnd, 1.0, "0.01",
                     "simulated observer: its JND in the shown quantity at 0 (default 0.01)");
   cli::add_positive(app, "--observer-weber", "W", a.observer_weber, 10.0, "0.1",
@@ -86,10 +72,9 @@ void declare(cli::Command& cmd, CalibrateArgs& a) {
   cli::add_int(app, "--reversals", "N", a.reversals, 2LL, 1000LL, "reversals per staircase before it ends (default 16)");
   cli::add_int(app, "--average-last", "N", a.average_last, 1LL, 1000LL,
                "JND: geometric mean of the differences at the last N reversals (default 12)");
-  app.add_option("--out", a.out, "the lookup table to write (required)")->type_name("FILE.lut")->group(cli::kOutputGroup);
-  app.add_option("--log", a.log, "the trial log, CSV (default: FILE.lut's name + .trials.csv)")
-      ->type_name("FILE.csv")
-      ->group(cli::kOutputGroup);
+  cli::add_output(app, "--out", a.out, "FILE.lut", "the lookup table to write (required)");
+  cli::add_output(app, "--log", a.log, "FILE.csv",
+                  "the trial log, CSV (default: FILE.lut's name + .trials.csv)");
   app.add_option("--resume", a.resume,
                  "continue a calibration stopped early (Esc, a crash) from its trial log: give the same options and "
                  "--seed as that run; its answers are replayed, the rest is asked, and the log gets every trial")

@@ -176,6 +176,35 @@ CLI::Option* add_positive(CLI::App& app, const std::string& name, const std::str
       ->type_name(value_name);
 }
 
+namespace {
+
+bool is_choice(const std::string& v, const std::vector<std::string>& choices) {
+  for (const std::string& c : choices) {
+    const std::size_t colon = c.find(':');
+    if (colon == std::string::npos ? v == c : v.rfind(c.substr(0, colon + 1), 0) == 0) return true;
+  }
+  return false;
+}
+
+// "a", "a or b", "a, b or c".
+std::string or_list(const std::vector<std::string>& words) {
+  std::string s;
+  for (std::size_t i = 0; i < words.size(); ++i) s += (i == 0 ? "" : i + 1 == words.size() ? " or " : ", ") + words[i];
+  return s;
+}
+
+}  // namespace
+
+CLI::Option* add_choice(CLI::App& app, const std::string& name, const std::string& value_name, std::string& out,
+                        const std::vector<std::string>& choices, const std::string& example, const std::string& help) {
+  const auto check = [name, &out, choices, example](const std::string& v) {
+    if (!is_choice(v, choices))
+      throw UsageError(name + ": expected " + or_list(choices) + ", e.g. " + name + " " + example + " (got '" + v + "')");
+    out = v;
+  };
+  return app.add_option_function<std::string>(name, check, help)->type_name(value_name);
+}
+
 glm::ivec2 parse_size(std::string_view text, int max_side, long long max_pixels) {
   const std::string limit = " refused: the limit is " + std::to_string(max_side) + " pixels per side (at least 1) and " +
                             std::to_string(max_pixels) + " pixels in all";

@@ -12,6 +12,7 @@
 #include <stdexcept>
 #include <string>
 #include <string_view>
+#include <vector>
 
 #include <CLI/CLI.hpp>
 #include <glm/glm.hpp>
@@ -102,6 +103,10 @@ CLI::Option* add_int(CLI::App& app, const std::string& name, const std::string& 
 }
 CLI::Option* add_positive(CLI::App& app, const std::string& name, const std::string& value_name, double& out,
                           double hi, const std::string& example, const std::string& help);
+// An option taking one of `choices`, stored in `out`; a choice "prefix:FILE" takes any value that
+// starts with "prefix:". Anything else: "NAME: expected A, B or C, e.g. NAME EXAMPLE (got 'V')".
+CLI::Option* add_choice(CLI::App& app, const std::string& name, const std::string& value_name, std::string& out,
+                        const std::vector<std::string>& choices, const std::string& example, const std::string& help);
 
 // The one spelling of a vector as an override value: "[x,y,z]", each at %.17g (round-trips).
 std::string override_value(const glm::dvec3& v);

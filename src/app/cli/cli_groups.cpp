@@ -144,6 +144,11 @@ Result<std::unique_ptr<gl::Context>> open_context(const GlArgs& args, bool quiet
   return context;
 }
 
+CLI::Option* add_output(CLI::App& app, const std::string& name, std::string& path, const std::string& value_name,
+                        const std::string& help) {
+  return app.add_option(name, path, help)->type_name(value_name)->group(kOutputGroup);
+}
+
 void add_stats_option(CLI::App& app, std::string& path) {
   app.add_option("--stats", path,
                  "per-frame numbers of the last frame: backend, egl_device, gl_renderer, reference_normal, "

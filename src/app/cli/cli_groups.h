@@ -65,6 +65,10 @@ void add_gl_options(CLI::App& app, GlArgs& args);
 // The headless context the options ask for; with --gpu auto, one line on stderr says which
 // display it took (unless `quiet`).
 Result<std::unique_ptr<gl::Context>> open_context(const GlArgs& args, bool quiet = false);
+// An option naming a file or folder the command writes (`value_name`: FILE, DIR, FILE.wav...),
+// listed with the other outputs in --help.
+CLI::Option* add_output(CLI::App& app, const std::string& name, std::string& path, const std::string& value_name,
+                        const std::string& help);
 // --stats FILE.json (the per-frame numbers of the last frame, Renderer's stats_json).
 void add_stats_option(CLI::App& app, std::string& path);
 // The options of the commands that run a live 1 kHz haptic loop beside the renderer (`run`,

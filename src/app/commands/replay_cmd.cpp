@@ -52,24 +52,17 @@ void declare(cli::Command& cmd, ReplayArgs& a) {
   cli::add_positive(app, "--fps", "F", a.fps, 10000.0, "30", "frames per second of session time (default 30)");
   cli::add_gl_options(app, a.gl_opts);
   app.add_option("--out", a.out_dir, std::string("writes DIR/frame_00000.png ... (required). ") + cli::kOutputRule)->type_name("DIR")->group(cli::kOutputGroup);
-  app.add_option("--contact-sheet", a.sheet, "also one labelled sheet of the written frames (PNG)")
-      ->type_name("FILE")
-      ->group(cli::kOutputGroup);
-  app.add_option("--record", a.record, "record the device stream the loop read (a playback log)")
-      ->type_name("FILE")
-      ->group(cli::kOutputGroup);
-  app.add_option("--events", a.events,
-                 "the JSON-lines event log (contact start/end, buttons, impacts, ...; default DIR/events.jsonl)")
-      ->type_name("FILE")
-      ->group(cli::kOutputGroup);
-  app.add_option("--audio", a.audio, "the events' sound track: WAV, 48 kHz mono 16-bit, as long as the replay")
-      ->type_name("FILE.wav")
-      ->group(cli::kOutputGroup);
-  app.add_option("--vibration", a.vibration,
-                 "the vibrotactile texture under the probe (docs/vibration.md): WAV, 48 kHz mono 16-bit, as long "
-                 "as the replay")
-      ->type_name("FILE.wav")
-      ->group(cli::kOutputGroup);
+  cli::add_output(app, "--contact-sheet", a.sheet, "FILE",
+                  "also one labelled sheet of the written frames (PNG)");
+  cli::add_output(app, "--record", a.record, "FILE",
+                  "record the device stream the loop read (a playback log)");
+  cli::add_output(app, "--events", a.events, "FILE",
+                  "the JSON-lines event log (contact start/end, buttons, impacts, ...; default DIR/events.jsonl)");
+  cli::add_output(app, "--audio", a.audio, "FILE.wav",
+                  "the events' sound track: WAV, 48 kHz mono 16-bit, as long as the replay");
+  cli::add_output(app, "--vibration", a.vibration, "FILE.wav",
+                  "the vibrotactile texture under the probe (docs/vibration.md): WAV, 48 kHz mono 16-bit, as long "
+                  "as the replay");
   app.add_flag("--show-probe", a.show_probe, "also draw the probe itself (the haptic proxy) in the frames");
   app.add_flag("--show-device", a.show_device,
                "also draw the device's own position faintly (the gap to the proxy is the pseudo-haptic feedback)");

@@ -58,26 +58,20 @@ void check_device(const std::string& d) {
 
 // What `run` writes besides the window (and its sounds, which go with the event log).
 void declare_outputs(CLI::App& app, RunArgs& a) {
-  app.add_option("--record", a.record, "record the device stream (replay it with `pseudoshadow replay`)")
-      ->type_name("FILE")
-      ->group(cli::kOutputGroup);
+  cli::add_output(app, "--record", a.record, "FILE",
+                  "record the device stream (replay it with `pseudoshadow replay`)");
   cli::add_stats_option(app, a.stats_path);
-  app.add_option("--events", a.events.log_path, "write every haptic event as a JSON line (docs/sound.md)")
-      ->type_name("FILE")
-      ->group(cli::kOutputGroup);
+  cli::add_output(app, "--events", a.events.log_path, "FILE",
+                  "write every haptic event as a JSON line (docs/sound.md)");
   app.add_flag("--mute", a.events.audio.mute, "no event sounds");
   app.add_option("--audio-device", a.events.audio.device, "OpenAL output device (default: the system's default)")
       ->type_name("NAME");
-  app.add_option("--ui-report", a.ui_report,
-                 "at exit, write JSON with every frame's overlay, help and panel rectangles and the "
-                 "pseudo-shadow's bounding box, in window pixels")
-      ->type_name("FILE")
-      ->group(cli::kOutputGroup);
-  app.add_option("--readouts-log", a.readouts_log,
-                 "write one JSON line per frame: what the readouts say (state, distance, pressed depth, "
-                 "force), hand, proxy, view offset, button, flags, key presses (docs/window.md)")
-      ->type_name("FILE")
-      ->group(cli::kOutputGroup);
+  cli::add_output(app, "--ui-report", a.ui_report, "FILE",
+                  "at exit, write JSON with every frame's overlay, help and panel rectangles and the "
+                  "pseudo-shadow's bounding box, in window pixels");
+  cli::add_output(app, "--readouts-log", a.readouts_log, "FILE",
+                  "write one JSON line per frame: what the readouts say (state, distance, pressed depth, "
+                  "force), hand, proxy, view offset, button, flags, key presses (docs/window.md)");
 }
 
 void declare(cli::Command& cmd, RunArgs& a) {

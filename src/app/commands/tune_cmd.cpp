@@ -72,10 +72,9 @@ void declare(cli::Command& cmd, TuneArgs& a) {
       ->expected(1, -1);
   app.add_flag("--console", a.console, "run a scripted console session read from stdin (below)");
   cli::add_gl_options(app, a.gl_opts);
-  app.add_option("--out", a.out, "the contact sheet (required for sweeps)")->type_name("SHEET.png")->group(cli::kOutputGroup);
-  app.add_option("--out-dir", a.out_dir, "a shard's directory (with --shard): cell_NNNN.png and shard.json")
-      ->type_name("DIR")
-      ->group(cli::kOutputGroup);
+  cli::add_output(app, "--out", a.out, "SHEET.png", "the contact sheet (required for sweeps)");
+  cli::add_output(app, "--out-dir", a.out_dir, "DIR",
+                  "a shard's directory (with --shard): cell_NNNN.png and shard.json");
   app.add_option("--csv", a.csv, std::string("per-cell values and frame stats. ") + cli::kOutputRule)->type_name("FILE")->group(cli::kOutputGroup);
   cli::add_quiet_option(app, a.quiet);
   cmd.usage("pseudoshadow tune --scene FILE --sweep KEY=V1,V2,... [...] --out SHEET.png\n"

@@ -58,42 +58,25 @@ void declare(cli::Command& cmd, MazeArgs& a) {
                "the participant's seed: correct exits and room orders (required)");
   cli::add_int(app, "--session", "K", a.session, 1LL, 1000LL,
                "which session of this participant (default 1; 2: a retest with the same seed, seed 003 §VII)");
-  app.add_option_function<std::string>(
-         "--cues",
-         [&a](const std::string& v) {
-           if (v != "on" && v != "off") throw cli::UsageError("--cues: expected on or off, e.g. --cues on (got '" + v + "')");
-           a.cues = v;
-         },
-         "on: haptic cues, labels hidden; off: no cues, rooms labelled on screen (required)")
-      ->type_name("on|off");
-  app.add_option_function<std::string>(
-         "--device",
-         [&a](const std::string& v) {
-           if (v != "mouse" && v != "gamepad" && v.rfind("trajectory:", 0) != 0 && v.rfind("playback:", 0) != 0)
-             throw cli::UsageError("--device: expected mouse, gamepad, trajectory:FILE or playback:FILE, e.g. "
-                                   "--device trajectory:p01.traj (got '" + v + "')");
-           a.device = v;
-         },
-         "trajectory:FILE or playback:FILE runs headless (a scripted or recorded participant); mouse (the "
-         "default) or gamepad opens the window")
-      ->type_name("DEVICE");
-  app.add_option("--out", a.out_dir,
-                 "where the log, device stream and scores go (default maze-ID); it must exist, or only its last "
-                 "component may be missing (it is created). The log is written as the session goes, whole lines, "
-                 "each synced: a killed session leaves every line written so far")
-      ->type_name("DIR")
-      ->group(cli::kOutputGroup);
+  cli::add_choice(app, "--cues", "on|off", a.cues, {"on", "off"}, "on",
+                  "on: haptic cues, labels hidden; off: no cues, rooms labelled on screen (required)");
+  cli::add_choice(app, "--device", "DEVICE", a.device, {"mouse", "gamepad", "trajectory:FILE", "playback:FILE"},
+                  "trajectory:p01.traj",
+                  "trajectory:FILE or playback:FILE runs headless (a scripted or recorded participant); mouse (the "
+                  "default) or gamepad opens the window");
+  cli::add_output(app, "--out", a.out_dir, "DIR",
+                  "where the log, device stream and scores go (default maze-ID); it must exist, or only its last "
+                  "component may be missing (it is created). The log is written as the session goes, whole lines, "
+                  "each synced: a killed session leaves every line written so far");
   cli::add_int(app, "--every", "N", a.every, 0LL, 1'000'000LL,
                "headless: also write every N-th frame as DIR/frames/frame_NNNNN.png (default 0: none)");
   cli::add_positive(app, "--fps", "F", a.fps, 1000.0, "30", "headless frames per second of session time (default 30)");
   cli::add_positive(app, "--pace", "X", a.pace, 1000.0, "1",
                     "headless: run the session at X times real time (1: as long as it lasts live; default: "
                     "as fast as it computes)");
-  app.add_option("--write-scene", a.write_scene,
-                 "write pass 1's generated scene for --seed and --cues (a scene file `run`, `render` and `replay` "
-                 "take) and exit without a session")
-      ->type_name("FILE")
-      ->group(cli::kOutputGroup);
+  cli::add_output(app, "--write-scene", a.write_scene, "FILE",
+                  "write pass 1's generated scene for --seed and --cues (a scene file `run`, `render` and `replay` "
+                  "take) and exit without a session");
   app.add_option("--plan", a.plan,
                  "run the row of --participant (and --session) of a study plan (`maze plan`): its seed, condition "
                  "and counterbalanced room orders")
@@ -260,11 +243,9 @@ struct SummarizeArgs {
 void declare_summarize(cli::Command& cmd, SummarizeArgs& a) {
   CLI::App& app = cmd.app();
   app.add_option("logs", a.logs, "session logs (DIR/session.jsonl of each participant)")->type_name("LOG");
-  app.add_option("--out", a.out_dir,
-                 "writes participants.csv, groups.csv, trials.csv, rooms.csv, summary.md and the plots there (required); it "
-                 "must exist, or only its last component may be missing (it is created)")
-      ->type_name("DIR")
-      ->group(cli::kOutputGroup);
+  cli::add_output(app, "--out", a.out_dir, "DIR",
+                  "writes participants.csv, groups.csv, trials.csv, rooms.csv, summary.md and the plots there (required); it "
+                  "must exist, or only its last component may be missing (it is created)");
   app.add_flag("--no-plots", a.no_plots, "tables only (no gnuplot needed)");
   app.add_flag("--include-aborted", a.include_aborted,
                "count aborted sessions (quit, device_ended, crashed) in the group means too (default: left out, "
@@ -316,7 +297,7 @@ void declare_script(cli::Command& cmd, ScriptArgs& a) {
       ->type_name("FILE.csv");
   app.add_option("--participant", a.participant, "with --plan: whose row")->type_name("ID");
   cli::add_int(app, "--session", "K", a.session, 1LL, 1000LL, "with --plan: which session's row (default 1)");
-  app.add_option("--out", a.out, "the trajectory file to write (required)")->type_name("FILE.traj")->group(cli::kOutputGroup);
+  cli::add_output(app, "--out", a.out, "FILE.traj", "the trajectory file to write (required)");
   cmd.usage("pseudoshadow maze script --seed N --out FILE.traj [--errors K] [--passes P]");
 }
 

@@ -27,7 +27,7 @@ void declare_plan(cli::Command& cmd, PlanArgs& a) {
   cli::add_int(app, "--first-seed", "S", a.first_seed, 0LL, 9'007'199'254'740'000LL,
                "participant i (from 0) gets seed S + i (default 101)");
   cli::add_int(app, "--sessions", "K", a.sessions, 1LL, 10LL, "sessions per participant: 1 + retests (default 2)");
-  app.add_option("--out", a.out, "the plan CSV to write (required)")->type_name("FILE.csv")->group(cli::kOutputGroup);
+  cli::add_output(app, "--out", a.out, "FILE.csv", "the plan CSV to write (required)");
   cli::add_quiet_option(app, a.quiet);
   cmd.usage("pseudoshadow maze plan --participants N --conditions on,off --out plan.csv");
 }
