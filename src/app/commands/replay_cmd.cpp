@@ -2,6 +2,7 @@
 // frame rate, deterministically (fake clock, no threads), and writes the frames.
 #include <cmath>
 #include <cstdio>
+#include <functional>
 #include <optional>
 #include <unistd.h>
 
@@ -156,18 +157,90 @@ ReplayEventsDesc events_desc(const ReplayArgs& a, double duration_s) {
   return d;
 }
 
+// No KIND: a .traj file is a scripted trajectory (interpolated; read as a recording its
+// keyframes would jump and be rejected), anything else a recording.
+std::string device_spec(const std::string& log) {
+  return log.find(':') != std::string::npos ? log
+         : log.ends_with(".traj")           ? "trajectory:" + log
+                                            : "playback:" + log;
+}
+
+// Every --every-th frame staged as DIR/frame_NNNNN.png and, with --contact-sheet, its labelled
+// thumbnail kept for the sheet.
+struct FrameSink {
+  const ReplayArgs& a;
+  OutputSet& outputs;
+  std::vector<Image> thumbs;
+  std::vector<std::string> labels;
+  int written = 0;
+
+  Status take(int i, double t, const HapticState& st, const Renderer& r) {
+    if (i % a.every != 0) return ok_status();
+    const Image img = r.read_color();
+    if (Status s = stage_image(outputs, frame_path(a, i), img); !s) return s;
+    ++written;
+    if (!a.sheet.empty()) {
+      char label[64];
+      std::snprintf(label, sizeof label, "%d t=%.2f s v=%.0f mm/s", i, t, glm::length(st.velocity_mm_s));
+      thumbs.push_back(thumbnail(img, 256));
+      labels.emplace_back(label);
+    }
+    return ok_status();
+  }
+  Status stage_sheet() {
+    if (a.sheet.empty()) return ok_status();
+    return stage_image(outputs, a.sheet, contact_sheet(thumbs, labels));
+  }
+};
+
+ReplayOptions replay_options(const ReplayArgs& a, const world::HapticScene& haptic_scene) {
+  ReplayOptions opt;
+  opt.fps = a.fps;
+  opt.record_path = a.record;
+  opt.haptic_scene = &haptic_scene;
+  opt.progress = !a.quiet && isatty(STDERR_FILENO);
+  return opt;
+}
+
+// A button's "scene:FILE" action: the new scene's renderer, and its materials for the vibration.
+std::function<Result<SceneSwitch>(const std::string&)> scene_switcher(const ReplayArgs& a, ReplayGl& gl_state, int frames,
+                                                                      PointerLogDevice* pointer,
+                                                                      std::optional<vibration::SignalTrack>& vib) {
+  return [&a, &gl_state, frames, pointer, &vib](const std::string& path) -> Result<SceneSwitch> {
+    auto next = switch_scene(a, gl_state, frames, pointer, path);
+    if (next && vib) vib->set_model(std::make_shared<const vibration::SignalModel>(next->renderer->scene()));
+    return next;
+  };
+}
+
+// --vibration: every tick through the signal.
+void track_vibration(const ReplayArgs& a, const Scene& scene, std::optional<vibration::SignalTrack>& vib,
+                     ReplayOptions& opt) {
+  if (a.vibration.empty()) return;
+  vib.emplace(std::make_shared<const vibration::SignalModel>(scene));
+  opt.on_tick = [&vib](const TickSample& t) { vib->add_tick(t); };
+}
+
+// After the session: the event log (and its sound track), the vibration track and the contact
+// sheet join the frames, and all of them appear together.
+Status publish(const ReplayArgs& a, OutputSet& outputs, ReplayEvents& events,
+               const std::optional<vibration::SignalTrack>& vib, double duration_s, FrameSink& frames) {
+  if (Status s = events.finish(outputs); !s) return s;
+  if (vib) {
+    auto write = [&](const std::string& file) { return vibration::write_track_wav(file, *vib, duration_s, 48000); };
+    if (Status s = outputs.stage(a.vibration, write); !s) return s;
+  }
+  if (Status s = frames.stage_sheet(); !s) return s;
+  return outputs.publish();
+}
+
 int replay(const cli::Command& cmd, const ReplayArgs& a) {
   if (a.log.empty() || a.out_dir.empty())
     return cmd.usage_error(make_error("--log FILE and --out DIR are required (see --help)"));
   auto fail = [&cmd](const Error& e) { return cmd.fail(e); };
   OutputSet outputs;
   if (Status s = add_outputs(a, outputs); !s) return fail(s.error());
-  // No KIND: a .traj file is a scripted trajectory (interpolated; read as a recording its
-  // keyframes would jump and be rejected), anything else a recording.
-  const std::string spec = a.log.find(':') != std::string::npos ? a.log
-                           : a.log.ends_with(".traj")              ? "trajectory:" + a.log
-                                                                   : "playback:" + a.log;
-  auto device = open_device_log(spec);
+  auto device = open_device_log(device_spec(a.log));
   if (!device) return fail(device.error());
   auto scene = cli::load_scene_or_default(a.scene);
   if (!scene) return cmd.fail(scene.error(), cli::scene_exit_code(scene.error()));
@@ -180,56 +253,23 @@ int replay(const cli::Command& cmd, const ReplayArgs& a) {
   Renderer* renderer = gl_state->renderer.get();
   // A scripted pointer moves in a window the size of the image, through the scene's camera.
   if (device->pointer) device->pointer->set_view(pointer_view(*renderer, pointer_plane(*renderer)));
-  ReplayOptions opt;
-  opt.fps = a.fps;
-  opt.record_path = a.record;
-  opt.haptic_scene = &haptic_scene.value();
-  opt.progress = !a.quiet && isatty(STDERR_FILENO);
+  ReplayOptions opt = replay_options(a, haptic_scene.value());
   auto events = ReplayEvents::open(events_desc(a, device->device->duration_s()));
   if (!events) return fail(events.error());
   opt.on_event = [&ev = *events.value()](const HapticEvent& e) { ev.dispatcher().dispatch(e); };
-  // --vibration: every tick through the signal; a button's scene switch hands it the new scene.
-  std::optional<vibration::SignalTrack> vib;
-  if (!a.vibration.empty()) {
-    vib.emplace(std::make_shared<const vibration::SignalModel>(scene.value()));
-    opt.on_tick = [&vib](const TickSample& t) { vib->add_tick(t); };
-  }
-  opt.switch_scene = [&](const std::string& path) -> Result<SceneSwitch> {
-    auto next = switch_scene(a, gl_state.value(), frames, device->pointer, path);
-    if (next && vib) vib->set_model(std::make_shared<const vibration::SignalModel>(next->renderer->scene()));
-    return next;
-  };
-  std::vector<Image> thumbs;
-  std::vector<std::string> labels;
-  int written = 0;
-  auto sink = [&](int i, double t, const HapticState& st, const Renderer& r) -> Status {
-    if (i % a.every != 0) return ok_status();
-    const Image img = r.read_color();
-    if (Status s = stage_image(outputs, frame_path(a, i), img); !s) return s;
-    ++written;
-    if (!a.sheet.empty()) {
-      char label[64];
-      std::snprintf(label, sizeof label, "%d t=%.2f s v=%.0f mm/s", i, t, glm::length(st.velocity_mm_s));
-      thumbs.push_back(thumbnail(img, 256));
-      labels.emplace_back(label);
-    }
-    return ok_status();
-  };
+  std::optional<vibration::SignalTrack> vib;  // a button's scene switch hands it the new scene
+  track_vibration(a, scene.value(), vib, opt);
+  opt.switch_scene = scene_switcher(a, gl_state.value(), frames, device->pointer, vib);
+  FrameSink frames_out{a, outputs, {}, {}, 0};
+  auto sink = [&](int i, double t, const HapticState& st, const Renderer& r) { return frames_out.take(i, t, st, r); };
   auto result = replay_session(*renderer, *device->device, opt, sink);
   if (!result) return fail(result.error());
-  if (Status s = events.value()->finish(outputs); !s) return fail(s.error());
-  if (vib) {
-    const double duration = device->device->duration_s();
-    auto write = [&](const std::string& file) { return vibration::write_track_wav(file, *vib, duration, 48000); };
-    if (Status s = outputs.stage(a.vibration, write); !s) return fail(s.error());
-  }
-  if (!a.sheet.empty())
-    if (Status s = stage_image(outputs, a.sheet, contact_sheet(thumbs, labels)); !s) return fail(s.error());
-  if (Status s = outputs.publish(); !s) return fail(s.error());
+  if (Status s = publish(a, outputs, *events.value(), vib, device->device->duration_s(), frames_out); !s)
+    return fail(s.error());
   if (!a.quiet)
     std::printf("replayed %d frames at %g fps, wrote %d images to %s; rejected device samples: %llu; "
                 "events: %zu\n",
-                result->frames, a.fps, written, a.out_dir.c_str(),
+                result->frames, a.fps, frames_out.written, a.out_dir.c_str(),
                 static_cast<unsigned long long>(result->rejected.total()), events.value()->count());
   return cli::kExitOk;
 }
