@@ -45,6 +45,31 @@ struct BenchArgs {
   bool texture_filter = false;  // only the Gabor texture's filtering: time vs error; prints
 };
 
+// The measurements that replace the sweep, one flag each.
+void declare_modes(CLI::App& app, BenchArgs& a) {
+  app.add_flag("--first-image", a.first_image,
+               "only time the first image as a user meets it: every shipped scene's one-frame `render` process "
+               "and a 301-frame `replay`, under auto, naive and baked (CPU seconds, ratios; --out-dir gets "
+               "first_image.md; about 10 minutes on 2 cores)");
+  cli::add_int(app, "--reps", "N", a.reps, 1, 99,
+               "--first-image: alternating runs per scene and strategy, the median is reported (default 3)");
+  app.add_flag("--shadow-cost", a.shadow_cost,
+               "only measure the pseudo-shadow frame of the default scene against the plain shading of the "
+               "same view (probe out of reach) at 512x512 and 1024x1024, and print the table; writes no files");
+  app.add_flag("--shadow-distance", a.shadow_distance,
+               "only measure render.shadow_distance = surface_normal (closed form, and marched through the "
+               "depth map) against reference_plane on the curved shipped scenes (Suzanne, the torus) at 512x512 "
+               "and 1024x1024: frame times and how far each distance is off; prints the table, writes no files");
+  app.add_flag("--lut-cost", a.lut_cost,
+               "only measure the default scene's frame with its intensity curve read from a lookup table "
+               "(textures/intensity_thesis.lut) against the formula at 512x512 and 1024x1024, and print the "
+               "table; writes no files");
+  app.add_flag("--texture-filter", a.texture_filter,
+               "only measure the Gabor texture's filtering (gabor_filter = none / analytic, naive and baked) at "
+               "--size, at most 256 (the reference renders 8x that per side), top-down and at a 15-degree grazing "
+               "view: frame time against the error from an 8x8 supersampled reference; prints the table");
+}
+
 void declare(cli::Command& cmd, BenchArgs& a) {
   CLI::App& app = cmd.app();
   app.add_option_function<std::string>(
@@ -69,27 +94,7 @@ void declare(cli::Command& cmd, BenchArgs& a) {
                "only draw bench.png and bench_ratios.png again from the bench.csv already in --out-dir "
                "(no sweep; needs gnuplot)")
       ->group(cli::kOutputGroup);
-  app.add_flag("--first-image", a.first_image,
-               "only time the first image as a user meets it: every shipped scene's one-frame `render` process "
-               "and a 301-frame `replay`, under auto, naive and baked (CPU seconds, ratios; --out-dir gets "
-               "first_image.md; about 10 minutes on 2 cores)");
-  cli::add_int(app, "--reps", "N", a.reps, 1, 99,
-               "--first-image: alternating runs per scene and strategy, the median is reported (default 3)");
-  app.add_flag("--shadow-cost", a.shadow_cost,
-               "only measure the pseudo-shadow frame of the default scene against the plain shading of the "
-               "same view (probe out of reach) at 512x512 and 1024x1024, and print the table; writes no files");
-  app.add_flag("--shadow-distance", a.shadow_distance,
-               "only measure render.shadow_distance = surface_normal (closed form, and marched through the "
-               "depth map) against reference_plane on the curved shipped scenes (Suzanne, the torus) at 512x512 "
-               "and 1024x1024: frame times and how far each distance is off; prints the table, writes no files");
-  app.add_flag("--lut-cost", a.lut_cost,
-               "only measure the default scene's frame with its intensity curve read from a lookup table "
-               "(textures/intensity_thesis.lut) against the formula at 512x512 and 1024x1024, and print the "
-               "table; writes no files");
-  app.add_flag("--texture-filter", a.texture_filter,
-               "only measure the Gabor texture's filtering (gabor_filter = none / analytic, naive and baked) at "
-               "--size, at most 256 (the reference renders 8x that per side), top-down and at a 15-degree grazing "
-               "view: frame time against the error from an 8x8 supersampled reference; prints the table");
+  declare_modes(app, a);
   cli::add_quiet_option(app, a.quiet);
 }
 

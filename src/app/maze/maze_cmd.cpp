@@ -50,6 +50,29 @@ struct MazeArgs {
   cli::LiveLoopArgs live;  // the window's haptic thread and renderer: --render-threads, --spare-cpu
 };
 
+// The headless session's frames and pace.
+void declare_headless(CLI::App& app, MazeArgs& a) {
+  cli::add_int(app, "--every", "N", a.every, 0LL, 1'000'000LL,
+               "headless: also write every N-th frame as DIR/frames/frame_NNNNN.png (default 0: none)");
+  cli::add_positive(app, "--fps", "F", a.fps, 1000.0, "30", "headless frames per second of session time (default 30)");
+  cli::add_positive(app, "--pace", "X", a.pace, 1000.0, "1",
+                    "headless: run the session at X times real time (1: as long as it lasts live; default: "
+                    "as fast as it computes)");
+}
+
+// The live window's own options (app/maze/maze_window.h).
+void declare_window(CLI::App& app, MazeArgs& a) {
+  app.add_flag("--window", a.window, "open the window also for a trajectory:/playback: device (played in real time)");
+  cli::add_positive(app, "--clutch", "MM", a.clutch_mm, 1000.0, "6",
+                    "window: a hand run on past a wall by more than MM along the floor is put back under the probe, "
+                    "logged as `clutch` (default 6, the probe's radius)");
+  app.add_flag("--no-clutch", a.no_clutch, "window: never put the hand back (it stays where the mouse took it)");
+  app.add_flag("--hide-hand", a.hide_hand, "window: no faint ring where the hand is while a wall holds the probe");
+  app.add_flag("--practice", a.practice,
+               "window, mouse or gamepad: one unscored practice pass after the instructions, on a route of its own "
+               "(another seed), logged to DIR/practice/; Space or Enter ends it early");
+}
+
 void declare(cli::Command& cmd, MazeArgs& a) {
   CLI::App& app = cmd.app();
   app.add_option("--maze", a.maze, "the maze description (default: the shipped scenes/maze/maze.toml)")->type_name("FILE");
@@ -68,12 +91,7 @@ void declare(cli::Command& cmd, MazeArgs& a) {
                   "where the log, device stream and scores go (default maze-ID); it must exist, or only its last "
                   "component may be missing (it is created). The log is written as the session goes, whole lines, "
                   "each synced: a killed session leaves every line written so far");
-  cli::add_int(app, "--every", "N", a.every, 0LL, 1'000'000LL,
-               "headless: also write every N-th frame as DIR/frames/frame_NNNNN.png (default 0: none)");
-  cli::add_positive(app, "--fps", "F", a.fps, 1000.0, "30", "headless frames per second of session time (default 30)");
-  cli::add_positive(app, "--pace", "X", a.pace, 1000.0, "1",
-                    "headless: run the session at X times real time (1: as long as it lasts live; default: "
-                    "as fast as it computes)");
+  declare_headless(app, a);
   cli::add_output(app, "--write-scene", a.write_scene, "FILE",
                   "write pass 1's generated scene for --seed and --cues (a scene file `run`, `render` and `replay` "
                   "take) and exit without a session");
@@ -88,15 +106,7 @@ void declare(cli::Command& cmd, MazeArgs& a) {
                  "participant, seed, condition and maze from its log, which gets a `resumed` line; the device "
                  "stream goes to DIR/device_resumed_N.log. A log device is played on from where the session stopped")
       ->type_name("DIR");
-  app.add_flag("--window", a.window, "open the window also for a trajectory:/playback: device (played in real time)");
-  cli::add_positive(app, "--clutch", "MM", a.clutch_mm, 1000.0, "6",
-                    "window: a hand run on past a wall by more than MM along the floor is put back under the probe, "
-                    "logged as `clutch` (default 6, the probe's radius)");
-  app.add_flag("--no-clutch", a.no_clutch, "window: never put the hand back (it stays where the mouse took it)");
-  app.add_flag("--hide-hand", a.hide_hand, "window: no faint ring where the hand is while a wall holds the probe");
-  app.add_flag("--practice", a.practice,
-               "window, mouse or gamepad: one unscored practice pass after the instructions, on a route of its own "
-               "(another seed), logged to DIR/practice/; Space or Enter ends it early");
+  declare_window(app, a);
   cli::add_gl_options(app, a.gl_opts);
   cli::add_live_loop_options(app, a.live);
   cli::add_quiet_option(app, a.quiet);
