@@ -5,18 +5,18 @@
 #include <span>
 #include <string_view>
 
-#include "app/compare_cmd.h"
+#include "app/commands/compare_cmd.h"
 
 namespace ps {
 
-int run_render(int argc, char** argv);         // src/app/render_cmd.cpp
-int run_window(int argc, char** argv);         // `run`, src/app/run_cmd.cpp
-int run_replay(int argc, char** argv);         // src/app/replay_cmd.cpp
-int run_bench_haptics(int argc, char** argv);  // src/app/bench_haptics_cmd.cpp
-int run_bench(int argc, char** argv);          // src/app/bench_cmd.cpp
-int run_tune(int argc, char** argv);           // src/app/tune_cmd.cpp
-int run_maze(int argc, char** argv);           // src/app/maze_cmd.cpp
-int run_calibrate(int argc, char** argv);      // src/app/calibrate_cmd.cpp
+int run_render(int argc, char** argv);         // src/app/commands/render_cmd.cpp
+int run_window(int argc, char** argv);         // `run`, src/app/commands/run_cmd.cpp
+int run_replay(int argc, char** argv);         // src/app/commands/replay_cmd.cpp
+int run_bench_haptics(int argc, char** argv);  // src/app/bench/bench_haptics_cmd.cpp
+int run_bench(int argc, char** argv);          // src/app/bench/bench_cmd.cpp
+int run_tune(int argc, char** argv);           // src/app/commands/tune_cmd.cpp
+int run_maze(int argc, char** argv);           // src/app/maze/maze_cmd.cpp
+int run_calibrate(int argc, char** argv);      // src/app/calibrate/calibrate_cmd.cpp
 
 struct CommandInfo {
   std::string_view name;

@@ -5,7 +5,7 @@
 #include <string_view>
 #include <vector>
 
-#include "app/cli.h"
+#include "app/cli/cli.h"
 #include "app/commands.h"
 
 namespace {

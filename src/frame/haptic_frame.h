@@ -1,5 +1,5 @@
 // The step from the haptic loop's state to a frame (render/frame_input.h): one function for every
-// session that draws one: run, replay and bench-haptics (app/session.h drive_frame), the maze's
+// session that draws one: run, replay and bench-haptics (app/session/session.h drive_frame), the maze's
 // window and its headless frames (maze/maze_frames.h).
 #pragma once
 

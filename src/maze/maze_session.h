@@ -60,7 +60,7 @@ using ScoreFn = std::function<Status(const PassScore&)>;
 Result<std::shared_ptr<const world::HapticScene>> build_haptic(const MazeScene& scene);
 
 // What a session does with each tick of the haptic loop, whoever drives it: run_session() below
-// with each tick's state, the window (app/maze_window.cpp) with each tick's TickSample, drained
+// with each tick's state, the window (app/maze/maze_window.cpp) with each tick's TickSample, drained
 // once per frame (fed only the newest state of each frame, the tracker missed a room the proxy
 // crossed between two slow frames: 0 passes under load). Owns the log, the tracker and the scene
 // of the pass in progress.

@@ -1,12 +1,12 @@
-// The data shaping behind `bench`'s plots (app/bench_plot.h): CSV reading, panels, short
+// The data shaping behind `bench`'s plots (app/bench/bench_plot.h): CSV reading, panels, short
 // labels, axis choice, label placement and the strategy speed-ups. No GL, no gnuplot.
-#include "app/bench_plot.h"
+#include "app/bench/bench_plot.h"
 
 #include <gtest/gtest.h>
 
 #include <cmath>
 
-#include "app/bench_report.h"
+#include "app/bench/bench_report.h"
 
 namespace ps::bench {
 namespace {

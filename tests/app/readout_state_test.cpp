@@ -1,13 +1,13 @@
-// The probe readout's state machine (app/readout_state.h), the readouts log's JSON line
-// (app/readouts_log.h) and the surface under the pointer (app/free_height.h). No GL, no window.
+// The probe readout's state machine (app/window/readout_state.h), the readouts log's JSON line
+// (app/window/readouts_log.h) and the surface under the pointer (app/session/free_height.h). No GL, no window.
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <string>
 
-#include "app/free_height.h"
-#include "app/readout_state.h"
-#include "app/readouts_log.h"
+#include "app/session/free_height.h"
+#include "app/window/readout_state.h"
+#include "app/window/readouts_log.h"
 #include "scene/scene_io.h"
 #include "world/haptic_scene.h"
 

@@ -12,7 +12,7 @@
 #include <cstdlib>
 #include <optional>
 
-#include "app/tune_panel.h"
+#include "app/window/tune_panel.h"
 #include "support/gl_test.h"
 #include "tune/tune_session.h"
 

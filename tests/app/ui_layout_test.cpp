@@ -1,6 +1,6 @@
 // The window overlays of `run` without a window: the shadow's bounding box measured on AOV
 // pixels, where the panel, the readouts and the help go around it, the readout text and the
-// key table (app/ui_layout.h, app/hud.h, app/run_keys.h).
+// key table (app/window/ui_layout.h, app/window/hud.h, app/window/run_keys.h).
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -9,9 +9,9 @@
 #include <limits>
 #include <string>
 
-#include "app/hud.h"
-#include "app/run_keys.h"
-#include "app/ui_layout.h"
+#include "app/window/hud.h"
+#include "app/window/run_keys.h"
+#include "app/window/ui_layout.h"
 
 namespace ps {
 namespace {
@@ -262,7 +262,7 @@ TEST(HudTest, ButtonAndFlagsShowWhenTheSceneHasThem) {
 }
 
 TEST(RunKeysTest, EveryKeyOfTheWindowIsInTheTableOnce) {
-  // The bindings of app/window_input.cpp and the mouse device, by the words the table uses.
+  // The bindings of app/window/window_input.cpp and the mouse device, by the words the table uses.
   for (const char* keys : {"mouse", "Shift+scroll", "PgUp / PgDn", "right drag", "scroll", "C, Shift+C", "Bksp", "Home",
                            "1-3 / Shift", "4-6 / Shift",
                            "M", "P / D", "S", "F1", "H, ?", "Esc, Q"}) {

@@ -1,16 +1,16 @@
 // What a person with a mouse meets in `run`'s window, without a window (issue 27 §3, §5): the
 // buttons' rectangles and labels on screen, text overlays kept off them, a panel that stays put
 // while the pointer comes for it, and panel sliders that cannot offer a value the scene format
-// refuses (app/button_overlay.h, app/ui_layout.h, app/panel_links.h).
+// refuses (app/window/button_overlay.h, app/window/ui_layout.h, app/window/panel_links.h).
 #include <gtest/gtest.h>
 
 #include <cstdio>
 #include <string>
 #include <vector>
 
-#include "app/button_overlay.h"
-#include "app/panel_links.h"
-#include "app/ui_layout.h"
+#include "app/window/button_overlay.h"
+#include "app/window/panel_links.h"
+#include "app/window/ui_layout.h"
 #include "devices/pointer_map.h"
 #include "scene/camera.h"
 #include "scene/scene_io.h"

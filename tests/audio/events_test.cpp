@@ -8,9 +8,9 @@
 
 #include <nlohmann/json.hpp>
 
-#include "app/event_dispatch.h"
-#include "app/event_log.h"
-#include "app/replay_events.h"
+#include "app/session/event_dispatch.h"
+#include "app/session/event_log.h"
+#include "app/session/replay_events.h"
 #include "audio/live_audio.h"
 #include "audio/wav_reader.h"
 

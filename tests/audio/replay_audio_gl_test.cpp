@@ -10,8 +10,8 @@
 
 #include <nlohmann/json.hpp>
 
-#include "app/replay_events.h"
-#include "app/session.h"
+#include "app/session/replay_events.h"
+#include "app/session/session.h"
 #include "audio/wav_reader.h"
 #include "scene/scene_io.h"
 #include "support/gl_test.h"

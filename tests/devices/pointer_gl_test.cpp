@@ -9,7 +9,7 @@
 #include <string>
 #include <vector>
 
-#include "app/session.h"
+#include "app/session/session.h"
 #include "devices/sample_log.h"
 #include "scene/scene_io.h"
 #include "support/gl_test.h"

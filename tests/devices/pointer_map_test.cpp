@@ -10,7 +10,7 @@
 #include <limits>
 #include <vector>
 
-#include "app/window_input.h"
+#include "app/window/window_input.h"
 #include "devices/pointer_map.h"
 #include "devices/sample_log.h"
 

@@ -4,7 +4,7 @@
 #include <GLFW/glfw3.h>
 #include <gtest/gtest.h>
 
-#include "app/window_input.h"
+#include "app/window/window_input.h"
 #include "scene/scene_io.h"
 
 namespace ps {

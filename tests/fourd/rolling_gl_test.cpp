@@ -9,7 +9,7 @@
 #include <cmath>
 #include <cstdio>
 
-#include "app/session.h"
+#include "app/session/session.h"
 #include "devices/pointer_map.h"
 #include "devices/sample_log.h"
 #include "scene/scene_io.h"

@@ -3,7 +3,7 @@
 // gain > 0.5 from the renderer's per-frame stats), where the thesis's 250 Hz curve gave ~0.01.
 #include <gtest/gtest.h>
 
-#include "app/session.h"
+#include "app/session/session.h"
 #include "devices/sample_log.h"
 #include "haptics/screen_scale.h"
 #include "scene/scene_io.h"

@@ -6,7 +6,7 @@
 #include <filesystem>
 #include <vector>
 
-#include "app/session.h"
+#include "app/session/session.h"
 #include "devices/sample_log.h"
 #include "scene/scene_io.h"
 #include "support/gl_test.h"

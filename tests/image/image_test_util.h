@@ -7,7 +7,7 @@
 
 #include <gtest/gtest.h>
 
-#include "app/compare_cmd.h"
+#include "app/commands/compare_cmd.h"
 #include "image/image.h"
 
 namespace ps::test {

@@ -76,7 +76,7 @@ struct PairCorrelation {
   double r() const { return sum_pq / std::sqrt(sum_pp * sum_qq); }
 };
 
-GaborParams correlation_material() {  // the bench scene's material (src/app/bench_sweep.cpp)
+GaborParams correlation_material() {  // the bench scene's material (src/app/bench/bench_sweep.cpp)
   GaborParams g;
   g.lambda_min_mm = 0.8;
   g.lambda_max_mm = 2.0;

@@ -86,7 +86,7 @@ TEST(GaborTest, VarianceMatchesAnalyticSigma) {
 namespace ps {
 namespace {
 
-GaborParams bench_like_material() {  // the bench scene's material (src/app/bench_sweep.cpp)
+GaborParams bench_like_material() {  // the bench scene's material (src/app/bench/bench_sweep.cpp)
   GaborParams g;
   g.lambda_min_mm = 0.8;
   g.lambda_max_mm = 2.0;

@@ -5,7 +5,7 @@
 // velocity), silent again once lifted.
 #include <gtest/gtest.h>
 
-#include "app/session.h"
+#include "app/session/session.h"
 #include "haptics/haptic_loop.h"
 #include "scene/scene_io.h"
 #include "vibration/signal.h"

@@ -10,7 +10,7 @@
 #include <cstdio>
 #include <vector>
 
-#include "app/session.h"
+#include "app/session/session.h"
 #include "devices/pointer_map.h"
 #include "devices/sample_log.h"
 #include "scene/scene_io.h"

@@ -12,7 +12,7 @@
 #include <optional>
 #include <random>
 
-#include "app/session.h"
+#include "app/session/session.h"
 #include "devices/sample_log.h"
 #include "prepare/prepare.h"
 #include "scene/scene_io.h"

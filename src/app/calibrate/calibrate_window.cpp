@@ -1,0 +1,207 @@
+#include "app/calibrate/calibrate_window.h"
+
+#define GLFW_INCLUDE_NONE
+#include <GLFW/glfw3.h>
+#include <imgui.h>
+
+#include <backends/imgui_impl_glfw.h>
+#include <backends/imgui_impl_opengl3.h>
+
+#include "app/window/imgui_scope.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <cstdio>
+#include <memory>
+#include <string>
+
+#include "core/file_io.h"
+#include "gl/context.h"
+#include "render/renderer.h"
+
+namespace ps {
+
+namespace {
+
+constexpr int kSide = 512;              // each stimulus, pixels
+constexpr double kProbeRadiusMm = 8.0;  // the probe: a sphere as in the thesis's figures
+constexpr double kSpeedGapMm = 1.0;     // speed trials: the probe this far above (texture shown)
+constexpr double kWrapMm = 1000.0;      // speed trials: the probe (and the view with it) starts over after this
+constexpr double kPlaneMm = 4000.0;     // the plane: wide enough for kWrapMm either side
+// Between trials: 0.3 s of black, so two identical trials in a row are seen as two (and the eye
+// leaves the last pair before the next).
+constexpr double kBlankS = 0.3;
+
+// A plane of `m` seen from above (orthographic, 40 mm across) under a sphere probe.
+Scene stimulus_scene(const Scene& from, const Material& m) {
+  Scene s;
+  s.path = from.path;
+  s.light = from.light;
+  s.camera.projection = Projection::kOrthographic;
+  s.camera.position = {0.0, 0.0, 100.0};
+  s.camera.target = {0.0, 0.0, 0.0};
+  s.camera.up = {0.0, 1.0, 0.0};
+  s.camera.ortho_height_mm = 40.0;
+  s.render = from.render;
+  s.render.width = s.render.height = kSide;
+  s.materials.push_back(m);
+  s.materials[0].resistance = 0.0;  // the probe stays where it is put
+  Surface p;
+  p.type = SurfaceType::kPlane;
+  p.material = m.name;
+  p.size_mm = {kPlaneMm, kPlaneMm};
+  p.resolution = 4;
+  s.surfaces.push_back(p);
+  s.probe.shape = ProbeShape::kSphere;
+  s.probe.radius_mm = kProbeRadiusMm;
+  s.probe.position = {0.0, 0.0, kProbeRadiusMm + 5.0};
+  return s;
+}
+
+
+// The arrow presses since the last frame, from GLFW's key callback: a frame takes ~0.1 s on
+// llvmpipe, longer than a quick key press, so polling the key state would miss answers.
+struct Answers {
+  std::vector<bool> left;  // in the order pressed
+  bool quit = false;       // Esc or Q
+  static void on_key(GLFWwindow* win, int key, int /*scancode*/, int action, int /*mods*/) {
+    if (action != GLFW_PRESS) return;
+    Answers& a = *static_cast<Answers*>(glfwGetWindowUserPointer(win));
+    if (key == GLFW_KEY_ESCAPE || key == GLFW_KEY_Q) a.quit = true;
+    if (key == GLFW_KEY_LEFT || key == GLFW_KEY_RIGHT) a.left.push_back(key == GLFW_KEY_LEFT);
+  }
+};
+
+// The probe of one stimulus `t_s` seconds into the trial: over the plane at the distance, or
+// gliding along +x at the speed with the view following it, so the shadow stays in the middle and
+// the texture it reveals slides through it (the texture is what moves on screen).
+FrameInput placed_probe(calibrate::CurveKind kind, double x, double t_s) {
+  FrameInput in;
+  if (kind == calibrate::CurveKind::kDistance) {
+    in.probe = ProbeMotion{{0.0, 0.0, kProbeRadiusMm + x}, {0.0, 0.0, 0.0}};
+    return in;
+  }
+  const double along = std::fmod(x * t_s, kWrapMm);
+  in.probe = ProbeMotion{{along, 0.0, kProbeRadiusMm + kSpeedGapMm}, {x, 0.0, 0.0}};
+  in.view = ViewPose{{along, 0.0, 0.0}};
+  return in;
+}
+
+// Both stimuli into one RGBA8 image, left then right, bottom row first (GL's order).
+Status draw_pair(Renderer& left, Renderer& right, const FrameInput (&input)[2], std::vector<std::uint8_t>& rgba) {
+  rgba.assign(static_cast<std::size_t>(2 * kSide) * kSide * 4, 255);
+  for (int side = 0; side < 2; ++side) {
+    Renderer& r = side == 0 ? left : right;
+    if (auto f = r.render(input[side]); !f) return f.error();
+    const Image img = r.read_color();  // top row first
+    for (int y = 0; y < kSide; ++y)
+      for (int x = 0; x < kSide; ++x)
+        for (int c = 0; c < 3; ++c)
+          rgba[(static_cast<std::size_t>(kSide - 1 - y) * 2 * kSide + side * kSide + x) * 4 + c] =
+              static_cast<std::uint8_t>(std::lround(255.0f * img.at(x, y, c)));
+  }
+  return ok_status();
+}
+
+// One frame: the pair of stimuli across the window (the texture's first row is the bottom one,
+// so v is flipped; none: a blank between trials, or the first frame while the stimuli are
+// prepared) and the question and the progress above it.
+void present(GLFWwindow* win, const gl::Texture* pair, const char* question, const std::string& progress) {
+  int fw = 0, fh = 0;
+  glfwGetFramebufferSize(win, &fw, &fh);
+  glBindFramebuffer(GL_FRAMEBUFFER, 0);
+  glViewport(0, 0, fw, fh);
+  glClearColor(0.0f, 0.0f, 0.0f, 1.0f);
+  glClear(GL_COLOR_BUFFER_BIT);
+  ImGui_ImplOpenGL3_NewFrame();
+  ImGui_ImplGlfw_NewFrame();
+  ImGui::NewFrame();
+  if (pair)
+    ImGui::GetBackgroundDrawList()->AddImage(reinterpret_cast<ImTextureID>(static_cast<std::intptr_t>(pair->id())),
+                                             ImVec2(0, 0), ImGui::GetIO().DisplaySize, ImVec2(0, 1), ImVec2(1, 0));
+  ImGui::SetNextWindowPos(ImVec2(10, 10));
+  ImGui::SetNextWindowBgAlpha(0.7f);
+  ImGui::Begin("question", nullptr, ImGuiWindowFlags_NoDecoration | ImGuiWindowFlags_AlwaysAutoResize | ImGuiWindowFlags_NoInputs);
+  ImGui::Text("%s  Left / Right arrow.  Esc stops (every answer is kept).", question);
+  ImGui::TextUnformatted(progress.c_str());
+  ImGui::End();
+  ImGui::Render();
+  ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
+  glfwSwapBuffers(win);
+}
+
+// "trial 37 of about 230; staircases done: 1 of 4".
+std::string progress_text(const calibrate::Calibration& cal) {
+  const std::vector<bool> f = cal.finished();
+  char buf[128];
+  std::snprintf(buf, sizeof buf, "trial %zu of about %d; staircases done: %zu of %zu", cal.trials().size() + 1,
+                cal.expected_trials(), static_cast<std::size_t>(std::count(f.begin(), f.end(), true)), f.size());
+  return buf;
+}
+
+}  // namespace
+
+Status run_calibrate_window(calibrate::Calibration& cal, const CalibrateWindowParams& p) {
+  gl::ContextDesc desc;
+  desc.backend = gl::Backend::kGlfw;
+  desc.window_width = 2 * kSide;
+  desc.window_height = kSide;
+  desc.window_title = "pseudoshadow calibrate";
+  auto ctx = gl::create_context(desc);
+  if (!ctx) return ctx.error();
+  GLFWwindow* win = ctx.value()->window();
+  const Scene s = stimulus_scene(p.scene, p.material);
+  auto left = Renderer::create(s, {});
+  if (!left) return left.error();
+  auto right = Renderer::create(s, {});
+  if (!right) return right.error();
+  gl::Texture pair = gl::make_texture_2d(2 * kSide, kSide, GL_RGBA8);
+  Answers answers;
+  glfwSetWindowUserPointer(win, &answers);
+  glfwSetKeyCallback(win, &Answers::on_key);  // before ImGui, which chains to it
+  ImGuiScope imgui(win);
+  std::vector<std::uint8_t> rgba;
+  const calibrate::CurveKind kind = cal.spec().kind;
+  const char* question = kind == calibrate::CurveKind::kDistance ? "Which pseudo-shadow is closer?"
+                                                                 : "Which texture is moving faster?";
+  // The first frame says what is coming while the first stimuli are prepared (the first tile
+  // bakes: seconds on a software renderer).
+  present(win, nullptr, question, progress_text(cal) + "  (preparing the stimuli...)");
+  double trial_start = glfwGetTime(), blank_until = 0.0;
+  std::size_t shown = static_cast<std::size_t>(-1);  // the last trial drawn (index), none yet
+  while (!cal.done() && !glfwWindowShouldClose(win)) {
+    glfwPollEvents();
+    if (answers.quit) break;
+    if (glfwGetTime() < blank_until) {  // a blank between trials: the next one is seen to be new
+      answers.left.clear();             // a press now would answer a trial not yet shown
+      present(win, nullptr, question, progress_text(cal));
+      trial_start = glfwGetTime();
+      continue;
+    }
+    // Each press answers the trial on screen when it was pressed (the first press; presses that
+    // came in the same frame after it would answer a trial never seen, so they are dropped). A
+    // script answers a trial after its first frame.
+    if (shown != cal.trials().size()) answers.left.clear();  // nothing on screen yet to answer
+    if (p.script && shown == cal.trials().size()) answers.left.assign(1, p.script(cal.current()));
+    if (!answers.left.empty()) {
+      cal.answer(answers.left.front());
+      answers.left.clear();
+      if (Status st = write_file_atomic(p.log_path, calibrate::format_trial_log(cal)); !st) return st;
+      if (cal.done()) break;
+      blank_until = glfwGetTime() + kBlankS;
+      continue;
+    }
+    const calibrate::Trial& t = cal.current();
+    const double now = glfwGetTime() - trial_start;
+    const FrameInput input[2] = {placed_probe(kind, t.comparison_left ? t.comparison : t.reference, now),
+                                 placed_probe(kind, t.comparison_left ? t.reference : t.comparison, now)};
+    if (Status st = draw_pair(*left.value(), *right.value(), input, rgba); !st) return st;
+    glTextureSubImage2D(pair.id(), 0, 0, 0, 2 * kSide, kSide, GL_RGBA, GL_UNSIGNED_BYTE, rgba.data());
+    present(win, &pair, question, progress_text(cal));
+    shown = cal.trials().size();
+  }
+  return ok_status();
+}
+
+}  // namespace ps

@@ -1,0 +1,227 @@
+// `pseudoshadow run`: the interactive window. Main thread: GLFW events, device polling (mouse/
+// gamepad), rendering through the same Renderer as headless, blit to the window, readouts, help
+// and parameter panel over it (app/window/hud.h), a short summary in the title. Haptic thread:
+// HapticLoop at 1 kHz. They meet only in the loop's two Snapshots.
+#define GLFW_INCLUDE_NONE
+#include <GLFW/glfw3.h>
+
+#include <chrono>
+#include <cstdio>
+#include <thread>
+
+#include "app/cli/cli.h"
+#include "app/cli/cli_groups.h"
+#include "app/commands.h"
+#include "app/commands/run_live.h"
+#include "app/window/run_keys.h"
+#include "core/file_io.h"
+#include "render/present.h"
+
+namespace ps {
+
+namespace {
+
+using run_live::RunArgs;
+using run_live::Session;
+
+// The key list comes from app/window/run_keys.h (the help overlay shows the same table).
+constexpr const char* kRunNotes = R"(The probe follows the pointer: its shadow's centre sits under it, on any camera and zoom.
+Scroll raises (up) or lowers (down) it 0.5 mm per notch; PageUp/Up and PageDown/Down step it
+0.5 mm per press and repeat while held; it starts 1 mm above the surface under the pointer
+(whatever is there: a sphere, a mesh, a button's face), goes down to 4 mm into it and back to
+1 mm after a scene switch, a 4D turn, a panel edit or a reload. M captures the mouse (raw relative motion, 0.1 mm per count, where supported; M again
+puts the probe back under the pointer).
+The probe itself is hidden by default (P shows it): the pseudo-shadow is the display; when
+shown it is drawn where the haptic proxy is, after the push-out. D draws the hand's own position
+(the device) as a faint ghost: the gap to the proxy is what fields, viscosity and surfaces do
+to it. C puts an attracting charge at the probe, Shift+C removes the nearest one. S saves screenshot_NNNN.png
+(without the overlays) and screenshot_NNNN.overrides.toml (panel edits, camera, probe: `render
+--scene FILE --overrides screenshot_NNNN.overrides.toml` draws the same image).
+Saved changes to the shaders, the scene or its textures are reloaded within 0.5 s; a broken
+file keeps the last good state running and shows its file:line in the title and the console.
+A box in a corner shows frame time, haptic rate and jitter, distance, speed, penetration,
+contact, force and the scene; the title shows the scene and the distance.
+)";
+
+std::string run_footer() { return "keys and mouse:\n" + run_keys_text("  ", 1) + kRunNotes; }
+
+constexpr const char* kDescription =
+    "Opens a window and lets you move the probe over the scene with a device; the haptic loop\n"
+    "runs at 1 kHz on its own thread. Works under Xvfb (xvfb-run -a pseudoshadow run ...).";
+
+void check_device(const std::string& d) {
+  const bool log_device = d.rfind("trajectory:", 0) == 0 || d.rfind("playback:", 0) == 0 || d.rfind("pointer:", 0) == 0;
+  if (d != "mouse" && d != "gamepad" && !log_device)
+    throw cli::UsageError("--device: unknown device '" + d +
+                          "' (mouse, gamepad, trajectory:FILE, playback:FILE, pointer:FILE)");
+}
+
+// What `run` writes besides the window (and its sounds, which go with the event log).
+void declare_outputs(CLI::App& app, RunArgs& a) {
+  cli::add_output(app, "--record", a.record, "FILE",
+                  "record the device stream (replay it with `pseudoshadow replay`)");
+  cli::add_stats_option(app, a.stats_path);
+  cli::add_output(app, "--events", a.events.log_path, "FILE",
+                  "write every haptic event as a JSON line (docs/sound.md)");
+  app.add_flag("--mute", a.events.audio.mute, "no event sounds");
+  app.add_option("--audio-device", a.events.audio.device, "OpenAL output device (default: the system's default)")
+      ->type_name("NAME");
+  cli::add_output(app, "--ui-report", a.ui_report, "FILE",
+                  "at exit, write JSON with every frame's overlay, help and panel rectangles and the "
+                  "pseudo-shadow's bounding box, in window pixels");
+  cli::add_output(app, "--readouts-log", a.readouts_log, "FILE",
+                  "write one JSON line per frame: what the readouts say (state, distance, pressed depth, "
+                  "force), hand, proxy, view offset, button, flags, key presses (docs/window.md)");
+}
+
+void declare(cli::Command& cmd, RunArgs& a) {
+  CLI::App& app = cmd.app();
+  cli::add_scene_options(app, a.scene);
+  cli::add_probe_options(app, a.scene);
+  cli::add_image_options(app, a.scene);
+  app.add_option_function<std::string>("--device", [&a](const std::string& v) { check_device(v); a.device = v; },
+                                       "mouse (default) | gamepad | trajectory:FILE | playback:FILE | pointer:FILE "
+                                       "(lines 'time_s x_px y_px height_mm buttons', mapped like the mouse)")
+      ->type_name("D");
+  declare_outputs(app, a);
+  app.add_option_function<std::string>(
+         "--backend",
+         [](const std::string& v) {
+           if (v != "glfw") throw cli::UsageError("--backend: only glfw opens a window (got '" + v + "')");
+         },
+         "glfw, the only window backend")
+      ->type_name("B")
+      ->group(cli::kGlGroup);
+  app.add_flag("--show-probe", a.show_probe, "start with the probe drawn (P toggles it)");
+  app.add_flag("--show-device", a.show_device,
+               "start with the device's own position drawn faintly (D toggles it): the gap to the drawn proxy "
+               "is the pseudo-haptic feedback of fields, viscosity and surfaces");
+  app.add_flag("--panel", a.panel, "start with the parameter panel shown (F1 toggles it)");
+  app.add_flag_callback("--no-watch", [&a] { a.watch = false; },
+                        "do not reload the scene, its textures and glsl/ when they change");
+  cli::add_int(app, "--realtime", "PRIO", a.realtime, 1, 99,
+               "haptic thread SCHED_FIFO at PRIO (1..99; needs CAP_SYS_NICE), much lower jitter on a loaded machine");
+  cli::add_live_loop_options(app, a.live);
+  cli::add_int(app, "--frames", "N", a.frames, 1, 100'000'000, "quit after N frames");
+  cli::add_positive(app, "--quit-after", "S", a.quit_after_s, 1e9, "5", "quit after S seconds");
+  cli::add_quiet_option(app, a.quiet, "no summary");
+  app.footer(run_footer() + cli::kExitStatusHelp);
+}
+
+// Files are polled 5 times a second, so a saved change is on screen within ~0.2 s plus one
+// rebuild (shader compile and JIT, ~0.1-0.2 s on llvmpipe).
+constexpr double kWatchPeriodS = 0.2;
+
+// The event consumers, before the haptic thread starts. No audio device is one warning line.
+Status open_events(const RunArgs& a, Session& s) {
+  auto events = RunEvents::open(a.events);
+  if (!events) return events.error();
+  s.events = std::move(events.value());
+  if (!s.events->warning().empty()) std::fprintf(stderr, "warning: %s\n", s.events->warning().c_str());
+  s.events->dispatcher().subscribe("buttons", [&s](const HapticEvent& e) {
+    if (s.pending_scene.empty()) s.pending_scene = scene_action_of(s.tune->renderer().scene(), e);
+  });
+  return ok_status();
+}
+
+// The frame's wall time and, with a device sample in it, the latency from sample to frame.
+void count_frame(Session& s, const HapticState& st, std::chrono::steady_clock::time_point f0) {
+  const auto f1 = std::chrono::steady_clock::now();
+  s.frame_ms.push_back(std::chrono::duration<double, std::milli>(f1 - f0).count());
+  if (st.have_sample) s.latency_ms.push_back(static_cast<double>(f1.time_since_epoch().count() - st.sample_clock_ns) * 1e-6);
+}
+
+Status window_loop(const RunArgs& a, Session& s) {
+  GLFWwindow* win = s.ctx->window();
+  const auto t0 = std::chrono::steady_clock::now();
+  double last_flush = 0.0, last_watch = 0.0;
+  for (std::uint64_t frame = 0;; ++frame) {
+    const auto f0 = std::chrono::steady_clock::now();
+    const double now_s = std::chrono::duration<double>(f0 - t0).count();
+    s.now_s = now_s;
+    glfwPollEvents();
+    if (glfwWindowShouldClose(win) || s.input.quit) break;
+    if ((a.frames > 0 && static_cast<long long>(frame) >= a.frames) || (a.quit_after_s > 0 && now_s >= a.quit_after_s)) break;
+    poll_device(s, s.loop->state().read().time_s, !s.ui->panel().wants_input());
+    HapticState st;
+    if (a.watch && now_s - last_watch >= kWatchPeriodS) {
+      last_watch = now_s;
+      poll_reload(s);
+    }
+    if (Status r = drive_frame(s.tune->renderer(), *s.loop, frame, st); !r) return r;
+    if (Status r = s.events->pump(s.loop->events()); !r) return r;
+    if (!s.pending_scene.empty()) switch_scene(a, s);
+    int w = 0, h = 0;
+    glfwGetFramebufferSize(win, &w, &h);
+    present_to_default_framebuffer(s.tune->renderer(), w, h);
+    if (Status r = handle_keys(s, w, h); !r) return r;  // screenshots read GL_BACK before the swap
+    if (Status r = draw_overlays(a, s, st, frame, now_s); !r) return r;  // after the screenshots
+    if (s.tune->edits() != s.haptic_edits) {  // a panel edit may change the feel (a body's time scale)
+      s.haptic_edits = s.tune->edits();
+      reload_haptic_scene(s);
+    }
+    s.input.keys_captured = s.ui->panel().wants_keys();
+    glfwSwapBuffers(win);
+    count_frame(s, st, f0);
+    if (s.recorder && now_s - last_flush >= 1.0) {  // a crash loses at most the last second
+      if (Status r = s.recorder->flush(); !r) return r;
+      last_flush = now_s;
+    }
+  }
+  return ok_status();
+}
+
+// At exit: --stats (the renderer's last frame) and --ui-report (every frame's rectangles).
+Status write_reports(const RunArgs& a, const Session& s) {
+  if (!a.stats_path.empty()) {
+    const Renderer& r = s.tune->renderer();
+    const std::string json = stats_json(r.stats(), gl::backend_name(s.ctx->backend()), s.ctx->egl_device(), s.ctx->renderer(),
+                                        static_cast<int>(s.frame_ms.size()));
+    if (Status st = write_file_atomic(a.stats_path, json); !st) return st;
+  }
+  if (!a.ui_report.empty()) {
+    int w = 0, h = 0;
+    glfwGetWindowSize(s.ctx->window(), &w, &h);
+    if (Status st = write_file_atomic(a.ui_report, ui_report_json(w, h, s.ui_frames)); !st) return st;
+  }
+  return ok_status();
+}
+
+int run(const cli::Command& cmd, const RunArgs& a) {
+  auto scene = cli::load_scene_or_default(a.scene);
+  if (!scene) return cmd.fail(scene.error(), cli::scene_exit_code(scene.error()));
+  Session s;
+  auto live = cli::apply_live_loop(a.live);  // before the context and the haptic thread
+  if (!live) return cmd.usage_error(live.error());
+  if (Status st = open_session(a, std::move(scene.value()), s); !st) return cmd.fail(st.error());
+  if (Status st = open_events(a, s); !st) return cmd.fail(st.error());
+  if (!a.readouts_log.empty())
+    if (Status st = s.readouts_log.open(a.readouts_log); !st) return cmd.fail(st.error());
+  s.loop->start();
+  s.vibration->start();
+  // The first frame shows the device's probe, not the scene's: wait for the first tick (about
+  // 1 ms; bounded, as a gamepad may have nothing to give yet).
+  for (int i = 0; i < 100 && !s.loop->state().read().have_sample; ++i)
+    std::this_thread::sleep_for(std::chrono::milliseconds(1));
+  if (!a.quiet) std::printf("haptic thread: %s; %s\n", s.loop->scheduling().c_str(), live->report().c_str());
+  const Status looped = window_loop(a, s);
+  s.loop->stop();  // join the haptic thread before touching what it wrote
+  s.vibration->close();
+  if (s.recorder)
+    if (Status st = s.recorder->close(); !st) return cmd.fail(st.error());
+  if (Status st = s.events->close(s.loop->events()); !st) return cmd.fail(st.error());
+  if (!looped) return cmd.fail(looped.error());
+  if (Status st = s.readouts_log.close(); !st) return cmd.fail(st.error());
+  if (Status st = write_reports(a, s); !st) return cmd.fail(st.error());
+  if (!a.quiet) print_summary(s);
+  if (!a.quiet && s.vibration->active()) std::printf("%s\n", s.vibration->summary().c_str());
+  return cli::kExitOk;
+}
+
+}  // namespace
+
+int run_window(int argc, char** argv) {
+  return cli::run_command<RunArgs>(argc, argv, "run", kDescription, declare, run);
+}
+
+}  // namespace ps

@@ -1,0 +1,60 @@
+#include "app/session/free_height.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace ps {
+
+namespace {
+
+// A lowered probe centred at p that sits in a button's pocket is lifted to rest on the face:
+// hovering over a button must not press it (pressing is the height keys' job).
+glm::dvec3 rest_on_buttons(const world::HapticScene& scene, glm::dvec3 p, const glm::dvec3& n, double r) {
+  for (const world::ButtonShape& b : scene.button_shapes()) {
+    const double facing = glm::dot(b.normal(), n);
+    if (facing < 0.5) continue;  // a button in a wall is not under a pointer looking down n
+    const double depth = b.press_depth_mm(p, r);
+    if (depth > 0.0) p += n * (depth / facing);
+  }
+  return p;
+}
+
+}  // namespace
+
+double FreeHeight::lift_mm(const glm::dvec3& hit_mm, const glm::dvec3& n_ws, double r) const {
+  last_normal_ = n_ws;
+  if (!scene_) return 0.0;
+  const glm::dvec3 n = rotation_ * n_ws;
+  const glm::dvec3 hit = rotation_ * hit_mm + offset_mm_;
+  const double top = std::max(top_mm_, 0.0);
+  glm::dvec3 p = hit + (r + top) * n;
+  // A start inside an object (a camera inside a room's walls): no free side to find from here.
+  const world::Contact start = scene_->closest(p, params_.query_mm);
+  if (start.hit && (start.distance_mm < r || glm::dot(p - start.point, start.normal) < 0.0)) return 0.0;
+  double fallen = 0.0;
+  const double longest = top + params_.below_plane_mm;
+  for (int i = 0; i < params_.max_steps; ++i) {
+    const world::Contact c = scene_->closest(p, params_.query_mm);
+    const double gap = (c.hit ? c.distance_mm : params_.query_mm) - r;
+    if (gap < params_.touch_epsilon_mm) {
+      if (c.hit) last_normal_ = glm::transpose(rotation_) * c.normal;
+      p = rest_on_buttons(*scene_, p, n, r);
+      return glm::dot(p - hit, n) - r;
+    }
+    fallen += gap;
+    if (fallen > longest) return 0.0;  // nothing under the pointer: the plane
+    p -= gap * n;
+  }
+  return 0.0;
+}
+
+double buried_mm(const world::HapticScene& scene, const glm::dvec3& centre_mm) {
+  // The overlap only: which side of a surface is inside is not known for an open mesh (Suzanne's
+  // eyes) or a surface embedded in 4D (its sheets cross), so a centre deeper than R inside a
+  // closed solid reads as free here (the drawn probe's penetration shows it).
+  const double r = scene.probe_radius_mm();
+  const world::Contact c = scene.closest(centre_mm, r);
+  return c.hit ? std::max(0.0, r - c.distance_mm) : 0.0;
+}
+
+}  // namespace ps

@@ -1,0 +1,212 @@
+#include "app/window/hud.h"
+
+#define GLFW_INCLUDE_NONE
+#include <GLFW/glfw3.h>
+#include <imgui.h>
+#include <backends/imgui_impl_glfw.h>
+#include <backends/imgui_impl_opengl3.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdarg>
+#include <cstdio>
+
+#include "app/window/run_keys.h"
+#include "gl/gl.h"
+
+namespace ps {
+
+namespace {
+
+// Scene names longer than this are cut ("table5_1_constr..."): the box stays narrow.
+constexpr size_t kMaxSceneChars = 16;
+
+std::string line(const char* name, const char* fmt, ...) __attribute__((format(printf, 2, 3)));
+std::string line(const char* name, const char* fmt, ...) {
+  char value[96];
+  va_list args;
+  va_start(args, fmt);
+  std::vsnprintf(value, sizeof value, fmt, args);
+  va_end(args);
+  char out[128];
+  std::snprintf(out, sizeof out, "%-12s%s", name, value);  // the font is monospaced: columns align
+  return out;
+}
+
+// The keys in two columns and the legend under them; narrow: one column, the legend wrapped to
+// its width (where the wide box would cover a button, app/window/ui_layout.h).
+std::string help_text(bool narrow = false) {
+  std::string text = run_keys_text("", narrow ? 1 : 2);
+  text += "\n";
+  if (!narrow) {
+    for (const char* l : shadow_legend()) text += std::string(l) + "\n";
+  } else {
+    std::size_t width = 0;
+    for (std::size_t a = 0, b; (b = text.find('\n', a)) != std::string::npos; a = b + 1) width = std::max(width, b - a);
+    std::string legend;
+    for (const char* l : shadow_legend()) legend += std::string(legend.empty() ? "" : " ") + l;
+    std::string row;
+    for (std::size_t a = 0; a < legend.size();) {
+      std::size_t b = legend.find(' ', a);
+      if (b == std::string::npos) b = legend.size();
+      const std::string word = legend.substr(a, b - a);
+      if (!row.empty() && row.size() + 1 + word.size() > width) {
+        text += row + "\n";
+        row.clear();
+      }
+      row += (row.empty() ? "" : " ") + word;
+      a = b + 1;
+    }
+    if (!row.empty()) text += row + "\n";
+  }
+  text.pop_back();
+  return text;
+}
+
+// A box of text at `rect` that takes no input, so a click on it reaches the probe and camera.
+UiRect text_box(const char* id, const UiRect& rect, const std::string& text, float bg_alpha) {
+  constexpr ImGuiWindowFlags kOverlay = ImGuiWindowFlags_NoDecoration | ImGuiWindowFlags_NoInputs |
+                                        ImGuiWindowFlags_NoSavedSettings | ImGuiWindowFlags_NoFocusOnAppearing |
+                                        ImGuiWindowFlags_NoNav | ImGuiWindowFlags_NoMove;
+  ImGui::SetNextWindowPos(ImVec2(rect.x0, rect.y0), ImGuiCond_Always);
+  ImGui::SetNextWindowSize(ImVec2(rect.width(), rect.height()), ImGuiCond_Always);
+  ImGui::SetNextWindowBgAlpha(bg_alpha);
+  ImGui::Begin(id, nullptr, kOverlay);
+  ImGui::TextUnformatted(text.c_str());
+  const ImVec2 pos = ImGui::GetWindowPos(), size = ImGui::GetWindowSize();
+  ImGui::End();
+  return UiRect::at(pos.x, pos.y, size.x, size.y);
+}
+
+// The box a text needs: the text's extent plus the window padding on each side.
+ImVec2 box_size(const std::string& text) {
+  const ImVec2 t = ImGui::CalcTextSize(text.c_str());
+  const ImVec2 pad = ImGui::GetStyle().WindowPadding;
+  return ImVec2(std::ceil(t.x + 2.f * pad.x), std::ceil(t.y + 2.f * pad.y));
+}
+
+// Each button's label on its lower edge, over a dark band so it reads on any picture. Drawn
+// behind every ImGui window (the background list): the layout keeps the boxes off the buttons.
+void draw_button_labels(const std::vector<ButtonOverlay>& buttons) {
+  ImDrawList* dl = ImGui::GetBackgroundDrawList();
+  for (const ButtonOverlay& b : buttons) {
+    if (b.label.empty()) continue;
+    const ImVec2 t = ImGui::CalcTextSize(b.label.c_str());
+    const float pad = 3.f;
+    const float x = std::round(0.5f * (b.rect.x0 + b.rect.x1 - t.x)), y = std::round(b.rect.y1 - t.y - 2.f * pad);
+    dl->AddRectFilled(ImVec2(x - pad, y - pad), ImVec2(x + t.x + pad, y + t.y + pad), IM_COL32(0, 0, 0, 170), 3.f);
+    dl->AddText(ImVec2(x, y), IM_COL32(255, 255, 255, 255), b.label.c_str());
+  }
+}
+
+}  // namespace
+
+std::vector<std::string> hud_lines(const HudReadouts& r) {
+  std::string scene = r.scene;
+  if (scene.size() > kMaxSceneChars) scene = scene.substr(0, kMaxSceneChars - 3) + "...";
+  std::vector<std::string> out = {
+      line("scene", "%s", scene.c_str()),
+      line("distance", "%s", probe_distance_text(r.probe).c_str()),
+      line("penetration", "%.2f mm", r.penetration_mm),
+      line("contact", "%s", r.probe.state == ProbeState::kTouching ? "yes" : "no"),
+      line("force", "%.2f N", r.force_n),
+      line("speed", "%.0f mm/s", r.speed_mm_s),
+      line("frame", "%.1f ms", r.frame_ms),
+      line("haptic", "%.0f Hz", r.haptic_hz),
+      line("jitter p99", "%.0f us", r.jitter_p99_us),
+  };
+  // Touching: how deep the hand pressed past the proxy (what the push-out hides from the eye).
+  if (r.probe.state == ProbeState::kTouching) out.insert(out.begin() + 4, line("pressed", "%.1f mm", r.probe.pressed_mm));
+  const std::size_t frame_line = r.probe.state == ProbeState::kTouching ? 8 : 7;
+  if (r.gpu_frame_ms) out.insert(out.begin() + static_cast<std::ptrdiff_t>(frame_line), line("gpu frame", "%.1f ms", *r.gpu_frame_ms));
+  // The texture is the per-pixel sum until its tile is baked: say the picture will not change.
+  if (r.bake_progress < 1.0) out.push_back(line("texture", "baking %.0f %%", 100.0 * r.bake_progress));
+  if (r.button >= 0)
+    out.push_back(line("button", "#%d in %.1f of %.1f mm", r.button, r.button_depth_mm, r.button_travel_mm));
+  if (r.flags) out.push_back(line("flags on", "%s", r.flags->empty() ? "none" : r.flags->c_str()));
+  if (r.view_mm) out.push_back(line("view", "%+.0f %+.0f %+.0f mm", r.view_mm->x, r.view_mm->y, r.view_mm->z));
+  if (r.rolled_deg) out.push_back(line("rolled", "%.0f deg", *r.rolled_deg));
+  if (r.turn4_deg) {  // the planes the keys name (help: "1-3 / Shift  4D xy xz xw")
+    const std::array<double, 6>& a = *r.turn4_deg;
+    out.push_back(line("4D xy xz xw", "%.0f %.0f %.0f deg", a[0], a[1], a[2]));
+    out.push_back(line("4D yz yw zw", "%.0f %.0f %.0f deg", a[3], a[4], a[5]));
+  }
+  if (!r.error.empty()) out.push_back(line("reload", "FAILED (F1)"));
+  if (!r.notice.empty()) out.push_back(line("note", "%s", r.notice.c_str()));
+  return out;
+}
+
+std::string title_summary(const HudReadouts& r) {
+  const std::string head = "pseudoshadow \u2014 " + r.scene + " \u2014 ";
+  if (!r.error.empty()) return head + "RELOAD FAILED (last good state kept): " + r.error;
+  return head + probe_distance_text(r.probe);
+}
+
+WindowUi::WindowUi(GLFWwindow* window) {
+  IMGUI_CHECKVERSION();
+  ImGui::CreateContext();
+  ImGui::GetIO().IniFilename = nullptr;  // no imgui.ini next to the user's files
+  ImGui::StyleColorsDark();
+  ImGui_ImplGlfw_InitForOpenGL(window, true);
+  ImGui_ImplOpenGL3_Init("#version 450 core");
+}
+
+WindowUi::~WindowUi() {
+  ImGui_ImplOpenGL3_Shutdown();
+  ImGui_ImplGlfw_Shutdown();
+  ImGui::DestroyContext();
+}
+
+UiFrameReport WindowUi::draw(const HudReadouts& readouts, const ShadowMeasure& shadow, TuneSession& session,
+                             double now_s, const std::vector<ButtonOverlay>& buttons) {
+  if (help_timeout_ && now_s >= kHelpSeconds) hide_help();
+  ImGui_ImplOpenGL3_NewFrame();
+  ImGui_ImplGlfw_NewFrame();
+  ImGui::NewFrame();
+  std::string hud_text;
+  for (const std::string& l : hud_lines(readouts)) hud_text += l + "\n";
+  hud_text.pop_back();
+  const std::string help = help_text(), help_narrow = help_text(true);
+  const ImVec2 display = ImGui::GetIO().DisplaySize, hud_size = box_size(hud_text), help_size = box_size(help);
+  UiLayoutInput in;
+  in.width = display.x;
+  in.height = display.y;
+  in.shadow = shadow.bbox;
+  in.panel = panel_.visible();
+  in.panel_width = panel_width_for(display.x);
+  in.panel_height = panel_.collapsed() ? ImGui::GetFrameHeight() : display.y;
+  in.hud_w = hud_size.x;
+  in.hud_h = hud_size.y;
+  in.help = help_;
+  in.help_w = help_size.x;
+  in.help_h = help_size.y;
+  if (!buttons.empty()) {  // only where buttons may need the room
+    const ImVec2 narrow_size = box_size(help_narrow);
+    in.help_narrow_w = narrow_size.x;
+    in.help_narrow_h = narrow_size.y;
+  }
+  for (const ButtonOverlay& b : buttons) in.buttons.push_back(b.rect);
+  if (ImGui::IsMousePosValid()) in.pointer = std::make_pair(ImGui::GetIO().MousePos.x, ImGui::GetIO().MousePos.y);
+  in.now_s = ImGui::GetTime();
+  in.last = placement_;
+  const UiLayout layout = layout_ui(in);
+  placement_ = layout.placement;
+
+  UiFrameReport report;
+  report.shadow = shadow.bbox;
+  report.buttons = in.buttons;
+  draw_button_labels(buttons);
+  if (layout.panel) {
+    UiRect dock = *layout.panel;
+    dock.y1 = display.y;  // the expanded size; a collapsed panel draws its title bar only
+    report.panel = panel_.draw(session, dock);
+  }
+  if (layout.hud) report.hud = text_box("##readouts", *layout.hud, hud_text, 0.65f);
+  if (layout.help) report.help = text_box("##help", *layout.help, layout.help_narrow ? help_narrow : help, 0.8f);
+  ImGui::Render();
+  glBindFramebuffer(GL_FRAMEBUFFER, 0);
+  ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
+  return report;
+}
+
+}  // namespace ps

@@ -1,0 +1,68 @@
+// `run --readouts-log FILE`: one JSON line per window frame with what the readouts say (one
+// state machine, app/window/readout_state.h) and the positions behind it, for experimenters and for the
+// window tests (tests/window). Fields (docs/window.md, "run --readouts-log"): frame, t_s, scene,
+// state, distance_mm (null out of reach, 0 touching), pressed_mm, penetration_mm, buried_mm, contact,
+// force_n, view_offset_mm, hand_mm, proxy_mm, button ({index, depth_mm, travel_mm} or null),
+// flags (names on, or null when the scene has none), keys (key presses handled this frame),
+// haptic_hz and jitter_p99_us (the haptic loop over the last second: what tools/soak.sh follows),
+// dent_mm (the deepest dent of a deformable surface as drawn; null when the scene has none).
+#pragma once
+
+#include <cstdint>
+#include <cstdio>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include <glm/glm.hpp>
+
+#include "app/window/readout_state.h"
+#include "core/result.h"
+
+namespace ps {
+
+struct ReadoutsFrame {
+  std::uint64_t frame = 0;
+  double t_s = 0.0;                 // session time of the haptic state drawn
+  std::string scene;                // the scene file's name
+  ProbeReadout probe;
+  std::optional<double> distance_mm;  // the shadow's smallest distance (none: no shadow)
+  double penetration_mm = 0.0;      // the frame's largest penetration (render side)
+  // How deep the proxy sphere sits inside the haptic geometry, mm (0: free). The render side's
+  // penetration is measured along the reference normal per pixel, so a probe beside a steep
+  // surface reads as inside it; this one is the proxy's own.
+  double buried_mm = 0.0;
+  double force_n = 0.0;             // |force on the hand|
+  glm::dvec3 view_offset_mm{0.0}, hand_mm{0.0}, proxy_mm{0.0};
+  int button = -1;                  // pressed button (-1: none), its depth and travel
+  double button_depth_mm = 0.0, button_travel_mm = 0.0;
+  std::optional<std::vector<std::string>> flags;  // the flags on; none: the scene has no flags
+  int keys = 0;                     // key presses handled this frame
+  double haptic_hz = 0.0;           // the haptic loop's rate over the last second
+  double jitter_p99_us = 0.0;       // |period - nominal|, p99 over the last second
+  std::optional<double> dent_mm;    // largest vertex displacement of the deformable surfaces
+};
+
+// The frame as one JSON line (no newline); numbers with up to 4 decimals (0.1 um: far below any
+// tolerance a reader would use).
+std::string readouts_json_line(const ReadoutsFrame& f);
+
+class ReadoutsLog {
+ public:
+  ReadoutsLog() = default;
+  ~ReadoutsLog();
+  ReadoutsLog(const ReadoutsLog&) = delete;
+  ReadoutsLog& operator=(const ReadoutsLog&) = delete;
+  // Creates (truncates) `path`; an error names it.
+  Status open(const std::string& path);
+  bool is_open() const { return file_ != nullptr; }
+  // Appends one line and flushes it (a session killed by a test's timeout keeps its frames).
+  Status write(const ReadoutsFrame& f);
+  Status close();
+
+ private:
+  std::FILE* file_ = nullptr;
+  std::string path_;
+};
+
+}  // namespace ps
