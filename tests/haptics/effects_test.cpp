@@ -5,6 +5,7 @@
 
 #include <cmath>
 
+#include "floor_model.h"
 #include "haptics/effects/scene_effects.h"
 #include "haptics/proxy_model.h"
 #include "haptics/tick_feed.h"
@@ -13,14 +14,7 @@
 namespace ps {
 namespace {
 
-SurfaceModel floor_plane() {
-  SurfaceModel m;
-  m.valid = true;
-  m.normal = {0.0, 0.0, 1.0};
-  m.point_mm = {0.0, 0.0, 0.0};
-  m.probe_radius_mm = 2.0;
-  return m;
-}
+SurfaceModel floor_plane() { return test::floor_model(2.0); }  // z = 0 under a 2 mm probe
 
 TEST(PlaneProxyTest, StepIsComputeForceWithTheLastProxyAsStickPoint) {
   Snapshot<SurfaceModel> surface;
