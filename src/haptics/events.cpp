@@ -55,6 +55,14 @@ void append_string(std::string& out, std::string_view s) {
 }
 }  // namespace
 
+HapticEvent make_event(EventKind kind, std::uint64_t tick, double time_s) {
+  HapticEvent e;
+  e.kind = kind;
+  e.tick = tick;
+  e.time_s = time_s;
+  return e;
+}
+
 std::string event_json(const HapticEvent& e) {
   std::string out = "{\"t\":";
   append_double(out, e.time_s);

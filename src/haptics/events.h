@@ -51,6 +51,9 @@ struct HapticEvent {
   std::string_view label_view() const;
 };
 
+// An event of `kind` raised at tick `tick`, session time `time_s`; the rest as defaulted above.
+HapticEvent make_event(EventKind kind, std::uint64_t tick, double time_s);
+
 // One JSON object on one line, no trailing newline; fields in a fixed order, doubles with 17
 // significant digits (a replay's log compares byte for byte):
 // {"t":0.25,"tick":250,"event":"contact_start","surface":0,"index":-1,"value":12.5,"pos":[0,0,8],"label":""}

@@ -1,6 +1,13 @@
-// The haptic loop: read device -> sanitize -> Kalman filter -> proxy + force against the haptic
-// scene (or the render thread's local plane) -> write force -> publish. Runs on its own thread at 1 kHz, scheduled with
-// clock.sleep_until(next += period) so the rate does not drift; never calls GL.
+// The haptic loop, one tick read as a servo loop (HapticLoop::tick, docs/haptics.md):
+//   read the device (sanitizer, Kalman filter)
+//   -> move the workspace: navigation (workspace.h)
+//   -> effects on the probe: fields, buttons, bodies (effects/), the proxy's coupling force
+//   -> proxy model: the god-object in the haptic scene, or the render thread's local plane
+//      (proxy_model.h, chosen once per scene)
+//   -> effects on the hand: sheet crossings, force suggestions; the workspace rolls on the contact
+//   -> force: scaled after a stall, written in the device's workspace -> publish.
+// Runs on its own thread at 1 kHz, scheduled with clock.sleep_until(next += period) so the rate
+// does not drift; never calls GL.
 // Exchange with the render thread, one single-writer Snapshot per direction:
 //   state()   written only by the haptic thread (HapticState), read by the render thread;
 //   surface() written only by the render thread (SurfaceModel), read by the haptic thread.
@@ -21,23 +28,20 @@
 #include <vector>
 
 #include "core/snapshot.h"
-#include "devices/device.h"
-#include "devices/sample_log.h"
 #include "devices/sanitizer.h"
 #include "haptics/clock.h"
 #include "haptics/events.h"
 #include "haptics/force_model.h"
+#include "haptics/haptic_state.h"
 #include "haptics/kalman.h"
 #include "haptics/loop_stats.h"
-#include "haptics/tick_feed.h"
+#include "haptics/tick_feed.h"  // add_tick_feed's TickFeed, its callers' TickSample
 #include "haptics/tick_schedule.h"
-#include "world/bodies.h"
-#include "world/buttons.h"
-#include "fourd/crossing.h"
-#include "fourd/rolling.h"
-#include "world/god_object.h"
 
 namespace ps {
+
+class SampleRecorder;  // devices/sample_log.h
+namespace world { class HapticScene; }
 
 struct HapticLoopParams {
   double rate_hz = 1000.0;
@@ -68,69 +72,6 @@ struct HapticLoopParams {
   std::int64_t sched_slice_us = 100;
   // Falling behind: missed ticks are skipped, a stall ramps the force back in (tick_schedule.h).
   TickScheduleParams schedule;
-};
-
-// Charges a person adds and removes while the loop runs (run's C / Shift+C), published by the
-// render thread (Snapshot<LiveCharges>) and added to the scene's fields. Each has an id that is
-// never reused, so the haptic thread can tell which ones came and went and say so in events.
-struct LiveCharges {
-  static constexpr int kMax = 16;
-  int count = 0;
-  std::array<std::uint32_t, kMax> id{};
-  std::array<glm::dvec3, kMax> position{};
-  std::array<double, kMax> charge_n_mm2{};
-  double softening_mm = 2.0;
-};
-
-// The camera the renderer draws with, in the device's workspace (published once per frame by the
-// render thread): the rolling manifold's screen centre and direction toward the viewer. Until
-// one is published the loop uses the scene file's camera.
-struct PublishedViewAxes {
-  bool valid = false;
-  fourd::ViewAxes axes;
-};
-
-struct HapticState {
-  std::uint64_t tick = 0;
-  double time_s = 0.0;               // session time of this tick
-  std::int64_t sample_clock_ns = 0;  // clock time at which the device sample was read
-  glm::dvec3 device_mm{0.0};         // sanitized raw device position
-  glm::dvec3 position_mm{0.0};       // Kalman-filtered
-  glm::dvec3 velocity_mm_s{0.0};     // Kalman-filtered; drives the texture amplitude
-  glm::dvec3 proxy_mm{0.0};          // what the renderer shows
-  glm::dvec3 force_n{0.0};
-  double penetration_mm = 0.0;
-  int contact_surface = -1;          // haptic scene: surface touched (Scene::surfaces index)
-  std::uint32_t local_facets = 0;    // haptic scene: mesh triangles examined this tick
-  std::uint32_t buttons = 0;
-  glm::dvec3 field_force_n{0.0};     // haptic scene: fields + body springs on the probe this tick
-  std::array<glm::dvec3, world::kMaxBodies> body_mm{};  // haptic scene: the bodies' centres
-  int body_count = 0;
-  int button_pressed = -1;           // haptic scene: the button the probe presses (-1: none)
-  double button_depth_mm = 0.0;      // and how far it is in
-  std::uint32_t flags = 0;           // haptic scene: bit i = Scene::flags[i], toggled by buttons
-  // haptic scene with [navigation]: how far the view has moved (the world position of the
-  // workspace's origin). position_mm, device_mm and proxy_mm are world positions (the device's
-  // own plus this offset); the renderer moves its camera by it.
-  glm::dvec3 view_offset_mm{0.0};
-  // haptic scene with a rolling fourd surface (fourd/rolling.h): the workspace also turns,
-  // world = view_rotation * workspace + view_offset_mm; the renderer turns its camera with it.
-  glm::dmat3 view_rotation{1.0};
-  int roll_facet = -1;               // the rolling manifold's interest facet (-1: none)
-  // haptic scene: the sheet of a surface embedded in 4D the proxy keeps to (docs/fourd.md):
-  // its surface index (-1: none) and the 4D depth w there
-  int sheet_surface = -1;
-  double sheet_w4 = 0.0;
-  bool have_sample = false, in_contact = false;
-  double rate_hz = 0.0;              // over the last second
-  double jitter_p99_us = 0.0;        // |period - nominal|, p99 over the last second
-  SanitizerCounts rejected;
-  // Falling behind (haptics/tick_schedule.h): stalls so far, ticks skipped so far, the last
-  // stall's lateness, and the force's scale this tick (1 except while ramping after a stall).
-  std::uint64_t stalls = 0;
-  std::uint64_t skipped_ticks = 0;
-  double last_stall_ms = 0.0;
-  double force_scale = 1.0;
 };
 
 class HapticLoop {
@@ -200,45 +141,36 @@ class HapticLoop {
   std::size_t jitter_window_capacity() const { return window_jitter_us_.capacity(); }
 
  private:
+  // The tick's stages after the filter: the workspace, the proxy model and the effects
+  // (haptic_loop.cpp). Behind a pointer so that this header needs none of their rooms.
+  struct Stages;
+
   void scheduled_tick();  // sleep_until(next += period), then tick()
   void request_realtime(pid_t tid);  // start(): SCHED_FIFO, else RealtimeKit's SCHED_RR
-  void tick(Clock::Ns now);
+  void note_wake(const TickSchedule::Wake& w, Clock::Ns now);  // counts and reports a late wake-up
   void update_rate(Clock::Ns now);
+  void tick(Clock::Ns now);
+  double session_time_s(Clock::Ns now) const;
+  double tick_period_s(Clock::Ns now) const;  // the filter's T
+  void read_device(double t, double dt, Clock::Ns now);  // sanitizer and Kalman filter
+  void servo(double t, double dt, Clock::Ns now);        // workspace -> proxy -> effects -> force
+  void take_proxy_step(const ForceResult& f, double t);  // contact events, proxy readouts
+  void push_tick_sample(const ForceResult& f, double t, Clock::Ns now);
+  void adopt_pending_scene(Clock::Ns now);  // haptic thread, at a tick's start
+  // Haptic thread: the filter there (at rest, or keeping its velocity across `normal`), the proxy there.
+  void place(const glm::dvec3& hand_mm, const std::optional<glm::dvec3>& normal = std::nullopt);
 
   Device& device_;
   Clock& clock_;
   HapticLoopParams params_;
   Clock::Ns period_, start_{0}, last_tick_{0}, window_start_{0};
   TickSchedule schedule_;
-  void note_wake(const TickSchedule::Wake& w, Clock::Ns now);  // counts and reports a late wake-up
   bool started_ = false;
   DeviceSanitizer sanitizer_;
   Kalman3 kalman_;
   DeviceSample last_fed_;  // the last sample given to the filter (repeats are predicted over)
   bool have_fed_ = false;
-  void adopt_pending_scene(Clock::Ns now);  // haptic thread, at a tick's start
-  // Haptic thread: the filter there (at rest, or keeping its velocity across `normal`), the proxy there.
-  void place(const glm::dvec3& hand_mm, const std::optional<glm::dvec3>& normal = std::nullopt);
-  glm::dvec3 world_forces(double t, double dt);  // fields + bodies on the probe (haptic scene)
-  // [navigation]: moves the view by the hand's push past its box's walls; then (with
-  // navigation or a rolling surface) turns the hand's workspace position, velocity and device
-  // position (local_) into world ones through view_. Returns the walls' force (world).
-  glm::dvec3 navigate(double dt);
-  fourd::ViewPose view_;            // workspace -> world (navigation's offset, rolling's turn)
-  fourd::RollingManifold roll_;     // seed 000 §6 on a fourd surface with fourd_roll
-  // After the proxy moved: the rolling manifold's step and its tether's force (world, N).
-  glm::dvec3 roll(double dt);
-  std::optional<world::GodObject> god_;  // set when a haptic scene is given
-  fourd::CrossingDetector crossing_;     // sheet crossings on a surface embedded in 4D
-  void detect_crossing(double t);        // after the proxy moved: a sheet_crossing event?
-  // Eq. 5's force suggestion on a fourd sheet (zero when off or off the sheet); keeps the
-  // contact point to difference its velocity.
-  glm::dvec3 suggestion_force(double dt);
-  glm::dvec3 last_sheet_point_{0.0};
-  bool have_sheet_point_ = false;
-  world::BodySet bodies_;                // the scene's bodies (reset with each scene)
-  world::ButtonSet buttons_;             // the scene's buttons (reset with each scene)
-  void press_buttons(const glm::dvec3& anchor, double t, glm::dvec3& force);
+  std::unique_ptr<Stages> stages_;
   std::shared_ptr<const world::HapticScene> scene_owned_;  // after replace_scene()
   std::mutex swap_mutex_;  // guards pending_, retired_
   std::shared_ptr<const world::HapticScene> pending_, retired_;
@@ -252,8 +184,6 @@ class HapticLoop {
   SampleRecorder* recorder_ = nullptr;
   std::array<TickFeed*, kMaxTickFeeds> tick_feeds_{};  // the first tick_feed_count_ are set
   std::size_t tick_feed_count_ = 0;
-  TickSample feed_sample_;  // this tick's record, filled as the tick goes (impact, click)
-  void push_tick_sample(const ForceResult& f, double t, Clock::Ns now);
   BoundedLog periods_us_;         // every period, for period_stats()
   BoundedLog window_jitter_us_;   // |period - nominal| of the current 1 s HUD window
   std::uint64_t window_ticks_ = 0;  // ticks in the HUD window (the jitter log may have dropped some)
@@ -262,8 +192,6 @@ class HapticLoop {
   Snapshot<SurfaceModel> surface_;
   Snapshot<LiveCharges> live_charges_;
   Snapshot<PublishedViewAxes> view_axes_;
-  LiveCharges adopted_charges_;  // haptic thread: the set in force, to diff the next one against
-  void adopt_live_charges(double t);
   std::string priority_ = "normal";
   std::atomic<bool> stop_{false};
   std::atomic<int> slice_error_{0};  // errno of the slice request (0 = granted or not asked)

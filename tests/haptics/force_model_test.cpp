@@ -3,6 +3,7 @@
 
 #include <cmath>
 
+#include "floor_model.h"
 #include "haptics/force_model.h"
 
 namespace ps {
@@ -17,14 +18,7 @@ HapticsParams bare() {  // every effect off; tests switch on the one they check
   return p;
 }
 
-SurfaceModel floor_model() {  // plane z = 0, probe radius 8 mm
-  SurfaceModel m;
-  m.valid = true;
-  m.normal = {0, 0, 1};
-  m.point_mm = {0, 0, 0};
-  m.probe_radius_mm = 8.0;
-  return m;
-}
+using test::floor_model;  // plane z = 0, probe radius 8 mm
 
 TEST(ForceModelTest, ProjectorsDecomposeOrthogonally) {
   const glm::dvec3 n = glm::normalize(glm::dvec3(0.3, -0.5, 0.8));

@@ -8,6 +8,7 @@
 #include <thread>
 
 #include "core/snapshot.h"
+#include "devices/sample_log.h"
 #include "haptics/haptic_loop.h"
 
 namespace ps {

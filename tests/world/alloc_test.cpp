@@ -8,6 +8,7 @@
 
 #include "devices/sample_log.h"
 #include "haptics/haptic_loop.h"
+#include "world/haptic_scene.h"
 #include "world_test_util.h"
 
 namespace {
