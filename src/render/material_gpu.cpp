@@ -104,6 +104,7 @@ void choose_strategy(const Material& m, const StrategyInputs& in, MaterialGpu& m
 
 Result<MaterialGpu> load_material_gpu(const Material& m, const StrategyInputs& in) {
   MaterialGpu ms;
+  ms.material = &m;
   if (!m.albedo_texture.empty()) {
     auto t = upload_albedo(m.albedo_texture);
     if (!t) return t.error();
@@ -116,11 +117,10 @@ Result<MaterialGpu> load_material_gpu(const Material& m, const StrategyInputs& i
   return ms;
 }
 
-std::shared_ptr<gl::Texture> reusable_tile(std::span<const MaterialGpu> old, std::span<const Material> old_materials,
-                                           const Material& m, const GaborBakePlan& plan) {
-  for (size_t k = 0; k < old.size(); ++k) {
-    const MaterialGpu& o = old[k];
-    if (o.gabor_tile && old_materials[k].gabor == m.gabor && o.bake_plan.linear == plan.linear &&
+std::shared_ptr<gl::Texture> reusable_tile(std::span<const MaterialGpu> old, const Material& m,
+                                           const GaborBakePlan& plan) {
+  for (const MaterialGpu& o : old) {
+    if (o.gabor_tile && o.material->gabor == m.gabor && o.bake_plan.linear == plan.linear &&
         o.bake_plan.texels == plan.texels && o.bake_plan.period_cells == plan.period_cells &&
         o.bake_plan.filtered_levels == plan.filtered_levels)
       return o.gabor_tile;

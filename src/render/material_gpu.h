@@ -20,6 +20,7 @@
 namespace ps {
 
 struct MaterialGpu {
+  const Material* material = nullptr;  // the scene's, this state was made from (never copied)
   GaborSetup gabor_setup;
   GaborBakePlan bake_plan;    // ok == false: not baked (naive or stratified sum)
   std::string strategy_note;  // auto's choice or baked's fallback, for stats.skipped; empty: none
@@ -41,12 +42,13 @@ struct StrategyInputs {
 };
 
 // The material's albedo texture, intensity table, Gabor setup, strategy and packed uniforms (no
-// tile yet). Needs a current GL context; a missing albedo file is an error.
+// tile yet), pointing at `m`, which must outlive it. Needs a current GL context; a missing albedo
+// file is an error.
 Result<MaterialGpu> load_material_gpu(const Material& m, const StrategyInputs& in);
 
-// A finished tile of `old` (the materials of an earlier renderer, `old_materials` its scene's)
-// made from the same Gabor parameters and plan; null if none. The seeds must be equal.
-std::shared_ptr<gl::Texture> reusable_tile(std::span<const MaterialGpu> old, std::span<const Material> old_materials,
-                                           const Material& m, const GaborBakePlan& plan);
+// A finished tile of `old` (the materials of an earlier renderer, still alive) made from the same
+// Gabor parameters and plan; null if none. The seeds must be equal.
+std::shared_ptr<gl::Texture> reusable_tile(std::span<const MaterialGpu> old, const Material& m,
+                                           const GaborBakePlan& plan);
 
 }  // namespace ps

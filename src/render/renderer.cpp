@@ -118,31 +118,37 @@ Status Renderer::upload_surfaces() {
     auto mesh = build_surface_mesh(s);
     if (!mesh) return mesh.error();
     if (s.visual_stretch != glm::dvec3(1.0)) stretch_mesh(mesh.value(), s);
-    geometry_.surface_bounds.push_back(mesh_bounds(mesh.value()));
-    Geometry::Sheets sheets;
+    SurfaceGeometry g;
+    g.bounds = mesh_bounds(mesh.value());
     if (!mesh->w4.empty()) {
-      sheets.positions = mesh->positions;
-      sheets.w4 = mesh->w4;
-      sheets.w_min = *std::min_element(sheets.w4.begin(), sheets.w4.end());
-      sheets.w_max = *std::max_element(sheets.w4.begin(), sheets.w4.end());
+      g.sheet_positions = mesh->positions;
+      g.w4 = mesh->w4;
+      g.w_min = *std::min_element(g.w4.begin(), g.w4.end());
+      g.w_max = *std::max_element(g.w4.begin(), g.w4.end());
     }
-    geometry_.surface_sheets.push_back(std::move(sheets));
     if (s.deform.enabled) {
       Deformed d;
-      d.surface = static_cast<int>(geometry_.surface_meshes.size());
+      d.surface = static_cast<int>(geometry_.surfaces.size());
       d.mesh = world::subdivide(mesh.value(), s.deform.max_edge_mm);
       d.sim = std::make_shared<world::Deformable>(d.mesh, s.deform);
-      geometry_.surface_meshes.push_back(GpuMesh::upload(d.mesh, true));
+      g.mesh = GpuMesh::upload(d.mesh, true);
       deformed_.push_back(std::move(d));
-      continue;
+    } else {
+      g.mesh = GpuMesh::upload(mesh.value());
     }
-    geometry_.surface_meshes.push_back(GpuMesh::upload(mesh.value()));
+    geometry_.surfaces.push_back(std::move(g));
   }
   deform_stats_.surfaces = static_cast<int>(deformed_.size());
   // `render` shows the scene's probe pressing in as it would after a second of holding still.
   if (!deformed_.empty())
     for (int i = 0; i < 10; ++i) step_deformation(0.1);
   return ok_status();
+}
+
+std::vector<Aabb> Renderer::surface_bounds() const {
+  std::vector<Aabb> out;
+  for (const SurfaceGeometry& g : geometry_.surfaces) out.push_back(g.bounds);
+  return out;
 }
 
 DeformationStats Renderer::advance_deformation(double time_s) {
@@ -166,7 +172,7 @@ DeformationStats Renderer::step_deformation(double dt_s) {
     // probe), so nothing changed since the last upload: no re-upload, no new normals.
     if (d.sim->active_count() > 0) {
       d.sim->write(d.mesh);
-      geometry_.surface_meshes[static_cast<std::size_t>(d.surface)].update(d.mesh);
+      geometry_.surfaces[static_cast<std::size_t>(d.surface)].mesh.update(d.mesh);
       moved = true;
       ++st.uploaded;
     }
@@ -278,14 +284,13 @@ double Renderer::ms_since_creation() const {
 std::shared_ptr<gl::Texture> Renderer::reusable_tile(const Material& m, const GaborBakePlan& plan) const {
   const Renderer* old = options_.reuse_tiles_from;
   if (!old || old->scene_.render.seed != scene_.render.seed) return nullptr;
-  return ps::reusable_tile(old->materials_, old->scene_.materials, m, plan);
+  return ps::reusable_tile(old->materials_, m, plan);
 }
 
 Status Renderer::prime_reference_plane() {
-  FramePlan plan = make_plan(scene_, camera_, geometry_.surface_bounds, current_probe_bounds(), frame_,
+  FramePlan plan = make_plan(scene_, camera_, surface_bounds(), current_probe_bounds(), frame_,
                              scene_.render.depth_map_size);
-  plan.surface_shadow.assign(plan.surface_shadow.size(), false);
-  plan.surface_textured.assign(plan.surface_textured.size(), false);
+  for (SurfacePlan& sp : plan.surfaces) sp.shadow = sp.textured = false;
   if (Status s = surface_.run(surface_draws(plan), nullptr, scene_.render.background, PixelRect{}); !s) return s;
   bool reduced = false;
   update_reference_plane(mean_visible_normal(reduced));
@@ -378,23 +383,6 @@ double nearest_w(std::span<const glm::vec3> positions, std::span<const float> w4
   return w;
 }
 
-// A surface embedded in 4D shows the pseudo-shadow on the probe's sheet `w` only: the band is
-// 15 % of the surface's w range, wide enough for the sheet's own w change across the shadow
-// window (a few mm), far narrower than the w gap where sheets cross. Its cutaway and crossing
-// diagram need the probe and the eye.
-void set_sheet(SurfaceDraw& d, const fourd::Spec& spec, double w, float w_range, const Camera& cam,
-               const glm::dvec3& probe_mm) {
-  d.block.sheet = glm::vec4(1.0f, static_cast<float>(w), 0.15f * w_range, 0.0f);
-  d.wireframe = spec.wireframe;
-  d.block.sheet.w = static_cast<float>(spec.crossing_diagram_mm);
-  if (spec.cutaway_mm > 0.0 || spec.crossing_diagram_mm > 0.0) {
-    const bool persp = cam.projection == Projection::kPerspective;
-    d.block.cutaway = glm::vec4(glm::vec3(probe_mm), static_cast<float>(spec.cutaway_mm));
-    d.block.eye = persp ? glm::vec4(glm::vec3(cam.position), 1.0f)
-                        : glm::vec4(glm::vec3(glm::normalize(cam.target - cam.position)), 0.0f);
-  }
-}
-
 }  // namespace
 
 std::vector<SurfaceDraw> Renderer::surface_draws(const FramePlan& plan) {
@@ -409,16 +397,28 @@ std::vector<SurfaceDraw> Renderer::surface_draws(const FramePlan& plan) {
     const Material& m = scene_.materials[mi];
     const MaterialGpu& ms = materials_[mi];
     const double gain = speed_gain(m, frame_, probe_.velocity);
-    if (plan.surface_shadow[i] && !gain_recorded) {
+    if (plan.surfaces[i].shadow && !gain_recorded) {
       stats_.speed_gain = gain;
       gain_recorded = true;
     }
+    const SurfaceGeometry& g = geometry_.surfaces[i];
+    const std::vector<SphereCaster> reach = bodies_in_reach(bodies, g.bounds, m.influence_distance_mm);
+    SurfaceInputs inputs{&m, &ms.gabor_block, gain, static_cast<bool>(ms.albedo), reach, std::nullopt};
     SurfaceDraw d;
-    d.mesh = &geometry_.surface_meshes[i];
-    d.block = make_surface_block(fr, m, ms.gabor_block, gain, static_cast<bool>(ms.albedo),
-                                 bodies_in_reach(bodies, geometry_.surface_bounds[i], m.influence_distance_mm));
-    d.shadow = plan.surface_shadow[i];
-    d.textured = plan.surface_textured[i];
+    if (!g.w4.empty()) {
+      // The probe's sheet: the haptic proxy's (FrameInput::sheet), else the nearest vertex's.
+      const double w = sheet_.surface == static_cast<int>(i)
+                           ? sheet_.w4
+                           : nearest_w(g.sheet_positions, g.w4, probe_.position, sheet_.w4);
+      const fourd::Spec& spec = scene_.surfaces[i].fourd;
+      inputs.sheet = SheetInputs{w, g.w_max - g.w_min, spec.crossing_diagram_mm, spec.cutaway_mm,
+                                 probe_.position, &camera_};
+      d.wireframe = spec.wireframe;
+    }
+    d.mesh = &g.mesh;
+    d.block = make_surface_block(fr, inputs);
+    d.shadow = plan.surfaces[i].shadow;
+    d.textured = plan.surfaces[i].textured;
     d.stratified = ms.gabor_setup.stratified_count > 0;
     d.albedo = ms.albedo ? &ms.albedo : nullptr;
     d.gabor_tile = ms.gabor_tile.get();
@@ -428,14 +428,6 @@ std::vector<SurfaceDraw> Renderer::surface_draws(const FramePlan& plan) {
     // Only a material drawn in its final form switches: one with an unfinished tile (the window
     // bakes in slices) keeps the per-pixel sum filtered until the tile is there.
     d.gabor_filter_skipped = filter_negligible_ && (ms.gabor_tile || !ms.bake_plan.ok);
-    const Geometry::Sheets& sheets = geometry_.surface_sheets[i];
-    if (!sheets.w4.empty()) {
-      // The probe's sheet: the haptic proxy's (FrameInput::sheet), else the nearest vertex's.
-      const double w = sheet_.surface == static_cast<int>(i)
-                           ? sheet_.w4
-                           : nearest_w(sheets.positions, sheets.w4, probe_.position, sheet_.w4);
-      set_sheet(d, scene_.surfaces[i].fourd, w, sheets.w_max - sheets.w_min, camera_, probe_.position);
-    }
     draws.push_back(std::move(d));
   }
   return draws;
@@ -482,7 +474,7 @@ Status Renderer::render_frame() {
   if (Status s = advance_bake(); !s) return s;  // before the timer: a band is not the frame's work
   PassTimer timer(options_.time_passes, stats_, options_.gpu_timers ? &gpu_timers_ : nullptr);
   const BoundingSphere probe = current_probe_bounds();
-  const FramePlan plan = make_plan(scene_, camera_, geometry_.surface_bounds, probe, frame_,
+  const FramePlan plan = make_plan(scene_, camera_, surface_bounds(), probe, frame_,
                                    scene_.render.depth_map_size);
   stats_.skipped = plan.skipped;
   if (!plan.shadow_active || !filter_lod()) filter_negligible_ = false;  // no measure to go by
@@ -547,10 +539,11 @@ Status Renderer::warm_unfiltered_variants() {
     const Material& m = scene_.materials[mi];
     if (!has_texture(m) || m.gabor.filter != GaborParams::Filter::kAnalytic) continue;
     const MaterialGpu& ms = materials_[mi];
-    // As surface_draws() will draw it once its tile is there (the key of SurfacePass::program).
+    // As surface_draws() will draw it once its tile is there, with the filter skipped.
     const int baked = ms.bake_plan.ok ? (ms.bake_plan.linear ? 2 : 1) : 0;
-    if (Status s = surface_.warm(ms.gabor_setup.stratified_count > 0, baked, 2, static_cast<bool>(ms.intensity_lut)); !s)
-      return s;
+    const SurfaceFlags variant =
+        surface_variant({true, true, ms.gabor_setup.stratified_count > 0, baked, 2, static_cast<bool>(ms.intensity_lut)});
+    if (Status s = surface_.warm(variant); !s) return s;
   }
   return ok_status();
 }
@@ -583,13 +576,13 @@ std::vector<SphereCaster> Renderer::body_casters() const {
 void Renderer::add_path_point() {
   const int surface = sheet_.surface;
   const double w4 = sheet_.w4;
-  const bool on_sheet = surface >= 0 && static_cast<std::size_t>(surface) < geometry_.surface_sheets.size() &&
-                        !geometry_.surface_sheets[static_cast<std::size_t>(surface)].w4.empty();
+  const bool on_sheet = surface >= 0 && static_cast<std::size_t>(surface) < geometry_.surfaces.size() &&
+                        !geometry_.surfaces[static_cast<std::size_t>(surface)].w4.empty();
   if (!show_path_ || !on_sheet) {
     path_break_ = true;  // off every sheet (lifted): the path starts a new piece
     return;
   }
-  const Geometry::Sheets& sheets = geometry_.surface_sheets[static_cast<std::size_t>(surface)];
+  const SurfaceGeometry& sheets = geometry_.surfaces[static_cast<std::size_t>(surface)];
   const double range = sheets.w_max - sheets.w_min;
   const glm::dvec3 colour = fourd::depth_colour(range > 0.0 ? (w4 - sheets.w_min) / range : 0.5);
   const glm::dvec3 p = probe_.position;

@@ -199,18 +199,18 @@ class Renderer {
 
  private:
   gl::TimerQueries gpu_timers_;  // per-pass GL_TIME_ELAPSED queries (RendererOptions::gpu_timers)
-  // The scene's meshes on the GPU.
-  struct Geometry {
-    std::vector<GpuMesh> surface_meshes;  // index = Scene::surfaces
-    std::vector<Aabb> surface_bounds;     // the same surfaces' world bounds (the plan's input)
-    // Surfaces embedded in 4D: the vertices and their w (empty for other surfaces), to find the
+  // One surface of the scene as drawn (index = Scene::surfaces).
+  struct SurfaceGeometry {
+    GpuMesh mesh;
+    Aabb bounds;  // world bounds (the plan's input)
+    // A surface embedded in 4D: its vertices and their w (empty for other surfaces), to find the
     // probe's sheet without haptics.
-    struct Sheets {
-      std::vector<glm::vec3> positions;
-      std::vector<float> w4;
-      float w_min = 0.0f, w_max = 0.0f;
-    };
-    std::vector<Sheets> surface_sheets;   // index = Scene::surfaces
+    std::vector<glm::vec3> sheet_positions;
+    std::vector<float> w4;
+    float w_min = 0.0f, w_max = 0.0f;
+  };
+  struct Geometry {
+    std::vector<SurfaceGeometry> surfaces;
     GpuMesh probe_mesh;                   // mesh probes only
     Aabb probe_mesh_bounds;               // model space, scaled
   };
@@ -227,6 +227,7 @@ class Renderer {
   void collect_tiles();           // finished tiles to their materials; the bake's stats
   double ms_since_creation() const;
   Status prime_reference_plane();
+  std::vector<Aabb> surface_bounds() const;  // the plan's input, index = Scene::surfaces
   std::shared_ptr<gl::Texture> reusable_tile(const Material& m, const GaborBakePlan& plan) const;
   // Per frame.
   BoundingSphere current_probe_bounds() const;
@@ -248,7 +249,7 @@ class Renderer {
   PlaneFrame frame_;
   FrameStats stats_;
   Geometry geometry_;
-  std::vector<MaterialGpu> materials_;  // index = Scene::materials (render/material_gpu.h)
+  std::vector<MaterialGpu> materials_;  // GPU state of Scene::materials, in order (each points at its material)
   TileBaker tiles_;           // the tiles still to bake (all of them at once unless sliced)
   std::chrono::steady_clock::time_point created_at_;  // start of create(): the stats' time origin
   // The last mean visible normal and the camera it was reduced for. The normal target holds
