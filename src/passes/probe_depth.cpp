@@ -37,6 +37,8 @@ Status ProbeDepthPass::init(const std::string& glsl_root, const Params& params) 
   return ok_status();
 }
 
+// Whole (43 lines): the block, then every GL state the pass depends on, set at entry in the order
+// the draw uses it (house rule 2); split, the state would be set in two places.
 void ProbeDepthPass::run(const Inputs& in) {
   assert(in.frame && "ProbeDepthPass::run: a reference frame is required");
   const PlaneFrame& f = *in.frame;

@@ -11,6 +11,8 @@
 
 namespace ps {
 
+// Whole (43 lines): the ring loop and the index loop share the ring layout (columns, ring_count)
+// they are written against; apart, each would restate it.
 Mesh make_capsule_mesh(const CapsuleShape& c, int segments) {
   segments = std::max(segments, 8);
   const int rings = std::max(segments / 4, 2);  // per hemisphere, pole to equator
@@ -71,6 +73,8 @@ Status ProbeViewPass::init(const std::string& glsl_root, const SurfacePass& surf
   return ok_status();
 }
 
+// Whole (48 lines): the block, then every GL state the pass depends on, set at entry in the order
+// the draw uses it (house rule 2); split, the state would be set in two places.
 void ProbeViewPass::run(const Inputs& in) {
   assert(in.light && "ProbeViewPass::run: a light is required");
   glm::dmat4 model = in.probe.model;

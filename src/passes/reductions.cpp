@@ -42,6 +42,8 @@ ReductionResult ReductionsPass::mean_normal(const SurfacePass& surface) {
   return r;
 }
 
+// Whole (47 lines): bind, dispatch, read back: one sequence of GL calls whose barriers must sit
+// between the dispatches and the reads they order; split, that order would span functions.
 ReductionResult ReductionsPass::run(const SurfacePass& surface, const Params& params) {
   ReductionResult r;
   const glm::ivec2 p = surface.padded_size();

@@ -15,12 +15,10 @@ glm::vec4 v4(double x, double y, double z, double w) { return glm::vec4(glm::dve
 
 int next_pow2(int v) { return static_cast<int>(std::bit_ceil(static_cast<unsigned>(std::max(v, 1)))); }
 
-SurfaceBlock make_surface_block(const SurfaceFrame& fr, const Material& m, const GaborBlock& gabor,
-                                double speed_gain, bool has_albedo_tex,
-                                std::span<const SphereCaster> bodies) {
-  assert(bodies.size() <= static_cast<size_t>(kMaxSceneBodies) &&
-         "make_surface_block: more body casters than SurfaceBlock::body_spheres holds");
-  SurfaceBlock b;
+namespace {
+
+// The block's frame-wide part: camera, light, reference plane, depth window, probe heights.
+void set_frame(SurfaceBlock& b, const SurfaceFrame& fr) {
   b.view_proj = glm::mat4(fr.view_proj);
   b.light_dir = v4(glm::normalize(fr.light->direction), fr.light->ambient);
   b.light_color = v4(fr.light->color, fr.gamma);
@@ -28,19 +26,46 @@ SurfaceBlock make_surface_block(const SurfaceFrame& fr, const Material& m, const
   b.ref_t = v4(fr.plane.t, fr.probe_height_lo_mm);
   b.ref_b = v4(fr.plane.b, fr.probe_height_hi_mm);
   b.window = v4(fr.window_center_uv.x, fr.window_center_uv.y, fr.window_half_mm, fr.depth_map_size);
-  b.albedo = v4(m.albedo, has_albedo_tex ? 1.0 : 0.0);
-  b.albedo_scale = v4(m.albedo_texture_scale_mm, m.albedo_texture_offset_mm.x, m.albedo_texture_offset_mm.y, 0.0);
-  b.intensity = v4(m.intensity_floor, m.intensity_scale, m.intensity_offset_mm, m.influence_distance_mm);
-  b.modulation = v4(speed_gain, m.onset_distance_mm, m.resistance, fr.contrast_sigmas);
-  b.gabor = gabor;
-  const size_t n = std::min(bodies.size(), static_cast<size_t>(kMaxSceneBodies));
-  for (size_t i = 0; i < n; ++i) b.body_spheres[i] = v4(bodies[i].centre, bodies[i].radius_mm);
-  b.body_count = glm::uvec4(static_cast<unsigned>(n), 0u, 0u, 0u);
   if (fr.probe_capsule) {
     const CapsuleShape& c = *fr.probe_capsule;
     b.probe_a = v4(to_plane(fr.plane, c.a), c.radius);
     b.probe_b = v4(to_plane(fr.plane, c.b), 1.0);
   }
+}
+
+// The band of w that counts as the probe's sheet is 15 % of the surface's w range: wide enough for
+// the sheet's own w change across the shadow window (a few mm), far narrower than the w gap where
+// sheets cross. The cutaway and the crossing diagram need the probe and the eye.
+void set_sheet(SurfaceBlock& b, const SheetInputs& s) {
+  b.sheet = glm::vec4(1.0f, static_cast<float>(s.w), 0.15f * s.w_range, static_cast<float>(s.crossing_diagram_mm));
+  if (s.cutaway_mm > 0.0 || s.crossing_diagram_mm > 0.0) {
+    const Camera& cam = *s.camera;
+    b.cutaway = glm::vec4(glm::vec3(s.probe_mm), static_cast<float>(s.cutaway_mm));
+    b.eye = cam.projection == Projection::kPerspective
+                ? glm::vec4(glm::vec3(cam.position), 1.0f)
+                : glm::vec4(glm::vec3(glm::normalize(cam.target - cam.position)), 0.0f);
+  }
+}
+
+}  // namespace
+
+SurfaceBlock make_surface_block(const SurfaceFrame& fr, const SurfaceInputs& in) {
+  assert(in.material && in.gabor && "make_surface_block: SurfaceInputs needs its material and Gabor block");
+  assert(in.bodies.size() <= static_cast<size_t>(kMaxSceneBodies) &&
+         "make_surface_block: more body casters than SurfaceBlock::body_spheres holds");
+  assert((!in.sheet || in.sheet->camera) && "make_surface_block: SheetInputs needs the camera (the eye)");
+  const Material& m = *in.material;
+  SurfaceBlock b;
+  set_frame(b, fr);
+  b.albedo = v4(m.albedo, in.has_albedo_tex ? 1.0 : 0.0);
+  b.albedo_scale = v4(m.albedo_texture_scale_mm, m.albedo_texture_offset_mm.x, m.albedo_texture_offset_mm.y, 0.0);
+  b.intensity = v4(m.intensity_floor, m.intensity_scale, m.intensity_offset_mm, m.influence_distance_mm);
+  b.modulation = v4(in.speed_gain, m.onset_distance_mm, m.resistance, fr.contrast_sigmas);
+  b.gabor = *in.gabor;
+  const size_t n = std::min(in.bodies.size(), static_cast<size_t>(kMaxSceneBodies));
+  for (size_t i = 0; i < n; ++i) b.body_spheres[i] = v4(in.bodies[i].centre, in.bodies[i].radius_mm);
+  b.body_count = glm::uvec4(static_cast<unsigned>(n), 0u, 0u, 0u);
+  if (in.sheet) set_sheet(b, *in.sheet);
   return b;
 }
 
@@ -93,33 +118,29 @@ Status SurfacePass::init(const std::string& glsl_root, const Params& params) {
   ubo_stride_ = static_cast<GLint>((sizeof(SurfaceBlock) + align - 1) / align * align);
   ubo_capacity_ = 1;
   ubo_ = gl::make_buffer(ubo_stride_, nullptr, GL_DYNAMIC_STORAGE_BIT);
-  auto warm = program(true, true);  // compile the common variant up front: errors surface early
+  auto warm = program(SurfaceFlag::kShadow | SurfaceFlag::kTextured);  // compile the common variant up front: errors surface early
   if (!warm) return warm.error();
   return ok_status();
 }
 
-Result<const gl::Program*> SurfacePass::program(bool shadow, bool textured, bool stratified,
-                                                int baked, int filter, bool intensity_lut) {
-  const bool tex = textured && shadow;
-  const auto key =
-      std::make_tuple(shadow, tex, stratified && tex && baked == 0, tex ? baked : 0, tex ? filter : 0, intensity_lut);
-  auto it = programs_.find(key);
+Result<const gl::Program*> SurfacePass::program(SurfaceFlags variant) {
+  auto it = programs_.find(variant);
   if (it != programs_.end()) return &it->second;
-  gl::ProgramDesc desc{{"surface.vert", "surface.frag"},
-                       {{"PS_SHADOW", shadow ? "1" : "0"}, {"PS_TEXTURED", tex ? "1" : "0"}}};
-  // Only the stratified variant gets the extra define: the naive source stays byte-identical.
-  if (std::get<2>(key)) desc.defines.push_back({"PS_GABOR_STRATIFIED", "1"});
-  if (std::get<3>(key)) desc.defines.push_back({"PS_GABOR_BAKED", std::to_string(std::get<3>(key))});
-  if (std::get<4>(key)) desc.defines.push_back({"PS_GABOR_FILTER", std::to_string(std::get<4>(key))});
-  if (intensity_lut) desc.defines.push_back({"PS_INTENSITY_LUT", "1"});
-  auto built = gl::build_program(desc, glsl_root_);
+  auto built = gl::build_program({{"surface.vert", "surface.frag"}, defines_for(variant)}, glsl_root_);
   if (!built) return built.error();
-  return &programs_.emplace(key, std::move(built.value())).first->second;
+  return &programs_.emplace(variant, std::move(built.value())).first->second;
 }
 
-Status SurfacePass::warm(bool stratified, int baked, int filter, bool intensity_lut) {
-  auto prog = program(true, true, stratified, baked, filter, intensity_lut);
+Status SurfacePass::warm(SurfaceFlags variant) {
+  auto prog = program(variant);
   return prog ? ok_status() : Status(prog.error());
+}
+
+SurfaceFlags SurfacePass::variant_of(const SurfaceDraw& d, bool shadow) {
+  return surface_variant({shadow && d.shadow, d.textured, d.stratified,
+                          d.gabor_tile ? (d.gabor_tile_linear ? 2 : 1) : 0,
+                          d.gabor_filter_skipped && d.gabor_filter ? 2 : d.gabor_filter ? 1 : 0,
+                          d.intensity_lut != nullptr});
 }
 
 Status SurfacePass::run(const std::vector<SurfaceDraw>& draws, const gl::Texture* probe_depth,
@@ -184,10 +205,7 @@ Status SurfacePass::run(const std::vector<SurfaceDraw>& draws, const gl::Texture
 Status SurfacePass::draw_all(const std::vector<SurfaceDraw>& draws, bool shadow) {
   for (size_t i = 0; i < draws.size(); ++i) {
     const SurfaceDraw& d = draws[i];
-    const bool own = shadow && d.shadow;
-    auto prog = program(own, d.textured, d.stratified, d.gabor_tile ? (d.gabor_tile_linear ? 2 : 1) : 0,
-                        d.gabor_filter_skipped && d.gabor_filter ? 2 : d.gabor_filter ? 1 : 0,
-                        d.intensity_lut != nullptr);
+    auto prog = program(variant_of(d, shadow));
     if (!prog) return prog.error();
     glUseProgram(prog.value()->id());
     glBindTextureUnit(1, d.albedo ? d.albedo->id() : dummy_.id());

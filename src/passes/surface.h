@@ -1,5 +1,5 @@
 // Surface pass (thesis Table 4.2 step 3): draws every surface once into an MRT framebuffer.
-// Variants: PS_SHADOW, PS_TEXTURED, PS_GABOR_STRATIFIED (textured only).
+// Variants by name (passes/surface_variant.h): one SurfaceFlags set per program.
 //   inputs : surfaces (GpuMesh + material uniforms), probe depth map (R32F), albedo textures,
 //            up to kMaxSceneBodies sphere casters per surface (their analytic pseudo-shadows
 //            darken the colour target only)
@@ -13,17 +13,14 @@
 //   All targets are allocated at the next power of two of the image size (mipmap averages are
 //   exact only for power-of-two RGBA32F on llvmpipe, docs/gl-stack.md); the viewport covers the
 //   image, the padding stays cleared and drops out of every ratio computed from the mips.
-// Shaders: glsl/surface.{vert,frag}; variants PS_SHADOW, PS_TEXTURED, PS_GABOR_STRATIFIED,
-// PS_GABOR_BAKED, PS_GABOR_FILTER, PS_INTENSITY_LUT (the material's intensity_lut in
-// IntensityLutBlock, uniform binding 1, make_intensity_lut_buffer; without it the source is
-// byte-identical to before).
+// Shaders: glsl/surface.{vert,frag}; the PS_INTENSITY_LUT variant reads the material's
+// intensity_lut in IntensityLutBlock (uniform binding 1, make_intensity_lut_buffer).
 #pragma once
 
 #include <limits>
 #include <map>
 #include <optional>
 #include <span>
-#include <tuple>
 #include <string>
 #include <utility>
 #include <vector>
@@ -35,6 +32,7 @@
 #include "passes/gabor_block.h"
 #include "passes/gpu_mesh.h"
 #include "passes/pixel_rect.h"
+#include "passes/surface_variant.h"
 #include "reference/basis.h"
 #include "reference/body_shadow.h"
 #include "reference/gabor.h"
@@ -93,12 +91,30 @@ struct SurfaceFrame {
   std::optional<CapsuleShape> probe_capsule;
 };
 
-// `gabor`: the material's texture as make_gabor_block() packed it (with its baked tile, if any).
-// `bodies`: the bodies whose pseudo-shadow may fall on this surface (at most kMaxSceneBodies;
-// lib/body_shadow.glsl), none by default.
-SurfaceBlock make_surface_block(const SurfaceFrame& frame, const Material& m, const GaborBlock& gabor,
-                                double speed_gain, bool has_albedo_tex,
-                                std::span<const SphereCaster> bodies = {});
+// A surface embedded in 4D (docs/fourd.md) shows the pseudo-shadow on the probe's sheet only:
+// SurfaceBlock::sheet, cutaway and eye.
+struct SheetInputs {
+  double w = 0.0;                  // the probe's sheet
+  float w_range = 0.0f;            // the surface's (max - min w); the sheet's band is 15 % of it
+  double crossing_diagram_mm = 0.0;
+  double cutaway_mm = 0.0;         // fourd::Spec's; both 0: no cutaway, no eye
+  glm::dvec3 probe_mm{0.0};        // the cutaway's centre
+  const Camera* camera = nullptr;  // the eye (its position, or its view direction if orthographic)
+};
+
+// What one surface's block is made from besides the frame. `gabor`: the material's texture as
+// make_gabor_block() packed it (with its baked tile, if any). `bodies`: the bodies whose
+// pseudo-shadow may fall on this surface (at most kMaxSceneBodies; lib/body_shadow.glsl).
+struct SurfaceInputs {
+  const Material* material = nullptr;
+  const GaborBlock* gabor = nullptr;
+  double speed_gain = 0.0;
+  bool has_albedo_tex = false;
+  std::span<const SphereCaster> bodies;
+  std::optional<SheetInputs> sheet;  // a surface embedded in 4D
+};
+
+SurfaceBlock make_surface_block(const SurfaceFrame& frame, const SurfaceInputs& in);
 
 struct SurfaceDraw {
   const GpuMesh* mesh = nullptr;
@@ -140,10 +156,11 @@ struct SurfacePass {
   // the footprint is absent (intensity 0 composites as rgb * 1).
   Status run(const std::vector<SurfaceDraw>& draws, const gl::Texture* probe_depth,
              const glm::dvec3& background, const PixelRect& shadow_rect);
-  // Builds a textured shadow variant now, not at its first draw (arguments as program()'s): a
-  // variant a live session switches to later (the filter's level of detail) is built ahead
-  // instead of stalling that frame.
-  Status warm(bool stratified, int baked, int filter, bool intensity_lut);
+  // Builds a variant now, not at its first draw: a variant a live session switches to later (the
+  // filter's level of detail) is built ahead instead of stalling that frame.
+  Status warm(SurfaceFlags variant);
+  // The variant that draws `d` (inside the shadow rectangle when `shadow`).
+  static SurfaceFlags variant_of(const SurfaceDraw& d, bool shadow);
   // The last run()'s shadow_rect, clipped to the image: where aov() is valid.
   const PixelRect& shadow_rect() const { return shadow_rect_; }
 
@@ -160,10 +177,7 @@ struct SurfacePass {
   int mip_levels() const { return levels_; }
 
  private:
-  // baked: 0 none, 1 Hermite lookup, 2 bilinear lookup (the PS_GABOR_BAKED value).
-  // filter: the PS_GABOR_FILTER value (0 none, 1 analytic, 2 analytic skipped this frame).
-  Result<const gl::Program*> program(bool shadow, bool textured, bool stratified = false,
-                                     int baked = 0, int filter = 0, bool intensity_lut = false);
+  Result<const gl::Program*> program(SurfaceFlags variant);  // built on first use, then cached
 
   std::string glsl_root_;
   Params params_;
@@ -173,7 +187,7 @@ struct SurfacePass {
   // with their PS_SHADOW=0 variant.
   Status draw_all(const std::vector<SurfaceDraw>& draws, bool shadow);
 
-  std::map<std::tuple<bool, bool, bool, int, int, bool>, gl::Program> programs_;
+  std::map<SurfaceFlags, gl::Program> programs_;
   gl::Texture color_, normal_, aov_, filter_need_, dummy_;
   gl::Renderbuffer depth_;
   gl::Framebuffer fbo_;

@@ -126,18 +126,15 @@ using namespace gabor_detail;
 double cell_sum(const GaborParams& g, const GaborSetup& s, std::uint32_t seed, int cx, int cy,
                 double px, double py, double* margin = nullptr, double trunc_factor = 0.0) {
   if (trunc_factor <= 0.0) trunc_factor = s.trunc_factor;
-  std::uint32_t r = gabor_cell_seed(cx, cy, seed);
-  const int count = cell_count(g, s, r);
-  const int grid = stratum_grid(s);
   double sum = 0.0;
-  for (int k = 0; k < count; ++k) {
-    const auto [dx, dy, amp, lambda, theta, psi, w, r2] = draw_impulse(g, s, r, k, grid, px, py);
+  for_each_impulse(g, s, seed, cx, cy, px, py, [&](const Impulse& im) {
+    const auto [dx, dy, amp, lambda, theta, psi, w, r2] = im;
     if (margin && w > 0.0)
       *margin = std::min(*margin, std::abs(std::sqrt(r2) - w * std::sqrt(s.trunc_factor)));
-    if (w <= 0.0 || r2 >= w * w * trunc_factor) continue;
+    if (w <= 0.0 || r2 >= w * w * trunc_factor) return;
     const double phase = 2.0 * std::numbers::pi * (dx * std::cos(theta) + dy * std::sin(theta)) / lambda;
     sum += amp * std::exp(-r2 / (w * w)) * std::cos(phase + psi);
-  }
+  });
   return sum;
 }
 
@@ -149,13 +146,10 @@ namespace {
 GaborSample cell_sample(const GaborParams& g, const GaborSetup& s, std::uint32_t seed, int cx,
                         int cy, double px, double py, double sigma2 = 0.0) {
   if (sigma2 > 0.0) return gabor_detail::cell_sample_filtered(g, s, seed, cx, cy, px, py, sigma2);
-  std::uint32_t r = gabor_cell_seed(cx, cy, seed);
-  const int count = cell_count(g, s, r);
-  const int grid = stratum_grid(s);
   GaborSample out;
-  for (int k = 0; k < count; ++k) {
-    const auto [dx, dy, amp, lambda, theta, psi, w, r2] = draw_impulse(g, s, r, k, grid, px, py);
-    if (w <= 0.0 || r2 >= w * w * s.trunc_factor) continue;
+  for_each_impulse(g, s, seed, cx, cy, px, py, [&](const Impulse& im) {
+    const auto [dx, dy, amp, lambda, theta, psi, w, r2] = im;
+    if (w <= 0.0 || r2 >= w * w * s.trunc_factor) return;
     // k = A E cos(P), E = exp(-r^2/W^2), P = f (d . o) + psi, f = 2 pi / lambda, o = (cos, sin).
     const double ox = std::cos(theta), oy = std::sin(theta), f = 2.0 * std::numbers::pi / lambda;
     const double e = amp * std::exp(-r2 / (w * w)), iw2 = 1.0 / (w * w);
@@ -165,7 +159,7 @@ GaborSample cell_sample(const GaborParams& g, const GaborSetup& s, std::uint32_t
     out.fv += e * (-2.0 * dy * iw2 * c - sn * f * oy);
     out.fuv += e * (4.0 * dx * dy * iw2 * iw2 * c + 2.0 * dx * iw2 * sn * f * oy +
                     2.0 * dy * iw2 * sn * f * ox - c * f * f * ox * oy);
-  }
+  });
   return out;
 }
 
@@ -206,17 +200,12 @@ GaborBakePlan make_gabor_bake_plan(const GaborParams& g, const GaborSetup& s) {
 
 GaborSample gabor_noise_derivatives(const GaborParams& g, const GaborSetup& s, std::uint32_t seed,
                                     double u, double v, int period_cells, double sigma2_mm2) {
-  const double fx = u / s.cell_mm, fy = v / s.cell_mm;
-  const int cx = static_cast<int>(std::floor(fx)), cy = static_cast<int>(std::floor(fy));
-  const double ox = (fx - cx) * s.cell_mm, oy = (fy - cy) * s.cell_mm;
   GaborSample sum;
-  for (int j = -1; j <= 1; ++j)
-    for (int i = -1; i <= 1; ++i) {
-      const GaborSample c = cell_sample(g, s, seed, wrap_cell(cx + i, period_cells),
-                                        wrap_cell(cy + j, period_cells), ox - i * s.cell_mm,
-                                        oy - j * s.cell_mm, sigma2_mm2);
-      sum.f += c.f, sum.fu += c.fu, sum.fv += c.fv, sum.fuv += c.fuv;
-    }
+  for_each_cell(s, u, v, 1, [&](int cx, int cy, double px, double py) {
+    const GaborSample c =
+        cell_sample(g, s, seed, wrap_cell(cx, period_cells), wrap_cell(cy, period_cells), px, py, sigma2_mm2);
+    sum.f += c.f, sum.fu += c.fu, sum.fv += c.fv, sum.fuv += c.fuv;
+  });
   return sum;
 }
 
@@ -315,38 +304,25 @@ GaborStrategyChoice choose_gabor_tile(const GaborParams& g, const GaborSetup& s,
 
 double gabor_noise(const GaborParams& g, const GaborSetup& s, std::uint32_t seed, double u,
                    double v) {
-  const double fx = u / s.cell_mm, fy = v / s.cell_mm;
-  const int cx = static_cast<int>(std::floor(fx)), cy = static_cast<int>(std::floor(fy));
-  const double ox = (fx - cx) * s.cell_mm, oy = (fy - cy) * s.cell_mm;  // p relative to its cell
   double sum = 0.0;
-  for (int j = -1; j <= 1; ++j)
-    for (int i = -1; i <= 1; ++i)
-      sum += cell_sum(g, s, seed, cx + i, cy + j, ox - i * s.cell_mm, oy - j * s.cell_mm);
+  for_each_cell(s, u, v, 1, [&](int cx, int cy, double px, double py) { sum += cell_sum(g, s, seed, cx, cy, px, py); });
   return sum;
 }
 
 double gabor_noise_untruncated(const GaborParams& g, const GaborSetup& s, std::uint32_t seed,
                                double u, double v) {
-  const double fx = u / s.cell_mm, fy = v / s.cell_mm;
-  const int cx = static_cast<int>(std::floor(fx)), cy = static_cast<int>(std::floor(fy));
-  const double ox = (fx - cx) * s.cell_mm, oy = (fy - cy) * s.cell_mm;
   double sum = 0.0;
-  for (int j = -2; j <= 2; ++j)
-    for (int i = -2; i <= 2; ++i)  // 2 cells = 2 W sqrt(-ln t): radius at which exp = t^4
-      sum += cell_sum(g, s, seed, cx + i, cy + j, ox - i * s.cell_mm, oy - j * s.cell_mm, nullptr,
-                      4.0 * s.trunc_factor);
+  // 2 cells = 2 W sqrt(-ln t): radius at which exp = t^4
+  for_each_cell(s, u, v, 2, [&](int cx, int cy, double px, double py) {
+    sum += cell_sum(g, s, seed, cx, cy, px, py, nullptr, 4.0 * s.trunc_factor);
+  });
   return sum;
 }
 
 double gabor_truncation_margin(const GaborParams& g, const GaborSetup& s, std::uint32_t seed,
                                double u, double v) {
-  const double fx = u / s.cell_mm, fy = v / s.cell_mm;
-  const int cx = static_cast<int>(std::floor(fx)), cy = static_cast<int>(std::floor(fy));
-  const double ox = (fx - cx) * s.cell_mm, oy = (fy - cy) * s.cell_mm;
   double margin = std::numeric_limits<double>::infinity();
-  for (int j = -1; j <= 1; ++j)
-    for (int i = -1; i <= 1; ++i)
-      cell_sum(g, s, seed, cx + i, cy + j, ox - i * s.cell_mm, oy - j * s.cell_mm, &margin);
+  for_each_cell(s, u, v, 1, [&](int cx, int cy, double px, double py) { cell_sum(g, s, seed, cx, cy, px, py, &margin); });
   return margin;
 }
 

@@ -34,18 +34,15 @@ FilteredKernel filter_kernel(double amp, double lambda, double theta, double w, 
 
 double cell_sum_filtered(const GaborParams& g, const GaborSetup& s, std::uint32_t seed, int cx, int cy,
                          double px, double py, const Cov2& S) {
-  std::uint32_t r = gabor_cell_seed(cx, cy, seed);
-  const int count = cell_count(g, s, r);
-  const int grid = stratum_grid(s);
   double sum = 0.0;
-  for (int k = 0; k < count; ++k) {
-    const auto [dx, dy, amp, lambda, theta, psi, w, r2] = draw_impulse(g, s, r, k, grid, px, py);
-    if (w <= 0.0) continue;
+  for_each_impulse(g, s, seed, cx, cy, px, py, [&](const Impulse& im) {
+    const auto [dx, dy, amp, lambda, theta, psi, w, r2] = im;
+    if (w <= 0.0) return;
     const FilteredKernel f = filter_kernel(amp, lambda, theta, w, S);
     const double q = f.qxx * dx * dx + 2.0 * f.qxy * dx * dy + f.qyy * dy * dy;
-    if (q >= 2.0 * s.trunc_factor) continue;  // the filtered envelope below the truncation
+    if (q >= 2.0 * s.trunc_factor) return;  // the filtered envelope below the truncation
     sum += f.amp * std::exp(-0.5 * q) * std::cos(f.kx * dx + f.ky * dy + psi);
-  }
+  });
   return sum;
 }
 
@@ -115,16 +112,12 @@ double gabor_kernel_filtered(const GaborKernelShape& k, double dx, double dy, co
 
 double gabor_noise_filtered(const GaborParams& g, const GaborSetup& s, std::uint32_t seed, double u,
                             double v, const Cov2& S) {
-  const double fx = u / s.cell_mm, fy = v / s.cell_mm;
-  const int cx = static_cast<int>(std::floor(fx)), cy = static_cast<int>(std::floor(fy));
-  const double ox = (fx - cx) * s.cell_mm, oy = (fy - cy) * s.cell_mm;
   double sum = 0.0;
-  for (int j = -1; j <= 1; ++j)
-    for (int i = -1; i <= 1; ++i)
-      sum += cell_sum_filtered(g, s, seed, cx + i, cy + j, ox - i * s.cell_mm, oy - j * s.cell_mm, S);
+  for_each_cell(s, u, v, 1, [&](int cx, int cy, double px, double py) {
+    sum += cell_sum_filtered(g, s, seed, cx, cy, px, py, S);
+  });
   return sum;
 }
-
 
 namespace gabor_detail {
 
@@ -133,24 +126,21 @@ namespace gabor_detail {
 // E_u = -g_u E, E_uv = (g_u g_v - Q_uv) E.
 GaborSample cell_sample_filtered(const GaborParams& g, const GaborSetup& s, std::uint32_t seed, int cx,
                                  int cy, double px, double py, double sigma2) {
-  std::uint32_t r = gabor_cell_seed(cx, cy, seed);
-  const int count = cell_count(g, s, r);
-  const int grid = stratum_grid(s);
   GaborSample out;
-  for (int k = 0; k < count; ++k) {
-    const auto [dx, dy, amp, lambda, theta, psi, w, r2] = draw_impulse(g, s, r, k, grid, px, py);
-    if (w <= 0.0) continue;
+  for_each_impulse(g, s, seed, cx, cy, px, py, [&](const Impulse& im) {
+    const auto [dx, dy, amp, lambda, theta, psi, w, r2] = im;
+    if (w <= 0.0) return;
     const FilteredKernel f = filter_kernel(amp, lambda, theta, w, Cov2{sigma2, 0.0, sigma2});
     const double gu = f.qxx * dx + f.qxy * dy, gv = f.qxy * dx + f.qyy * dy;
     const double q = dx * gu + dy * gv;
-    if (q >= 2.0 * s.trunc_factor) continue;
+    if (q >= 2.0 * s.trunc_factor) return;
     const double e = f.amp * std::exp(-0.5 * q), ph = f.kx * dx + f.ky * dy + psi;
     const double c = std::cos(ph), sn = std::sin(ph);
     out.f += e * c;
     out.fu += e * (-gu * c - sn * f.kx);
     out.fv += e * (-gv * c - sn * f.ky);
     out.fuv += e * ((gu * gv - f.qxy) * c + gu * sn * f.ky + gv * sn * f.kx - c * f.kx * f.ky);
-  }
+  });
   return out;
 }
 

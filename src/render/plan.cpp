@@ -40,12 +40,12 @@ bool sunk_below(const BoundingSphere& probe, const Aabb& box, const PlaneFrame& 
 }
 
 // The range of heights along f.n of the shadowed surfaces' boxes (their corners bound it).
-void shadowed_height_range(const std::vector<Aabb>& bounds, const std::vector<bool>& shadowed,
+void shadowed_height_range(std::span<const Aabb> bounds, const std::vector<SurfacePlan>& surfaces,
                            const PlaneFrame& f, double& lo, double& hi) {
   lo = 1e300;
   hi = -1e300;
   for (size_t i = 0; i < bounds.size(); ++i) {
-    if (!shadowed[i]) continue;
+    if (!surfaces[i].shadow) continue;
     for (int k = 0; k < 8; ++k) {
       const glm::dvec3 corner((k & 1) ? bounds[i].max.x : bounds[i].min.x, (k & 2) ? bounds[i].max.y : bounds[i].min.y,
                               (k & 4) ? bounds[i].max.z : bounds[i].min.z);
@@ -105,31 +105,28 @@ PixelRect footprint_screen_rect(const Camera& camera, int width, int height, con
   return PixelRect{lo_px(x_lo, width), lo_px(y_lo, height), hi_px(x_hi, width), hi_px(y_hi, height)}.clipped_to(image);
 }
 
-FramePlan make_plan(const Scene& scene, const std::vector<Aabb>& bounds,
+FramePlan make_plan(const Scene& scene, std::span<const Aabb> bounds,
                     const BoundingSphere& probe, const PlaneFrame& frame, int depth_map_size) {
   return make_plan(scene, scene.camera, bounds, probe, frame, depth_map_size);
 }
 
-FramePlan make_plan(const Scene& scene, const Camera& camera, const std::vector<Aabb>& bounds,
+FramePlan make_plan(const Scene& scene, const Camera& camera, std::span<const Aabb> bounds,
                     const BoundingSphere& probe, const PlaneFrame& frame, int depth_map_size) {
   FramePlan plan;
   const size_t n = scene.surfaces.size();
-  plan.surface_shadow.assign(n, false);
-  plan.surface_textured.assign(n, false);
-  plan.surface_distance_mm.assign(n, 0.0);
+  plan.surfaces.resize(n);
   for (size_t i = 0; i < n; ++i) {
     const Material& m = scene.materials[static_cast<size_t>(scene.surfaces[i].material_index)];
-    const double dist = distance_sphere_aabb(probe, bounds[i]);
-    plan.surface_distance_mm[i] = dist;
-    plan.surface_shadow[i] = dist < m.influence_distance_mm ||
-                             sunk_below(probe, bounds[i], frame, m.influence_distance_mm);
-    plan.surface_textured[i] = plan.surface_shadow[i] && has_texture(m);
-    if (!plan.surface_shadow[i]) {
+    SurfacePlan& sp = plan.surfaces[i];
+    sp.distance_mm = distance_sphere_aabb(probe, bounds[i]);
+    sp.shadow = sp.distance_mm < m.influence_distance_mm || sunk_below(probe, bounds[i], frame, m.influence_distance_mm);
+    sp.textured = sp.shadow && has_texture(m);
+    if (!sp.shadow) {
       plan.skipped.push_back(surface_label(scene, i) + ": pseudo-shadow and Gabor (probe beyond influence distance)");
-    } else if (!plan.surface_textured[i]) {
+    } else if (!sp.textured) {
       plan.skipped.push_back(surface_label(scene, i) + ": Gabor (material untextured)");
     }
-    plan.shadow_active = plan.shadow_active || plan.surface_shadow[i];
+    plan.shadow_active = plan.shadow_active || sp.shadow;
   }
   if (!plan.shadow_active) {
     plan.skipped.push_back("probe_depth: probe beyond every surface's influence distance");
@@ -141,7 +138,7 @@ FramePlan make_plan(const Scene& scene, const Camera& camera, const std::vector<
   plan.window.half_size_mm = probe.radius * (1.0 + 2.0 / std::max(depth_map_size, 2)) + 1e-6;
   if (plan.shadow_active) {
     double lo = 0.0, hi = 0.0;
-    shadowed_height_range(bounds, plan.surface_shadow, frame, lo, hi);
+    shadowed_height_range(bounds, plan.surfaces, frame, lo, hi);
     plan.shadow_rect = footprint_screen_rect(camera, scene.render.width, scene.render.height, frame,
                                              plan.window, depth_map_size, lo, hi);
   }

@@ -30,11 +30,16 @@ struct Aabb {
   glm::dvec3 min{0.0}, max{0.0};
 };
 
+// What the plan decided for one surface.
+struct SurfacePlan {
+  bool shadow = false;       // PS_SHADOW: within the material's influence distance
+  bool textured = false;     // PS_TEXTURED: shadowed and textured
+  double distance_mm = 0.0;  // probe bounds to surface bounds
+};
+
 struct FramePlan {
   bool shadow_active = false;           // depth pass + reductions run
-  std::vector<bool> surface_shadow;     // per surface: PS_SHADOW
-  std::vector<bool> surface_textured;   // per surface: PS_TEXTURED
-  std::vector<double> surface_distance_mm;  // probe bounds to surface bounds
+  std::vector<SurfacePlan> surfaces;    // index = Scene::surfaces
   DepthWindow window;
   // The pixels (image size, GL window coordinates) that can show a shadowed surface inside the
   // depth-map window: the only ones whose intensity, distance and texture can differ from the
@@ -66,10 +71,11 @@ bool has_texture(const Material& m);
 
 // `depth_map_size` sets the margin: the window is the probe's bounding disc plus one texel.
 // `camera`: the one the frame draws with (the scene's moved by the view, Renderer::camera()).
-FramePlan make_plan(const Scene& scene, const Camera& camera, const std::vector<Aabb>& surface_bounds,
+// `surface_bounds`: index = Scene::surfaces.
+FramePlan make_plan(const Scene& scene, const Camera& camera, std::span<const Aabb> surface_bounds,
                     const BoundingSphere& probe, const PlaneFrame& frame, int depth_map_size);
 // The scene's own camera.
-FramePlan make_plan(const Scene& scene, const std::vector<Aabb>& surface_bounds,
+FramePlan make_plan(const Scene& scene, std::span<const Aabb> surface_bounds,
                     const BoundingSphere& probe, const PlaneFrame& frame, int depth_map_size);
 
 }  // namespace ps

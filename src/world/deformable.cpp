@@ -20,6 +20,8 @@ bool finite3(const glm::dvec3& v) { return std::isfinite(v.x) && std::isfinite(v
 
 }  // namespace
 
+// Whole (47 lines): weld, adjacency, rest normals and the stable substep are built in that order from
+// each other's results, once; each is a short block with its reason beside it.
 Deformable::Deformable(const Mesh& rest, const DeformParams& params) : params_(params) {
   // Weld by position on a 1e-4 mm grid: files split vertices at seams and hard edges, and a
   // closed parametric shape's seam (u = 0 and u = 1) repeats its positions only to rounding.
@@ -106,6 +108,35 @@ void Deformable::collect_active(const glm::dvec3& centre_mm, double radius_mm, b
   }
 }
 
+// The springs' force on every active vertex (N: N/mm * mm), into force_.
+void Deformable::accumulate_forces() {
+  const double kb = params_.base_n_per_mm, kn = params_.neighbour_n_per_mm;  // N/mm
+  for (const std::uint32_t i : active_) {
+    const glm::dvec3 ui = x_[i] - base_[i];
+    glm::dvec3 f = -kb * ui;
+    for (std::uint32_t e = nbr_begin_[i]; e < nbr_begin_[i + 1]; ++e) {
+      const std::uint32_t j = nbr_[e];
+      f += kn * ((x_[j] - base_[j]) - ui);
+    }
+    force_[i] = f;
+  }
+}
+
+// Vertex i held out of the probe sphere (kContactOverlapMm inside its surface); true if it was inside.
+bool Deformable::hold_out_of_probe(std::uint32_t i, const glm::dvec3& centre_mm, double radius_mm) {
+  const glm::dvec3 d = x_[i] - centre_mm;
+  const double len = glm::length(d);
+  const double held = std::max(0.0, radius_mm - kContactOverlapMm);
+  if (!(len < held)) return false;
+  // Onto the probe's surface, along the line from its centre (the probe pushes straight
+  // out of itself); at the very centre, back toward the base point.
+  const glm::dvec3 dir = len > 1e-9 ? d / len : glm::normalize(base_[i] - centre_mm + glm::dvec3(0.0, 0.0, 1e-9));
+  x_[i] = centre_mm + held * dir;
+  const double into = glm::dot(v_[i], dir);
+  if (into < 0.0) v_[i] -= into * dir;
+  return true;
+}
+
 DeformStep Deformable::step(double dt_s, const glm::dvec3& centre_mm, double radius_mm) {
   DeformStep out;
   if (!(dt_s > 0.0)) return out;
@@ -113,40 +144,18 @@ DeformStep Deformable::step(double dt_s, const glm::dvec3& centre_mm, double rad
   out.substeps = static_cast<int>(std::ceil(dt_s / substep_s_ - 1e-9));
   const double h = dt_s / out.substeps;
   const double m = params_.mass_g * 1e-3;                          // kg
-  const double kb = params_.base_n_per_mm, kn = params_.neighbour_n_per_mm;  // N/mm
   const double c = params_.damping_n_s_per_mm * kMmPerM;           // N s/m
   const double damp = 1.0 / (1.0 + h * c / m);                     // implicit damping factor
   const bool probe = finite3(centre_mm) && std::isfinite(radius_mm) && radius_mm > 0.0;
   const double max_mm = params_.max_mm;
   collect_active(centre_mm, radius_mm, probe);
   for (int s = 0; s < out.substeps; ++s) {
-    for (const std::uint32_t i : active_) {
-      const glm::dvec3 ui = x_[i] - base_[i];
-      glm::dvec3 f = -kb * ui;
-      for (std::uint32_t e = nbr_begin_[i]; e < nbr_begin_[i + 1]; ++e) {
-        const std::uint32_t j = nbr_[e];
-        f += kn * ((x_[j] - base_[j]) - ui);
-      }
-      force_[i] = f;  // N (N/mm * mm)
-    }
+    accumulate_forces();
     out.constrained = 0;
     for (const std::uint32_t i : active_) {
       v_[i] = (v_[i] + h * force_[i] / m * kMmPerM) * damp;  // mm/s
       x_[i] += h * v_[i];
-      if (probe) {
-        const glm::dvec3 d = x_[i] - centre_mm;
-        const double len = glm::length(d);
-        const double held = std::max(0.0, radius_mm - kContactOverlapMm);
-        if (len < held) {
-          // Onto the probe's surface, along the line from its centre (the probe pushes straight
-          // out of itself); at the very centre, back toward the base point.
-          const glm::dvec3 dir = len > 1e-9 ? d / len : glm::normalize(base_[i] - centre_mm + glm::dvec3(0.0, 0.0, 1e-9));
-          x_[i] = centre_mm + held * dir;
-          const double into = glm::dot(v_[i], dir);
-          if (into < 0.0) v_[i] -= into * dir;
-          ++out.constrained;
-        }
-      }
+      if (probe && hold_out_of_probe(i, centre_mm, radius_mm)) ++out.constrained;
       const glm::dvec3 u = x_[i] - base_[i];
       const double ul = glm::length(u);
       if (ul > max_mm) {

@@ -83,6 +83,8 @@ class Deformable {
   double substep_s_ = 1e-3;
   std::vector<glm::dvec3> area_normals() const;
   void collect_active(const glm::dvec3& centre_mm, double radius_mm, bool probe);
+  void accumulate_forces();
+  bool hold_out_of_probe(std::uint32_t i, const glm::dvec3& centre_mm, double radius_mm);
 };
 
 // `mesh` with every triangle split into four (edge midpoints shared by the triangles that share

@@ -17,10 +17,10 @@ TEST(PlanTest, NearProbeShadowsAndTextures) {
   const Scene s = test::flat_plane_scene(10.0);
   const FramePlan p = make_plan(s, plane_bounds(), {{0, 0, 10}, 8}, make_plane_frame({0, 0, 1}), 256);
   EXPECT_TRUE(p.shadow_active);
-  EXPECT_TRUE(p.surface_shadow[0]);
-  EXPECT_TRUE(p.surface_textured[0]);
+  EXPECT_TRUE(p.surfaces[0].shadow);
+  EXPECT_TRUE(p.surfaces[0].textured);
   EXPECT_TRUE(p.skipped.empty());
-  EXPECT_NEAR(p.surface_distance_mm[0], 2.0, 1e-12);
+  EXPECT_NEAR(p.surfaces[0].distance_mm, 2.0, 1e-12);
   EXPECT_GT(p.window.half_size_mm, 8.0);
   EXPECT_LT(p.window.half_size_mm, 8.1);
 }
@@ -31,7 +31,7 @@ TEST(PlanTest, ProbeSunkFarBelowTheSurfaceStillShadows) {
   const Scene s = test::flat_plane_scene(-1000.0);
   const FramePlan p = make_plan(s, plane_bounds(), {{0, 0, -1000}, 8}, make_plane_frame({0, 0, 1}), 256);
   EXPECT_TRUE(p.shadow_active);
-  EXPECT_TRUE(p.surface_shadow[0]);
+  EXPECT_TRUE(p.surfaces[0].shadow);
   // Laterally beyond the plane's edge it stays skipped.
   const FramePlan q = make_plan(s, plane_bounds(), {{500, 0, -1000}, 8}, make_plane_frame({0, 0, 1}), 256);
   EXPECT_FALSE(q.shadow_active);
@@ -49,12 +49,12 @@ TEST(PlanTest, UntexturedMaterialCompilesGaborOut) {
   Scene s = test::flat_plane_scene(10.0);
   s.materials[0].textured = false;
   FramePlan p = make_plan(s, plane_bounds(), {{0, 0, 10}, 8}, make_plane_frame({0, 0, 1}), 256);
-  EXPECT_TRUE(p.surface_shadow[0]);
-  EXPECT_FALSE(p.surface_textured[0]);
+  EXPECT_TRUE(p.surfaces[0].shadow);
+  EXPECT_FALSE(p.surfaces[0].textured);
   s.materials[0].textured = true;
   s.materials[0].gabor.a_min = s.materials[0].gabor.a_max = 0.0;  // zero amplitude: nothing to draw
   p = make_plan(s, plane_bounds(), {{0, 0, 10}, 8}, make_plane_frame({0, 0, 1}), 256);
-  EXPECT_FALSE(p.surface_textured[0]);
+  EXPECT_FALSE(p.surfaces[0].textured);
 }
 
 // The influence distance is a strict bound (d < influence shadows; the shader's curve is 0 at
@@ -69,16 +69,16 @@ TEST(PlanTest, InfluenceDistanceBoundary) {
     return make_plan(s, plane_bounds(), {{0, 0, r + gap_mm}, r}, make_plane_frame({0, 0, 1}), 256);
   };
   const FramePlan inside = plan_at(influence - 0.01);
-  EXPECT_NEAR(inside.surface_distance_mm[0], influence - 0.01, 1e-12);
+  EXPECT_NEAR(inside.surfaces[0].distance_mm, influence - 0.01, 1e-12);
   EXPECT_TRUE(inside.shadow_active);
-  EXPECT_TRUE(inside.surface_shadow[0]);
-  EXPECT_TRUE(inside.surface_textured[0]);
+  EXPECT_TRUE(inside.surfaces[0].shadow);
+  EXPECT_TRUE(inside.surfaces[0].textured);
   EXPECT_TRUE(inside.skipped.empty());
   for (const double gap : {influence, influence + 0.01}) {
     const FramePlan outside = plan_at(gap);
     EXPECT_FALSE(outside.shadow_active) << "gap " << gap << " mm";
-    EXPECT_FALSE(outside.surface_shadow[0]) << "gap " << gap << " mm";
-    EXPECT_FALSE(outside.surface_textured[0]) << "gap " << gap << " mm";
+    EXPECT_FALSE(outside.surfaces[0].shadow) << "gap " << gap << " mm";
+    EXPECT_FALSE(outside.surfaces[0].textured) << "gap " << gap << " mm";
   }
   // The same boundary for a material with its own, shorter influence distance.
   Scene near = s;
@@ -86,8 +86,8 @@ TEST(PlanTest, InfluenceDistanceBoundary) {
   const auto near_plan = [&](double gap_mm) {
     return make_plan(near, plane_bounds(), {{0, 0, r + gap_mm}, r}, make_plane_frame({0, 0, 1}), 256);
   };
-  EXPECT_TRUE(near_plan(2.99).surface_shadow[0]);
-  EXPECT_FALSE(near_plan(3.01).surface_shadow[0]);
+  EXPECT_TRUE(near_plan(2.99).surfaces[0].shadow);
+  EXPECT_FALSE(near_plan(3.01).surfaces[0].shadow);
 }
 
 // A probe beside the plane's edge, below its top: the footprint test of sunk_below() reaches
@@ -99,8 +99,8 @@ TEST(PlanTest, SunkProbeBesideTheEdgeUsesTheInfluenceDistance) {
     return make_plan(s, plane_bounds(), {{x, 0, -20}, r}, make_plane_frame({0, 0, 1}), 256);
   };
   // Footprint disc edge to the plane's edge (x = 100): x - 100 - r.
-  EXPECT_TRUE(plan_at(100.0 + r + influence - 0.01).surface_shadow[0]);
-  EXPECT_FALSE(plan_at(100.0 + r + influence + 0.01).surface_shadow[0]);
+  EXPECT_TRUE(plan_at(100.0 + r + influence - 0.01).surfaces[0].shadow);
+  EXPECT_FALSE(plan_at(100.0 + r + influence + 0.01).surfaces[0].shadow);
 }
 
 // A body casts on a surface only when nearer than the receiving material's influence distance
