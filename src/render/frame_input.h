@@ -60,7 +60,7 @@ struct FrameInput {
   std::optional<ProbeSheet> sheet;      // each given sheet also extends the 4D path when shown
   std::optional<std::vector<glm::dvec3>> bodies_mm;  // Scene::bodies' centres, in order
   std::optional<std::vector<WorldMarker>> markers;   // charges, bands, the force arrow
-  // Session time: deformable surfaces are stepped to it (Renderer::advance_deformation). NaN:
+  // Session time: deformable surfaces are stepped to it (world::DeformableSurfaces::advance). NaN:
   // not stepped.
   double time_s = std::nan("");
 };

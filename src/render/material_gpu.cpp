@@ -6,6 +6,7 @@
 
 #include "image/image.h"
 #include "passes/surface.h"
+#include "render/plan.h"  // has_texture
 
 namespace ps {
 
@@ -126,6 +127,71 @@ std::shared_ptr<gl::Texture> reusable_tile(std::span<const MaterialGpu> old, con
       return o.gabor_tile;
   }
   return nullptr;
+}
+
+// The probe's position at creation stands for the frames' (a replay that brings it much closer
+// bakes less often than it should; the images are right either way).
+double textured_pixels_bound(const RenderSettings& rs, const Camera& c, const glm::dvec3& probe_mm,
+                             double probe_diameter_mm) {
+  const double image = static_cast<double>(rs.width) * rs.height;
+  const double radius = 0.5 * probe_diameter_mm;
+  double pixels_per_mm = 0.0;
+  if (c.projection == Projection::kOrthographic) {
+    pixels_per_mm = rs.height / std::max(c.ortho_height_mm, 1e-9);
+  } else {
+    const double distance = glm::length(probe_mm - c.position) - radius;
+    if (distance <= c.near_mm) return image;
+    pixels_per_mm = rs.height / (2.0 * distance * std::tan(glm::radians(c.fov_y_deg) * 0.5));
+  }
+  const double side_px = 2.0 * radius * pixels_per_mm;
+  return std::min(image, side_px * side_px);
+}
+
+Status MaterialSet::load(std::span<const Material> materials, const StrategyInputs& in) {
+  for (const Material& m : materials) {
+    auto ms = load_material_gpu(m, in);
+    if (!ms) return ms.error();
+    materials_.push_back(std::move(ms.value()));
+  }
+  return ok_status();
+}
+
+Status MaterialSet::bake(const std::string& glsl_root, double slice_ms, const MaterialSet* reuse) {
+  tiles_.set_params({slice_ms});
+  for (size_t i = 0; i < materials_.size(); ++i) {
+    MaterialGpu& ms = materials_[i];
+    if (!ms.bake_plan.ok) continue;
+    if (reuse) ms.gabor_tile = reusable_tile(reuse->materials_, *ms.material, ms.bake_plan);
+    if (!ms.gabor_tile) tiles_.add(i, ms.gabor_block, ms.bake_plan);
+  }
+  if (slice_ms <= 0.0)
+    if (Status s = tiles_.bake_all(glsl_root); !s) return s;
+  collect();
+  return ok_status();
+}
+
+Status MaterialSet::advance(const std::string& glsl_root) {
+  if (tiles_.done()) return ok_status();
+  if (Status s = tiles_.bake_slice(glsl_root); !s) return s;
+  collect();
+  return ok_status();
+}
+
+Status MaterialSet::warm_unfiltered(SurfacePass& surface, std::span<const Surface> surfaces) const {
+  for (const Surface& s : surfaces) {
+    const MaterialGpu& ms = materials_[static_cast<std::size_t>(s.material_index)];
+    const Material& m = *ms.material;
+    if (!has_texture(m) || m.gabor.filter != GaborParams::Filter::kAnalytic) continue;
+    const int baked = ms.bake_plan.ok ? (ms.bake_plan.linear ? 2 : 1) : 0;
+    const SurfaceFlags variant =
+        surface_variant({true, true, ms.gabor_setup.stratified_count > 0, baked, 2, static_cast<bool>(ms.intensity_lut)});
+    if (Status st = surface.warm(variant); !st) return st;
+  }
+  return ok_status();
+}
+
+void MaterialSet::collect() {
+  for (TileBaker::Finished& f : tiles_.take_finished()) materials_[f.material].gabor_tile = std::move(f.tile);
 }
 
 }  // namespace ps

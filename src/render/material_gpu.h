@@ -10,14 +10,18 @@
 #include <memory>
 #include <span>
 #include <string>
+#include <vector>
 
 #include "core/result.h"
 #include "gl/objects.h"
 #include "passes/gabor_bake.h"
 #include "passes/gabor_block.h"
+#include "render/tile_bake.h"
 #include "scene/scene.h"
 
 namespace ps {
+
+struct SurfacePass;
 
 struct MaterialGpu {
   const Material* material = nullptr;  // the scene's, this state was made from (never copied)
@@ -50,5 +54,40 @@ Result<MaterialGpu> load_material_gpu(const Material& m, const StrategyInputs& i
 // Gabor parameters and plan; null if none. The seeds must be equal.
 std::shared_ptr<gl::Texture> reusable_tile(std::span<const MaterialGpu> old, const Material& m,
                                            const GaborBakePlan& plan);
+
+// An upper bound on the pixels a frame textures: the pseudo-shadow's square window (as wide as
+// the probe's bounding diameter `probe_diameter_mm`, plan.cpp) seen face-on at the probe's nearest
+// distance to the camera (foreshortening only shrinks it), capped by the image.
+double textured_pixels_bound(const RenderSettings& rs, const Camera& camera, const glm::dvec3& probe_mm,
+                             double probe_diameter_mm);
+
+// A renderer's materials on the GPU (index = Scene::materials) and the tiles still to bake for
+// them (all at once unless sliced: render/tile_bake.h).
+class MaterialSet {
+ public:
+  Status load(std::span<const Material> materials, const StrategyInputs& in);
+  // Strategy "baked": one tile per material, baked here (or queued for advance() when
+  // slice_ms > 0), i.e. again only when the material changes (every edit builds a new renderer).
+  // `reuse`: an earlier renderer's set of the same seed, whose unchanged finished tiles are kept
+  // (null: none).
+  Status bake(const std::string& glsl_root, double slice_ms, const MaterialSet* reuse);
+  // One band of the queued tiles (nothing when done); a finished tile replaces its material's
+  // per-pixel sum from the next draw on.
+  Status advance(const std::string& glsl_root);
+  const TileBaker& tiles() const { return tiles_; }
+  // The filter's level of detail: each analytically filtered material's variant with the filter
+  // skipped (PS_GABOR_FILTER=2), as the surfaces will draw it once its tile is there, built ahead
+  // so a live session's switch to it does not stall a frame.
+  Status warm_unfiltered(SurfacePass& surface, std::span<const Surface> surfaces) const;
+
+  const MaterialGpu& operator[](std::size_t i) const { return materials_[i]; }
+  auto begin() const { return materials_.begin(); }
+  auto end() const { return materials_.end(); }
+
+ private:
+  void collect();
+  std::vector<MaterialGpu> materials_;
+  TileBaker tiles_;
+};
 
 }  // namespace ps

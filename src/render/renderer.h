@@ -23,27 +23,18 @@
 #include "passes/surface.h"
 #include "render/aov.h"
 #include "render/frame_input.h"
+#include "render/frame_stats.h"
 #include "render/material_gpu.h"
 #include "render/plan.h"
+#include "render/surface_geometry.h"
 #include "render/tile_bake.h"
 #include "render/world_markers.h"
+#include "render/world_view.h"
 #include "scene/scene.h"
 
 namespace ps {
-namespace world {
-class Deformable;
-}
 
-// What the last deformation step did (all deformable surfaces together; FrameInput::time_s).
-struct DeformationStats {
-  int surfaces = 0;               // deformable surfaces in the scene
-  int substeps = 0;
-  int constrained = 0;            // vertices held on the probe's surface
-  double max_displacement_mm = 0.0;
-  bool finite = true;
-  int uploaded = 0;               // surfaces whose vertices changed and were uploaded this step
-};
-
+class PassTimer;
 struct RendererOptions {
   std::string glsl_root;          // empty: gl::default_glsl_root()
   bool time_passes = true;        // glFinish around passes for per-pass wall times
@@ -100,34 +91,6 @@ struct RendererOptions {
 inline constexpr double kGaborFilterNegligibleNeed = 0.03;
 inline constexpr int kFilterLodMinFrames = 1000;
 
-struct FrameStats {
-  glm::dvec3 reference_normal{0.0, 0.0, 1.0};  // after this frame's update
-  glm::dvec3 displacement{0.0};                // applied to the probe this frame, mm
-  double max_penetration_mm = 0.0;
-  glm::dvec3 probe_position{0.0};              // after the displacement
-  double speed_gain = 0.0;                     // of the first shadowed material
-  std::uint32_t shadow_pixels = 0, penetrating_pixels = 0;
-  std::vector<std::pair<std::string, double>> timings_ms;
-  // GPU time of each pass (GL_TIME_ELAPSED), of the newest frame whose queries have come back:
-  // gpu_timings_lag frames before this one (0 on llvmpipe, which finishes each pass; usually 1
-  // on a GPU). Empty, lag -1: none back yet (docs/benchmarks.md, "GPU timers").
-  std::vector<std::pair<std::string, double>> gpu_timings_ms;
-  int gpu_timings_lag = -1;
-  std::vector<std::string> skipped;
-  // The Gabor tile bake, cumulative over the renderer's life. Times count from the start of
-  // Renderer::create, in ms.
-  double bake_ms = 0.0;          // spent baking tiles, the bake program's one build included
-  double bake_progress = 1.0;    // share of the tiles' texels baked; 1: all ready (or none to bake)
-  int frames_before_tiles = 0;   // frames drawn with the per-pixel sum while a tile was unfinished
-  double first_frame_ms = -1.0;  // until the first frame was drawn; -1: none yet
-  double tiles_ready_ms = -1.0;  // until the last tile was ready (create's time if none); -1: not yet
-  DeformationStats deformation;  // the deformable surfaces as this frame drew them
-  // Texture filtering's level of detail: this frame drew its filtered materials without the
-  // filter (RendererOptions::filter_lod), and the largest need for it that the frame measured
-  // (0: no filtered texture in the shadow).
-  bool gabor_filter_skipped = false;
-  double gabor_filter_need = 0.0;
-};
 
 
 class Renderer {
@@ -183,32 +146,22 @@ class Renderer {
   // that sheet only (docs/fourd.md); with set_show_path(true) each frame given a sheet also adds
   // the probe's position to its path, drawn after the pseudo-shadow as a tube coloured by w
   // (fourd::depth_colour over the surface's w range; seed 000 Fig. 5c).
-  void set_show_path(bool show) { show_path_ = show; }
-  void set_show_device(bool show) { show_device_ = show; }
-  bool show_device() const { return show_device_; }
-  // Seed 002 §6's bendable polygons (world/deformable.h): FrameInput::time_s moves every
-  // deformable surface's drawn vertices on to that session time with the probe where the input
-  // put it, and uploads them. The first time only sets the clock; create() settles the surfaces
-  // for 1 s with the scene's probe (what `render` shows). No deformable surface: nothing.
-  const DeformationStats& deformation() const { return deform_stats_; }
+  void set_show_path(bool show) { world_view_.set_show_path(show); }
+  void set_show_device(bool show) { world_view_.set_show_device(show); }
+  bool show_device() const { return world_view_.show_device(); }
+  // Seed 002 §6's bendable polygons (world/deformable_surfaces.h): FrameInput::time_s steps every
+  // deformable surface on to that session time with the probe where the input put it, and the
+  // meshes the step changed are uploaded. The first time only sets the clock; create() settles the
+  // surfaces for 1 s with the scene's probe (what `render` shows). No deformable surface: nothing.
+  const DeformationStats& deformation() const { return deformables_.stats(); }
   // The welded vertices of deformable surface `surface` now (world mm); empty if not deformable.
-  std::vector<glm::dvec3> deformed_vertices(int surface) const;
+  std::vector<glm::dvec3> deformed_vertices(int surface) const { return deformables_.positions(surface); }
   // The frame's colour target (RGBA8, padded to a power of two; the image is the
   // width x height region at the origin, bottom row first): blitted to the window.
   const gl::Texture& color_texture() const { return surface_.color(); }
 
  private:
   gl::TimerQueries gpu_timers_;  // per-pass GL_TIME_ELAPSED queries (RendererOptions::gpu_timers)
-  // One surface of the scene as drawn (index = Scene::surfaces).
-  struct SurfaceGeometry {
-    GpuMesh mesh;
-    Aabb bounds;  // world bounds (the plan's input)
-    // A surface embedded in 4D: its vertices and their w (empty for other surfaces), to find the
-    // probe's sheet without haptics.
-    std::vector<glm::vec3> sheet_positions;
-    std::vector<float> w4;
-    float w_min = 0.0f, w_max = 0.0f;
-  };
   struct Geometry {
     std::vector<SurfaceGeometry> surfaces;
     GpuMesh probe_mesh;                   // mesh probes only
@@ -224,33 +177,31 @@ class Renderer {
   Status warm_unfiltered_variants();  // filter_lod(): the PS_GABOR_FILTER=2 variants, built ahead
   Status bake_gabor_tiles();      // tiles of the materials whose strategy chose one (or queue them)
   Status advance_bake();          // per frame: one band of the queued tiles, then the stats
-  void collect_tiles();           // finished tiles to their materials; the bake's stats
+  void note_bake();               // the bake's stats
   double ms_since_creation() const;
   Status prime_reference_plane();
-  std::vector<Aabb> surface_bounds() const;  // the plan's input, index = Scene::surfaces
-  std::shared_ptr<gl::Texture> reusable_tile(const Material& m, const GaborBakePlan& plan) const;
+  void upload_deformed();
   // Per frame.
   BoundingSphere current_probe_bounds() const;
   ProbeInput probe_input() const;
   void run_probe_depth(const FramePlan& plan, const BoundingSphere& probe);
   PixelRect shadow_rect(const FramePlan& plan) const;  // the surface pass's (options_.footprint_rect)
   std::vector<SurfaceDraw> surface_draws(const FramePlan& plan);
-  std::vector<SphereCaster> body_casters() const;  // the positioned bodies, for their shadows
   void update_reference_plane(const ReductionResult& r);
   // The mean visible normal of this frame's normal target: reduced when the camera changed
   // since the last reduction, else that reduction's result (see normal_mean_). `reduced`: set
   // when the reduction ran.
   ReductionResult mean_visible_normal(bool& reduced);
   void apply_reductions(const ReductionResult& r, const FramePlan& plan);
-  void run_probe_view();
+  void reduce(const FramePlan& plan, PassTimer& timer);
+  void draw_overlays(PassTimer& timer);
 
   Scene scene_;
   RendererOptions options_;
   PlaneFrame frame_;
   FrameStats stats_;
   Geometry geometry_;
-  std::vector<MaterialGpu> materials_;  // GPU state of Scene::materials, in order (each points at its material)
-  TileBaker tiles_;           // the tiles still to bake (all of them at once unless sliced)
+  MaterialSet materials_;  // GPU state of Scene::materials, in order (each points at its material)
   std::chrono::steady_clock::time_point created_at_;  // start of create(): the stats' time origin
   // The last mean visible normal and the camera it was reduced for. The normal target holds
   // the visible surfaces' normals, which depend on the camera alone (the surfaces are fixed for a
@@ -262,16 +213,7 @@ class Renderer {
     ReductionResult result;  // normal_sum and normal_coverage
   };
   NormalMean normal_mean_;
-  // Deformable surfaces: the drawn mesh (rest topology, deformed positions) and its springs.
-  struct Deformed {
-    int surface = -1;
-    Mesh mesh;
-    std::shared_ptr<world::Deformable> sim;
-  };
-  std::vector<Deformed> deformed_;
-  double deform_time_s_ = -1.0;   // < 0: the clock is not set yet
-  DeformationStats deform_stats_;
-  DeformationStats step_deformation(double dt_s);
+  world::DeformableSurfaces deformables_;  // their meshes are geometry_'s dynamic ones
   ProbeDepthPass probe_depth_;
   SurfacePass surface_;
   ReductionsPass reductions_;
@@ -289,18 +231,8 @@ class Renderer {
   ProbeSheet sheet_;
   void apply(const FrameInput& input);
   void set_view_pose(const ViewPose& pose);
-  void add_path_point();           // the probe on its sheet, to the path (show_path_)
-  DeformationStats advance_deformation(double time_s);
-  bool show_path_ = false;
-  bool path_break_ = true;
-  std::vector<WorldMarker> path_;  // the probe's path on 4D sheets: segments coloured by w
-  void run_world_view();           // bodies and the device ghost, over the colour image
-  ProbeViewPass body_view_, ghost_view_;  // initialised on first use (own mesh caches)
-  bool world_view_ready_ = false;
-  std::vector<glm::dvec3> body_positions_;  // at most Scene::bodies.size()
-  std::vector<WorldMarker> markers_;
-  glm::dvec3 device_position_{0.0};
-  bool show_device_ = false;
+  void add_path_point();           // the probe on its sheet, to the world view's path
+  WorldView world_view_;           // bodies, markers, the 4D path and the device ghost
 };
 
 // Stats as JSON (the CLI's --stats FILE): backend, renderer, reference_normal, displacement,

@@ -1,6 +1,6 @@
 // The bodies' pseudo-shadows (glsl/lib/body_shadow.glsl, CPU twin reference/body_shadow.h):
 // a uniform, untextured plane at z = 0 (normal +Z) under a ball of radius 6 mm, drawn as the
-// renderer draws bodies (run_world_view) and casting its analytic shadow. Pixels where the
+// renderer draws bodies (WorldView::run) and casting its analytic shadow. Pixels where the
 // drawn ball may cover the plane are left out of every comparison (a ray through the pixel
 // passes within kBallMarginPx pixels of the sphere): the shadow is what is tested, not the ball.
 //   - the colour image against the twin, body alone (the probe out of reach: the PS_SHADOW=0

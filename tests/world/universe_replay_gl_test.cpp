@@ -140,7 +140,7 @@ TEST_P(UniverseReplayGLTest, PolyDentsUnderTheProbeAndSpringsBack) {
   EXPECT_FALSE(last.state.in_contact);
   EXPECT_EQ(last.deformation.max_displacement_mm, 0.0);
   // While dented the surface is uploaded every frame; once back at rest with the probe away,
-  // nothing is (no vertex moved: Renderer::step_deformation skips the upload).
+  // nothing is (no vertex moved: world::DeformableSurfaces::step marks no mesh changed, so none is uploaded).
   for (const PolyFrame& f : run.frames)
     if (f.t >= 0.6 && f.t <= 1.0) EXPECT_EQ(f.deformation.uploaded, 1) << f.t;
   EXPECT_EQ(last.deformation.uploaded, 0);

@@ -1,0 +1,37 @@
+// One surface of the scene as the renderer draws it: its mesh on the GPU, its world bounds (the
+// plan's input) and, for a surface embedded in 4D, its vertices' w (to find the probe's sheet
+// without haptics). Built once per renderer; a deformable surface's mesh is the subdivided one its
+// world::DeformableSurfaces steps, uploaded dynamic.
+#pragma once
+
+#include <span>
+#include <vector>
+
+#include <glm/glm.hpp>
+
+#include "core/result.h"
+#include "passes/gpu_mesh.h"
+#include "render/plan.h"
+#include "scene/scene.h"
+#include "world/deformable_surfaces.h"
+
+namespace ps {
+
+struct SurfaceGeometry {
+  GpuMesh mesh;
+  Aabb bounds;  // world mm
+  std::vector<glm::vec3> sheet_positions;  // a surface embedded in 4D: its vertices, and their w
+  std::vector<float> w4;                   // (both empty for other surfaces)
+  float w_min = 0.0f, w_max = 0.0f;
+  // The w of the vertex nearest `probe_mm` (`fallback` when none is nearer than infinity: a NaN probe).
+  double nearest_w(const glm::dvec3& probe_mm, double fallback) const;
+};
+
+// Surface `index` of a scene (Surface::visual_stretch applied); a deformable one is added to
+// `deformables`. Needs a current GL context; a mesh file that cannot be read is an error.
+Result<SurfaceGeometry> make_surface_geometry(const Surface& s, int index, world::DeformableSurfaces& deformables);
+
+// The surfaces' bounds, in order (the plan's input).
+std::vector<Aabb> bounds_of(std::span<const SurfaceGeometry> surfaces);
+
+}  // namespace ps
