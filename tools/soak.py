@@ -34,8 +34,9 @@ import walk  # noqa: E402  (the window driver the window tests use)
 SKIP = 77
 # Targets (issue 33 §2). RSS may grow 1 % after warm-up: allocator pages settle for minutes.
 RSS_GROWTH_MAX = 0.01
-# "Rate unchanged": the medians of the per-second rate in the first and last tenth within 1 %
-# (10 Hz at 1 kHz); a slower loop by a leak of work per tick shows well beyond that.
+# "Rate unchanged": the median of the per-second rate in the last tenth no more than 1 % (10 Hz
+# at 1 kHz) below the first tenth's; a loop slowed by a leak of work per tick shows well beyond
+# that. A faster last tenth is no defect (a machine whose other load ended).
 RATE_CHANGE_MAX = 0.01
 # "p99 unchanged": the median per-second jitter p99 of the last tenth may exceed the first's by
 # 50 % plus 100 us. The machine is shared: a build beside the soak moves p99 by that much, and a
@@ -184,7 +185,7 @@ def judge(r):
     if r["rss_growth"] > RSS_GROWTH_MAX:
         bad.append(f"RSS grew {100 * r['rss_growth']:.2f} % after warm-up (target <= {100 * RSS_GROWTH_MAX:.0f} %)")
     a, b = r["first"], r["last"]
-    if a["rate_hz_p50"] and b["rate_hz_p50"] and abs(b["rate_hz_p50"] / a["rate_hz_p50"] - 1) > RATE_CHANGE_MAX:
+    if a["rate_hz_p50"] and b["rate_hz_p50"] and b["rate_hz_p50"] < (1 - RATE_CHANGE_MAX) * a["rate_hz_p50"]:
         bad.append(f"haptic rate {a['rate_hz_p50']:.1f} -> {b['rate_hz_p50']:.1f} Hz")
     if a["jitter_p99_us_p50"] is not None and b["jitter_p99_us_p50"] is not None and \
             b["jitter_p99_us_p50"] > JITTER_FACTOR * a["jitter_p99_us_p50"] + JITTER_SLACK_US:
@@ -244,7 +245,9 @@ def write_table(out, scenes):
         path = os.path.join(out, os.path.splitext(os.path.basename(scene))[0], "result.json")
         if os.path.exists(path):
             with open(path, encoding="utf-8") as f:
-                results.append(json.load(f))
+                r = json.load(f)
+            r["failures"] = judge(r)  # the targets as this tool states them now
+            results.append(r)
     with open(os.path.join(out, "soak.md"), "w", encoding="utf-8") as f:
         f.write(table(results))
     print(table(results), end="")
