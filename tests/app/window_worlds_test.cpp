@@ -105,19 +105,25 @@ TEST(UiLayoutTest, TextNeverCoversTheControlPanelsButtons) {
   }
 }
 
-// The pointer walks from the window's centre to the panel on the right at 4 px a frame, its
-// shadow (190 px wide, centred on it) reaching the strip long before the pointer: the panel
-// stays on the right all the way and while the pointer is over it. Away from both strips, a
-// shadow under the right strip still sends the panel left (the old rule).
-TEST(UiLayoutTest, ThePanelStaysPutWhileThePointerComesForIt) {
+// A window of w x h with the panel shown and the default scene's readouts box.
+UiLayoutInput shown_panel(float w, float h) {
   UiLayoutInput in;
-  in.width = 1280.f;
-  in.height = 800.f;
+  in.width = w;
+  in.height = h;
   in.panel = true;
   in.panel_width = panel_width_for(in.width);
   in.panel_height = in.height;
   in.hud_w = 184.f;
   in.hud_h = 133.f;
+  return in;
+}
+
+// The pointer walks from the window's centre to the panel on the right at 4 px a frame, its
+// shadow (190 px wide, centred on it) reaching the strip long before the pointer: the panel
+// stays on the right all the way and while the pointer is over it. Away from both strips, a
+// shadow under the right strip still sends the panel left (the old rule).
+TEST(UiLayoutTest, ThePanelStaysPutWhileThePointerComesForIt) {
+  UiLayoutInput in = shown_panel(1280.f, 800.f);
   UiPlacement last;
   for (float x = 640.f; x <= 1270.f; x += 4.f) {
     in.pointer = std::make_pair(x, 400.f);
@@ -149,14 +155,7 @@ TEST(UiLayoutTest, ThePanelStaysPutWhileThePointerComesForIt) {
 // still under the right strip, but the panel waits kPanelFlipDwellS before it changes side, so
 // the pointer finds it where it left it. (Without the dwell it went left at the first frame.)
 TEST(UiLayoutTest, APointerFlickingAwayAndBackFindsThePanelWhereItWas) {
-  UiLayoutInput in;
-  in.width = 512.f;
-  in.height = 512.f;
-  in.panel = true;
-  in.panel_width = panel_width_for(in.width);
-  in.panel_height = in.height;
-  in.hud_w = 184.f;
-  in.hud_h = 133.f;
+  UiLayoutInput in = shown_panel(512.f, 512.f);
   UiPlacement last;
   const auto frame = [&](float x, float shadow_x, double t) {
     in.pointer = std::make_pair(x, 157.f);
