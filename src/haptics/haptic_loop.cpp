@@ -201,6 +201,18 @@ void HapticLoop::place_hand(const glm::dvec3& hand_mm, const glm::dvec3& normal,
   swap_pending_.store(true, std::memory_order_release);
 }
 
+void HapticLoop::request_view_home(std::optional<glm::dvec3> place_hand_mm) {
+  if (!place_hand_mm) {
+    home_pending_.store(true, std::memory_order_release);
+    return;
+  }
+  std::lock_guard<std::mutex> lock(swap_mutex_);
+  pending_place_ = place_hand_mm;
+  pending_place_normal_.reset();  // a restart at rest, as after a scene switch
+  pending_home_ = true;
+  swap_pending_.store(true, std::memory_order_release);
+}
+
 // The hand starts over again where it is put: at rest (a filter pulled from the old position
 // would carry the hand through what lies between), and the proxy with it.
 void HapticLoop::place(const glm::dvec3& hand_mm, const std::optional<glm::dvec3>& normal) {
@@ -230,7 +242,8 @@ void HapticLoop::adopt_pending_scene(Clock::Ns now) {
   std::unique_lock<std::mutex> lock(swap_mutex_, std::try_to_lock);
   if (!lock.owns_lock()) return;
   swap_pending_.store(false, std::memory_order_relaxed);
-  if (!pending_) {  // a placement alone (place_hand)
+  if (std::exchange(pending_home_, false)) stages_->workspace.home();
+  if (!pending_) {  // a placement alone (place_hand, request_view_home)
     if (pending_place_) place(*pending_place_, pending_place_normal_);
     pending_place_.reset();
     pending_place_normal_.reset();

@@ -110,8 +110,11 @@ class HapticLoop {
   void place_hand(const glm::dvec3& hand_mm, const glm::dvec3& normal, const glm::dvec3& surface_normal);
   const world::HapticScene* scene() const;  // the one in use (haptic thread / between ticks)
   // Any thread: the view goes back where the scene started ([navigation]'s offset and a rolling
-  // surface's turn reset) at the next tick: run's Home key.
-  void request_view_home() { home_pending_.store(true, std::memory_order_release); }
+  // surface's turn reset) at the next tick: run's Home key. With `place_hand_mm` (the hand over
+  // the surface under the pointer in the home view) the hand and the proxy are put there in the
+  // same tick: a proxy left where the old view had it would be dragged through the surface to
+  // the hand, and on a rolling surface that contact turns the view away from home again.
+  void request_view_home(std::optional<glm::dvec3> place_hand_mm = std::nullopt);
   void start();        // spawns the thread
   // After start(): "SCHED_FIFO 80", "SCHED_RR 20 (RealtimeKit)", "normal" or
   // "normal (SCHED_FIFO refused: <why>; RealtimeKit ...: <why>)".
@@ -180,6 +183,7 @@ class HapticLoop {
   glm::dvec3 pending_place_surface_{0.0};           // place_hand's surface_normal, under swap_mutex_
   std::atomic<bool> swap_pending_{false};
   std::atomic<bool> home_pending_{false};
+  bool pending_home_ = false;  // request_view_home with a placement: both in one tick, under swap_mutex_
   HapticState local_;        // haptic thread's working copy
   SampleRecorder* recorder_ = nullptr;
   std::array<TickFeed*, kMaxTickFeeds> tick_feeds_{};  // the first tick_feed_count_ are set

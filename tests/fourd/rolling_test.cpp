@@ -311,5 +311,54 @@ TEST(FourdRollingTest, WalkingTheFlatTorusKeepsTheTouchedFacetFacingTheViewer) {
 
 }
 
+// run's Home key with the mouse (docs/window.md): the view goes back where the scene started
+// and the hand and the proxy are put over the surface in that view in the same tick. Were the
+// proxy left where the rolled view had it, it would be dragged through the torus to the hand,
+// and that contact would turn the view away from home again (seen in the window: 2.3 mm off
+// home after Home). A hand walks 25 mm over the torus (the view rolls), lifts 1.5 mm, and Home
+// is pressed with the hand placed where the device is: from that tick on the view is home
+// exactly and the proxy is where it was put, with no contact. (This walk was chosen because
+// Home without the placement fails it: the dragged proxy touches on 20 ticks and the view ends
+// 0.82 rad from home.)
+TEST(FourdRollingTest, HomeWithAPlacementPutsViewAndProxyBackInOneTick) {
+  auto scene = load_scene(std::string(PS_SOURCE_DIR) + "/scenes/fourd/flat_torus_rolling.toml");
+  ASSERT_TRUE(scene) << scene.error().message;
+  auto hs = world::HapticScene::build(scene.value());
+  ASSERT_TRUE(hs) << hs.error().message;
+  const glm::dvec3 probe = scene.value().probe.position;
+  const world::Contact c0 = hs.value().closest(probe, 20.0);
+  ASSERT_TRUE(c0.hit);
+  const glm::dvec3 n0 = glm::normalize(probe - c0.point);
+  const double r = scene.value().probe.radius_mm;
+  const glm::dvec3 side = -glm::cross(n0, glm::normalize(glm::cross(n0, {0.0, 0.0, 1.0})));
+  const glm::dvec3 rest = c0.point + (r - 1.0) * n0, lifted = rest + 25.0 * side + 1.5 * n0;
+  std::vector<DeviceSample> samples;
+  samples.push_back({0.0, c0.point + (r + 5.0) * n0, 0, true});
+  samples.push_back({0.3, rest, 0, true});
+  for (int i = 1; i <= 50; ++i) samples.push_back({0.3 + 2.5 * i / 50, rest + 25.0 * i / 50 * side, 0, true});
+  samples.push_back({3.0, lifted, 0, true});
+  samples.push_back({10.0, lifted, 0, true});
+  LogDevice device(samples, true, "walk, lift, Home");
+  FakeClock clock;
+  HapticLoop loop(device, clock, HapticLoopParams{}, &hs.value());
+  loop.run_ticks(4000);
+  HapticState st = loop.state().read();
+  ASSERT_GT(fourd::rotation_angle_between(glm::dmat3(1.0), st.view_rotation), 0.05) << "the walk rolled the view";
+  ASSERT_FALSE(st.in_contact) << "the lifted hand hovers";
+  loop.request_view_home(lifted);
+  loop.run_ticks(1);
+  st = loop.state().read();
+  EXPECT_EQ(st.view_rotation, glm::dmat3(1.0));
+  EXPECT_EQ(st.view_offset_mm, glm::dvec3(0.0));
+  EXPECT_LT(glm::length(st.proxy_mm - lifted), 1e-9) << "the proxy is put with the view, in the same tick";
+  for (int tick = 0; tick < 500; ++tick) {
+    loop.run_ticks(1);
+    st = loop.state().read();
+    ASSERT_FALSE(st.in_contact) << "tick " << tick << " after Home";
+  }
+  EXPECT_EQ(st.view_rotation, glm::dmat3(1.0)) << "no contact turned the view after Home";
+  EXPECT_EQ(st.view_offset_mm, glm::dvec3(0.0));
+}
+
 }  // namespace
 }  // namespace ps

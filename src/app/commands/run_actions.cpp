@@ -34,6 +34,13 @@ void go_back(Session& s) {
   s.going_back = true;
 }
 
+// Home: the view back where the scene started. The mouse's hand goes back to the start height
+// over the surface under the pointer in that view, and the proxy with it in the same tick, as
+// after a scene switch (docs/window.md); a recorded or scripted device keeps its positions.
+void view_home(Session& s) {
+  s.loop->request_view_home(place_hand(s, s.floor.scene(), true));
+}
+
 // A live charge: attracting, ~0.4 N at 12 mm (the demo scene's charge), 2 mm softening.
 constexpr double kLiveChargeNmm2 = -60.0;
 
@@ -128,7 +135,7 @@ Status handle_keys(Session& s, int w, int h) {
   in.toggle_device = false;
   if (in.add_charge || in.remove_charge) edit_live_charges(s, in.add_charge);
   if (std::exchange(in.back, false)) go_back(s);
-  if (std::exchange(in.home, false)) s.loop->request_view_home();
+  if (std::exchange(in.home, false)) view_home(s);
   in.add_charge = in.remove_charge = false;
   turn_fourd_surfaces(s, in.turn4);
   Camera cam = s.tune->renderer().camera();
