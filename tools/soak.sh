@@ -34,6 +34,11 @@ if ((${#scenes[@]} == 0)); then
           "$s/fourd/spun_trefoil.toml" "$s/fourd/twist_spun_trefoil.toml")
 fi
 [[ -x "$bin" ]] || { echo "soak.sh: no program at $bin: build first (README.md)" >&2; exit 2; }
+# Checked here, not only in soak.py: xargs reports any child's non-zero status as 123, so a
+# skipped world (77) would read as a failed one.
+for tool in xvfb-run xdotool; do
+  command -v "$tool" > /dev/null || { echo "soak.sh: skipped, $tool is not installed (tools/bootstrap.sh installs it)"; exit 77; }
+done
 mkdir -p "$out"
 echo "soak: ${#scenes[@]} worlds, ${minutes} min each, ${parallel} at a time, into ${out}"
 printf '%s\n' "${scenes[@]}" | xargs -P "$parallel" -I{} \

@@ -212,10 +212,19 @@ class Window:
         os.makedirs(folder, exist_ok=True)
         with open(name + ".xwd", "wb") as f:
             subprocess.run(["xwd", "-root", "-silent"], stdout=f, check=True)
-        sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "tools"))
-        import xwd_png  # noqa: E402  (only where screenshots are asked for)
+        xwd_png = tools_module("xwd_png")
         xwd_png.write_png(xwd_png.xwd_rows(name + ".xwd", self.x, self.y, self.w, self.h), self.w, self.h, name + ".png")
         os.remove(name + ".xwd")
+
+
+def tools_module(name):
+    """A module of the repository's tools/ folder, imported once (only where screenshots are
+    asked for: the walks themselves need the standard library only)."""
+    if name not in sys.modules:
+        tools = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "tools")
+        if tools not in sys.path:
+            sys.path.insert(0, tools)
+    return __import__(name)
 
 
 def check_step(step, frames, report):

@@ -7,6 +7,8 @@
 
 #include <cstdio>
 #include <filesystem>
+#include <optional>
+#include <utility>
 
 #include "app/cli/cli.h"
 #include "app/window/panel_links.h"
@@ -101,8 +103,8 @@ HudReadouts readouts(const Session& s, const HapticState& st, const ShadowMeasur
 }
 
 // --readouts-log: this frame's readouts, as the state machine says them, every frame.
-Status log_readouts(Session& s, const HapticState& st, const ShadowMeasure& shadow, std::uint64_t frame) {
-  const HudReadouts r = readouts(s, st, shadow);
+Status log_readouts(Session& s, const HapticState& st, const ShadowMeasure& shadow, const HudReadouts& r,
+                    std::uint64_t frame) {
   ReadoutsFrame f;
   f.frame = frame;
   f.t_s = st.time_s;
@@ -259,10 +261,13 @@ Status draw_overlays(const RunArgs& a, Session& s, const HapticState& st, std::u
   glfwGetWindowSize(s.ctx->window(), &w, &h);
   auto shadow = measure_frame_shadow(s.tune->renderer(), w, h, refresh || s.readouts_log.is_open());
   if (!shadow) return shadow.error();
+  // Built once a frame when it is logged, else only at a refresh (4 times a second).
+  std::optional<HudReadouts> now;
+  if (s.readouts_log.is_open() || refresh) now = readouts(s, st, shadow.value());
   if (s.readouts_log.is_open())
-    if (Status r = log_readouts(s, st, shadow.value(), frame); !r) return r;
+    if (Status r = log_readouts(s, st, shadow.value(), *now, frame); !r) return r;
   if (refresh) {
-    s.readouts = readouts(s, st, shadow.value());
+    s.readouts = std::move(*now);
     glfwSetWindowTitle(s.ctx->window(), title_summary(s.readouts).c_str());
     s.readouts_s = now_s;
   }
