@@ -1,5 +1,8 @@
 // The frame loop shared by the headless CLI, the window and the tests (one render path):
 //   plan -> probe depth pass -> surface pass -> reductions -> reference plane + displacement.
+// While the frame key (render/frame_key.h: the plain variant's inputs, meshes, background, size)
+// is the last frame's, the surface pass redraws only the last and new shadow rectangles
+// (RendererOptions::incremental); overlays make the next frame a full one.
 // Lives on the render thread; owns every GL object it uses. Needs a current GL context.
 #pragma once
 
