@@ -79,7 +79,10 @@ Scene walk_scene(const Walk& w) {
 
 std::vector<Frame> replay_frames(const Walk& w, bool incremental) {
   const Scene scene = walk_scene(w);
-  auto renderer = Renderer::create(scene, {.expected_frames = 60, .incremental = incremental});
+  RendererOptions options;
+  options.expected_frames = 60;  // as a replay of this length: the same tile choice both ways
+  options.incremental = incremental;
+  auto renderer = Renderer::create(scene, options);
   EXPECT_TRUE(renderer.ok()) << w.name << ": " << (renderer.ok() ? "" : renderer.error().message);
   if (!renderer.ok()) return {};
   renderer.value()->set_show_probe(w.overlays);

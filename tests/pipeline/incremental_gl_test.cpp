@@ -39,8 +39,11 @@ struct Pair {
   std::unique_ptr<Renderer> inc, full;
 
   explicit Pair(const Scene& s) {
-    auto a = Renderer::create(s, {.expected_frames = 4, .incremental = true});
-    auto b = Renderer::create(s, {.expected_frames = 4, .incremental = false});
+    RendererOptions on, off;
+    on.expected_frames = off.expected_frames = 4;  // short: no tile bake
+    off.incremental = false;
+    auto a = Renderer::create(s, on);
+    auto b = Renderer::create(s, off);
     EXPECT_TRUE(a.ok() && b.ok());
     if (a.ok() && b.ok()) {
       inc = std::move(a.value());
