@@ -195,7 +195,7 @@ void SurfacePass::clear(const glm::dvec3& background, const PixelRect* area) {
   } else {
     glDisable(GL_SCISSOR_TEST);
   }
-  if (area && area->empty()) return;  // nothing redrawn: an empty scissor box would still clear nothing
+  if (area && area->empty()) return;  // nothing redrawn this frame
   glClearNamedFramebufferfv(fbo_.id(), GL_COLOR, 0, &bg.x);
   glClearNamedFramebufferfv(fbo_.id(), GL_COLOR, 1, zero);
   glClearNamedFramebufferfv(fbo_.id(), GL_DEPTH, 0, &one);
