@@ -76,7 +76,9 @@ render_all() {
 }
 
 # What carries the machine rather than the program: times in the stats (every "*_ms" member and
-# the timing tables) and the output directory's own path (in logs and messages).
+# the timing tables) and the output directory's own path (in logs and messages). How many pixels
+# a frame drew (drawn_pixels, incremental) says how, not what: incremental frames draw the same
+# bytes.
 normalise() {
   local file="$1" dir="$2"
   case "${file}" in
@@ -84,7 +86,7 @@ normalise() {
       python3 -c 'import json, sys
 def keep(v):
     if isinstance(v, dict):
-        return {k: keep(x) for k, x in v.items() if not (k.endswith("_ms") or k.endswith("timings_lag"))}
+        return {k: keep(x) for k, x in v.items() if not (k.endswith("_ms") or k.endswith("timings_lag") or k in ("drawn_pixels", "incremental"))}
     return [keep(x) for x in v] if isinstance(v, list) else v
 print(json.dumps(keep(json.load(open(sys.argv[1]))), indent=1, sort_keys=True))' "${file}" ;;
     *) sed "s|${dir}|DIR|g" "${file}" ;;

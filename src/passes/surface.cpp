@@ -145,24 +145,27 @@ SurfaceFlags SurfacePass::variant_of(const SurfaceDraw& d, bool shadow) {
 
 Status SurfacePass::run(const std::vector<SurfaceDraw>& draws, const gl::Texture* probe_depth,
                         const glm::dvec3& background, const PixelRect& shadow_rect) {
+  return run(draws, probe_depth, background, shadow_rect, PixelRect::whole(params_.width, params_.height));
+}
+
+Status SurfacePass::run(const std::vector<SurfaceDraw>& draws, const gl::Texture* probe_depth,
+                        const glm::dvec3& background, const PixelRect& shadow_rect, const PixelRect& redraw) {
   const PixelRect image = PixelRect::whole(params_.width, params_.height);
   shadow_rect_ = shadow_rect.clipped_to(image);
+  const PixelRect area = redraw.clipped_to(image);
+  assert(shadow_rect_.clipped_to(area) == shadow_rect_ &&
+         "SurfacePass::run: the redrawn area must hold the shadow rectangle (FrameHistory::redraw)");
   glBindFramebuffer(GL_FRAMEBUFFER, fbo_.id());
   glViewport(0, 0, params_.width, params_.height);
-  glDisable(GL_SCISSOR_TEST);
   glDisable(GL_BLEND);
   glDisable(GL_CULL_FACE);  // surfaces may be open or seen from behind (two-sided shading)
   glEnable(GL_DEPTH_TEST);
   glDepthFunc(GL_LESS);
   glDepthMask(GL_TRUE);
-  const glm::vec4 bg(glm::dvec4(background, 1.0));
-  const float zero[4] = {0, 0, 0, 0}, aov_clear[4] = {0, kNoProbeDistance, 0, 0}, one = 1.0f;
   // The draw buffers stay as init() set them: a change would make llvmpipe rasterise what is
   // queued so far (a flush). The AOV is switched off by its colour mask instead.
   glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
-  glClearNamedFramebufferfv(fbo_.id(), GL_COLOR, 0, &bg.x);
-  glClearNamedFramebufferfv(fbo_.id(), GL_COLOR, 1, zero);
-  glClearNamedFramebufferfv(fbo_.id(), GL_DEPTH, 0, &one);
+  clear(background, area == image ? nullptr : &area);
 
   // Every block once, before any draw: updating one block between draws would make llvmpipe
   // finish the queued draws first.
@@ -173,32 +176,56 @@ Status SurfacePass::run(const std::vector<SurfaceDraw>& draws, const gl::Texture
   for (size_t i = 0; i < draws.size(); ++i)
     glNamedBufferSubData(ubo_.id(), static_cast<GLintptr>(i) * ubo_stride_, sizeof(SurfaceBlock), &draws[i].block);
   glBindTextureUnit(0, probe_depth ? probe_depth->id() : dummy_.id());
-
-  // The footprint's rectangle: own variants, AOV cleared and written there only.
   glEnable(GL_SCISSOR_TEST);
+  const Status s = draw_regions(draws, area);
+  glColorMaski(2, GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+  glColorMaski(3, GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+  glDisable(GL_SCISSOR_TEST);
+  return s;
+}
+
+// Colour (background), normal and depth: the whole padded targets for a full frame (`area`
+// null), else only `area` (an incremental frame keeps the rest).
+void SurfacePass::clear(const glm::dvec3& background, const PixelRect* area) {
+  const glm::vec4 bg(glm::dvec4(background, 1.0));
+  const float zero[4] = {0, 0, 0, 0}, one = 1.0f;
+  if (area) {
+    glEnable(GL_SCISSOR_TEST);
+    glScissor(area->x0, area->y0, area->width(), area->height());
+  } else {
+    glDisable(GL_SCISSOR_TEST);
+  }
+  if (area && area->empty()) return;  // nothing redrawn this frame
+  glClearNamedFramebufferfv(fbo_.id(), GL_COLOR, 0, &bg.x);
+  glClearNamedFramebufferfv(fbo_.id(), GL_COLOR, 1, zero);
+  glClearNamedFramebufferfv(fbo_.id(), GL_DEPTH, 0, &one);
+}
+
+// The footprint's rectangle with its own variants, the AOV cleared and written there only; then
+// the rest of `area` in bands around it (all of it when the rectangle is empty): plain shading,
+// no AOV, no filter need.
+Status SurfacePass::draw_regions(const std::vector<SurfaceDraw>& draws, const PixelRect& area) {
+  const float zero[4] = {0, 0, 0, 0}, aov_clear[4] = {0, kNoProbeDistance, 0, 0};
   if (!shadow_rect_.empty()) {
     glScissor(shadow_rect_.x0, shadow_rect_.y0, shadow_rect_.width(), shadow_rect_.height());
     glClearNamedFramebufferfv(fbo_.id(), GL_COLOR, 2, aov_clear);
     glClearNamedFramebufferfv(fbo_.id(), GL_COLOR, 3, zero);
     if (Status s = draw_all(draws, true); !s) return s;
   }
-  // The rest of the image in bands around it (all of it when the rectangle is empty): plain
-  // shading, no AOV, no filter need.
   glColorMaski(2, GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
   glColorMaski(3, GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
+  const PixelRect image = PixelRect::whole(params_.width, params_.height);
   const PixelRect& r = shadow_rect_;
   const PixelRect bands[4] = {{0, 0, image.x1, r.empty() ? image.y1 : r.y0},
                               {0, r.y1, image.x1, image.y1},
                               {0, r.y0, r.x0, r.y1},
                               {r.x1, r.y0, image.x1, r.y1}};
-  for (const PixelRect& band : bands) {
+  for (const PixelRect& whole_band : bands) {
+    const PixelRect band = whole_band.clipped_to(area);
     if (band.empty()) continue;
     glScissor(band.x0, band.y0, band.width(), band.height());
     if (Status s = draw_all(draws, false); !s) return s;
   }
-  glColorMaski(2, GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
-  glColorMaski(3, GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
-  glDisable(GL_SCISSOR_TEST);
   return ok_status();
 }
 

@@ -156,6 +156,11 @@ struct SurfacePass {
   // the footprint is absent (intensity 0 composites as rgb * 1).
   Status run(const std::vector<SurfaceDraw>& draws, const gl::Texture* probe_depth,
              const glm::dvec3& background, const PixelRect& shadow_rect);
+  // An incremental frame (render/frame_key.h): only `redraw` (which holds shadow_rect) is
+  // cleared and drawn; every other pixel of the colour, normal and depth targets keeps the last
+  // run()'s value. The whole image: the same as the overload above.
+  Status run(const std::vector<SurfaceDraw>& draws, const gl::Texture* probe_depth,
+             const glm::dvec3& background, const PixelRect& shadow_rect, const PixelRect& redraw);
   // Builds a variant now, not at its first draw: a variant a live session switches to later (the
   // filter's level of detail) is built ahead instead of stalling that frame.
   Status warm(SurfaceFlags variant);
@@ -186,6 +191,8 @@ struct SurfacePass {
   // Draws every surface (inside the caller's scissor box); shadow == false draws all of them
   // with their PS_SHADOW=0 variant.
   Status draw_all(const std::vector<SurfaceDraw>& draws, bool shadow);
+  void clear(const glm::dvec3& background, const PixelRect* area);
+  Status draw_regions(const std::vector<SurfaceDraw>& draws, const PixelRect& area);
 
   std::map<SurfaceFlags, gl::Program> programs_;
   gl::Texture color_, normal_, aov_, filter_need_, dummy_;

@@ -23,6 +23,10 @@ struct FrameStats {
   double speed_gain = 0.0;                     // of the first shadowed material
   std::uint32_t shadow_pixels = 0, penetrating_pixels = 0;
   std::vector<std::pair<std::string, double>> timings_ms;
+  // The pixels the surface pass drew this frame, and whether it kept the rest of the last frame
+  // (RendererOptions::incremental; render/frame_key.h).
+  std::int64_t drawn_pixels = 0;
+  bool incremental = false;
   // GPU time of each pass (GL_TIME_ELAPSED), of the newest frame whose queries have come back:
   // gpu_timings_lag frames before this one (0 on llvmpipe, which finishes each pass; usually 1
   // on a GPU). Empty, lag -1: none back yet (docs/benchmarks.md, "GPU timers").

@@ -72,6 +72,7 @@ void Renderer::upload_deformed() {
   for (const world::DeformableSurfaces::Changed& c : deformables_.changed()) {
     geometry_.surfaces[static_cast<std::size_t>(c.surface)].mesh.update(*c.mesh);
     normal_mean_.valid = false;
+    ++mesh_version_;  // in the frame key: the next frame redraws everything
   }
 }
 
@@ -283,8 +284,10 @@ Status Renderer::render_frame() {
     run_probe_depth(plan, probe);
     timer.lap("probe_depth");
   }
-  if (Status s = surface_.run(surface_draws(plan), plan.shadow_active ? &probe_depth_.depth() : nullptr,
-                              scene_.render.background, shadow_rect(plan));
+  const std::vector<SurfaceDraw> draws = surface_draws(plan);
+  const PixelRect rect = shadow_rect(plan);
+  if (Status s = surface_.run(draws, plan.shadow_active ? &probe_depth_.depth() : nullptr, scene_.render.background,
+                              rect, redraw_rect(draws, rect));
       !s)
     return s;
   timer.lap("surface");
@@ -317,24 +320,6 @@ void Renderer::reduce(const FramePlan& plan, PassTimer& timer) {
     filter_negligible_ = filter_lod() && r.max_filter_need > 0.0 && r.max_filter_need < kGaborFilterNegligibleNeed;
   } else {
     apply_reductions(ReductionResult{}, plan);  // zero sum: plane kept, no displacement
-  }
-}
-
-// What is drawn over the colour image after the pseudo-shadow: the probe, then the world view.
-void Renderer::draw_overlays(PassTimer& timer) {
-  if (show_probe_) {
-    ProbeViewPass::Inputs in;
-    in.view_proj = view_projection(camera_, static_cast<double>(scene_.render.width) / scene_.render.height);
-    in.light = &light_;
-    in.probe = probe_input();  // after this frame's displacement
-    probe_view_.run(in);
-    timer.lap("probe_view");
-  }
-  if (!world_view_.empty()) {
-    world_view_.run(options_.glsl_root, surface_,
-                    {view_projection(camera_, static_cast<double>(scene_.render.width) / scene_.render.height), &light_,
-                     &scene_, probe_input(), probe_.position});
-    timer.lap("world_view");
   }
 }
 

@@ -1,9 +1,13 @@
 // The frame loop shared by the headless CLI, the window and the tests (one render path):
 //   plan -> probe depth pass -> surface pass -> reductions -> reference plane + displacement.
+// While the frame key (render/frame_key.h: the plain variant's inputs, meshes, background, size)
+// is the last frame's, the surface pass redraws only the last and new shadow rectangles
+// (RendererOptions::incremental); overlays make the next frame a full one.
 // Lives on the render thread; owns every GL object it uses. Needs a current GL context.
 #pragma once
 
 #include <chrono>
+#include <cstdint>
 #include <memory>
 #include <span>
 #include <string>
@@ -23,6 +27,7 @@
 #include "passes/surface.h"
 #include "render/aov.h"
 #include "render/frame_input.h"
+#include "render/frame_key.h"
 #include "render/frame_stats.h"
 #include "render/material_gpu.h"
 #include "render/plan.h"
@@ -79,6 +84,11 @@ struct RendererOptions {
   // distance in closed form against the probe's shape (capsule_column_distance). false: marched
   // through the probe depth map as for a mesh probe; bench --shadow-distance compares the two.
   bool closed_form_normal_distance = true;
+  // Incremental frames (render/frame_key.h): while the frame key is unchanged (only the probe
+  // moved), the surface pass redraws the last and this frame's shadow rectangles only and keeps
+  // the rest of the last frame; the results are the same bits (tests compare). false: every
+  // frame redraws every pixel (FrameStats::drawn_pixels tells which).
+  bool incremental = true;
 };
 
 // The filter's need (glsl/lib/gabor.glsl gabor_filter_need: the exponent of its attenuation of
@@ -194,7 +204,8 @@ class Renderer {
   ReductionResult mean_visible_normal(bool& reduced);
   void apply_reductions(const ReductionResult& r, const FramePlan& plan);
   void reduce(const FramePlan& plan, PassTimer& timer);
-  void draw_overlays(PassTimer& timer);
+  void draw_overlays(PassTimer& timer);  // ends the incremental run (renderer_incremental.cpp)
+  PixelRect redraw_rect(const std::vector<SurfaceDraw>& draws, const PixelRect& shadow_rect);
 
   Scene scene_;
   RendererOptions options_;
@@ -214,6 +225,8 @@ class Renderer {
   };
   NormalMean normal_mean_;
   world::DeformableSurfaces deformables_;  // their meshes are geometry_'s dynamic ones
+  std::uint64_t mesh_version_ = 0;         // deformed mesh uploads so far (the frame key)
+  FrameHistory history_;                   // what the last frame left: incremental frames
   ProbeDepthPass probe_depth_;
   SurfacePass surface_;
   ReductionsPass reductions_;

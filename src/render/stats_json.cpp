@@ -23,6 +23,8 @@ std::string stats_json(const FrameStats& s, const std::string& backend, const st
   j["speed_gain"] = s.speed_gain;
   j["shadow_pixels"] = s.shadow_pixels;
   j["penetrating_pixels"] = s.penetrating_pixels;
+  j["drawn_pixels"] = s.drawn_pixels;  // the surface pass's; fewer on an incremental frame
+  j["incremental"] = s.incremental;
   nlohmann::json t = nlohmann::json::object();
   double total = 0.0;
   for (const auto& [name, ms] : s.timings_ms) {

@@ -87,6 +87,7 @@ struct BenchArgs {
   int wake_spin_us = -1;
   int slice_us = -1;
   cli::LiveLoopArgs live;
+  bool no_incremental = false;  // RendererOptions::incremental off
 };
 
 void declare(cli::Command& cmd, BenchArgs& a) {
@@ -108,6 +109,8 @@ void declare(cli::Command& cmd, BenchArgs& a) {
                  "a plane at z = 0 the probe strokes it: with --vibration-out, the texture's signal)")
       ->type_name("MM");
   cli::add_live_loop_options(app, a.live);
+  app.add_flag("--no-incremental", a.no_incremental,
+               "redraw every pixel of every frame (default: while the camera is still, only the shadow's rectangles)");
 }
 
 int bench(const cli::Command& cmd, const BenchArgs& a) {
@@ -117,7 +120,9 @@ int bench(const cli::Command& cmd, const BenchArgs& a) {
   if (!live) return cmd.usage_error(live.error());
   auto ctx = cli::open_context(a.gl_opts);
   if (!ctx) return cmd.fail(ctx.error());
-  auto renderer = open_renderer(scene.value(), {});
+  RendererOptions options;
+  options.incremental = !a.no_incremental;
+  auto renderer = open_renderer(scene.value(), options);
   if (!renderer) return cmd.fail(renderer.error());
   glm::dvec3 center = scene->probe.position;
   if (!std::isnan(a.circle_z_mm)) center.z = a.circle_z_mm;
@@ -140,8 +145,9 @@ int bench(const cli::Command& cmd, const BenchArgs& a) {
   vib->close();
   if (!measured) return cmd.fail(measured.error());
   const double elapsed = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-  std::printf("bench-haptics: %s, %dx%d, %s, %s, haptic thread %s\n", scene->path.c_str(), scene->render.width,
-              scene->render.height, ctx.value()->renderer().c_str(), live->report().c_str(), loop.scheduling().c_str());
+  std::printf("bench-haptics: %s, %dx%d, %s, %s, haptic thread %s, %s frames\n", scene->path.c_str(),
+              scene->render.width, scene->render.height, ctx.value()->renderer().c_str(), live->report().c_str(),
+              loop.scheduling().c_str(), a.no_incremental ? "full" : "incremental");
   print_report(loop, elapsed, latency_ms, frame_ms, facets, haptic_scene.value());
   if (vib->active()) std::printf("%s\n", vib->summary().c_str());
   return cli::kExitOk;

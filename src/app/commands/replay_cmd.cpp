@@ -37,6 +37,7 @@ struct ReplayArgs {
   long long every = 1;
   double fps = 30.0;
   bool quiet = false, show_probe = false, show_device = false, show_path = false;
+  bool no_incremental = false;  // RendererOptions::incremental off
 };
 
 void declare(cli::Command& cmd, ReplayArgs& a) {
@@ -69,6 +70,9 @@ void declare(cli::Command& cmd, ReplayArgs& a) {
                "also draw the device's own position faintly (the gap to the proxy is the pseudo-haptic feedback)");
   app.add_flag("--show-path", a.show_path,
                "on a surface embedded in 4D, also draw the probe's path coloured by its 4D depth (docs/fourd.md)");
+  app.add_flag("--no-incremental", a.no_incremental,
+               "redraw every pixel of every frame (default: while only the probe moves, only its shadow's "
+               "rectangles; the same images)");
   cli::add_quiet_option(app, a.quiet, "no progress");
   cmd.usage("pseudoshadow replay --log FILE --out DIR [options]");
 }
@@ -94,6 +98,7 @@ struct ReplayGl {  // context first: the renderers' GL objects die before it
 Result<std::unique_ptr<Renderer>> make_renderer(const ReplayArgs& a, const Scene& scene, int frames) {
   RendererOptions options;
   options.expected_frames = frames;  // a short replay skips a tile bake it would not repay
+  options.incremental = !a.no_incremental;
   auto renderer = open_renderer(scene, options);
   if (!renderer) return renderer.error();
   renderer.value()->set_show_probe(a.show_probe);

@@ -187,6 +187,7 @@ void switch_scene(const RunArgs& a, Session& s) {
   scene->render.height = current.render.height;
   RendererOptions options;
   options.bake_slice_ms = 40.0;
+  options.incremental = !a.no_incremental;
   auto tune = TuneSession::open({path, {}, options, cli::switch_allow_paths(a.scene)}, std::move(scene.value()));
   if (!tune) return stay(tune.error());
   if (back) s.came_from.pop_back();

@@ -97,6 +97,9 @@ void declare(cli::Command& cmd, RunArgs& a) {
                "start with the device's own position drawn faintly (D toggles it): the gap to the drawn proxy "
                "is the pseudo-haptic feedback of fields, viscosity and surfaces");
   app.add_flag("--panel", a.panel, "start with the parameter panel shown (F1 toggles it)");
+  app.add_flag("--no-incremental", a.no_incremental,
+               "redraw every pixel of every frame (default: while only the probe moves, only its shadow's "
+               "rectangles; the same images)");
   app.add_flag_callback("--no-watch", [&a] { a.watch = false; },
                         "do not reload the scene, its textures and glsl/ when they change");
   cli::add_int(app, "--realtime", "PRIO", a.realtime, 1, 99,

@@ -200,6 +200,7 @@ Status open_session(const RunArgs& a, Scene scene, Session& s) {
   // its whole bake), so the first frame comes at once; until then the per-pixel sum is drawn.
   RendererOptions options;
   options.bake_slice_ms = 40.0;
+  options.incremental = !a.no_incremental;
   auto tune = TuneSession::open({a.scene.path, a.scene.lines(), options, a.scene.allow_paths}, std::move(scene));
   if (!tune) return tune.error();
   s.tune = std::move(tune.value());

@@ -30,6 +30,7 @@ struct RunArgs {
   cli::LiveLoopArgs live;  // --render-threads, --spare-cpu
   double quit_after_s = 0.0;
   bool quiet = false, watch = true, show_probe = false, show_device = false, panel = false;
+  bool no_incremental = false;  // RendererOptions::incremental off
   RunEventsDesc events;  // --events, --mute, --audio-device (docs/sound.md)
 };
 
