@@ -187,8 +187,8 @@ Status resume_from(const std::string& path, calibrate::Calibration& cal, calibra
 
 // The trials still to run (none after a finished --resume): by the simulated observer, or in
 // the window (answered by the simulated observer's script, or by the person).
-Status run_trials(const CalibrateArgs& a, calibrate::Calibration& cal, calibrate::SimulatedObserver& observer,
-                  const Scene& scene, const Material& m, const std::string& log_path) {
+Status collect_answers(const CalibrateArgs& a, calibrate::Calibration& cal, calibrate::SimulatedObserver& observer,
+                       const Scene& scene, const Material& m, const std::string& log_path) {
   const bool simulated = a.observer == "simulated";
   if (cal.done()) return ok_status();
   if (simulated && !a.window) {
@@ -236,7 +236,7 @@ int calibrate_main(const cli::Command& cmd, const CalibrateArgs& a) {
   const bool simulated = a.observer == "simulated";
   if (!a.resume.empty())
     if (Status s = resume_from(a.resume, cal, simulated ? &observer : nullptr); !s) return cmd.fail(s.error());
-  if (Status s = run_trials(a, cal, observer, scene.value(), *m, log_path); !s) return cmd.fail(s.error());
+  if (Status s = collect_answers(a, cal, observer, scene.value(), *m, log_path); !s) return cmd.fail(s.error());
   if (Status s = write_file_atomic(log_path, calibrate::format_trial_log(cal)); !s) return cmd.fail(s.error());
   if (!cal.done() && !report_stopped(cal, log_path)) return cli::kExitOk;
   if (Status s = write_table(a, cal, *m, shown, range); !s) return cmd.fail(s.error());
