@@ -95,6 +95,26 @@ double FourdMesh::tri_w_max(std::size_t f) const {
   return std::max({vertices[t.x].w, vertices[t.y].w, vertices[t.z].w});
 }
 
+namespace {
+
+// Two triangles per grid cell, leaving out those that a pole collapses (two corners at one point).
+void triangulate(FourdMesh& m) {
+  auto index = [&m](int i, int j) { return static_cast<std::uint32_t>(j * (m.nu + 1) + i); };
+  auto add = [&m](std::uint32_t a, std::uint32_t b, std::uint32_t c) {
+    const auto& p = m.vertices;
+    auto same = [&p](std::uint32_t x, std::uint32_t y) { return glm::length(p[x].p4 - p[y].p4) < kWeldQuantum; };
+    if (same(a, b) || same(b, c) || same(a, c)) return;  // a pole
+    m.triangles.emplace_back(a, b, c);
+  };
+  for (int j = 0; j < m.nv; ++j)
+    for (int i = 0; i < m.nu; ++i) {
+      add(index(i, j), index(i + 1, j), index(i + 1, j + 1));
+      add(index(i, j), index(i + 1, j + 1), index(i, j + 1));
+    }
+}
+
+}  // namespace
+
 Result<FourdMesh> build_fourd_mesh(const Spec& spec) {
   FourdMesh m;
   m.spec = spec;
@@ -120,18 +140,7 @@ Result<FourdMesh> build_fourd_mesh(const Spec& spec) {
     }
   if (Status eye = eye_error(spec, m.w_max); !eye) return eye.error();
   for (Vertex4& v : m.vertices) v.p3 = project(v.p4, spec.projection, spec.eye_distance).p3;
-  auto index = [&m](int i, int j) { return static_cast<std::uint32_t>(j * (m.nu + 1) + i); };
-  auto add = [&m](std::uint32_t a, std::uint32_t b, std::uint32_t c) {
-    const auto& p = m.vertices;
-    auto same = [&p](std::uint32_t x, std::uint32_t y) { return glm::length(p[x].p4 - p[y].p4) < kWeldQuantum; };
-    if (same(a, b) || same(b, c) || same(a, c)) return;  // a pole
-    m.triangles.emplace_back(a, b, c);
-  };
-  for (int j = 0; j < m.nv; ++j)
-    for (int i = 0; i < m.nu; ++i) {
-      add(index(i, j), index(i + 1, j), index(i + 1, j + 1));
-      add(index(i, j), index(i + 1, j + 1), index(i, j + 1));
-    }
+  triangulate(m);
   find_neighbours(m);
   compute_normals(m);
   return m;

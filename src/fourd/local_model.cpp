@@ -31,6 +31,19 @@ LocalModel::LocalModel(const FourdMesh& mesh, double scale_mm, const glm::dmat3&
   // through a uniform grid of cells about a mean edge wide.
   const double edge = n > 0 ? edge_sum / (3.0 * static_cast<double>(n)) : 1.0;
   const double grow = 0.01 * edge, cell = std::max(edge, 1e-9);
+  find_touching(lo, grow, cell);
+  out_.reserve(n);
+  mark_.assign(n, 0);
+  path_mm_.assign(n, 0.0);
+  centroid_.resize(n);
+  for (std::size_t f = 0; f < n; ++f) {
+    const glm::uvec3 t = mesh.triangles[f];
+    centroid_[f] = (positions_[t.x] + positions_[t.y] + positions_[t.z]) / 3.0;
+  }
+}
+
+void LocalModel::find_touching(const glm::dvec3& lo, double grow, double cell) {
+  const std::size_t n = box_min_.size();
   std::map<std::tuple<int, int, int>, std::vector<int>> grid;
   auto cell_of = [&](const glm::dvec3& p) { return glm::ivec3(glm::floor((p - lo) / cell)); };
   for (std::size_t f = 0; f < n; ++f) {
@@ -53,14 +66,6 @@ LocalModel::LocalModel(const FourdMesh& mesh, double scale_mm, const glm::dmat3&
     std::sort(t.begin(), t.end());
     t.erase(std::unique(t.begin(), t.end()), t.end());
   }
-  out_.reserve(n);
-  mark_.assign(n, 0);
-  path_mm_.assign(n, 0.0);
-  centroid_.resize(n);
-  for (std::size_t f = 0; f < n; ++f) {
-    const glm::uvec3 t = mesh.triangles[f];
-    centroid_[f] = (positions_[t.x] + positions_[t.y] + positions_[t.z]) / 3.0;
-  }
 }
 
 bool LocalModel::within(int f, const glm::dvec3& c, double r) const {
@@ -75,6 +80,27 @@ LocalModel::FacetPoint LocalModel::closest_on_facet(int f, const glm::dvec3& p) 
   const glm::dvec3 point = closest_on_triangle(p, positions_[t.x], positions_[t.y], positions_[t.z], bary);
   const double w = bary.x * mesh_.vertices[t.x].w + bary.y * mesh_.vertices[t.y].w + bary.z * mesh_.vertices[t.z].w;
   return {point, w, glm::length(p - point)};
+}
+
+void LocalModel::admit(const Admission& a, int f, std::size_t from) {
+  const auto fu = static_cast<std::size_t>(f);
+  if (mark_[fu] == stamp_) return;
+  if (a.kind == LocalModelKind::kAdjacency) {
+    // Distance along the surface (centroid to centroid along the walk): a sheet that crosses
+    // this one is near in 3D but far along the surface. A facet too far by this path stays
+    // unmarked, so a shorter path found later still admits it.
+    const double path = path_mm_[from] + glm::length(centroid_[fu] - centroid_[from]);
+    if (path > a.params.radius_mm) return;
+    path_mm_[fu] = path;
+    mark_[fu] = stamp_;
+  } else {
+    mark_[fu] = stamp_;
+    if (!within(f, a.contact_mm, a.params.radius_mm)) return;
+  }
+  if (a.kind == LocalModelKind::kContinuity &&
+      (mesh_.tri_w_max(fu) < a.w_cur - a.half || mesh_.tri_w_min(fu) > a.w_cur + a.half))
+    return;
+  out_.push_back(f);
 }
 
 std::span<const int> LocalModel::build(LocalModelKind kind, int facet, const glm::dvec3& contact_mm, double w_cur,
@@ -92,26 +118,7 @@ std::span<const int> LocalModel::build(LocalModelKind kind, int facet, const glm
   }
   const double slack = params.w_slack >= 0.0 ? params.w_slack : auto_w_slack_;
   const double half = std::abs(w_cur - w_pre) + slack;  // eq. 3-4
-  auto admit = [&](int f, std::size_t from) {
-    const auto fu = static_cast<std::size_t>(f);
-    if (mark_[fu] == stamp_) return;
-    if (kind == LocalModelKind::kAdjacency) {
-      // Distance along the surface (centroid to centroid along the walk): a sheet that crosses
-      // this one is near in 3D but far along the surface. A facet too far by this path stays
-      // unmarked, so a shorter path found later still admits it.
-      const double path = path_mm_[from] + glm::length(centroid_[fu] - centroid_[from]);
-      if (path > params.radius_mm) return;
-      path_mm_[fu] = path;
-      mark_[fu] = stamp_;
-    } else {
-      mark_[fu] = stamp_;
-      if (!within(f, contact_mm, params.radius_mm)) return;
-    }
-    if (kind == LocalModelKind::kContinuity &&
-        (mesh_.tri_w_max(fu) < w_cur - half || mesh_.tri_w_min(fu) > w_cur + half))
-      return;
-    out_.push_back(f);
-  };
+  const Admission rule{kind, contact_mm, w_cur, half, params};
   const auto start = static_cast<std::size_t>(facet);
   mark_[start] = stamp_;
   path_mm_[start] = glm::length(centroid_[start] - contact_mm);
@@ -119,10 +126,10 @@ std::span<const int> LocalModel::build(LocalModelKind kind, int facet, const glm
   for (std::size_t head = 0; head < out_.size(); ++head) {
     const auto f = static_cast<std::size_t>(out_[head]);
     if (kind == LocalModelKind::kContinuity) {
-      for (int g : touching_[f]) admit(g, f);
+      for (int g : touching_[f]) admit(rule, g, f);
     } else {
       for (int k = 0; k < 3; ++k)
-        if (mesh_.neighbours[f][k] >= 0) admit(mesh_.neighbours[f][k], f);
+        if (mesh_.neighbours[f][k] >= 0) admit(rule, mesh_.neighbours[f][k], f);
     }
   }
   return out_;

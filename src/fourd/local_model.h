@@ -58,6 +58,18 @@ class LocalModel {
 
  private:
   bool within(int f, const glm::dvec3& c, double r) const;  // bounding-box distance test
+  // The constructor's touching_: facets whose boxes (grown by `grow`) touch, through a grid of
+  // `cell`-wide cells from `lo`.
+  void find_touching(const glm::dvec3& lo, double grow, double cell);
+  // build()'s rule for a facet reached from facet `from`: within the radius (along the surface
+  // for adjacency), and in the w window for continuity.
+  struct Admission {
+    LocalModelKind kind;
+    glm::dvec3 contact_mm;
+    double w_cur, half;  // the w window: w_cur +- half
+    const LocalModelParams& params;
+  };
+  void admit(const Admission& a, int f, std::size_t from);
 
   const FourdMesh& mesh_;
   std::vector<glm::dvec3> positions_;                // per vertex, mm

@@ -92,6 +92,9 @@ class RollingManifold {
   int turns() const { return turns_; }  // interest-facet changes so far
 
  private:
+  // step()'s turn: a new target rotation when the touch starts or the proxy crosses onto
+  // another facet (at least kMinTravelMm from the last turn); false when it keeps the target.
+  bool retarget(const ViewAxes& axes, const RollContact& c, const glm::dvec3& n, const ViewPose& pose);
   int facet_ = -1;
   glm::dvec3 last_point_{0.0}, last_normal_{0.0, 0.0, 1.0};
   // Where the interest facet last changed. It changes again only after the contact point has

@@ -22,6 +22,41 @@ void line_to(std::vector<glm::dvec3>& pts, const glm::dvec3& to, double step) {
   for (int i = 1; i <= n; ++i) pts.push_back(from + (to - from) * (static_cast<double>(i) / n));
 }
 
+constexpr double kDense = 0.01;  // KnottedArc: polyline step before resampling
+
+// KnottedArc::make's long knot, from the left pole to the right pole (see there): the trefoil
+// cut open at t0, its right end run under the knot past x_max and up to l.
+std::vector<glm::dvec3> long_knot(double t0, double x_max) {
+  constexpr double kDelta = 0.25;   // half the gap in t where the trefoil is cut
+  const glm::dvec3 p = trefoil(t0);
+  std::vector<glm::dvec3> pts{{p.x - 0.3, p.y, p.z}};  // left pole
+  line_to(pts, trefoil(t0 + kDelta), kDense);
+  for (double t = t0 + kDelta; t <= t0 + kTwoPi - kDelta; t += 0.002) pts.push_back(trefoil(t));
+  const glm::dvec3 end = trefoil(t0 + kTwoPi - kDelta);
+  line_to(pts, end, kDense);
+  line_to(pts, {end.x, end.y, -1.3}, kDense);
+  line_to(pts, {x_max + 0.3, p.y, -1.3}, kDense);
+  line_to(pts, {x_max + 0.3, p.y, p.z}, kDense);
+  line_to(pts, {x_max + 0.6, p.y, p.z}, kDense);  // right pole
+  return pts;
+}
+
+// The polyline's points less `origin`, each with its cumulative arc length over the whole; the
+// ends exactly on the spinning plane.
+KnottedArc arc_of(const std::vector<glm::dvec3>& line, const glm::dvec3& origin) {
+  KnottedArc arc;
+  std::vector<double> len(line.size(), 0.0);
+  for (std::size_t i = 1; i < line.size(); ++i) len[i] = len[i - 1] + glm::length(line[i] - line[i - 1]);
+  for (std::size_t i = 0; i < line.size(); ++i) {
+    arc.points.push_back(line[i] - origin);
+    arc.s.push_back(len[i] / len.back());
+    arc.extent = std::max({arc.extent, std::abs(arc.points.back().x), std::abs(arc.points.back().y),
+                           std::abs(arc.points.back().z)});
+  }
+  arc.points.front().z = arc.points.back().z = 0.0;  // exactly on the spinning plane
+  return arc;
+}
+
 }  // namespace
 
 glm::ivec2 default_grid(SurfaceKind kind) {
@@ -53,23 +88,13 @@ const char* surface_name(SurfaceKind kind) {
 // (z = -1.6); twisted, the knotted part turns about l, so the plane lies below everything it
 // sweeps (its largest distance from l, + 0.3) and the drops lie beyond its ends along x.
 KnottedArc KnottedArc::make(bool twisted) {
-  constexpr double kDense = 0.01;   // polyline step before resampling
-  constexpr double kDelta = 0.25;   // half the gap in t where the trefoil is cut
   double t0 = 0.0;
   for (double t = 0.0; t < kTwoPi; t += 1e-4)
     if (trefoil(t).x < trefoil(t0).x) t0 = t;
   const glm::dvec3 p = trefoil(t0);
   double x_max = p.x;
   for (double t = 0.0; t < kTwoPi; t += 1e-3) x_max = std::max(x_max, trefoil(t).x);
-  std::vector<glm::dvec3> pts{{p.x - 0.3, p.y, p.z}};  // left pole
-  line_to(pts, trefoil(t0 + kDelta), kDense);
-  for (double t = t0 + kDelta; t <= t0 + kTwoPi - kDelta; t += 0.002) pts.push_back(trefoil(t));
-  const glm::dvec3 end = trefoil(t0 + kTwoPi - kDelta);
-  line_to(pts, end, kDense);
-  line_to(pts, {end.x, end.y, -1.3}, kDense);
-  line_to(pts, {x_max + 0.3, p.y, -1.3}, kDense);
-  line_to(pts, {x_max + 0.3, p.y, p.z}, kDense);
-  line_to(pts, {x_max + 0.6, p.y, p.z}, kDense);  // right pole
+  const std::vector<glm::dvec3> pts = long_knot(t0, x_max);
   // The knotted part's reach from l, which the twist sweeps around l.
   double reach = 0.0;
   for (const glm::dvec3& q : pts) reach = std::max(reach, std::hypot(q.y - p.y, q.z - p.z));
@@ -82,18 +107,7 @@ KnottedArc KnottedArc::make(bool twisted) {
   const std::size_t twist_last = left.size() - 1;
   line_to(left, {x_max + 0.9, p.y, p.z}, kDense);
   line_to(left, {x_max + 0.9, p.y, plane_z}, kDense);
-  // Cumulative arc length, then (a, b, c) = (x - mid x, y - p.y, z - plane_z).
-  KnottedArc arc;
-  std::vector<double> len(left.size(), 0.0);
-  for (std::size_t i = 1; i < left.size(); ++i) len[i] = len[i - 1] + glm::length(left[i] - left[i - 1]);
-  const glm::dvec3 origin(0.5 * (p.x - 0.6 + x_max + 0.9), p.y, plane_z);
-  for (std::size_t i = 0; i < left.size(); ++i) {
-    arc.points.push_back(left[i] - origin);
-    arc.s.push_back(len[i] / len.back());
-    arc.extent = std::max({arc.extent, std::abs(arc.points.back().x), std::abs(arc.points.back().y),
-                           std::abs(arc.points.back().z)});
-  }
-  arc.points.front().z = arc.points.back().z = 0.0;  // exactly on the spinning plane
+  KnottedArc arc = arc_of(left, glm::dvec3(0.5 * (p.x - 0.6 + x_max + 0.9), p.y, plane_z));
   arc.twist_begin = arc.s[twist_first];
   arc.twist_end = arc.s[twist_last];
   arc.axis_c = p.z - plane_z;

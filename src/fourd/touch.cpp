@@ -10,6 +10,33 @@ namespace {
 
 constexpr int kMaxCellsPerAxis = 48;  // 48^3 cells: a few MB of indices at most
 
+// FourdTouch::closest_adjacent's breadth-first queue: at most N facets, each once, with its
+// path length. Fixed storage on the stack (the haptic thread allocates nothing).
+template <std::size_t N>
+struct FacetQueue {
+  std::array<int, N> facet;
+  std::array<double, N> path;
+  std::array<int, 2 * N> seen;  // open addressing, -1 = empty
+  std::size_t count = 0;
+
+  FacetQueue() { seen.fill(-1); }
+  bool mark(int f) {  // false if already there
+    std::size_t h = (static_cast<std::size_t>(f) * 2654435761u) % seen.size();
+    while (seen[h] >= 0) {
+      if (seen[h] == f) return false;
+      h = (h + 1) % seen.size();
+    }
+    seen[h] = f;
+    return true;
+  }
+  void push(int f, double d) {  // full: the walk stops growing
+    if (count == N || !mark(f)) return;
+    facet[count] = f;
+    path[count] = d;
+    ++count;
+  }
+};
+
 }  // namespace
 
 FourdTouch::FourdTouch(const FourdMesh& mesh, double scale_mm, const glm::dmat3& rotation,
@@ -32,6 +59,13 @@ FourdTouch::FourdTouch(const FourdMesh& mesh, double scale_mm, const glm::dmat3&
   cell_mm_ = std::max({2.0 * edge, extent.x / kMaxCellsPerAxis, extent.y / kMaxCellsPerAxis, extent.z / kMaxCellsPerAxis});
   origin_ = lo;
   dims_ = glm::max(glm::ivec3(glm::ceil(extent / cell_mm_)), glm::ivec3(1));
+  neighbours_ = mesh.neighbours;
+  for (const glm::uvec3& t : mesh.triangles) centroid_.push_back((positions_[t.x] + positions_[t.y] + positions_[t.z]) / 3.0);
+  build_grid(mesh);
+}
+
+// Each facet's w range and cell box, and the grid's facet lists (counted, prefix-summed, filled).
+void FourdTouch::build_grid(const FourdMesh& mesh) {
   std::vector<std::uint32_t> count(static_cast<std::size_t>(dims_.x) * dims_.y * dims_.z + 1, 0);
   auto cell_index = [this](int x, int y, int z) {
     return static_cast<std::size_t>((z * dims_.y + y) * dims_.x + x);
@@ -45,8 +79,6 @@ FourdTouch::FourdTouch(const FourdMesh& mesh, double scale_mm, const glm::dmat3&
         for (int x = tri.cell_lo.x; x <= tri.cell_hi.x; ++x) ++count[cell_index(x, y, z) + 1];
     tris_.push_back(tri);
   }
-  neighbours_ = mesh.neighbours;
-  for (const glm::uvec3& t : mesh.triangles) centroid_.push_back((positions_[t.x] + positions_[t.y] + positions_[t.z]) / 3.0);
   for (std::size_t i = 1; i < count.size(); ++i) count[i] += count[i - 1];
   cell_start_ = count;
   cell_facets_.resize(count.back());
@@ -164,30 +196,11 @@ TouchHit FourdTouch::closest_adjacent(const glm::dvec3& p, double max_distance_m
   // (start point to centroid, then centroid to centroid); a facet reached too far stays
   // unvisited, so a shorter path found later still admits it. Fixed storage on the stack: the
   // haptic thread allocates nothing; at kMaxAdjacent facets the walk stops.
-  std::array<int, kMaxAdjacent> queue;
-  std::array<double, kMaxAdjacent> path;
-  std::array<int, 2 * kMaxAdjacent> seen;  // open addressing, -1 = empty
-  seen.fill(-1);
-  auto mark = [&](int f) {  // false if already there
-    std::size_t h = (static_cast<std::size_t>(f) * 2654435761u) % seen.size();
-    while (seen[h] >= 0) {
-      if (seen[h] == f) return false;
-      h = (h + 1) % seen.size();
-    }
-    seen[h] = f;
-    return true;
-  };
-  std::size_t count = 0;
-  const auto push = [&](int f, double d) {
-    if (count == kMaxAdjacent || !mark(f)) return;
-    queue[count] = f;
-    path[count] = d;
-    ++count;
-  };
-  push(start_facet, glm::length(centroid_[static_cast<std::size_t>(start_facet)] - start_point));
+  FacetQueue<kMaxAdjacent> walk;
+  walk.push(start_facet, glm::length(centroid_[static_cast<std::size_t>(start_facet)] - start_point));
   double limit = max_distance_mm;
-  for (std::size_t head = 0; head < count; ++head) {
-    const int f = queue[head];
+  for (std::size_t head = 0; head < walk.count; ++head) {
+    const int f = walk.facet[head];
     const auto fu = static_cast<std::size_t>(f);
     const Tri& t = tris_[fu];
     ++best.visited;
@@ -205,8 +218,8 @@ TouchHit FourdTouch::closest_adjacent(const glm::dvec3& p, double max_distance_m
     for (int k = 0; k < 3; ++k) {
       const int g = neighbours_[fu][k];
       if (g < 0) continue;
-      const double along = path[head] + glm::length(centroid_[static_cast<std::size_t>(g)] - centroid_[fu]);
-      if (along <= radius_mm) push(g, along);
+      const double along = walk.path[head] + glm::length(centroid_[static_cast<std::size_t>(g)] - centroid_[fu]);
+      if (along <= radius_mm) walk.push(g, along);
     }
   }
   finish(best, p);

@@ -73,6 +73,7 @@ class FourdTouch {
     glm::ivec3 cell_lo, cell_hi;  // grid cells its box overlaps
   };
   glm::ivec3 cell_of(const glm::dvec3& p) const;
+  void build_grid(const FourdMesh& mesh);  // the constructor's tris_, cell_start_, cell_facets_
   // Calls visit(facet index, its Tri) once for every facet whose grid cells overlap the box of
   // half size r around p (a facet in several cells: in the first of them the walk meets).
   template <class Visit>

@@ -140,6 +140,30 @@ glm::dvec3 medium_drag_n(const world::HapticScene& scene, const glm::dvec3& p_mm
   return viscosity_force_n(scene.material(medium), inside);
 }
 
+// Touching: the material's spring along the (shaded) normal, then its friction, added to f in
+// that order; friction may hold the proxy back toward last tick's place (stick_point).
+void add_contact_force(const HapticsParams& p, world::GodObject& god, const world::ProxyStep& step,
+                       const glm::dvec3& x_mm, const glm::dvec3& v_mm_s, double r, const glm::dvec3& stick_point,
+                       glm::dvec3& f, ForceResult& out) {
+  const HapticMaterial& m = god.scene().material(step.surface);
+  const HapticsParams q = with_material(p, m);
+  out.in_contact = true;
+  out.surface = step.surface;
+  out.penetration_mm = r;
+  out.contact_normal = step.contact_normal;
+  const glm::dvec3 n = q.force_shading ? step.shaded_normal : (step.proxy_mm - x_mm) / r;
+  double push_n = 0.0;
+  f += contact_force_n(q, m, material_contact(n, step.contact_point, -r, v_mm_s),
+                       spring_magnitude_n(q, r), push_n);
+  glm::dvec3 held = stick_point;
+  f += friction(q, step.contact_normal, push_n, step.proxy_mm, held, out.sticking);
+  if (held != step.proxy_mm) {
+    const world::ProxyStep back = god.move(held);  // constrained: stops at any surface
+    out.proxy_mm = back.proxy_mm;
+    out.facets_visited += back.facets_visited;
+  }
+}
+
 }  // namespace
 
 ForceResult compute_proxy_force(const HapticsParams& p, world::GodObject& god, const glm::dvec3& x_mm,
@@ -156,23 +180,7 @@ ForceResult compute_proxy_force(const HapticsParams& p, world::GodObject& god, c
   f += medium_drag_n(god.scene(), step.proxy_mm, v_mm_s, out.medium);
   const double r = glm::length(step.proxy_mm - x_mm);
   if (step.in_contact && r > 0.0) {
-    const HapticMaterial& m = god.scene().material(step.surface);
-    const HapticsParams q = with_material(p, m);
-    out.in_contact = true;
-    out.surface = step.surface;
-    out.penetration_mm = r;
-    out.contact_normal = step.contact_normal;
-    const glm::dvec3 n = q.force_shading ? step.shaded_normal : (step.proxy_mm - x_mm) / r;
-    double push_n = 0.0;
-    f += contact_force_n(q, m, material_contact(n, step.contact_point, -r, v_mm_s),
-                         spring_magnitude_n(q, r), push_n);
-    glm::dvec3 held = stick_point;
-    f += friction(q, step.contact_normal, push_n, step.proxy_mm, held, out.sticking);
-    if (held != step.proxy_mm) {
-      const world::ProxyStep back = god.move(held);  // constrained: stops at any surface
-      out.proxy_mm = back.proxy_mm;
-      out.facets_visited += back.facets_visited;
-    }
+    add_contact_force(p, god, step, x_mm, v_mm_s, r, stick_point, f, out);
   } else if (!step.in_contact) {
     f += magnetic_pull_n(god.scene(), step.proxy_mm, v_mm_s);
   }

@@ -58,9 +58,8 @@ void write_diff_pixel(const double* d, int channels, float* out) {
   if (alpha) out[channels - 1] = 1.0f;
 }
 
-}  // namespace
-
-Result<CompareResult> compare_images(const Image& a, const Image& b, const CompareOptions& options) {
+// Same size and channels, not empty, at most kMaxChannels, buffers of that size.
+Status check_comparable(const Image& a, const Image& b) {
   if (a.width != b.width || a.height != b.height || a.channels != b.channels) {
     return make_error("image sizes differ: " + size_text(a) + " vs " + size_text(b) +
                       " (width x height x channels)");
@@ -71,6 +70,14 @@ Result<CompareResult> compare_images(const Image& a, const Image& b, const Compa
     return make_error("cannot compare images of " + size_text(a) +
                       ": empty, too many channels, or pixel buffer size does not match");
   }
+  return ok_status();
+}
+
+}  // namespace
+
+Result<CompareResult> compare_images(const Image& a, const Image& b, const CompareOptions& options) {
+  if (Status st = check_comparable(a, b); !st) return st.error();
+  const size_t pixel_count = static_cast<size_t>(a.width) * a.height;
   CompareResult result;
   result.diff.width = a.width;
   result.diff.height = a.height;

@@ -106,16 +106,12 @@ std::string check_geometry(const MazeDesc& d) {
   return o.str();
 }
 
-}  // namespace
+using Tables = std::vector<std::pair<std::string, std::vector<Key>>>;
 
-Result<MazeDesc> parse_maze_desc(const std::string& text, const std::string& source_name) {
-  Result<toml::table> parsed = parse_toml(text, source_name);
-  if (!parsed) return parsed.error();
-  toml::table& root = parsed.value();
-  MazeDesc d;
-  d.path = source_name;
-  Reader r{source_name, {}};
-  const std::vector<std::pair<std::string, std::vector<Key>>> tables = {
+// Every table of the description: its keys, their valid ranges and where each lands in `d`. Kept
+// whole (over 40 lines): it is one table of data, read top to bottom.
+Tables maze_tables(MazeDesc& d) {
+  return {
       {"maze",
        {{"room_size_mm", 20, 2000, &d.room_size_mm},
         {"room_height_mm", 10, 1000, &d.room_height_mm},
@@ -152,39 +148,60 @@ Result<MazeDesc> parse_maze_desc(const std::string& text, const std::string& sou
         {"fluctuation_n", -100, 100, nullptr, nullptr, &d.external_fluctuation_n},
         {"frequency_hz", 0, 500, &d.external_frequency_hz}}},
   };
-  for (const auto& [key, node] : root) {
-    const std::string name(key.str());
-    const toml::table* t = node.as_table();
-    if (t == nullptr) return make_error(r.at(node) + "'" + name + "' must be a table, e.g. [" + name + "]");
-    if (name == "instructions") {  // one string key: the live window's first screen
-      for (const auto& [k, n] : *t) {
-        const auto v = n.value<std::string>();
-        if (k.str() != "text") return make_error(r.at(n) + "unknown key '" + std::string(k.str()) + "' in [instructions]; known keys: text");
-        if (!v || v->empty()) return make_error(r.at(n) + "'text' must be a non-empty string, e.g. text = \"Press Space to start.\"");
-        d.instructions = *v;
-      }
-      continue;
-    }
-    if (name == "cues") {
-      for (const auto& [cue_key, cue_node] : *t) {
-        const std::string full = "cues." + std::string(cue_key.str());
-        const toml::table* ct = cue_node.as_table();
-        bool known = false;
-        for (const auto& [tname, keys] : tables)
-          if (tname == full && ct != nullptr) known = r.table(*ct, full, keys);
-        if (!r.error.empty()) return make_error(r.error);
-        if (!known)
-          return make_error(r.at(cue_node) + "unknown table [" + full +
-                            "]; the cue tables are texture, viscosity, elastic, hidden_sphere, external_force");
-      }
-      continue;
-    }
+}
+
+// [instructions]: one string key, the live window's first screen.
+Status read_instructions(const Reader& r, const toml::table& t, MazeDesc& d) {
+  for (const auto& [k, n] : t) {
+    const auto v = n.value<std::string>();
+    if (k.str() != "text") return make_error(r.at(n) + "unknown key '" + std::string(k.str()) + "' in [instructions]; known keys: text");
+    if (!v || v->empty()) return make_error(r.at(n) + "'text' must be a non-empty string, e.g. text = \"Press Space to start.\"");
+    d.instructions = *v;
+  }
+  return ok_status();
+}
+
+// [cues.*]: each cue is a sub-table of [cues], read against its "cues.<name>" entry in `tables`.
+Status read_cues(Reader& r, const toml::table& t, const Tables& tables) {
+  for (const auto& [cue_key, cue_node] : t) {
+    const std::string full = "cues." + std::string(cue_key.str());
+    const toml::table* ct = cue_node.as_table();
     bool known = false;
     for (const auto& [tname, keys] : tables)
-      if (tname == name) known = r.table(*t, name, keys);
+      if (tname == full && ct != nullptr) known = r.table(*ct, full, keys);
     if (!r.error.empty()) return make_error(r.error);
-    if (!known) return make_error(r.at(node) + "unknown table [" + name + "]; known: maze, walls, camera, instructions, cues.*");
+    if (!known)
+      return make_error(r.at(cue_node) + "unknown table [" + full +
+                        "]; the cue tables are texture, viscosity, elastic, hidden_sphere, external_force");
   }
+  return ok_status();
+}
+
+// One top-level table: [instructions], [cues] or a plain table of numbers.
+Status read_table(Reader& r, const std::string& name, const toml::node& node, const Tables& tables, MazeDesc& d) {
+  const toml::table* t = node.as_table();
+  if (t == nullptr) return make_error(r.at(node) + "'" + name + "' must be a table, e.g. [" + name + "]");
+  if (name == "instructions") return read_instructions(r, *t, d);
+  if (name == "cues") return read_cues(r, *t, tables);
+  bool known = false;
+  for (const auto& [tname, keys] : tables)
+    if (tname == name) known = r.table(*t, name, keys);
+  if (!r.error.empty()) return make_error(r.error);
+  if (!known) return make_error(r.at(node) + "unknown table [" + name + "]; known: maze, walls, camera, instructions, cues.*");
+  return ok_status();
+}
+
+}  // namespace
+
+Result<MazeDesc> parse_maze_desc(const std::string& text, const std::string& source_name) {
+  Result<toml::table> parsed = parse_toml(text, source_name);
+  if (!parsed) return parsed.error();
+  MazeDesc d;
+  d.path = source_name;
+  Reader r{source_name, {}};
+  const Tables tables = maze_tables(d);
+  for (const auto& [key, node] : parsed.value())
+    if (Status st = read_table(r, std::string(key.str()), node, tables, d); !st) return st.error();
   if (const std::string bad = check_geometry(d); !bad.empty()) return make_error(source_name + ":1: " + bad);
   return d;
 }

@@ -30,6 +30,39 @@ json trial_json(const SessionInfo& info, const Trial& t) {
           {"label", cue_label(t.cue)}};
 }
 
+// A room left by an exit: the trial's choice, its time and its contacts.
+json branch_json(const SessionInfo& info, const Trial& t) {
+  json j = trial_json(info, t);
+  j["type"] = "branch";
+  j["exit"] = exit_name(t.chosen);
+  j["correct_exit"] = exit_name(t.correct);
+  j["correct"] = t.ok;
+  j["time_s"] = t.exit_s;
+  j["enter_s"] = t.enter_s;
+  j["room_time_s"] = t.time_s();
+  j["path_mm"] = t.path_mm;
+  j["contacts"] = per_kind(t.contacts);
+  j["contact_s"] = per_kind(t.contact_s);
+  j["force_mean_n"] = t.force_mean_n;
+  j["force_max_n"] = t.force_max_n;
+  j["field_force_max_n"] = t.field_force_max_n;
+  return j;
+}
+
+// A pass's end: its score, room by room.
+json pass_end_json(const PassScore& s) {
+  json score = json::array();
+  for (const Trial& t : s.trials)
+    score.push_back({{"room", t.index + 1}, {"cue", cue_name(t.cue)}, {"exit", exit_name(t.chosen)}, {"correct", t.ok}});
+  return json{{"type", "pass_end"},
+              {"pass", s.pass + 1},
+              {"correct", s.correct()},
+              {"rooms", kRoomsPerPass},
+              {"pass_time_s", s.end_s - s.start_s},
+              {"time_s", s.end_s},
+              {"score", score}};
+}
+
 }  // namespace
 
 Result<SessionLog> SessionLog::open(const std::string& path, LogSyscalls sys) {
@@ -117,38 +150,8 @@ Status SessionLog::event(const SessionInfo& info, const TrackEvent& e) {
       j["time_s"] = e.trial.enter_s;
       return append(j.dump());
     }
-    case TrackEvent::Kind::kBranch: {
-      const Trial& t = e.trial;
-      json j = trial_json(info, t);
-      j["type"] = "branch";
-      j["exit"] = exit_name(t.chosen);
-      j["correct_exit"] = exit_name(t.correct);
-      j["correct"] = t.ok;
-      j["time_s"] = t.exit_s;
-      j["enter_s"] = t.enter_s;
-      j["room_time_s"] = t.time_s();
-      j["path_mm"] = t.path_mm;
-      j["contacts"] = per_kind(t.contacts);
-      j["contact_s"] = per_kind(t.contact_s);
-      j["force_mean_n"] = t.force_mean_n;
-      j["force_max_n"] = t.force_max_n;
-      j["field_force_max_n"] = t.field_force_max_n;
-      return append(j.dump());
-    }
-    case TrackEvent::Kind::kPassEnd: {
-      const PassScore& s = e.score;
-      json score = json::array();
-      for (const Trial& t : s.trials)
-        score.push_back({{"room", t.index + 1}, {"cue", cue_name(t.cue)}, {"exit", exit_name(t.chosen)}, {"correct", t.ok}});
-      return append(json{{"type", "pass_end"},
-                         {"pass", s.pass + 1},
-                         {"correct", s.correct()},
-                         {"rooms", kRoomsPerPass},
-                         {"pass_time_s", s.end_s - s.start_s},
-                         {"time_s", s.end_s},
-                         {"score", score}}
-                        .dump());
-    }
+    case TrackEvent::Kind::kBranch: return append(branch_json(info, e.trial).dump());
+    case TrackEvent::Kind::kPassEnd: return append(pass_end_json(e.score).dump());
     case TrackEvent::Kind::kFinished: return ok_status();  // session_end says it
   }
   return ok_status();

@@ -9,11 +9,10 @@
 
 namespace ps::aliasing {
 
-Scene scene(View view, double lambda_px, int size, int render_size, GaborParams::Strategy strategy,
-            GaborParams::Filter filter) {
-  Scene s;
-  s.path = "<texture aliasing>";
-  s.render.width = s.render.height = render_size;
+namespace {
+
+// One plain Gabor texture of wavelength kLambdaMm, far inside its influence distance.
+Material plain_material(GaborParams::Strategy strategy, GaborParams::Filter filter) {
   Material m;
   m.name = "plain";
   m.onset_distance_mm = 1e4;
@@ -27,7 +26,38 @@ Scene scene(View view, double lambda_px, int size, int render_size, GaborParams:
   // The bilinear tile needs 24 samples per lambda for the 1 % bar, the Hermite one 16.
   m.gabor.bake_samples_per_lambda = strategy == GaborParams::Strategy::kBakedLinear ? 24 : 16;
   m.gabor.filter = filter;
-  s.materials.push_back(m);
+  return m;
+}
+
+// The camera that sees the texture's wavelength at lambda_px pixels across the image's centre.
+void place_camera(Camera& c, View view, double lambda_px, int size) {
+  c.target = {0.0, 0.0, 0.0};
+  c.near_mm = 1.0;
+  c.far_mm = 5000.0;
+  if (view == View::kTopDown) {
+    c.projection = Projection::kOrthographic;
+    c.position = {0.0, 0.0, 100.0};
+    c.up = {0.0, 1.0, 0.0};
+    c.ortho_height_mm = kLambdaMm * size / lambda_px;
+  } else {
+    // Across the centre a pixel spans 2 D tan(5 deg) / size mm at the distance D.
+    c.projection = Projection::kPerspective;
+    c.fov_y_deg = 10.0;
+    const double dist = kLambdaMm * size / (2.0 * std::tan(5.0 * std::numbers::pi / 180.0) * lambda_px);
+    const double a = 15.0 * std::numbers::pi / 180.0;
+    c.position = {0.0, -dist * std::cos(a), dist * std::sin(a)};
+    c.up = {0.0, 0.0, 1.0};
+  }
+}
+
+}  // namespace
+
+Scene scene(View view, double lambda_px, int size, int render_size, GaborParams::Strategy strategy,
+            GaborParams::Filter filter) {
+  Scene s;
+  s.path = "<texture aliasing>";
+  s.render.width = s.render.height = render_size;
+  s.materials.push_back(plain_material(strategy, filter));
   Surface p;
   p.type = SurfaceType::kPlane;
   p.material = "plain";
@@ -38,23 +68,7 @@ Scene scene(View view, double lambda_px, int size, int render_size, GaborParams:
   s.probe.shape = ProbeShape::kSphere;
   s.probe.radius_mm = 500.0;
   s.probe.position = {0.0, 0.0, 500.5};
-  s.camera.target = {0.0, 0.0, 0.0};
-  s.camera.near_mm = 1.0;
-  s.camera.far_mm = 5000.0;
-  if (view == View::kTopDown) {
-    s.camera.projection = Projection::kOrthographic;
-    s.camera.position = {0.0, 0.0, 100.0};
-    s.camera.up = {0.0, 1.0, 0.0};
-    s.camera.ortho_height_mm = kLambdaMm * size / lambda_px;
-  } else {
-    // Across the centre a pixel spans 2 D tan(5 deg) / size mm at the distance D.
-    s.camera.projection = Projection::kPerspective;
-    s.camera.fov_y_deg = 10.0;
-    const double dist = kLambdaMm * size / (2.0 * std::tan(5.0 * std::numbers::pi / 180.0) * lambda_px);
-    const double a = 15.0 * std::numbers::pi / 180.0;
-    s.camera.position = {0.0, -dist * std::cos(a), dist * std::sin(a)};
-    s.camera.up = {0.0, 0.0, 1.0};
-  }
+  place_camera(s.camera, view, lambda_px, size);
   return s;
 }
 

@@ -68,6 +68,42 @@ std::string_view lut_value_name(LutAxis axis) {
   return axis == LutAxis::kDistanceMm ? "intensity" : "gain";
 }
 
+namespace {
+
+// The first line: which table this is.
+Status read_header(const std::vector<std::string_view>& f, std::string_view line, const std::string& where, Lut& lut) {
+  if (f.size() == 3 && f[0] == "lut" && f[1] == "distance_mm" && f[2] == "intensity") {
+    lut.axis = LutAxis::kDistanceMm;
+  } else if (f.size() == 3 && f[0] == "lut" && f[1] == "speed_mm_s" && f[2] == "gain") {
+    lut.axis = LutAxis::kSpeedMmS;
+  } else {
+    return make_error(where + "expected the header `lut distance_mm intensity` or `lut speed_mm_s gain`, got '" +
+                      header_excerpt(line) + "'");
+  }
+  return ok_status();
+}
+
+// A row `x y`: x >= 0 and increasing, y in [0, 1], at most kMaxLutRows rows.
+Status read_row(const std::vector<std::string_view>& f, std::string_view line, const std::string& where, Lut& lut) {
+  LutPoint p;
+  if (f.size() != 2 || !to_double(f[0], p.x) || !to_double(f[1], p.y))
+    return make_error(where + "expected a row of two finite numbers `x y`, got '" + excerpt(line) + "'" +
+                      std::string(kExample));
+  if (p.x < 0.0) return make_error(where + std::string(lut_axis_name(lut.axis)) + " " + fmt(p.x) + " must be >= 0");
+  if (p.y < 0.0 || p.y > 1.0)
+    return make_error(where + std::string(lut_value_name(lut.axis)) + " " + fmt(p.y) + " must be in [0, 1]");
+  if (!lut.points.empty() && !(p.x > lut.points.back().x))
+    return make_error(where + std::string(lut_axis_name(lut.axis)) + " " + fmt(p.x) +
+                      " must be greater than the previous row's " + fmt(lut.points.back().x) +
+                      " (rows in increasing x)");
+  if (static_cast<int>(lut.points.size()) == kMaxLutRows)
+    return make_error(where + "more than " + std::to_string(kMaxLutRows) + " rows");
+  lut.points.push_back(p);
+  return ok_status();
+}
+
+}  // namespace
+
 Result<Lut> parse_lut(std::string_view text, const std::string& source_name) {
   Lut lut;
   bool header = false;
@@ -84,32 +120,9 @@ Result<Lut> parse_lut(std::string_view text, const std::string& source_name) {
     last_line = line_no;
     const std::string where = source_name + ":" + std::to_string(line_no) + ": ";
     const std::vector<std::string_view> f = fields(line);
-    if (!header) {
-      if (f.size() == 3 && f[0] == "lut" && f[1] == "distance_mm" && f[2] == "intensity") {
-        lut.axis = LutAxis::kDistanceMm;
-      } else if (f.size() == 3 && f[0] == "lut" && f[1] == "speed_mm_s" && f[2] == "gain") {
-        lut.axis = LutAxis::kSpeedMmS;
-      } else {
-        return make_error(where + "expected the header `lut distance_mm intensity` or `lut speed_mm_s gain`, got '" +
-                          header_excerpt(line) + "'");
-      }
-      header = true;
-      continue;
-    }
-    LutPoint p;
-    if (f.size() != 2 || !to_double(f[0], p.x) || !to_double(f[1], p.y))
-      return make_error(where + "expected a row of two finite numbers `x y`, got '" + excerpt(line) + "'" +
-                        std::string(kExample));
-    if (p.x < 0.0) return make_error(where + std::string(lut_axis_name(lut.axis)) + " " + fmt(p.x) + " must be >= 0");
-    if (p.y < 0.0 || p.y > 1.0)
-      return make_error(where + std::string(lut_value_name(lut.axis)) + " " + fmt(p.y) + " must be in [0, 1]");
-    if (!lut.points.empty() && !(p.x > lut.points.back().x))
-      return make_error(where + std::string(lut_axis_name(lut.axis)) + " " + fmt(p.x) +
-                        " must be greater than the previous row's " + fmt(lut.points.back().x) +
-                        " (rows in increasing x)");
-    if (static_cast<int>(lut.points.size()) == kMaxLutRows)
-      return make_error(where + "more than " + std::to_string(kMaxLutRows) + " rows");
-    lut.points.push_back(p);
+    Status st = header ? read_row(f, line, where, lut) : read_header(f, line, where, lut);
+    if (!st) return st.error();
+    header = true;
   }
   if (!header) return make_error(source_name + ":1: empty lookup table" + std::string(kExample));
   if (lut.points.size() < 2)

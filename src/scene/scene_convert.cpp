@@ -201,16 +201,10 @@ Status read_material(const ParseContext& ctx, const toml::table& table, const st
   return r.status();
 }
 
-Status read_surface(const ParseContext& ctx, const toml::table& table, int index,
-                    const std::vector<std::string>& material_names, Surface& out) {
-  const std::string path = "surfaces." + std::to_string(index);
-  TableReader r(ctx, &table, Section::kSurface, path, "[[surfaces]] #" + std::to_string(index));
-  out.line = static_cast<int>(table.source().begin.line);
-  r.check_unknown_keys();
-  read_enum(r, "type", out.type, kSurfaceTypes);
-  r.string("material", out.material);
-  r.vec3("center", out.center, kCoordinate);
-  r.vec3("rotation_deg", out.rotation_deg, Range::closed(-3600.0, 3600.0));
+namespace {
+
+// The shape's extent, its files (height map, mesh) and its tessellation.
+void read_shape_keys(TableReader& r, Surface& out) {
   // One key for the extent of a shape: [x, y] for planes and height fields, [x, y, z] for a box.
   if (out.type == SurfaceType::kBox) {
     r.vec3("size_mm", out.box_size_mm, kLength);
@@ -224,13 +218,10 @@ Status read_surface(const ParseContext& ctx, const toml::table& table, int index
   r.file("mesh_file", out.mesh_file);
   r.number("scale", out.scale, Range::positive(1e6));
   r.integer("resolution", out.resolution, 3, kMaxResolution);
-  r.boolean("visible", out.visible);
-  r.boolean("touchable", out.touchable);
-  r.vec3("visual_stretch", out.visual_stretch, Range::closed(0.1, 10.0));
-  r.boolean("field_map", out.field_map);
-  read_fourd_keys(r, out);
-  r.require(!out.field_map || out.type == SurfaceType::kPlane || out.type == SurfaceType::kBox, "field_map",
-            "needs a plane or a box (the map lies on its top, along world X and Y)");
+}
+
+// deformable and deform_*: the dent's springs, mass and limits, on a tessellated surface only.
+void read_deform_keys(TableReader& r, Surface& out) {
   r.boolean("deformable", out.deform.enabled);
   r.number("deform_base_n_per_mm", out.deform.base_n_per_mm, Range::positive(1e3));
   r.number("deform_neighbour_n_per_mm", out.deform.neighbour_n_per_mm, Range::positive(1e3));
@@ -244,6 +235,29 @@ Status read_surface(const ParseContext& ctx, const toml::table& table, int index
                           "box's few vertices cannot dent");
   r.require(!out.deform.enabled || out.visual_stretch == glm::dvec3(1.0), "deformable",
             "cannot be combined with visual_stretch (the dent follows the drawn probe on the felt shape)");
+}
+
+}  // namespace
+
+Status read_surface(const ParseContext& ctx, const toml::table& table, int index,
+                    const std::vector<std::string>& material_names, Surface& out) {
+  const std::string path = "surfaces." + std::to_string(index);
+  TableReader r(ctx, &table, Section::kSurface, path, "[[surfaces]] #" + std::to_string(index));
+  out.line = static_cast<int>(table.source().begin.line);
+  r.check_unknown_keys();
+  read_enum(r, "type", out.type, kSurfaceTypes);
+  r.string("material", out.material);
+  r.vec3("center", out.center, kCoordinate);
+  r.vec3("rotation_deg", out.rotation_deg, Range::closed(-3600.0, 3600.0));
+  read_shape_keys(r, out);
+  r.boolean("visible", out.visible);
+  r.boolean("touchable", out.touchable);
+  r.vec3("visual_stretch", out.visual_stretch, Range::closed(0.1, 10.0));
+  r.boolean("field_map", out.field_map);
+  read_fourd_keys(r, out);
+  r.require(!out.field_map || out.type == SurfaceType::kPlane || out.type == SurfaceType::kBox, "field_map",
+            "needs a plane or a box (the map lies on its top, along world X and Y)");
+  read_deform_keys(r, out);
   r.require(out.type != SurfaceType::kTorus || out.minor_radius_mm < out.radius_mm,
             "minor_radius_mm", "must be < 'radius_mm' for a torus (a ring torus)");
   r.require(out.type != SurfaceType::kHeightField || !out.heightmap.empty(), "heightmap",

@@ -109,6 +109,39 @@ Status read_body(const ParseContext& ctx, const toml::table& table, int index,
   return r.status();
 }
 
+namespace {
+
+// action = "scene:FILE" (the file resolved and admitted) or "flag:NAME", and the label it gives
+// an unlabelled button; false when it is neither form.
+bool read_action(const ParseContext& ctx, TableReader& r, Button& out) {
+  const std::size_t colon = out.action.find(':');
+  const std::string kind = out.action.substr(0, colon);
+  const std::string target = colon == std::string::npos ? std::string() : out.action.substr(colon + 1);
+  if ((kind != "scene" && kind != "flag") || target.empty()) {
+    r.fail("action", "'" + out.action + "' is not \"scene:FILE\" or \"flag:NAME\"");
+    return false;
+  }
+  out.action_kind = kind == "scene" ? ButtonActionKind::kScene : ButtonActionKind::kFlag;
+  if (out.action_kind == ButtonActionKind::kScene) {
+    namespace fs = std::filesystem;
+    fs::path file(target);
+    if (file.is_relative()) file = fs::path(ctx.base_dir) / file;
+    file = file.lexically_normal();
+    std::error_code ec;
+    if (Status s = ctx.paths.admit(file, "names"); !s && !r.from_user("action")) r.fail("action", s.error().message);
+    if (!fs::is_regular_file(file, ec)) r.fail("action", "scene file not found: " + file.string());
+    out.action_target = file.string();
+    if (out.label.empty()) out.label = fs::path(target).stem().string();
+  } else {
+    out.action_target = target;
+    if (out.label.empty()) out.label = target;
+    if (out.picture) r.fail("picture", "needs a \"scene:FILE\" action: the picture is of the scene the button leads to");
+  }
+  return true;
+}
+
+}  // namespace
+
 Status read_button(const ParseContext& ctx, const toml::table& table, int index,
                    const std::vector<std::string>& material_names, double probe_radius_mm, Button& out) {
   const std::string path = "buttons." + std::to_string(index);
@@ -134,29 +167,7 @@ Status read_button(const ParseContext& ctx, const toml::table& table, int index,
             "is required: what the button does when pushed past its travel, \"scene:FILE\" (switch to that "
             "scene) or \"flag:NAME\" (toggle a named flag)");
   if (!r.ok()) return r.status();
-  const std::size_t colon = out.action.find(':');
-  const std::string kind = out.action.substr(0, colon);
-  const std::string target = colon == std::string::npos ? std::string() : out.action.substr(colon + 1);
-  if ((kind != "scene" && kind != "flag") || target.empty()) {
-    r.fail("action", "'" + out.action + "' is not \"scene:FILE\" or \"flag:NAME\"");
-    return r.status();
-  }
-  out.action_kind = kind == "scene" ? ButtonActionKind::kScene : ButtonActionKind::kFlag;
-  if (out.action_kind == ButtonActionKind::kScene) {
-    namespace fs = std::filesystem;
-    fs::path file(target);
-    if (file.is_relative()) file = fs::path(ctx.base_dir) / file;
-    file = file.lexically_normal();
-    std::error_code ec;
-    if (Status s = ctx.paths.admit(file, "names"); !s && !r.from_user("action")) r.fail("action", s.error().message);
-    if (!fs::is_regular_file(file, ec)) r.fail("action", "scene file not found: " + file.string());
-    out.action_target = file.string();
-    if (out.label.empty()) out.label = fs::path(target).stem().string();
-  } else {
-    out.action_target = target;
-    if (out.label.empty()) out.label = target;
-    if (out.picture) r.fail("picture", "needs a \"scene:FILE\" action: the picture is of the scene the button leads to");
-  }
+  if (!read_action(ctx, r, out)) return r.status();
   // The probe (a sphere of radius R) must fit in the button to push it in: a narrower one
   // would hold it on its rim.
   const double narrowest = std::min(out.size_mm.x, out.size_mm.y);

@@ -20,9 +20,29 @@ bool finite3(const glm::dvec3& v) { return std::isfinite(v.x) && std::isfinite(v
 
 }  // namespace
 
-// Whole (47 lines): weld, adjacency, rest normals and the stable substep are built in that order from
-// each other's results, once; each is a short block with its reason beside it.
+// Built in order from each other's results, once: weld, adjacency, rest state, stable substep.
 Deformable::Deformable(const Mesh& rest, const DeformParams& params) : params_(params) {
+  weld(rest);
+  const std::size_t deg_max = build_adjacency(rest);
+  x_ = base_;
+  v_.assign(base_.size(), glm::dvec3(0.0));
+  force_.assign(base_.size(), glm::dvec3(0.0));
+  is_active_.assign(base_.size(), 0);
+  rest_normal_ = rest.normals;
+  rest_area_normal_ = area_normals();
+  double edges = 0.0;
+  for (std::size_t i = 0; i < base_.size(); ++i)
+    for (std::uint32_t e = nbr_begin_[i]; e < nbr_begin_[i + 1]; ++e) edges += glm::length(base_[nbr_[e]] - base_[i]);
+  mean_edge_mm_ = nbr_.empty() ? 1.0 : edges / static_cast<double>(nbr_.size());
+  // The web's stiffest mode: k_b + k_n * (largest Laplacian eigenvalue <= 2 deg_max). Damping is
+  // integrated implicitly, so only the springs bound the step; 0.5 / omega leaves a wide margin
+  // below the symplectic Euler limit of 2 / omega.
+  const double k = (params_.base_n_per_mm + 2.0 * static_cast<double>(deg_max) * params_.neighbour_n_per_mm) * kMmPerM;
+  const double omega = std::sqrt(k / (params_.mass_g * 1e-3));
+  substep_s_ = std::min(kMaxSubstepS, 0.5 / omega);
+}
+
+void Deformable::weld(const Mesh& rest) {
   // Weld by position on a 1e-4 mm grid: files split vertices at seams and hard edges, and a
   // closed parametric shape's seam (u = 0 and u = 1) repeats its positions only to rounding.
   std::map<std::tuple<long long, long long, long long>, std::uint32_t> index;
@@ -33,6 +53,9 @@ Deformable::Deformable(const Mesh& rest, const DeformParams& params) : params_(p
     if (inserted) base_.emplace_back(p);
     weld_.push_back(it->second);
   }
+}
+
+std::size_t Deformable::build_adjacency(const Mesh& rest) {
   std::vector<std::set<std::uint32_t>> nbrs(base_.size());
   triangles_.reserve(rest.indices.size());
   for (std::size_t t = 0; t + 2 < rest.indices.size(); t += 3) {
@@ -52,22 +75,7 @@ Deformable::Deformable(const Mesh& rest, const DeformParams& params) : params_(p
     deg_max = std::max(deg_max, n.size());
   }
   nbr_begin_.push_back(static_cast<std::uint32_t>(nbr_.size()));
-  x_ = base_;
-  v_.assign(base_.size(), glm::dvec3(0.0));
-  force_.assign(base_.size(), glm::dvec3(0.0));
-  is_active_.assign(base_.size(), 0);
-  rest_normal_ = rest.normals;
-  rest_area_normal_ = area_normals();
-  double edges = 0.0;
-  for (std::size_t i = 0; i < base_.size(); ++i)
-    for (std::uint32_t e = nbr_begin_[i]; e < nbr_begin_[i + 1]; ++e) edges += glm::length(base_[nbr_[e]] - base_[i]);
-  mean_edge_mm_ = nbr_.empty() ? 1.0 : edges / static_cast<double>(nbr_.size());
-  // The web's stiffest mode: k_b + k_n * (largest Laplacian eigenvalue <= 2 deg_max). Damping is
-  // integrated implicitly, so only the springs bound the step; 0.5 / omega leaves a wide margin
-  // below the symplectic Euler limit of 2 / omega.
-  const double k = (params_.base_n_per_mm + 2.0 * static_cast<double>(deg_max) * params_.neighbour_n_per_mm) * kMmPerM;
-  const double omega = std::sqrt(k / (params_.mass_g * 1e-3));
-  substep_s_ = std::min(kMaxSubstepS, 0.5 / omega);
+  return deg_max;
 }
 
 void Deformable::reset() {

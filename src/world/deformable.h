@@ -82,6 +82,10 @@ class Deformable {
   double mean_edge_mm_ = 1.0;
   double substep_s_ = 1e-3;
   std::vector<glm::dvec3> area_normals() const;
+  // The constructor's first steps: base_ and weld_ (rest vertex -> welded vertex); then the
+  // welded triangles and the neighbour lists (CSR), returning the largest degree.
+  void weld(const Mesh& rest);
+  std::size_t build_adjacency(const Mesh& rest);
   void collect_active(const glm::dvec3& centre_mm, double radius_mm, bool probe);
   void accumulate_forces();
   bool hold_out_of_probe(std::uint32_t i, const glm::dvec3& centre_mm, double radius_mm);

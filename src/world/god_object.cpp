@@ -107,12 +107,17 @@ bool GodObject::slide(glm::dvec3& p, const glm::dvec3& target, std::uint32_t& fa
   return false;
 }
 
-ProxyStep GodObject::move(const glm::dvec3& goal_mm) {
-  ProxyStep out;
-  if (!initialized_) reset(goal_mm);
+void GodObject::keep_plane(Plane* planes, int& count, const Plane& plane) {
+  int slot = count;
+  for (int i = 0; i < count; ++i)
+    if (glm::dot(planes[i].n, plane.n) > 0.999) slot = i;
+  if (slot == count) slot = count < 3 ? count++ : 0;  // four distinct planes: drop the oldest
+  planes[slot] = plane;
+}
+
+Contact GodObject::constrain(const glm::dvec3& goal_mm, glm::dvec3& p, int& count, std::uint32_t& facets) {
   Plane planes[3];
-  int count = 0;
-  glm::dvec3 p = proxy_;
+  count = 0;
   Contact touched;
   for (int it = 0; it < params_.max_iterations; ++it) {
     const glm::dvec3 target = constrained_target(goal_mm, planes, count, p);
@@ -120,7 +125,7 @@ ProxyStep GodObject::move(const glm::dvec3& goal_mm) {
     const double len = glm::length(dir);
     if (len <= 1e-9) break;
     Contact c;
-    const double g = gap(p, len + params_.query_margin_mm, c, out.facets_visited);
+    const double g = gap(p, len + params_.query_margin_mm, c, facets);
     if (g >= len) {  // the nearest surface is farther than the whole move: free
       p = target;
       if (count == 0) break;
@@ -139,18 +144,14 @@ ProxyStep GodObject::move(const glm::dvec3& goal_mm) {
     // nearly parallel to one we have replaces it (the same surface, a little further on).
     touched = c;
     const glm::dvec3 n = unit_or(p - c.point, c.normal);
-    const Plane plane{n, glm::dot(n, c.point) + radius_};
-    int slot = count;
-    for (int i = 0; i < count; ++i)
-      if (glm::dot(planes[i].n, n) > 0.999) slot = i;
-    if (slot == count) slot = count < 3 ? count++ : 0;  // four distinct planes: drop the oldest
-    planes[slot] = plane;
+    keep_plane(planes, count, Plane{n, glm::dot(n, c.point) + radius_});
     const glm::dvec3 along = constrained_target(goal_mm, planes, count, p);
-    if (glm::length(along - p) <= 1e-9 || !slide(p, along, out.facets_visited)) break;
+    if (glm::length(along - p) <= 1e-9 || !slide(p, along, facets)) break;
   }
-  proxy_ = p;
-  out.proxy_mm = p;
-  out.planes = count;
+  return touched;
+}
+
+void GodObject::settle(ProxyStep& out, const glm::dvec3& goal_mm, const glm::dvec3& p, Contact touched) {
   if (hint_.has_w4 && !touched.hit) {
     // Clear of its 4D surface's sheet by more than R: let go of it, so the next touch may
     // land on any sheet (a proxy lifted off and put down elsewhere).
@@ -170,6 +171,18 @@ ProxyStep GodObject::move(const glm::dvec3& goal_mm) {
     out.shaded_normal = glm::dot(touched.shaded_normal, out.contact_normal) < 0.0 ? -touched.shaded_normal
                                                                                   : touched.shaded_normal;
   }
+}
+
+ProxyStep GodObject::move(const glm::dvec3& goal_mm) {
+  ProxyStep out;
+  if (!initialized_) reset(goal_mm);
+  glm::dvec3 p = proxy_;
+  int count = 0;
+  const Contact touched = constrain(goal_mm, p, count, out.facets_visited);
+  proxy_ = p;
+  out.proxy_mm = p;
+  out.planes = count;
+  settle(out, goal_mm, p, touched);
   return out;
 }
 

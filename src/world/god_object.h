@@ -79,6 +79,12 @@ class GodObject {
   bool slide(glm::dvec3& p, const glm::dvec3& target, std::uint32_t& facets);
   glm::dvec3 constrained_target(const glm::dvec3& goal, const Plane* planes, int count,
                                 const glm::dvec3& fallback) const;
+  // move(), in three steps: the constraint solve (approach, touch, slide) from p toward the goal,
+  // returning the last surface touched with `count` planes in use; a plane kept among the (at
+  // most 3) constraints; the contact reported where the proxy rests.
+  Contact constrain(const glm::dvec3& goal_mm, glm::dvec3& p, int& count, std::uint32_t& facets);
+  static void keep_plane(Plane* planes, int& count, const Plane& plane);
+  void settle(ProxyStep& out, const glm::dvec3& goal_mm, const glm::dvec3& p, Contact touched);
 
   const HapticScene& scene_;
   GodObjectParams params_;

@@ -126,6 +126,10 @@ class HapticScene {
   static Shape make_shape(const Surface& s, int index);
   Contact closest_analytic(const Shape& s, const glm::dvec3& p) const;
   static bool inside(const Shape& s, const glm::dvec3& p);
+  // build(): surface `index` into its material and its model (shape, volume, mesh or 4D sheet).
+  Status add_surface(const Scene& scene, int index);
+  Status add_fourd(const Surface& s, int index, const std::string& where);
+  const ButtonShape* button_over(const glm::dvec3& p) const;  // the first button p is over, if any
 
   // type = "fourd": its projected triangles with their 4D depth (fourd/touch.h), kept out of
   // the BVH so a query can see only the proxy's own sheet (continuity: eq. 4's window).
@@ -138,6 +142,9 @@ class HapticScene {
     fourd::SuggestionParams suggestion;  // eq. 5 (fourd/suggestion.h)
     fourd::RollParams roll;              // seed 000 §6 (fourd/rolling.h)
   };
+  // closest(): the sheet's closest point within `limit`, kept to the hint's sheet by its local model.
+  fourd::TouchHit touch_sheet(const FourdShape& f, const glm::dvec3& p, double limit, double max_distance_mm,
+                              const Contact* hint) const;
   fourd::ViewAxes view_axes_;
   bool any_roll_ = false;  // some fourd surface has fourd_roll on
   // "adjacency": how far along the surface the walk from the sheet's facet goes at least (the

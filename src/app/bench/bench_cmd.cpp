@@ -98,6 +98,33 @@ void declare(cli::Command& cmd, BenchArgs& a) {
   cli::add_quiet_option(app, a.quiet);
 }
 
+// The sweep and the skip ratios, in this process's context (closed when they are done).
+Status measure_in_process(const BenchArgs& a, const bench::BenchOptions& o, std::vector<bench::BenchRow>& rows,
+                          bench::SkipRatios& skip) {
+  auto ctx = cli::open_context(a.gl_opts, a.quiet);
+  if (!ctx) return ctx.error();
+  auto r = bench::run_sweep(o);
+  if (!r) return r.error();
+  rows = std::move(r.value());
+  if (o.progress) o.progress("skip ratios ...");
+  auto s = bench::run_skip_ratios(o);
+  if (!s) return s.error();
+  skip = s.value();
+  return ok_status();
+}
+
+// The peak RSS of `render` at 512^2 and 2048^2, each in a process of its own.
+Status measure_peak_rss(const BenchArgs& a, const bench::BenchOptions& o, bench::RssReport& rss) {
+  const std::vector<std::string> gl_args = a.gl_opts.argv();
+  for (int size : {512, 2048}) {
+    if (o.progress) o.progress("peak RSS of render " + std::to_string(size) + "^2 ...");
+    auto k = bench::render_peak_rss_kib(size, gl_args, a.out_dir);
+    if (!k) return k.error();
+    (size == 512 ? rss.kib_512 : rss.kib_2048) = k.value();
+  }
+  return ok_status();
+}
+
 Status run(const BenchArgs& a) {
   // The results (CSV and summary) are checked now and published together at the end, or not at
   // all. The plot is extra (it needs gnuplot) and is drawn after them; the RSS renders and the
@@ -112,25 +139,9 @@ Status run(const BenchArgs& a) {
   if (!a.quiet) o.progress = [](const std::string& line) { std::fprintf(stderr, "%s\n", line.c_str()); };
   bench::SkipRatios skip;
   std::vector<bench::BenchRow> rows;
-  {
-    auto ctx = cli::open_context(a.gl_opts, a.quiet);
-    if (!ctx) return ctx.error();
-    auto r = bench::run_sweep(o);
-    if (!r) return r.error();
-    rows = std::move(r.value());
-    if (o.progress) o.progress("skip ratios ...");
-    auto s = bench::run_skip_ratios(o);
-    if (!s) return s.error();
-    skip = s.value();
-  }
+  if (Status st = measure_in_process(a, o, rows, skip); !st) return st;
   bench::RssReport rss;
-  const std::vector<std::string> gl_args = a.gl_opts.argv();
-  for (int size : {512, 2048}) {
-    if (o.progress) o.progress("peak RSS of render " + std::to_string(size) + "^2 ...");
-    auto k = bench::render_peak_rss_kib(size, gl_args, a.out_dir);
-    if (!k) return k.error();
-    (size == 512 ? rss.kib_512 : rss.kib_2048) = k.value();
-  }
+  if (Status st = measure_peak_rss(a, o, rss); !st) return st;
   const std::string md = bench::summary_markdown(rows, skip, rss, a.size);
   if (Status s = outputs.stage_text(csv, bench::csv_text(rows)); !s) return s;
   if (Status s = outputs.stage_text(md_path, md); !s) return s;

@@ -89,61 +89,89 @@ Result<ChildTimes> run_self(const std::vector<std::string>& args) {
   return t;
 }
 
-Result<std::vector<FirstImageRow>> run_first_image(const FirstImageOptions& o) {
+namespace {
+
+// The shipped scenes (*.toml) in `dir`, in name order.
+Result<std::vector<std::filesystem::path>> shipped_scenes(const std::string& dir) {
   namespace fs = std::filesystem;
   std::vector<fs::path> scenes;
   std::error_code ec;
-  for (const auto& e : fs::directory_iterator(o.scenes_dir, ec))
+  for (const auto& e : fs::directory_iterator(dir, ec))
     if (e.is_regular_file() && e.path().extension() == ".toml") scenes.push_back(e.path());
-  if (ec || scenes.empty()) return make_error(o.scenes_dir + ": no shipped scenes (*.toml) to time");
+  if (ec || scenes.empty()) return make_error(dir + ": no shipped scenes (*.toml) to time");
   std::sort(scenes.begin(), scenes.end());
-  fs::create_directories(o.work_dir, ec);
+  return scenes;
+}
+
+// One scene rendered o.reps times per strategy (auto, naive, baked): the median CPU seconds of each.
+Result<FirstImageRow> time_scene(const FirstImageOptions& o, const std::filesystem::path& path, const std::string& out) {
+  auto scene = load_scene(path.string());
+  if (!scene) return scene.error();
+  FirstImageRow row;
+  row.name = path.stem().string();
+  if (o.progress) o.progress("first image: " + row.name + " ...");
+  const std::vector<std::string> base = concat({"render", "--scene", path.string(), "--out", out, "-q"}, o.gl_args);
+  const std::vector<std::string> variants[3] = {base, concat(base, force_strategy(scene.value(), "naive")),
+                                                concat(base, force_strategy(scene.value(), "baked"))};
+  std::vector<double> t[3];
+  for (int r = 0; r < o.reps; ++r)
+    for (int k = 0; k < 3; ++k) {  // alternating, so a change of load hits all three alike
+      auto c = run_self(variants[k]);
+      if (!c) return c.error();
+      t[k].push_back(c->cpu_s);
+    }
+  row.auto_s = median(t[0]);
+  row.naive_s = median(t[1]);
+  row.baked_s = median(t[2]);
+  return row;
+}
+
+// A 301-frame replay of the default scene, once per strategy (auto, naive, baked).
+Result<FirstImageRow> time_replay(const FirstImageOptions& o) {
+  namespace fs = std::filesystem;
+  std::error_code ec;
+  const std::string traj = o.work_dir + "/stroke.traj", frames = o.work_dir + "/replay_frames";
+  std::ofstream(traj) << kStroke;
+  auto def = load_scene_or_default("");
+  if (!def) return def.error();
+  FirstImageRow row;
+  row.name = "replay, 301 frames (default)";
+  if (o.progress) o.progress("first image: a 301-frame replay ...");
+  const std::vector<std::string> base = concat({"replay", "--log", "trajectory:" + traj, "--fps", kReplayFps,
+                                                "--out", frames, "-q"}, o.gl_args);
+  double* slots[3] = {&row.auto_s, &row.naive_s, &row.baked_s};
+  const char* strategy[3] = {nullptr, "naive", "baked"};
+  for (int k = 0; k < 3; ++k) {
+    fs::remove_all(frames, ec);
+    auto c = run_self(strategy[k] ? concat(base, force_strategy(def.value(), strategy[k])) : base);
+    if (!c) return c.error();
+    *slots[k] = c->cpu_s;
+  }
+  fs::remove_all(frames, ec);
+  fs::remove(traj, ec);
+  return row;
+}
+
+}  // namespace
+
+Result<std::vector<FirstImageRow>> run_first_image(const FirstImageOptions& o) {
+  auto scenes = shipped_scenes(o.scenes_dir);
+  if (!scenes) return scenes.error();
+  std::error_code ec;
+  std::filesystem::create_directories(o.work_dir, ec);
   const std::string out = o.work_dir + "/first_image.png";
   std::vector<FirstImageRow> rows;
-  for (const fs::path& path : scenes) {
-    auto scene = load_scene(path.string());
-    if (!scene) return scene.error();
-    FirstImageRow row;
-    row.name = path.stem().string();
-    if (o.progress) o.progress("first image: " + row.name + " ...");
-    const std::vector<std::string> base = concat({"render", "--scene", path.string(), "--out", out, "-q"}, o.gl_args);
-    const std::vector<std::string> variants[3] = {base, concat(base, force_strategy(scene.value(), "naive")),
-                                                  concat(base, force_strategy(scene.value(), "baked"))};
-    std::vector<double> t[3];
-    for (int r = 0; r < o.reps; ++r)
-      for (int k = 0; k < 3; ++k) {  // alternating, so a change of load hits all three alike
-        auto c = run_self(variants[k]);
-        if (!c) return c.error();
-        t[k].push_back(c->cpu_s);
-      }
-    row.auto_s = median(t[0]);
-    row.naive_s = median(t[1]);
-    row.baked_s = median(t[2]);
-    rows.push_back(row);
+  for (const std::filesystem::path& path : scenes.value()) {
+    auto row = time_scene(o, path, out);
+    if (!row) return row.error();
+    rows.push_back(row.value());
   }
   if (o.replay) {
-    const std::string traj = o.work_dir + "/stroke.traj", frames = o.work_dir + "/replay_frames";
-    std::ofstream(traj) << kStroke;
-    auto def = load_scene_or_default("");
-    if (!def) return def.error();
-    FirstImageRow row;
-    row.name = "replay, 301 frames (default)";
-    if (o.progress) o.progress("first image: a 301-frame replay ...");
-    const std::vector<std::string> base = concat({"replay", "--log", "trajectory:" + traj, "--fps", kReplayFps,
-                                                  "--out", frames, "-q"}, o.gl_args);
-    double* slots[3] = {&row.auto_s, &row.naive_s, &row.baked_s};
-    const char* strategy[3] = {nullptr, "naive", "baked"};
-    for (int k = 0; k < 3; ++k) {
-      fs::remove_all(frames, ec);
-      auto c = run_self(strategy[k] ? concat(base, force_strategy(def.value(), strategy[k])) : base);
-      if (!c) return c.error();
-      *slots[k] = c->cpu_s;
-    }
-    fs::remove_all(frames, ec);
-    fs::remove(traj, ec);
-    rows.push_back(row);
+    auto row = time_replay(o);
+    if (!row) return row.error();
+    rows.push_back(row.value());
   }
-  fs::remove(out, ec);
+  std::filesystem::remove(out, ec);
   return rows;
 }
 

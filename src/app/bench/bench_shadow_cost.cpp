@@ -152,6 +152,33 @@ Result<AovDifference> distance_difference(const Renderer& a, const Renderer& b) 
   return d;
 }
 
+// The contenders' (plane, normal, marched) median frame and surface-pass times, and their ratios.
+void distance_times(std::vector<Contender>& cs, DistanceCost& c) {
+  c.plane_frame_ms = median_of(cs[0].frames);
+  c.normal_frame_ms = median_of(cs[1].frames);
+  c.marched_frame_ms = median_of(cs[2].frames);
+  c.ratio = c.normal_frame_ms / c.plane_frame_ms;
+  c.marched_ratio = c.marched_frame_ms / c.plane_frame_ms;
+  c.plane_surface_ms = median_of(cs[0].passes["surface"]);
+  c.normal_surface_ms = median_of(cs[1].passes["surface"]);
+  c.surface_ratio = c.normal_surface_ms / c.plane_surface_ms;
+}
+
+// How far the plane's and the march's distances are from the normal's. The last frame of each
+// drew the same probe position (timed_frame puts it back).
+Status distance_offsets(const std::vector<Contender>& cs, DistanceCost& c) {
+  auto plane_off = distance_difference(*cs[0].renderer, *cs[1].renderer);
+  if (!plane_off) return plane_off.error();
+  auto march_off = distance_difference(*cs[2].renderer, *cs[1].renderer);
+  if (!march_off) return march_off.error();
+  c.plane_vs_normal_max_mm = plane_off->max;
+  c.plane_vs_normal_mean_mm = plane_off->mean;
+  c.marched_vs_normal_max_mm = march_off->max;
+  c.marched_vs_normal_mean_mm = march_off->mean;
+  c.compared_pixels = march_off->pixels;
+  return ok_status();
+}
+
 }  // namespace
 
 Result<DistanceCost> run_distance_cost(const BenchOptions& o, const std::string& scene_path, int size) {
@@ -178,24 +205,8 @@ Result<DistanceCost> run_distance_cost(const BenchOptions& o, const std::string&
   DistanceCost c;
   c.scene = std::filesystem::path(scene_path).stem().string();
   c.size = size;
-  c.plane_frame_ms = median_of(cs[0].frames);
-  c.normal_frame_ms = median_of(cs[1].frames);
-  c.marched_frame_ms = median_of(cs[2].frames);
-  c.ratio = c.normal_frame_ms / c.plane_frame_ms;
-  c.marched_ratio = c.marched_frame_ms / c.plane_frame_ms;
-  c.plane_surface_ms = median_of(cs[0].passes["surface"]);
-  c.normal_surface_ms = median_of(cs[1].passes["surface"]);
-  c.surface_ratio = c.normal_surface_ms / c.plane_surface_ms;
-  // The last frame of each drew the same probe position (timed_frame puts it back).
-  auto plane_off = distance_difference(*cs[0].renderer, *cs[1].renderer);
-  if (!plane_off) return plane_off.error();
-  auto march_off = distance_difference(*cs[2].renderer, *cs[1].renderer);
-  if (!march_off) return march_off.error();
-  c.plane_vs_normal_max_mm = plane_off->max;
-  c.plane_vs_normal_mean_mm = plane_off->mean;
-  c.marched_vs_normal_max_mm = march_off->max;
-  c.marched_vs_normal_mean_mm = march_off->mean;
-  c.compared_pixels = march_off->pixels;
+  distance_times(cs, c);
+  if (Status st = distance_offsets(cs, c); !st) return st.error();
   return c;
 }
 

@@ -190,6 +190,7 @@ std::string num(double v) {
   return b;
 }
 
+// Every knob, in the table's row order: one list, read top to bottom, so kept whole (48 lines).
 std::vector<Knob> knobs() {
   std::vector<Knob> k;
   for (int s : {128, 256, 512, 1024})  // surface + reduction targets (image) resolution

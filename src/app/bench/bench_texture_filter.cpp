@@ -48,6 +48,22 @@ const char* strategy_name(Strategy s) {
   return s == Strategy::kNaive ? "naive" : s == Strategy::kBakedLinear ? "baked_linear" : "baked";
 }
 
+// Warm frames, then rounds of timed frames over every configuration, in alternating order.
+Status time_configs(const BenchOptions& o, std::vector<Config>& configs) {
+  for (Config& c : configs)
+    for (int i = 0; i < o.warm_frames; ++i)
+      if (Status s = timed_frame(c); !s) return s;
+  for (Config& c : configs) c.frame_ms.clear(), c.surface_ms.clear();
+  const int rounds = std::max(o.rounds, 5), per_round = std::max(o.timed_frames, 3);
+  for (int round = 0; round < rounds; ++round)
+    for (size_t k = 0; k < configs.size(); ++k) {
+      Config& c = configs[round % 2 ? configs.size() - 1 - k : k];  // alternate the order
+      for (int i = 0; i < per_round; ++i)
+        if (Status s = timed_frame(c); !s) return s;
+    }
+  return ok_status();
+}
+
 // The view's rows of the table: every configuration's error, then their times in rounds.
 Status view_rows(const BenchOptions& o, View view, int size, std::string& table) {
   constexpr double kLambdaPx = 2.0;
@@ -65,17 +81,7 @@ Status view_rows(const BenchOptions& o, View view, int size, std::string& table)
       configs.push_back(std::move(c));
     }
   }
-  for (Config& c : configs)
-    for (int i = 0; i < o.warm_frames; ++i)
-      if (Status s = timed_frame(c); !s) return s;
-  for (Config& c : configs) c.frame_ms.clear(), c.surface_ms.clear();
-  const int rounds = std::max(o.rounds, 5), per_round = std::max(o.timed_frames, 3);
-  for (int round = 0; round < rounds; ++round)
-    for (size_t k = 0; k < configs.size(); ++k) {
-      Config& c = configs[round % 2 ? configs.size() - 1 - k : k];  // alternate the order
-      for (int i = 0; i < per_round; ++i)
-        if (Status s = timed_frame(c); !s) return s;
-    }
+  if (Status s = time_configs(o, configs); !s) return s;
   const double base = median_of(configs[0].frame_ms);  // naive, unfiltered
   for (size_t k = 0; k < configs.size(); ++k) {
     const Config& c = configs[k];

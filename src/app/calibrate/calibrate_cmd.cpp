@@ -185,6 +185,37 @@ Status resume_from(const std::string& path, calibrate::Calibration& cal, calibra
   return ok_status();
 }
 
+// The trials still to run (none after a finished --resume): by the simulated observer, or in
+// the window (answered by the simulated observer's script, or by the person).
+Status collect_answers(const CalibrateArgs& a, calibrate::Calibration& cal, calibrate::SimulatedObserver& observer,
+                       const Scene& scene, const Material& m, const std::string& log_path) {
+  const bool simulated = a.observer == "simulated";
+  if (cal.done()) return ok_status();
+  if (simulated && !a.window) {
+    calibrate::run_simulated(cal, observer);
+    return ok_status();
+  }
+  CalibrateWindowParams wp{scene, m, log_path, {}};
+  const calibrate::CurveKind kind = cal.spec().kind;
+  if (simulated) wp.script = [&observer, kind](const calibrate::Trial& t) { return observer.answer_left(t, kind); };
+  return run_calibrate_window(cal, wp);
+}
+
+// Stopped before every staircase finished: says how to continue; false when none finished (then
+// there is no table to write).
+bool report_stopped(const calibrate::Calibration& cal, const std::string& log_path) {
+  const std::vector<bool> finished = cal.finished();
+  std::printf("calibrate: stopped after %zu trials (%zu of %zu staircases finished); trials in %s; continue with "
+              "--resume %s\n",
+              cal.trials().size(), static_cast<std::size_t>(std::count(finished.begin(), finished.end(), true)),
+              finished.size(), log_path.c_str(), log_path.c_str());
+  if (std::count(finished.begin(), finished.end(), true) == 0) {
+    std::printf("calibrate: no staircase finished: no table written\n");
+    return false;
+  }
+  return true;
+}
+
 int calibrate_main(const cli::Command& cmd, const CalibrateArgs& a) {
   if (a.curve.empty() || a.out.empty())
     return cmd.usage_error(make_error("--curve and --out are required (e.g. --curve distance --out textures/mine.lut)"));
@@ -205,26 +236,9 @@ int calibrate_main(const cli::Command& cmd, const CalibrateArgs& a) {
   const bool simulated = a.observer == "simulated";
   if (!a.resume.empty())
     if (Status s = resume_from(a.resume, cal, simulated ? &observer : nullptr); !s) return cmd.fail(s.error());
-  if (cal.done()) {
-  } else if (simulated && !a.window) {
-    calibrate::run_simulated(cal, observer);
-  } else {
-    CalibrateWindowParams wp{scene.value(), *m, log_path, {}};
-    if (simulated) wp.script = [&](const calibrate::Trial& t) { return observer.answer_left(t, spec->kind); };
-    if (Status s = run_calibrate_window(cal, wp); !s) return cmd.fail(s.error());
-  }
+  if (Status s = collect_answers(a, cal, observer, scene.value(), *m, log_path); !s) return cmd.fail(s.error());
   if (Status s = write_file_atomic(log_path, calibrate::format_trial_log(cal)); !s) return cmd.fail(s.error());
-  const std::vector<bool> finished = cal.finished();
-  if (!cal.done()) {
-    std::printf("calibrate: stopped after %zu trials (%zu of %zu staircases finished); trials in %s; continue with "
-                "--resume %s\n",
-                cal.trials().size(), static_cast<std::size_t>(std::count(finished.begin(), finished.end(), true)),
-                finished.size(), log_path.c_str(), log_path.c_str());
-    if (std::count(finished.begin(), finished.end(), true) == 0) {
-      std::printf("calibrate: no staircase finished: no table written\n");
-      return cli::kExitOk;
-    }
-  }
+  if (!cal.done() && !report_stopped(cal, log_path)) return cli::kExitOk;
   if (Status s = write_table(a, cal, *m, shown, range); !s) return cmd.fail(s.error());
   if (!a.quiet) std::printf("calibrate: trials %s\n", log_path.c_str());
   return cli::kExitOk;

@@ -140,31 +140,34 @@ std::string progress_text(const calibrate::Calibration& cal) {
   return buf;
 }
 
-}  // namespace
+const char* question_for(calibrate::CurveKind kind) {
+  return kind == calibrate::CurveKind::kDistance ? "Which pseudo-shadow is closer?" : "Which texture is moving faster?";
+}
 
-Status run_calibrate_window(calibrate::Calibration& cal, const CalibrateWindowParams& p) {
-  gl::ContextDesc desc;
-  desc.backend = gl::Backend::kGlfw;
-  desc.window_width = 2 * kSide;
-  desc.window_height = kSide;
-  desc.window_title = "pseudoshadow calibrate";
-  auto ctx = gl::create_context(desc);
-  if (!ctx) return ctx.error();
-  GLFWwindow* win = ctx.value()->window();
-  const Scene s = stimulus_scene(p.scene, p.material);
-  auto left = Renderer::create(s, {});
-  if (!left) return left.error();
-  auto right = Renderer::create(s, {});
-  if (!right) return right.error();
+// The trial on screen, `now` seconds after it first showed: both stimuli drawn and presented.
+Status show_trial(GLFWwindow* win, const calibrate::Calibration& cal, Renderer& left, Renderer& right, double now,
+                  gl::Texture& pair, std::vector<std::uint8_t>& rgba, const char* question) {
+  const calibrate::CurveKind kind = cal.spec().kind;
+  const calibrate::Trial& t = cal.current();
+  const FrameInput input[2] = {placed_probe(kind, t.comparison_left ? t.comparison : t.reference, now),
+                               placed_probe(kind, t.comparison_left ? t.reference : t.comparison, now)};
+  if (Status st = draw_pair(left, right, input, rgba); !st) return st;
+  glTextureSubImage2D(pair.id(), 0, 0, 0, 2 * kSide, kSide, GL_RGBA, GL_UNSIGNED_BYTE, rgba.data());
+  present(win, &pair, question, progress_text(cal));
+  return ok_status();
+}
+
+// The trials, one after another with a blank between, until the staircases finish or the
+// person quits; each answer is logged at once.
+Status run_trials(GLFWwindow* win, calibrate::Calibration& cal, const CalibrateWindowParams& p, Renderer& left,
+                  Renderer& right) {
   gl::Texture pair = gl::make_texture_2d(2 * kSide, kSide, GL_RGBA8);
   Answers answers;
   glfwSetWindowUserPointer(win, &answers);
   glfwSetKeyCallback(win, &Answers::on_key);  // before ImGui, which chains to it
   ImGuiScope imgui(win);
   std::vector<std::uint8_t> rgba;
-  const calibrate::CurveKind kind = cal.spec().kind;
-  const char* question = kind == calibrate::CurveKind::kDistance ? "Which pseudo-shadow is closer?"
-                                                                 : "Which texture is moving faster?";
+  const char* question = question_for(cal.spec().kind);
   // The first frame says what is coming while the first stimuli are prepared (the first tile
   // bakes: seconds on a software renderer).
   present(win, nullptr, question, progress_text(cal) + "  (preparing the stimuli...)");
@@ -192,16 +195,28 @@ Status run_calibrate_window(calibrate::Calibration& cal, const CalibrateWindowPa
       blank_until = glfwGetTime() + kBlankS;
       continue;
     }
-    const calibrate::Trial& t = cal.current();
-    const double now = glfwGetTime() - trial_start;
-    const FrameInput input[2] = {placed_probe(kind, t.comparison_left ? t.comparison : t.reference, now),
-                                 placed_probe(kind, t.comparison_left ? t.reference : t.comparison, now)};
-    if (Status st = draw_pair(*left.value(), *right.value(), input, rgba); !st) return st;
-    glTextureSubImage2D(pair.id(), 0, 0, 0, 2 * kSide, kSide, GL_RGBA, GL_UNSIGNED_BYTE, rgba.data());
-    present(win, &pair, question, progress_text(cal));
+    if (Status st = show_trial(win, cal, left, right, glfwGetTime() - trial_start, pair, rgba, question); !st) return st;
     shown = cal.trials().size();
   }
   return ok_status();
+}
+
+}  // namespace
+
+Status run_calibrate_window(calibrate::Calibration& cal, const CalibrateWindowParams& p) {
+  gl::ContextDesc desc;
+  desc.backend = gl::Backend::kGlfw;
+  desc.window_width = 2 * kSide;
+  desc.window_height = kSide;
+  desc.window_title = "pseudoshadow calibrate";
+  auto ctx = gl::create_context(desc);
+  if (!ctx) return ctx.error();
+  const Scene s = stimulus_scene(p.scene, p.material);
+  auto left = Renderer::create(s, {});
+  if (!left) return left.error();
+  auto right = Renderer::create(s, {});
+  if (!right) return right.error();
+  return run_trials(ctx.value()->window(), cal, p, *left.value(), *right.value());
 }
 
 }  // namespace ps

@@ -39,11 +39,8 @@ struct TuneArgs {
   bool console = false, quiet = false;
 };
 
-void declare(cli::Command& cmd, TuneArgs& a) {
-  CLI::App& app = cmd.app();
-  cli::add_scene_options(app, a.scene);
-  cli::add_probe_options(app, a.scene);
-  cli::add_image_options(app, a.scene);
+// The sweep's axes and its sharding: --sweep, --sweep-scenes, --shard, --merge.
+void declare_sweep_options(CLI::App& app, TuneArgs& a) {
   auto axis = [&a](Result<SweepAxis> parsed) {
     if (!parsed) throw cli::UsageError(parsed.error().message);
     a.axes.push_back(std::move(parsed.value()));
@@ -70,6 +67,14 @@ void declare(cli::Command& cmd, TuneArgs& a) {
   app.add_option("--merge", a.merge, "assemble the sheet (--out) and CSV (--csv) from these --shard directories")
       ->type_name("DIR...")
       ->expected(1, -1);
+}
+
+void declare(cli::Command& cmd, TuneArgs& a) {
+  CLI::App& app = cmd.app();
+  cli::add_scene_options(app, a.scene);
+  cli::add_probe_options(app, a.scene);
+  cli::add_image_options(app, a.scene);
+  declare_sweep_options(app, a);
   app.add_flag("--console", a.console, "run a scripted console session read from stdin (below)");
   cli::add_gl_options(app, a.gl_opts);
   cli::add_output(app, "--out", a.out, "SHEET.png", "the contact sheet (required for sweeps)");

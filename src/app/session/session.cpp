@@ -80,6 +80,39 @@ std::string scene_action_of(const Scene& scene, const HapticEvent& e) {
   return b.action_kind == ButtonActionKind::kScene ? b.action_target : std::string();
 }
 
+namespace {
+
+// Runs the ticks up to `last_tick` included, in blocks of at most half the feed, draining the
+// feed after each block.
+void run_ticks_to(HapticLoop& loop, std::uint64_t last_tick, std::uint64_t& ticks_done, TickFeed& feed,
+                  const ReplayOptions& options) {
+  while (ticks_done < last_tick + 1) {
+    const std::uint64_t n = std::min<std::uint64_t>(last_tick + 1 - ticks_done, kReplayTickFeedCapacity / 2);
+    loop.run_ticks(n);
+    ticks_done += n;
+    if (options.on_tick) feed.drain(options.on_tick);
+  }
+}
+
+// The haptic events since the last frame, passed on; the first button that leads to a scene
+// switches the renderer and the haptic scene to it.
+Status take_events(HapticLoop& loop, Renderer*& renderer, const ReplayOptions& options) {
+  std::string switch_to;
+  loop.events().drain([&](const HapticEvent& e) {
+    if (options.on_event) options.on_event(e);
+    if (switch_to.empty()) switch_to = scene_action_of(renderer->scene(), e);
+  });
+  if (!switch_to.empty() && options.switch_scene) {
+    auto next = options.switch_scene(switch_to);
+    if (!next) return next.error();
+    renderer = next->renderer;
+    loop.replace_scene(next->haptic, std::filesystem::path(switch_to).filename().string());
+  }
+  return ok_status();
+}
+
+}  // namespace
+
 Result<ReplayResult> replay_session(Renderer& first_renderer, Device& device, const ReplayOptions& options,
                                     const FrameSink& sink) {
   Renderer* renderer = &first_renderer;
@@ -99,23 +132,8 @@ Result<ReplayResult> replay_session(Renderer& first_renderer, Device& device, co
   for (int i = 0; i < frames; ++i) {
     // Tick k runs at k / rate; frame i shows the state after the tick at (or before) i / fps.
     const auto last_tick = static_cast<std::uint64_t>(std::floor(i / options.fps * options.haptics.rate_hz + 1e-9));
-    while (ticks_done < last_tick + 1) {
-      const std::uint64_t n = std::min<std::uint64_t>(last_tick + 1 - ticks_done, kReplayTickFeedCapacity / 2);
-      loop.run_ticks(n);
-      ticks_done += n;
-      if (options.on_tick) feed.drain(options.on_tick);
-    }
-    std::string switch_to;
-    loop.events().drain([&](const HapticEvent& e) {
-      if (options.on_event) options.on_event(e);
-      if (switch_to.empty()) switch_to = scene_action_of(renderer->scene(), e);
-    });
-    if (!switch_to.empty() && options.switch_scene) {
-      auto next = options.switch_scene(switch_to);
-      if (!next) return next.error();
-      renderer = next->renderer;
-      loop.replace_scene(next->haptic, std::filesystem::path(switch_to).filename().string());
-    }
+    run_ticks_to(loop, last_tick, ticks_done, feed, options);
+    if (Status s = take_events(loop, renderer, options); !s) return s.error();
     HapticState state;
     if (Status s = drive_frame(*renderer, loop, static_cast<std::uint64_t>(i), state); !s) return s.error();
     if (Status s = sink(i, state.time_s, state, *renderer); !s) return s.error();

@@ -157,16 +157,9 @@ WindowUi::~WindowUi() {
   ImGui::DestroyContext();
 }
 
-UiFrameReport WindowUi::draw(const HudReadouts& readouts, const ShadowMeasure& shadow, TuneSession& session,
-                             double now_s, const std::vector<ButtonOverlay>& buttons) {
-  if (help_timeout_ && now_s >= kHelpSeconds) hide_help();
-  ImGui_ImplOpenGL3_NewFrame();
-  ImGui_ImplGlfw_NewFrame();
-  ImGui::NewFrame();
-  std::string hud_text;
-  for (const std::string& l : hud_lines(readouts)) hud_text += l + "\n";
-  hud_text.pop_back();
-  const std::string help = help_text(), help_narrow = help_text(true);
+UiLayoutInput WindowUi::layout_input(const ShadowMeasure& shadow, const std::vector<ButtonOverlay>& buttons,
+                                     const std::string& hud_text, const std::string& help,
+                                     const std::string& help_narrow) const {
   const ImVec2 display = ImGui::GetIO().DisplaySize, hud_size = box_size(hud_text), help_size = box_size(help);
   UiLayoutInput in;
   in.width = display.x;
@@ -189,6 +182,21 @@ UiFrameReport WindowUi::draw(const HudReadouts& readouts, const ShadowMeasure& s
   if (ImGui::IsMousePosValid()) in.pointer = std::make_pair(ImGui::GetIO().MousePos.x, ImGui::GetIO().MousePos.y);
   in.now_s = ImGui::GetTime();
   in.last = placement_;
+  return in;
+}
+
+UiFrameReport WindowUi::draw(const HudReadouts& readouts, const ShadowMeasure& shadow, TuneSession& session,
+                             double now_s, const std::vector<ButtonOverlay>& buttons) {
+  if (help_timeout_ && now_s >= kHelpSeconds) hide_help();
+  ImGui_ImplOpenGL3_NewFrame();
+  ImGui_ImplGlfw_NewFrame();
+  ImGui::NewFrame();
+  std::string hud_text;
+  for (const std::string& l : hud_lines(readouts)) hud_text += l + "\n";
+  hud_text.pop_back();
+  const std::string help = help_text(), help_narrow = help_text(true);
+  const ImVec2 display = ImGui::GetIO().DisplaySize;
+  const UiLayoutInput in = layout_input(shadow, buttons, hud_text, help, help_narrow);
   const UiLayout layout = layout_ui(in);
   placement_ = layout.placement;
 

@@ -88,6 +88,9 @@ class WindowUi {
                      double now_s, const std::vector<ButtonOverlay>& buttons = {});
 
  private:
+  // draw()'s layout problem: the window, the shadow, the buttons, the boxes' sizes, the pointer.
+  UiLayoutInput layout_input(const ShadowMeasure& shadow, const std::vector<ButtonOverlay>& buttons,
+                             const std::string& hud_text, const std::string& help, const std::string& help_narrow) const;
   TunePanel panel_;
   UiPlacement placement_;
   bool help_ = true;

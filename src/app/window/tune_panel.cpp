@@ -153,6 +153,29 @@ bool TunePanel::has_world_knobs(const Scene& scene) {
   return !stretched_.empty() || !scene.bodies.empty() || fourd;
 }
 
+// A surface embedded in 4D (docs/fourd.md): the six 4D rotation angles (the image reprojected
+// at each edit, like keys 1-6) and the force suggestions' gains (0 and 0: off).
+void TunePanel::fourd_section(TuneSession& session, const Surface& s, std::size_t i) {
+  static constexpr const char* kPlanes[6] = {"xy", "xz", "xw", "yz", "yw", "zw"};  // fourd::kRotationPlanes
+  const std::string prefix = "surfaces." + std::to_string(i) + ".";
+  for (int p = 0; p < 6; ++p) {
+    float a = static_cast<float>(s.fourd.rotation_deg[static_cast<std::size_t>(p)]);
+    const std::string key = prefix + "fourd_rotation_" + kPlanes[p] + "_deg";
+    if (slider("4D turn " + std::string(kPlanes[p]) + " (deg)", key, &a, 1, -180.f, 180.f, false))
+      apply(session, key, number(a));
+  }
+  float kp = static_cast<float>(s.fourd.suggest_kp_n_per_mm), kv = static_cast<float>(s.fourd.suggest_kv_n_s_per_mm);
+  if (slider("suggestion K_p (N/mm, 0: off)", prefix + "fourd_suggest_kp_n_per_mm", &kp, 1, 0.f, 2.f, false))
+    apply(session, prefix + "fourd_suggest_kp_n_per_mm", number(kp));
+  if (slider("suggestion K_v (N s/mm)", prefix + "fourd_suggest_kv_n_s_per_mm", &kv, 1, 0.f, 0.05f, false))
+    apply(session, prefix + "fourd_suggest_kv_n_s_per_mm", number(kv));
+  // The rolling manifold (seed 000 §6): the view turns with the proxy's walk over the surface.
+  bool roll = s.fourd.roll.on;
+  const bool toggled = ImGui::Checkbox(("rolling manifold##" + prefix).c_str(), &roll);
+  record_rect(prefix + "fourd_roll");
+  if (toggled) apply(session, prefix + "fourd_roll", roll ? "true" : "false");
+}
+
 void TunePanel::world_section(TuneSession& session) {
   const Scene& scene = session.renderer().scene();
   for (int i : stretched_) {
@@ -163,30 +186,8 @@ void TunePanel::world_section(TuneSession& session) {
     if (slider("surface " + std::to_string(i) + " drawn stretch", key, v, 3, 0.25f, 4.f, true))
       apply(session, key, vec_text(v));
   }
-  // Surfaces embedded in 4D (docs/fourd.md): the six 4D rotation angles (the image reprojected
-  // at each edit, like keys 1-6) and the force suggestions' gains (0 and 0: off).
-  static constexpr const char* kPlanes[6] = {"xy", "xz", "xw", "yz", "yw", "zw"};  // fourd::kRotationPlanes
-  for (std::size_t i = 0; i < scene.surfaces.size(); ++i) {
-    const Surface& s = scene.surfaces[i];
-    if (s.type != SurfaceType::kFourd) continue;
-    const std::string prefix = "surfaces." + std::to_string(i) + ".";
-    for (int p = 0; p < 6; ++p) {
-      float a = static_cast<float>(s.fourd.rotation_deg[static_cast<std::size_t>(p)]);
-      const std::string key = prefix + "fourd_rotation_" + kPlanes[p] + "_deg";
-      if (slider("4D turn " + std::string(kPlanes[p]) + " (deg)", key, &a, 1, -180.f, 180.f, false))
-        apply(session, key, number(a));
-    }
-    float kp = static_cast<float>(s.fourd.suggest_kp_n_per_mm), kv = static_cast<float>(s.fourd.suggest_kv_n_s_per_mm);
-    if (slider("suggestion K_p (N/mm, 0: off)", prefix + "fourd_suggest_kp_n_per_mm", &kp, 1, 0.f, 2.f, false))
-      apply(session, prefix + "fourd_suggest_kp_n_per_mm", number(kp));
-    if (slider("suggestion K_v (N s/mm)", prefix + "fourd_suggest_kv_n_s_per_mm", &kv, 1, 0.f, 0.05f, false))
-      apply(session, prefix + "fourd_suggest_kv_n_s_per_mm", number(kv));
-    // The rolling manifold (seed 000 §6): the view turns with the proxy's walk over the surface.
-    bool roll = s.fourd.roll.on;
-    const bool toggled = ImGui::Checkbox(("rolling manifold##" + prefix).c_str(), &roll);
-    record_rect(prefix + "fourd_roll");
-    if (toggled) apply(session, prefix + "fourd_roll", roll ? "true" : "false");
-  }
+  for (std::size_t i = 0; i < scene.surfaces.size(); ++i)
+    if (scene.surfaces[i].type == SurfaceType::kFourd) fourd_section(session, scene.surfaces[i], i);
   for (std::size_t b = 0; b < scene.bodies.size(); ++b) {
     float t = static_cast<float>(scene.bodies[b].time_scale);
     const std::string key = "bodies." + std::to_string(b) + ".time_scale";
@@ -199,7 +200,6 @@ void TunePanel::world_section(TuneSession& session) {
 // its x in the tooltip), applied when released (TuneSession::set_curve, saved with the overrides
 // as a table file). Until edited, a button turns the curve into kEditRows rows sampled from it.
 void TunePanel::curve_editor(TuneSession& session, const Material& m, bool intensity, double x_max) {
-  constexpr int kEditRows = 12;  // enough to shape the curve, few enough to fit the strip
   constexpr int kMaxSliders = 24;
   const std::string key = "materials." + m.name + (intensity ? ".intensity_lut" : ".speed_gain_lut");
   const Lut& scene_lut = intensity ? m.intensity_lut : m.speed_gain_lut;
@@ -207,15 +207,7 @@ void TunePanel::curve_editor(TuneSession& session, const Material& m, bool inten
   const Lut* cur = edited != session.curve_edits().end() ? &edited->second : scene_lut.empty() ? nullptr : &scene_lut;
   ImGui::PushID(key.c_str());
   if (!cur || static_cast<int>(cur->points.size()) > kMaxSliders) {
-    if (ImGui::Button(cur ? "resample the table to edit it" : "edit as a curve")) {
-      const LutAxis axis = intensity ? LutAxis::kDistanceMm : LutAxis::kSpeedMmS;
-      Lut lut = sample_lut(axis, x_max, kEditRows - (intensity ? 1 : 0), [&](double x) {
-        return intensity ? intensity_curve(m, x) : amplitude_gain(m, x);
-      });
-      // The intensity table's last row at the influence distance keeps the curve's tail.
-      if (intensity && m.influence_distance_mm > x_max) lut.points.push_back({m.influence_distance_mm, intensity_curve(m, m.influence_distance_mm)});
-      set_curve(session, key, lut);
-    }
+    resample_button(session, m, intensity, x_max, key, cur != nullptr);
     ImGui::PopID();
     return;
   }
@@ -224,28 +216,51 @@ void TunePanel::curve_editor(TuneSession& session, const Material& m, bool inten
   const float w = std::max(6.f, (ImGui::GetContentRegionAvail().x - spacing * (n - 1)) / n);
   for (int i = 0; i < n; ++i) {
     if (i > 0) ImGui::SameLine(0.f, spacing);
-    const std::string id = key + "#" + std::to_string(i);
-    float y = static_cast<float>(cur->points[static_cast<std::size_t>(i)].y);
-    if (active_.key == id) y = active_.value[0];
-    ImGui::PushID(i);
-    ImGui::VSliderFloat("##row", ImVec2(w, 80.f), &y, 0.f, 1.f, "");
-    if (ImGui::IsItemActive()) active_ = {id, {y, 0.f, 0.f}};
-    if (ImGui::IsItemHovered() || ImGui::IsItemActive())
-      ImGui::SetTooltip("%s = %.4g %s\n%s %.3f", intensity ? "d" : "speed", cur->points[static_cast<std::size_t>(i)].x,
-                        intensity ? "mm" : "mm/s", intensity ? "intensity" : "gain", y);
-    if (ImGui::IsItemDeactivated() && active_.key == id) active_.key.clear();
-    if (ImGui::IsItemDeactivatedAfterEdit()) {
-      Lut lut = *cur;
-      lut.points[static_cast<std::size_t>(i)].y = y;
-      ImGui::PopID();
-      set_curve(session, key, lut);
+    if (row_slider(session, key, *cur, i, w, intensity)) {
       ImGui::PopID();
       return;  // `cur` may point into the edits just replaced
     }
-    ImGui::PopID();
   }
   if (edited != session.curve_edits().end() && ImGui::SmallButton("back to the scene's curve")) set_curve(session, key, Lut{});
   ImGui::PopID();
+}
+
+// A curve with no table, or too many rows for sliders: a button samples kEditRows rows from it.
+void TunePanel::resample_button(TuneSession& session, const Material& m, bool intensity, double x_max,
+                                const std::string& key, bool has_table) {
+  constexpr int kEditRows = 12;  // enough to shape the curve, few enough to fit the strip
+  if (ImGui::Button(has_table ? "resample the table to edit it" : "edit as a curve")) {
+    const LutAxis axis = intensity ? LutAxis::kDistanceMm : LutAxis::kSpeedMmS;
+    Lut lut = sample_lut(axis, x_max, kEditRows - (intensity ? 1 : 0), [&](double x) {
+      return intensity ? intensity_curve(m, x) : amplitude_gain(m, x);
+    });
+    // The intensity table's last row at the influence distance keeps the curve's tail.
+    if (intensity && m.influence_distance_mm > x_max) lut.points.push_back({m.influence_distance_mm, intensity_curve(m, m.influence_distance_mm)});
+    set_curve(session, key, lut);
+  }
+}
+
+// Row i's slider (its y; its x in the tooltip); true when a release just set the curve.
+bool TunePanel::row_slider(TuneSession& session, const std::string& key, const Lut& cur, int i, float w, bool intensity) {
+  const std::string id = key + "#" + std::to_string(i);
+  float y = static_cast<float>(cur.points[static_cast<std::size_t>(i)].y);
+  if (active_.key == id) y = active_.value[0];
+  ImGui::PushID(i);
+  ImGui::VSliderFloat("##row", ImVec2(w, 80.f), &y, 0.f, 1.f, "");
+  if (ImGui::IsItemActive()) active_ = {id, {y, 0.f, 0.f}};
+  if (ImGui::IsItemHovered() || ImGui::IsItemActive())
+    ImGui::SetTooltip("%s = %.4g %s\n%s %.3f", intensity ? "d" : "speed", cur.points[static_cast<std::size_t>(i)].x,
+                      intensity ? "mm" : "mm/s", intensity ? "intensity" : "gain", y);
+  if (ImGui::IsItemDeactivated() && active_.key == id) active_.key.clear();
+  if (ImGui::IsItemDeactivatedAfterEdit()) {
+    Lut lut = cur;
+    lut.points[static_cast<std::size_t>(i)].y = y;
+    ImGui::PopID();
+    set_curve(session, key, lut);
+    return true;
+  }
+  ImGui::PopID();
+  return false;
 }
 
 void TunePanel::set_curve(TuneSession&, const std::string& key, const Lut& lut) {

@@ -55,10 +55,14 @@ class TunePanel {
   // The haptic world's knobs (seed 002's Virtual Universe): each drawn-stretched surface's
   // stretch (Illusion) and each body's time scale (Weight). Shown only for scenes that have them.
   void world_section(TuneSession& session);
+  void fourd_section(TuneSession& session, const Surface& s, std::size_t i);
   bool has_world_knobs(const Scene& scene);
   void plots(TuneSession& session);
   // The curve under a plot as editable lookup-table rows (intensity: true; speed gain: false).
   void curve_editor(TuneSession& session, const Material& m, bool intensity, double x_max);
+  void resample_button(TuneSession& session, const Material& m, bool intensity, double x_max, const std::string& key,
+                       bool has_table);
+  bool row_slider(TuneSession& session, const std::string& key, const Lut& cur, int i, float w, bool intensity);
   // Edits are queued while the panel is built and carried out after it (apply_pending): an edit
   // rebuilds the renderer and with it the Scene every section reads by reference, so applying
   // one mid-section left the rest of that section reading freed memory.

@@ -132,45 +132,38 @@ PanelSide panel_side(const UiLayoutInput& in, const UiRect& avoid) {
   return kept > 0.f && (flipped == 0.f || flipped < 0.5f * kept) ? other : last;
 }
 
-}  // namespace
+// What a box over r hides: the shadow, and the buttons that weigh like it (text over a button
+// hides what the person must press).
+float shadow_cost(const UiLayoutInput& in, const UiRect& avoid, const UiRect& r) {
+  float c = overlap_area(r, avoid);
+  for (const UiRect& b : in.buttons) c += overlap_area(r, grown(b, kShadowMargin));
+  return c;
+}
 
-UiLayout layout_ui(const UiLayoutInput& in) {
-  UiLayout out;
-  const UiRect avoid = in.shadow ? grown(*in.shadow, kShadowMargin) : UiRect{};
-  // The buttons weigh like the shadow: text over a button hides what the person must press.
-  const auto shadow_cost = [&](const UiRect& r) {
-    float c = overlap_area(r, avoid);
-    for (const UiRect& b : in.buttons) c += overlap_area(r, grown(b, kShadowMargin));
-    return c;
-  };
-  out.placement = in.last;
-  out.placement.panel_placed = in.panel;
-  float x0 = 0.f, x1 = in.width;  // the range the panel leaves to the boxes
-  if (in.panel) {
-    const PanelSide want = panel_side(in, avoid);
-    out.placement.flip_wanted_since_s.reset();
-    if (!in.last.panel_placed || want == in.last.panel_side) {
-      out.placement.panel_side = want;  // just opened: placed at once
-    } else {
-      const double since = in.last.flip_wanted_since_s.value_or(in.now_s);
-      const bool flip = in.now_s - since >= kPanelFlipDwellS;
-      out.placement.panel_side = flip ? want : in.last.panel_side;
-      if (!flip) out.placement.flip_wanted_since_s = since;
-    }
-    out.panel = panel_strip(in, out.placement.panel_side);
-    if (out.placement.panel_side == PanelSide::kRight) x1 = out.panel->x0;
-    else x0 = out.panel->x1;
+// The panel's side (a flip waits kPanelFlipDwellS) and the range [x0, x1) it leaves to the boxes.
+void place_panel(const UiLayoutInput& in, const UiRect& avoid, UiLayout& out, float& x0, float& x1) {
+  const PanelSide want = panel_side(in, avoid);
+  out.placement.flip_wanted_since_s.reset();
+  if (!in.last.panel_placed || want == in.last.panel_side) {
+    out.placement.panel_side = want;  // just opened: placed at once
+  } else {
+    const double since = in.last.flip_wanted_since_s.value_or(in.now_s);
+    const bool flip = in.now_s - since >= kPanelFlipDwellS;
+    out.placement.panel_side = flip ? want : in.last.panel_side;
+    if (!flip) out.placement.flip_wanted_since_s = since;
   }
+  out.panel = panel_strip(in, out.placement.panel_side);
+  if (out.placement.panel_side == PanelSide::kRight) x1 = out.panel->x0;
+  else x0 = out.panel->x1;
+}
+
+// The help box, wide or narrow, where it hides the least; the readouts give way to it.
+void place_help(const UiLayoutInput& in, const UiRect& avoid, float x0, float x1, UiLayout& out) {
   const UiRect panel = out.panel.value_or(UiRect{});
-  const Candidate hud = best(hud_corners(in, x0, x1, avoid), [&](const UiRect& r) {
-    return kShadowWeight * shadow_cost(r) + overlap_area(r, panel);
-  });
-  out.hud = hud.rect;
-  out.placement.hud_corner = hud.corner;
-  if (!in.help) return out;
+  const auto shadow = [&](const UiRect& r) { return shadow_cost(in, avoid, r); };
   const auto help_cost = [&](const UiRect* hud) {
     return [&, hud](const UiRect& r) {
-      return shadow_cost(r) + overlap_area(r, panel) + (hud ? overlap_area(r, *hud) : 0.f);
+      return shadow(r) + overlap_area(r, panel) + (hud ? overlap_area(r, *hud) : 0.f);
     };
   };
   const auto place = [&](float w, float h, std::optional<UiRect>& hud) {
@@ -186,16 +179,34 @@ UiLayout layout_ui(const UiLayoutInput& in) {
   std::optional<UiRect> hud_kept = out.hud;
   out.help = place(in.help_w, in.help_h, hud_kept);
   // The wide help covers the shadow or a button wherever it goes: the narrow one, if it covers less.
-  if (in.help_narrow_w > 0.f && shadow_cost(*out.help) > 0.f) {
+  if (in.help_narrow_w > 0.f && shadow(*out.help) > 0.f) {
     std::optional<UiRect> hud_narrow = out.hud;
     const UiRect narrow = place(in.help_narrow_w, in.help_narrow_h, hud_narrow);
-    if (shadow_cost(narrow) < shadow_cost(*out.help)) {
+    if (shadow(narrow) < shadow(*out.help)) {
       out.help = narrow;
       out.help_narrow = true;
       hud_kept = hud_narrow;
     }
   }
   out.hud = hud_kept;
+}
+
+}  // namespace
+
+UiLayout layout_ui(const UiLayoutInput& in) {
+  UiLayout out;
+  const UiRect avoid = in.shadow ? grown(*in.shadow, kShadowMargin) : UiRect{};
+  out.placement = in.last;
+  out.placement.panel_placed = in.panel;
+  float x0 = 0.f, x1 = in.width;  // the range the panel leaves to the boxes
+  if (in.panel) place_panel(in, avoid, out, x0, x1);
+  const UiRect panel = out.panel.value_or(UiRect{});
+  const Candidate hud = best(hud_corners(in, x0, x1, avoid), [&](const UiRect& r) {
+    return kShadowWeight * shadow_cost(in, avoid, r) + overlap_area(r, panel);
+  });
+  out.hud = hud.rect;
+  out.placement.hud_corner = hud.corner;
+  if (in.help) place_help(in, avoid, x0, x1, out);
   return out;
 }
 
