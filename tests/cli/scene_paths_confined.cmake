@@ -21,3 +21,17 @@ expect_render(0 "" --scene shared/scene.toml --allow-path private)
 expect_render(1 "outside the scene's folder" --scene shared/leak.toml)
 expect_render(1 "got 'root:x:0:0:PRIVA\\.\\.\\.'" --scene shared/leak.toml --allow-path private)
 expect_render(0 "" --set materials.wood.intensity_lut=private/curve.lut)
+
+# `tune --sweep` validates every cell before rendering: with the scene's own --allow-path (the
+# validation once ignored it and refused a sweep the render would have allowed).
+function(expect_sweep status regex)
+  execute_process(COMMAND ${EXE} tune --scene shared/scene.toml --sweep "materials.wood.albedo=[0.5,0.5,0.5],[0.9,0.9,0.9]"
+                          --size 16x16 --out sheet.png ${ARGN}
+                  WORKING_DIRECTORY ${WORK} RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
+  message("tune --sweep ${ARGN} -> ${rc}: ${out}${err}")
+  if(NOT "${rc}" STREQUAL "${status}" OR NOT "${out}${err}" MATCHES "${regex}")
+    message(FATAL_ERROR "tune --sweep ${ARGN}: expected exit status ${status} and output matching \"${regex}\"")
+  endif()
+endfunction()
+expect_sweep(1 "outside the scene's folder.*--allow-path .*/private")
+expect_sweep(0 "" --allow-path private)

@@ -21,7 +21,9 @@ std::uint32_t shadow_pixels(const Scene& scene, double sheet_w) {
   auto r = Renderer::create(scene, {});
   EXPECT_TRUE(r) << r.error().message;
   if (!r) return 0;
-  const auto s = r.value()->render({.sheet = ProbeSheet{0, sheet_w}});
+  FrameInput in;
+  in.sheet = ProbeSheet{0, sheet_w};
+  const auto s = r.value()->render(in);
   EXPECT_TRUE(s) << s.error().message;
   return r.value()->stats().shadow_pixels;
 }
@@ -56,9 +58,12 @@ TEST_P(FourdGLTest, ProbePathIsColouredByDepth) {
     EXPECT_TRUE(r) << r.error().message;
     r.value()->set_show_path(show);
     // One frame per point: each frame given a sheet adds the probe's position to the path.
-    for (int i = 0; i <= 20; ++i)
-      EXPECT_TRUE(r.value()->render({.probe = ProbeMotion{glm::dvec3(-10.0 + i, 0.0, 0.0), glm::dvec3(0.0)},
-                                     .sheet = ProbeSheet{0, w}}));
+    for (int i = 0; i <= 20; ++i) {
+      FrameInput in;
+      in.probe = ProbeMotion{glm::dvec3(-10.0 + i, 0.0, 0.0), glm::dvec3(0.0)};
+      in.sheet = ProbeSheet{0, w};
+      EXPECT_TRUE(r.value()->render(in));
+    }
     const Image im = r.value()->read_color();
     glm::dvec3 sum(0.0);
     pixels = 0;

@@ -169,10 +169,12 @@ TEST(FourdSurfaceTest, SpunTrefoilsAreClosedSpheres) {
       a_lo = std::min(a_lo, q.x);
       a_hi = std::max(a_hi, q.x);
     }
-    for (std::size_t i = 0; i < arc.points.size(); ++i)
-      if (arc.s[i] < arc.twist_begin || arc.s[i] > arc.twist_end)
+    for (std::size_t i = 0; i < arc.points.size(); ++i) {
+      if (arc.s[i] < arc.twist_begin || arc.s[i] > arc.twist_end) {
         EXPECT_TRUE(arc.points[i].x < a_lo || arc.points[i].x > a_hi || std::abs(arc.points[i].z - arc.axis_c) < 1e-12)
             << i;
+      }
+    }
   }
   for (SurfaceKind kind : {SurfaceKind::kSpunTrefoil, SurfaceKind::kTwistSpunTrefoil}) {
     Spec spec;

@@ -92,7 +92,9 @@ TEST(FourdRollingTest, TetherIsEquationOneWithBetaThree) {
     const glm::dvec3 f = RollingManifold::tether_force(p, axes, pose, proxy);
     const double expected = std::min(2e-4 * std::pow(r, 4.0), 1.5);
     EXPECT_NEAR(glm::length(f), expected, 1e-12 * (1.0 + expected)) << "r " << r;
-    if (r > 0.0) EXPECT_LT(glm::length(glm::normalize(f) + side), 1e-12) << "toward the line";
+    if (r > 0.0) {
+      EXPECT_LT(glm::length(glm::normalize(f) + side), 1e-12) << "toward the line";
+    }
     EXPECT_NEAR(glm::dot(f, axis), 0.0, 1e-12);
   }
   p.on = false;

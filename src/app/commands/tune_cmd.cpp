@@ -191,7 +191,7 @@ int tune(const cli::Command& cmd, const TuneArgs& a) {
   auto scene = scene_axis ? Result<Scene>(Scene{}) : cli::load_scene_or_default(a.scene);
   if (!scene) return cmd.fail(scene.error(), cli::scene_exit_code(scene.error()));
   if (!a.console)
-    if (Status s = validate_sweep({a.scene.path, a.scene.lines(), a.axes, {}}); !s)
+    if (Status s = validate_sweep({a.scene.path, a.scene.lines(), a.axes, {}, {}, a.scene.allow_paths}); !s)
       return cmd.fail(s.error(), cli::scene_exit_code(s.error()));
   auto ctx = cli::open_context(a.gl_opts);
   if (!ctx) return cmd.fail(ctx.error());
