@@ -19,6 +19,7 @@
 #include "scene/camera.h"
 #include "render/renderer.h"
 #include "scene/scene_io.h"
+#include "support/expect_reductions.h"
 #include "support/gl_test.h"
 
 namespace ps {
@@ -109,13 +110,7 @@ void expect_same_frame(const Renderer& rect, const Renderer& whole, const std::s
     ASSERT_TRUE(a.ok() && b.ok()) << where << " " << aov;
     EXPECT_EQ(differing_values(a.value(), b.value(), first), 0) << where << " AOV " << aov << ", first " << first;
   }
-  const FrameStats &s = rect.stats(), &t = whole.stats();
-  EXPECT_EQ(s.reference_normal, t.reference_normal) << where;
-  EXPECT_EQ(s.displacement, t.displacement) << where;
-  EXPECT_EQ(s.max_penetration_mm, t.max_penetration_mm) << where;
-  EXPECT_EQ(s.probe_position, t.probe_position) << where;
-  EXPECT_EQ(s.shadow_pixels, t.shadow_pixels) << where;
-  EXPECT_EQ(s.penetrating_pixels, t.penetrating_pixels) << where;
+  test::expect_same_reductions(rect.stats(), whole.stats(), where);
 }
 
 TEST_P(FootprintRectGLTest, EveryOutputEqualsTheWholeImagesBitForBit) {
