@@ -23,11 +23,13 @@ fail() { echo "maze_window_hand: $*" >&2; exit 1; }
 start_session() {
   "$exe" maze --maze "$maze" --participant "H$1" --seed $((6 + $1)) --cues on --out "$out/$1" >"$out/$1.txt" 2>&1 &
   pid=$!
-  xdotool search --sync --onlyvisible --name "pseudoshadow maze - H$1" >/dev/null &
-  local search=$!
-  for _ in $(seq 300); do kill -0 "$search" 2>/dev/null || break; sleep 0.1; done
-  kill -0 "$search" 2>/dev/null && { kill "$search" "$pid"; fail "no window after 30 s"; }
-  wait "$search" || true
+  # A search that fails (it could not reach the X server) is tried again: going on without the
+  # window sent the next steps' input before the window had the pointer.
+  local end=$((SECONDS + 30))
+  until timeout 5 xdotool search --sync --onlyvisible --name "pseudoshadow maze - H$1" >/dev/null; do
+    ((SECONDS < end)) || { kill "$pid"; fail "no window after 30 s"; }
+    sleep 0.2
+  done
 }
 
 # The instructions screen for $2 s (the pointer moved 300 counts meanwhile), then Space.
