@@ -119,7 +119,7 @@ def soak_one(args, scene):
     steps = walk.parse_walk(loop_file(args, stem))
     seconds = args.minutes * 60.0
     cmd = [os.path.abspath(args.exe), "run", "--scene", os.path.abspath(scene), "--readouts-log", log, "--mute",
-           "--quit-after", str(seconds + 120.0)]
+           "--quit-after", str(seconds + 120.0), *args.run_arg]
     console = open(os.path.join(out, "console.txt"), "w")
     proc = subprocess.Popen(cmd, cwd=out, stdout=console, stderr=subprocess.STDOUT)
     win, rss, stop = Follow(proc, log), [], threading.Event()
@@ -308,6 +308,8 @@ def main():
     p.add_argument("--loop-dir", default=os.path.join(HERE, "soak"))
     p.add_argument("--start-timeout", type=float, default=60.0)
     p.add_argument("--progress", action="store_true", help="a line after every loop")
+    p.add_argument("--run-arg", action="append", default=[], metavar="ARG",
+                   help="one more argument for `pseudoshadow run` (repeatable; e.g. --run-arg=--spare-cpu --run-arg=off)")
     p.add_argument("--table", metavar="OUT", help="only write OUT/soak.md from the scenes' OUT/<scene>/result.json")
     p.add_argument("--inner", action="store_true", help=argparse.SUPPRESS)  # already under xvfb-run
     args = p.parse_args()

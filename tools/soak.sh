@@ -4,7 +4,7 @@
 # reports RSS after warm-up and at the end, the haptic rate and jitter p99 and the frame times in
 # the first and the last tenth, and the proxy's drift between closed loops of the script.
 #
-#   tools/soak.sh [--minutes M] [--parallel N] [--out DIR] [SCENE ...]
+#   tools/soak.sh [--minutes M] [--parallel N] [--out DIR] [--run-arg ARG ...] [SCENE ...]
 #
 # Defaults: 60 minutes a world, one world at a time (parallel worlds share the CPUs, so their
 # rates say less), DIR soak_out, the worlds: the default scene, the Virtual Universe's panel (its
@@ -12,17 +12,22 @@
 # the 4D surfaces. Writes DIR/<world>/ (readouts.jsonl, rss.csv, result.json, soak.svg) and
 # DIR/soak.md, one table; exit 0 when every world meets the targets, 1 when one misses, 77 when
 # xvfb-run or xdotool is missing. The binary is build/pseudoshadow (PS_BIN overrides it).
+# --run-arg ARG passes one more argument to every `pseudoshadow run` (repeatable): many worlds
+# at once on few cores want `--run-arg --spare-cpu --run-arg off`, or every one of them keeps to
+# the same CPU (docs/hardening.md). With --parallel, the worlds start 3 s apart, so that their
+# `xvfb-run -a` do not pick the same display number.
 set -uo pipefail
 repo_root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 bin="${PS_BIN:-${repo_root}/build/pseudoshadow}"
-minutes=60 parallel=1 out=soak_out scenes=()
+minutes=60 parallel=1 out=soak_out scenes=() run_args=()
 while (($#)); do
   case "$1" in
     --minutes) minutes="$2"; shift 2 ;;
     --parallel) parallel="$2"; shift 2 ;;
     --out) out="$2"; shift 2 ;;
-    -h|--help) sed -n '2,15p' "$0" | sed 's/^# \{0,1\}//'; exit 0 ;;
-    -*) echo "soak.sh: unknown option '$1' (--minutes, --parallel, --out)" >&2; exit 2 ;;
+    --run-arg) run_args+=("--run-arg=$2"); shift 2 ;;
+    -h|--help) sed -n '2,18p' "$0" | sed 's/^# \{0,1\}//'; exit 0 ;;
+    -*) echo "soak.sh: unknown option '$1' (--minutes, --parallel, --out, --run-arg)" >&2; exit 2 ;;
     *) scenes+=("$1"); shift ;;
   esac
 done
@@ -41,8 +46,10 @@ for tool in xvfb-run xdotool; do
 done
 mkdir -p "$out"
 echo "soak: ${#scenes[@]} worlds, ${minutes} min each, ${parallel} at a time, into ${out}"
-printf '%s\n' "${scenes[@]}" | xargs -P "$parallel" -I{} \
-  python3 "${repo_root}/tools/soak.py" --exe "$bin" --minutes "$minutes" --out "$out" --progress {}
+# Each line "DELAY SCENE": the i-th world of a parallel batch waits 3*i s before it starts.
+for i in "${!scenes[@]}"; do echo "$(( parallel > 1 ? (i % parallel) * 3 : 0 )) ${scenes[$i]}"; done |
+  xargs -P "$parallel" -I{} bash -c 'sleep "${1%% *}"; exec python3 "${@:2}" "${1#* }"' soak {} \
+    "${repo_root}/tools/soak.py" --exe "$bin" --minutes "$minutes" --out "$out" --progress "${run_args[@]}"
 rc=$?
 # One table from every world's result.json (each soak.py run wrote a table of its own world).
 python3 "${repo_root}/tools/soak.py" --table "$out" "${scenes[@]}" || true
