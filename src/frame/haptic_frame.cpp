@@ -33,13 +33,12 @@ FrameInput haptic_frame_input(const Renderer& renderer, const HapticState& state
   const Scene& scene = renderer.scene();
   // The proxy as drawn: stretched near an Illusion object (visual_position; identity elsewhere),
   // pressed into a deformable surface by the coupling's share of the hand's depth
-  // (world::pressed_position), which then dents under it (FrameInput::time_s).
+  // (world::pressed_position), which then dents under it (step_deformation).
   const glm::dvec3 pressed = world::pressed_position(scene, state.contact_surface, state.proxy_mm,
                                                      state.position_mm, sources.coupling_n_per_mm);
   const glm::dvec3 shown = state.have_sample ? visual_position(scene, pressed) : renderer.probe().position;
   if (state.have_sample) {
     in.probe = ProbeMotion{shown, state.velocity_mm_s};
-    in.time_s = state.time_s;
     in.device_mm = state.device_mm;
   }
   in.view = ViewPose{state.view_offset_mm, state.view_rotation};
@@ -49,6 +48,15 @@ FrameInput haptic_frame_input(const Renderer& renderer, const HapticState& state
   const Camera camera = carried_camera(in.camera.value_or(renderer.camera()), renderer.view(), *in.view);
   in.markers = markers(scene, state, shown, *in.bodies_mm, sources.charges, camera);
   return in;
+}
+
+void step_deformation(const Renderer& renderer, const FrameInput& input, double time_s) {
+  world::DeformableSurfaces* surfaces = renderer.deformables();
+  if (!surfaces || !input.probe) return;
+  Probe pressing = renderer.probe();  // the scene's probe shape, where this frame draws it
+  pressing.position = input.probe->position_mm;
+  pressing.velocity = input.probe->velocity_mm_s;
+  surfaces->advance(time_s, pressing);
 }
 
 glm::dvec3 drawn_probe(const Renderer& renderer, const FrameInput& input) {

@@ -1,6 +1,7 @@
-// The step from the haptic loop's state to a frame (render/frame_input.h): one function for every
-// session that draws one: run, replay and bench-haptics (app/session/session.h drive_frame), the maze's
-// window and its headless frames (maze/maze_frames.h).
+// The step from the haptic loop's state to a frame (render/frame_input.h), and the session's step
+// of the world before it (the deformable surfaces): one function each for every session that draws
+// one: run, replay and bench-haptics (app/session/session.h drive_frame), the maze's window and its
+// headless frames (maze/maze_frames.h).
 #pragma once
 
 #include <optional>
@@ -27,11 +28,18 @@ struct HapticFrameSources {
 };
 
 // The frame `renderer` draws for `state`: the proxy as drawn (stretched near an Illusion object,
-// pressed into a deformable surface), the session time the deformable surfaces step to, the
-// view's pose, the hand, the 4D sheet, the bodies and the markers (charges, bands, the fields'
-// force, the rolling manifold's rubber band). Without a device sample the probe stays where the
-// renderer holds it.
+// pressed into a deformable surface), the view's pose, the hand, the 4D sheet, the bodies and the
+// markers (charges, bands, the fields' force, the rolling manifold's rubber band). Without a device
+// sample the probe stays where the renderer holds it.
 FrameInput haptic_frame_input(const Renderer& renderer, const HapticState& state, const HapticFrameSources& sources);
+
+// The session's step of the world before it draws `input`: the deformable surfaces `renderer`
+// draws (Renderer::deformables, world/deformable_surfaces.h) step on to session time `time_s`
+// (HapticState::time_s) with the scene's probe where `input` draws it, pressing them; the
+// renderer then uploads what changed. The first step only sets the clock. Nothing without a
+// deformable surface or a device sample (an input with no probe), and nothing for the maze's
+// proxy-only frames (their scenes have no deformable surface).
+void step_deformation(const Renderer& renderer, const FrameInput& input, double time_s);
 
 // Where that input draws the probe (the renderer's own probe when it gives none).
 glm::dvec3 drawn_probe(const Renderer& renderer, const FrameInput& input);

@@ -7,7 +7,6 @@
 // world view (bodies, markers, hand) until another input replaces it.
 #pragma once
 
-#include <cmath>
 #include <optional>
 #include <vector>
 
@@ -60,9 +59,8 @@ struct FrameInput {
   std::optional<ProbeSheet> sheet;      // each given sheet also extends the 4D path when shown
   std::optional<std::vector<glm::dvec3>> bodies_mm;  // Scene::bodies' centres, in order
   std::optional<std::vector<WorldMarker>> markers;   // charges, bands, the force arrow
-  // Session time: deformable surfaces are stepped to it (world::DeformableSurfaces::advance). NaN:
-  // not stepped.
-  double time_s = std::nan("");
+  // (Deformable surfaces are not a frame input: the session steps them, world/deformable_surfaces.h,
+  // and the renderer draws them as they stand.)
 };
 
 // The scene's bodies at their start positions and its markers (charges, bands) with the scene's

@@ -13,7 +13,7 @@
 
 namespace ps {
 
-using DeformationStats = world::DeformationStats;  // FrameInput::time_s steps the surfaces
+using DeformationStats = world::DeformationStats;  // the session steps the surfaces (frame/haptic_frame.h)
 
 struct FrameStats {
   glm::dvec3 reference_normal{0.0, 0.0, 1.0};  // after this frame's update

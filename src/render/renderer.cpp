@@ -52,28 +52,48 @@ Result<std::unique_ptr<Renderer>> Renderer::create(const Scene& scene, const Ren
 }
 
 Status Renderer::upload_surfaces() {
+  // Without an owner's, the deformable surfaces as `render` shows them: the scene's probe pressing
+  // in as it would after a second of holding still.
+  deformables_ = options_.deformation;
+  options_.deformation.reset();  // held once, in deformables_
+  if (!deformables_) {
+    auto settled = world::settled_deformables(scene_);
+    if (!settled) return settled.error();
+    deformables_ = std::move(settled.value());
+  }
+  uploaded_.assign(scene_.surfaces.size(), 0);
   for (std::size_t i = 0; i < scene_.surfaces.size(); ++i) {
-    auto g = make_surface_geometry(scene_.surfaces[i], static_cast<int>(i), deformables_);
+    auto g = make_surface_geometry(scene_.surfaces[i], static_cast<int>(i), deformables_.get());
     if (!g) return g.error();
     geometry_.surfaces.push_back(std::move(g.value()));
   }
-  // `render` shows the scene's probe pressing in as it would after a second of holding still.
-  if (!deformables_.empty())
-    for (int i = 0; i < 10; ++i) {
-      deformables_.step(0.1, probe_);
-      upload_deformed();
-    }
+  if (deformables_)
+    for (const world::DeformableSurfaces::Drawn& d : deformables_->drawn())
+      uploaded_.at(static_cast<std::size_t>(d.surface)) = d.version;
   return ok_status();
 }
 
-// The meshes the last deformation step changed, to the GPU. The normal target's mean holds only
-// while the surfaces do not move.
+// The deformable meshes stepped since their last upload, to the GPU. The normal target's mean
+// holds only while the surfaces do not move.
 void Renderer::upload_deformed() {
-  for (const world::DeformableSurfaces::Changed& c : deformables_.changed()) {
-    geometry_.surfaces[static_cast<std::size_t>(c.surface)].mesh.update(*c.mesh);
+  if (!deformables_) return;
+  for (const world::DeformableSurfaces::Drawn& d : deformables_->drawn()) {
+    std::uint64_t& uploaded = uploaded_.at(static_cast<std::size_t>(d.surface));
+    if (d.version == uploaded) continue;
+    geometry_.surfaces[static_cast<std::size_t>(d.surface)].mesh.update(*d.mesh);
+    uploaded = d.version;
     normal_mean_.valid = false;
     ++mesh_version_;  // in the frame key: the next frame redraws everything
   }
+}
+
+const DeformationStats& Renderer::deformation() const {
+  static const DeformationStats none;
+  return deformables_ ? deformables_->stats() : none;
+}
+
+std::vector<glm::dvec3> Renderer::deformed_vertices(int surface) const {
+  return deformables_ ? deformables_->positions(surface) : std::vector<glm::dvec3>{};
 }
 
 Status Renderer::load_probe_mesh() {
@@ -155,10 +175,6 @@ void Renderer::set_view_pose(const ViewPose& pose) {
 
 void Renderer::apply(const FrameInput& in) {
   if (in.probe) set_probe_state(in.probe->position_mm, in.probe->velocity_mm_s);
-  if (std::isfinite(in.time_s)) {
-    deformables_.advance(in.time_s, probe_);
-    upload_deformed();
-  }
   if (in.camera) camera_ = *in.camera;
   if (in.view) set_view_pose(*in.view);
   if (in.device_mm) world_view_.set_device(*in.device_mm);
@@ -267,7 +283,8 @@ void Renderer::apply_reductions(const ReductionResult& r, const FramePlan& plan)
 
 Status Renderer::render_frame() {
   stats_.timings_ms.clear();
-  stats_.deformation = deformables_.stats();
+  upload_deformed();  // what the session stepped since the last frame
+  stats_.deformation = deformation();
   if (Status s = advance_bake(); !s) return s;  // before the timer: a band is not the frame's work
   PassTimer timer(options_.time_passes, stats_, options_.gpu_timers ? &gpu_timers_ : nullptr);
   const BoundingSphere probe = current_probe_bounds();

@@ -36,6 +36,7 @@
 #include "render/world_markers.h"
 #include "render/world_view.h"
 #include "scene/scene.h"
+#include "world/deformable_surfaces.h"
 
 namespace ps {
 
@@ -89,6 +90,12 @@ struct RendererOptions {
   // the rest of the last frame; the results are the same bits (tests compare). false: every
   // frame redraws every pixel (FrameStats::drawn_pixels tells which).
   bool incremental = true;
+  // The scene's deformable surfaces (seed 002 §6's bendable polygons), as their owner steps them:
+  // a session steps them each frame before drawing it (frame/haptic_frame.h step_deformation);
+  // the renderer never steps them, it draws them and uploads each one whose version changed. They
+  // must be this scene's (world::settled_deformables). Null: create() makes them settled under the
+  // scene's probe (what `render` shows); deformables() hands them to the session.
+  std::shared_ptr<world::DeformableSurfaces> deformation;
 };
 
 // The filter's need (glsl/lib/gabor.glsl gabor_filter_need: the exponent of its attenuation of
@@ -159,13 +166,15 @@ class Renderer {
   void set_show_path(bool show) { world_view_.set_show_path(show); }
   void set_show_device(bool show) { world_view_.set_show_device(show); }
   bool show_device() const { return world_view_.show_device(); }
-  // Seed 002 §6's bendable polygons (world/deformable_surfaces.h): FrameInput::time_s steps every
-  // deformable surface on to that session time with the probe where the input put it, and the
-  // meshes the step changed are uploaded. The first time only sets the clock; create() settles the
-  // surfaces for 1 s with the scene's probe (what `render` shows). No deformable surface: nothing.
-  const DeformationStats& deformation() const { return deformables_.stats(); }
+  // Seed 002 §6's bendable polygons (world/deformable_surfaces.h, RendererOptions::deformation):
+  // each frame draws them as their owner has stepped them, uploading the meshes whose version
+  // changed. Null when the scene has none. The session steps them (frame/haptic_frame.h
+  // step_deformation); the renderer never does.
+  world::DeformableSurfaces* deformables() const { return deformables_.get(); }
+  // What the deformable surfaces' last step did (all zero without any).
+  const DeformationStats& deformation() const;
   // The welded vertices of deformable surface `surface` now (world mm); empty if not deformable.
-  std::vector<glm::dvec3> deformed_vertices(int surface) const { return deformables_.positions(surface); }
+  std::vector<glm::dvec3> deformed_vertices(int surface) const;
   // The frame's colour target (RGBA8, padded to a power of two; the image is the
   // width x height region at the origin, bottom row first): blitted to the window.
   const gl::Texture& color_texture() const { return surface_.color(); }
@@ -224,7 +233,10 @@ class Renderer {
     ReductionResult result;  // normal_sum and normal_coverage
   };
   NormalMean normal_mean_;
-  world::DeformableSurfaces deformables_;  // their meshes are geometry_'s dynamic ones
+  // Their meshes are geometry_'s dynamic ones; uploaded_: the version each upload drew (by scene
+  // surface, 0 for the others).
+  std::shared_ptr<world::DeformableSurfaces> deformables_;
+  std::vector<std::uint64_t> uploaded_;
   std::uint64_t mesh_version_ = 0;         // deformed mesh uploads so far (the frame key)
   FrameHistory history_;                   // what the last frame left: incremental frames
   ProbeDepthPass probe_depth_;

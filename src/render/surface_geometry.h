@@ -1,7 +1,7 @@
 // One surface of the scene as the renderer draws it: its mesh on the GPU, its world bounds (the
 // plan's input) and, for a surface embedded in 4D, its vertices' w (to find the probe's sheet
 // without haptics). Built once per renderer; a deformable surface's mesh is the subdivided one its
-// world::DeformableSurfaces steps, uploaded dynamic.
+// world::DeformableSurfaces holds (stepped by the session, not here), uploaded dynamic.
 #pragma once
 
 #include <span>
@@ -27,9 +27,10 @@ struct SurfaceGeometry {
   double nearest_w(const glm::dvec3& probe_mm, double fallback) const;
 };
 
-// Surface `index` of a scene (Surface::visual_stretch applied); a deformable one is added to
-// `deformables`. Needs a current GL context; a mesh file that cannot be read is an error.
-Result<SurfaceGeometry> make_surface_geometry(const Surface& s, int index, world::DeformableSurfaces& deformables);
+// Surface `index` of a scene (Surface::visual_stretch applied); a deformable one is drawn with its
+// mesh in `deformables` as it stands now. Needs a current GL context; a mesh file that cannot be
+// read, or a deformable surface `deformables` does not hold, is an error.
+Result<SurfaceGeometry> make_surface_geometry(const Surface& s, int index, const world::DeformableSurfaces* deformables);
 
 // The surfaces' bounds, in order (the plan's input).
 std::vector<Aabb> bounds_of(std::span<const SurfaceGeometry> surfaces);

@@ -1,5 +1,8 @@
-// build_surface_mesh and transform_mesh; shapes in mesh_procedural.cpp, files in mesh_file.cpp.
+// build_surface_mesh, build_drawn_surface_mesh and transform_mesh; shapes in mesh_procedural.cpp,
+// files in mesh_file.cpp.
 #include "scene/mesh.h"
+
+#include <limits>
 
 #include <glm/gtc/matrix_transform.hpp>
 
@@ -24,6 +27,26 @@ Result<Mesh> local_mesh(const Surface& s) {
   return make_error("build_surface_mesh: unknown surface type");
 }
 
+// Surface::visual_stretch: positions scaled along the surface's local axes about its centre,
+// normals by the inverse (the normal transform of a scaling), bounds recomputed.
+void stretch_mesh(Mesh& m, const Surface& s) {
+  const glm::dmat3 rot = euler_xyz_deg(s.rotation_deg);
+  const glm::dmat3 scale(glm::dvec3(s.visual_stretch.x, 0, 0), glm::dvec3(0, s.visual_stretch.y, 0),
+                         glm::dvec3(0, 0, s.visual_stretch.z));
+  const glm::dmat3 inverse_scale(glm::dvec3(1.0 / s.visual_stretch.x, 0, 0), glm::dvec3(0, 1.0 / s.visual_stretch.y, 0),
+                                 glm::dvec3(0, 0, 1.0 / s.visual_stretch.z));
+  const glm::dmat3 to = rot * scale * glm::transpose(rot), to_n = rot * inverse_scale * glm::transpose(rot);
+  m.bounds_min = glm::dvec3(std::numeric_limits<double>::infinity());
+  m.bounds_max = -m.bounds_min;
+  for (glm::vec3& p : m.positions) {
+    const glm::dvec3 q = s.center + to * (glm::dvec3(p) - s.center);
+    p = glm::vec3(q);
+    m.bounds_min = glm::min(m.bounds_min, q);
+    m.bounds_max = glm::max(m.bounds_max, q);
+  }
+  for (glm::vec3& n : m.normals) n = glm::vec3(glm::normalize(to_n * glm::dvec3(n)));
+}
+
 }  // namespace
 
 glm::dmat3 euler_xyz_deg(const glm::dvec3& rotation_deg) {
@@ -41,6 +64,12 @@ Result<Mesh> build_surface_mesh(const Surface& surface) {
   // `scale` is documented for mesh surfaces; procedural shapes are sized by their own keys.
   const double scale = surface.type == SurfaceType::kMesh ? surface.scale : 1.0;
   transform_mesh(*mesh, scale, surface.rotation_deg, surface.center);
+  return mesh;
+}
+
+Result<Mesh> build_drawn_surface_mesh(const Surface& surface) {
+  Result<Mesh> mesh = build_surface_mesh(surface);
+  if (mesh && surface.visual_stretch != glm::dvec3(1.0)) stretch_mesh(mesh.value(), surface);
   return mesh;
 }
 

@@ -37,6 +37,9 @@ glm::dmat3 euler_xyz_deg(const glm::dvec3& rotation_deg);
 // World-space mesh of a scene surface (procedural shapes tessellated at surface.resolution;
 // height fields from the grey image; meshes through assimp, transformed by centre/rotation/scale).
 Result<Mesh> build_surface_mesh(const Surface& surface);
+// The mesh a surface is drawn with: build_surface_mesh with Surface::visual_stretch applied (the
+// renderer's meshes and the deformable surfaces' rest shapes; the haptic scene keeps the unstretched one).
+Result<Mesh> build_drawn_surface_mesh(const Surface& surface);
 
 // Loads all meshes of a file through assimp and merges them (no transform applied).
 // Errors name the file: "<path>: cannot load mesh: <assimp's reason>", empty meshes refused.

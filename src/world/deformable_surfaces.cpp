@@ -16,7 +16,6 @@ const Mesh& DeformableSurfaces::add(int surface, const Mesh& rest, const DeformP
 }
 
 const DeformationStats& DeformableSurfaces::advance(double time_s, const Probe& probe) {
-  for (Record& r : surfaces_) r.changed = false;
   if (surfaces_.empty() || !std::isfinite(time_s)) return stats_;
   const double dt = time_s_ < 0.0 ? 0.0 : time_s - time_s_;
   time_s_ = time_s;
@@ -31,9 +30,9 @@ const DeformationStats& DeformableSurfaces::step(double dt_s, const Probe& probe
     const DeformStep step = r.sim->step(dt_s, centre, probe.radius_mm);
     // At rest with the probe away the step simulates no vertex (none displaced, none near the
     // probe), so nothing changed since the last write: no re-upload, no new normals.
-    r.changed = r.sim->active_count() > 0;
-    if (r.changed) {
+    if (r.sim->active_count() > 0) {
       r.sim->write(r.mesh);
+      ++r.version;
       ++st.uploaded;
     }
     st.substeps = std::max(st.substeps, step.substeps);
@@ -45,17 +44,37 @@ const DeformationStats& DeformableSurfaces::step(double dt_s, const Probe& probe
   return stats_;
 }
 
-std::vector<DeformableSurfaces::Changed> DeformableSurfaces::changed() const {
-  std::vector<Changed> out;
-  for (const Record& r : surfaces_)
-    if (r.changed) out.push_back({r.surface, &r.mesh});
+std::vector<DeformableSurfaces::Drawn> DeformableSurfaces::drawn() const {
+  std::vector<Drawn> out;
+  for (const Record& r : surfaces_) out.push_back({r.surface, &r.mesh, r.version});
   return out;
+}
+
+const Mesh* DeformableSurfaces::mesh(int surface) const {
+  for (const Record& r : surfaces_)
+    if (r.surface == surface) return &r.mesh;
+  return nullptr;
 }
 
 std::vector<glm::dvec3> DeformableSurfaces::positions(int surface) const {
   for (const Record& r : surfaces_)
     if (r.surface == surface) return r.sim->positions();
   return {};
+}
+
+Result<std::shared_ptr<DeformableSurfaces>> settled_deformables(const Scene& scene) {
+  std::shared_ptr<DeformableSurfaces> out;
+  for (std::size_t i = 0; i < scene.surfaces.size(); ++i) {
+    const Surface& s = scene.surfaces[i];
+    if (!s.deform.enabled) continue;
+    Result<Mesh> rest = build_drawn_surface_mesh(s);
+    if (!rest) return rest.error();
+    if (!out) out = std::make_shared<DeformableSurfaces>();
+    out->add(static_cast<int>(i), rest.value(), s.deform);
+  }
+  if (out)
+    for (int i = 0; i < 10; ++i) out->step(0.1, scene.probe);
+  return out;
 }
 
 }  // namespace ps::world

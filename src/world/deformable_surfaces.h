@@ -1,13 +1,18 @@
 // Every deformable surface of a scene (world/deformable.h), stepped together on one session clock
-// with the drawn probe pressing them. No GL: the renderer uploads the meshes a step changed
-// (changed()); the haptic scene keeps the rest shapes (the deformation is graphical, seed 002 §6).
+// with the drawn probe pressing them. No GL. The world owns the stepping: settled_deformables()
+// settles a scene's surfaces under its probe (what `render` shows), and a session steps them each
+// frame before it is drawn (frame/haptic_frame.h step_deformation). The renderer only draws them:
+// it uploads each surface whose version (drawn()) changed since its last upload. The haptic scene keeps
+// the rest shapes (the deformation is graphical, seed 002 §6).
 #pragma once
 
+#include <cstdint>
 #include <memory>
 #include <vector>
 
 #include <glm/glm.hpp>
 
+#include "core/result.h"
 #include "scene/mesh.h"
 #include "scene/scene.h"
 #include "world/deformable.h"
@@ -38,12 +43,16 @@ class DeformableSurfaces {
   const DeformationStats& advance(double time_s, const Probe& probe);
   const DeformationStats& stats() const { return stats_; }
 
-  struct Changed {
+  struct Drawn {
     int surface = -1;
-    const Mesh* mesh = nullptr;
+    const Mesh* mesh = nullptr;  // the drawn mesh now
+    std::uint64_t version = 0;   // steps that changed it so far
   };
-  // The surfaces whose drawn mesh the last step() changed (none after an advance() that did not step).
-  std::vector<Changed> changed() const;
+  // Every deformable surface's drawn mesh and how many steps have changed it (a drawer uploads
+  // the mesh when the version is not the one it uploaded last).
+  std::vector<Drawn> drawn() const;
+  // The drawn mesh of scene surface `surface` now; null if not deformable.
+  const Mesh* mesh(int surface) const;
   // The welded vertices of scene surface `surface` now (world mm); empty if not deformable.
   std::vector<glm::dvec3> positions(int surface) const;
 
@@ -52,11 +61,16 @@ class DeformableSurfaces {
     int surface = -1;
     Mesh mesh;  // rest topology, deformed positions and normals
     std::shared_ptr<Deformable> sim;
-    bool changed = false;
+    std::uint64_t version = 0;  // steps that rewrote the mesh
   };
   std::vector<Record> surfaces_;
   double time_s_ = -1.0;  // < 0: the clock is not set yet
   DeformationStats stats_;
 };
+
+// The deformable surfaces of `scene` (Surface::deform.enabled), each built as it is drawn
+// (build_drawn_surface_mesh) and settled for 1 s under the scene's probe, held still: the dent
+// `render` shows. Null when the scene has none; a mesh that cannot be built is an error.
+Result<std::shared_ptr<DeformableSurfaces>> settled_deformables(const Scene& scene);
 
 }  // namespace ps::world

@@ -14,6 +14,7 @@
 #include "scene/mesh.h"
 #include "scene/scene_io.h"
 #include "world/deformable.h"
+#include "world/deformable_surfaces.h"
 
 namespace ps::world {
 namespace {
@@ -274,6 +275,77 @@ TEST(DeformableTest, SubdividedMeshesAreClosedAndPressesStayLocal) {
   // With k_b / k_n = 1/4 a dent decays by ~0.6 per ring of neighbours, so a 1 mm press reaches
   // the 1e-4 mm rest threshold ~18 rings out: a cap of the sphere, not all of it.
   EXPECT_LT(d.active_count(), d.welded_count() / 2) << "the window should hold the press's neighbourhood only";
+}
+
+// A scene of one deformable sphere (the one above, surface 1 behind a plain plane) with the
+// scene's probe `depth` mm into its north pole: what world::settled_deformables settles.
+Scene pressed_sphere_scene(double depth) {
+  Scene scene;
+  Surface plane;
+  plane.type = SurfaceType::kPlane;
+  plane.center = {0.0, 0.0, -40.0};
+  Surface sphere;
+  sphere.type = SurfaceType::kSphere;
+  sphere.radius_mm = kRadius;
+  sphere.resolution = 24;
+  sphere.deform = params();
+  scene.surfaces = {plane, sphere};
+  scene.probe.shape = ProbeShape::kSphere;
+  scene.probe.radius_mm = kProbe;
+  scene.probe.position = pressing(depth);
+  return scene;
+}
+
+// The deformable surfaces' stepping is the world's (the session drives it; the renderer only
+// uploads by version): settled_deformables holds each deformable surface of a scene under its
+// own index, settles it for 1 s (ten 0.1 s steps, each of which moves a pressed surface: version
+// 10) exactly as stepping a DeformableSurfaces built by hand does, and leaves a surface the
+// probe is far from at its rest mesh (version 0). advance() steps only once the clock is set.
+TEST(DeformableSurfacesTest, TheWorldSettlesAndStepsAndCountsEachStepThatMovedASurface) {
+  const Scene scene = pressed_sphere_scene(2.0);
+  auto settled = settled_deformables(scene);
+  ASSERT_TRUE(settled) << settled.error().message;
+  ASSERT_TRUE(settled.value());
+  DeformableSurfaces& w = *settled.value();
+  ASSERT_EQ(w.drawn().size(), 1u);
+  EXPECT_EQ(w.drawn()[0].surface, 1);
+  EXPECT_EQ(w.drawn()[0].version, 10u);
+  EXPECT_EQ(w.mesh(0), nullptr);
+  ASSERT_NE(w.mesh(1), nullptr);
+
+  // The same settling by hand, from the sphere's own drawn mesh.
+  DeformableSurfaces by_hand;
+  auto rest = build_drawn_surface_mesh(scene.surfaces[1]);
+  ASSERT_TRUE(rest) << rest.error().message;
+  by_hand.add(1, rest.value(), scene.surfaces[1].deform);
+  for (int i = 0; i < 10; ++i) by_hand.step(0.1, scene.probe);
+  EXPECT_EQ(w.mesh(1)->positions, by_hand.mesh(1)->positions);
+  EXPECT_EQ(w.mesh(1)->normals, by_hand.mesh(1)->normals);
+  EXPECT_GT(w.stats().max_displacement_mm, 1.0);
+
+  // The session's clock: the first advance only sets it, the next one steps and moves the
+  // pressed surface once more; an advance to the same time does nothing.
+  const std::uint64_t before = w.drawn()[0].version;
+  w.advance(5.0, scene.probe);
+  EXPECT_EQ(w.drawn()[0].version, before);
+  w.advance(5.1, scene.probe);
+  EXPECT_EQ(w.drawn()[0].version, before + 1);
+  w.advance(5.1, scene.probe);
+  EXPECT_EQ(w.drawn()[0].version, before + 1);
+
+  // Far from the probe: settled, never moved, the subdivided rest mesh.
+  const Scene away = pressed_sphere_scene(-30.0);
+  auto rest_world = settled_deformables(away);
+  ASSERT_TRUE(rest_world && rest_world.value());
+  EXPECT_EQ(rest_world.value()->drawn()[0].version, 0u);
+  EXPECT_EQ(rest_world.value()->mesh(1)->positions, subdivide(rest.value(), params().max_edge_mm).positions);
+
+  // No deformable surface: no world at all.
+  Scene plain = scene;
+  plain.surfaces[1].deform.enabled = false;
+  auto none = settled_deformables(plain);
+  ASSERT_TRUE(none);
+  EXPECT_EQ(none.value(), nullptr);
 }
 
 }  // namespace

@@ -18,6 +18,7 @@
 #include "scene/scene_io.h"
 #include "support/gl_test.h"
 #include "world/deformable.h"
+#include "world/deformable_surfaces.h"
 #include "world/haptic_scene.h"
 
 namespace ps {
@@ -141,8 +142,11 @@ TEST_P(UniverseReplayGLTest, PolyDentsUnderTheProbeAndSpringsBack) {
   EXPECT_EQ(last.deformation.max_displacement_mm, 0.0);
   // While dented the surface is uploaded every frame; once back at rest with the probe away,
   // nothing is (no vertex moved: world::DeformableSurfaces::step marks no mesh changed, so none is uploaded).
-  for (const PolyFrame& f : run.frames)
-    if (f.t >= 0.6 && f.t <= 1.0) EXPECT_EQ(f.deformation.uploaded, 1) << f.t;
+  for (const PolyFrame& f : run.frames) {
+    if (f.t >= 0.6 && f.t <= 1.0) {
+      EXPECT_EQ(f.deformation.uploaded, 1) << f.t;
+    }
+  }
   EXPECT_EQ(last.deformation.uploaded, 0);
 
   // The same drawn probe over Suzanne undented.
@@ -178,6 +182,65 @@ TEST_P(UniverseReplayGLTest, PolySurvivesAViolentTrajectory) {
   }
   EXPECT_GT(touching, 3) << "the trajectory should have pressed the head";
   EXPECT_EQ(run.frames.back().deformation.max_displacement_mm, 0.0);
+}
+
+// The deformable surfaces are the world's, stepped by their owner (a session's drive_frame, through
+// step_deformation); the renderer only draws them. Poly with a world settled apart: creating a
+// renderer on it steps nothing; frames that move the drawn probe onto Suzanne's crown and away
+// with no step leave the world's version and vertices exactly as they were, and the second and
+// third are incremental (nothing but the probe changed: no mesh was uploaded); one step of the
+// world by its owner, pressing there, is drawn by the next frame (a full redraw: the mesh was
+// uploaded; the renderer's vertices are the world's, dented). A second renderer given the same
+// world draws it as it stands, with no settling of its own.
+TEST_P(UniverseReplayGLTest, TheRendererDrawsTheDeformationItsOwnerStepsAndNeverStepsIt) {
+  auto scene = load_scene(universe("poly.toml"), {"render.size=[96,96]", "render.depth_map_size=64"});
+  ASSERT_TRUE(scene) << scene.error().message;
+  auto settled = world::settled_deformables(scene.value());
+  ASSERT_TRUE(settled && settled.value()) << (settled ? "no deformable surface" : settled.error().message);
+  const std::shared_ptr<world::DeformableSurfaces> surfaces = settled.value();
+  ASSERT_EQ(surfaces->drawn().size(), 1u);
+  const int poly = surfaces->drawn()[0].surface;
+  const std::uint64_t version = surfaces->drawn()[0].version;
+  const std::vector<glm::dvec3> before = surfaces->positions(poly);
+  // The crown: the drawn mesh's highest vertex; the probe pressed 2 mm into it.
+  glm::dvec3 crown(0.0, 0.0, -1e9);
+  for (const glm::dvec3& v : before)
+    if (v.z > crown.z) crown = v;
+  Probe pressing = scene->probe;
+  pressing.position = crown + glm::dvec3(0.0, 0.0, pressing.radius_mm - 2.0);
+
+  RendererOptions ro;
+  ro.expected_frames = 8;
+  ro.deformation = surfaces;
+  auto made = open_renderer(scene.value(), ro, {.button_pictures = false});
+  ASSERT_TRUE(made) << made.error().message;
+  Renderer& r = *made.value();
+  EXPECT_EQ(r.deformables(), surfaces.get());
+  for (const glm::dvec3& at : {pressing.position, crown + glm::dvec3(8.0, 0.0, 20.0), pressing.position}) {
+    FrameInput in;
+    in.probe = ProbeMotion{at, glm::dvec3(0.0)};
+    ASSERT_TRUE(r.render(in));
+  }
+  EXPECT_EQ(surfaces->drawn()[0].version, version) << "a frame stepped the world";
+  EXPECT_EQ(surfaces->positions(poly), before);
+  EXPECT_TRUE(r.stats().incremental) << "a frame uploaded a mesh nobody stepped";
+
+  surfaces->advance(10.0, pressing);  // sets the session clock
+  surfaces->advance(10.1, pressing);  // 0.1 s pressed
+  ASSERT_EQ(surfaces->drawn()[0].version, version + 1);
+  FrameInput in;
+  in.probe = ProbeMotion{pressing.position, glm::dvec3(0.0)};
+  ASSERT_TRUE(r.render(in));
+  EXPECT_FALSE(r.stats().incremental) << "the stepped mesh should have been uploaded";
+  EXPECT_EQ(r.stats().deformation.uploaded, 1);
+  EXPECT_GT(r.stats().deformation.max_displacement_mm, 0.5);
+  EXPECT_EQ(r.deformed_vertices(poly), surfaces->positions(poly));
+  EXPECT_NE(r.deformed_vertices(poly), before);
+
+  auto second = open_renderer(scene.value(), ro, {.button_pictures = false});  // ro holds the same world
+  ASSERT_TRUE(second) << second.error().message;
+  EXPECT_EQ(surfaces->drawn()[0].version, version + 1) << "creating a renderer stepped the world";
+  EXPECT_EQ(second.value()->deformed_vertices(poly), surfaces->positions(poly));
 }
 
 // Weight through replay (tests/haptics/data/universe_weight_drop.traj: the hand lowered to z =

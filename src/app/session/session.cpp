@@ -14,6 +14,7 @@ Status drive_frame(Renderer& renderer, HapticLoop& loop, std::uint64_t frame, Ha
   sources.coupling_n_per_mm = loop.params().forces.coupling_n_per_mm;
   sources.charges = loop.live_charges().read();
   const FrameInput input = haptic_frame_input(renderer, state, sources);
+  step_deformation(renderer, input, state.time_s);
   const glm::dvec3 shown = drawn_probe(renderer, input);
   const auto drawn = renderer.render(input);
   if (!drawn) return drawn.error();
