@@ -9,11 +9,13 @@ key events (the path of tests/window/walk.py), repeating one closed loop of step
 <scene>.loop, else the loop its kind names, else default.loop; the walk format) until the time is
 up. Every loop ends with the pointer resting at the window's centre, where the proxy is read.
 Measured per world (docs/hardening.md, "Hours of running"):
-  - RSS (VmRSS, every 5 s): after warm-up (the end of the first tenth) and at the end;
+  - RSS (VmRSS, every 5 s): after warm-up (the median of the second tenth) and at the end (the
+    median of the last tenth);
   - the haptic loop's rate and per-second jitter p99 (from `--readouts-log`) in the first and
     the last tenth;
   - frame times (the time between the states two frames drew) in the first and the last tenth;
-  - after each loop, the proxy at the resting pointer: its largest distance from the first loop's.
+  - after each loop, the proxy at the resting pointer: where the last tenth's loops leave it (their
+    median) against where the first tenth's do, and how many single loops ended away from that.
 Writes OUT/<scene>/{readouts.jsonl, rss.csv, result.json, soak.svg} and OUT/soak.md (one table).
 Exit 0 when every world meets the targets, 1 when one misses, 2 bad input, 77 skipped (no
 xvfb-run or xdotool). Standard library only.
@@ -42,8 +44,14 @@ RATE_CHANGE_MAX = 0.01
 # 50 % plus 100 us. The machine is shared: a build beside the soak moves p99 by that much, and a
 # loop that degrades (work growing per tick) moves it by milliseconds.
 JITTER_FACTOR, JITTER_SLACK_US = 1.5, 100.0
+# RSS is compared as the median of the second tenth (warm) and of the last tenth (end): it swings
+# by 5 % and more within minutes as the window draws (a panel opening a world: 270 -> 400 MiB and
+# back), so two single samples cannot resolve 1 %; a leak moves the median of a tenth.
 # No drift: the proxy at the same resting pointer after every loop, within 0.5 mm (the walks'
-# drift tolerance: under a pixel of every shipped camera). A moving ball (Weight) may push it.
+# drift tolerance: under a pixel of every shipped camera), judged as the median resting point of
+# the last tenth's loops against the first tenth's. A single loop that ends away from it (a sample
+# taken before the proxy settled at seconds per frame, a body resting against it, a missed press)
+# is counted (`loops_off`) but is not drift: the next loops come back.
 DRIFT_MAX_MM = 0.5
 # A checkpoint's press is repeated at most this often (run_loop); a press that takes on none of
 # the three tries is a defect of the window, not of the machine's load.
@@ -201,19 +209,48 @@ def summarize(stem, out, frames, rss, loops, error, misses=()):
         r["minutes"] = (t1 - t0) / 60.0
         r["first"] = tenth_stats([f for f in frames if f["t_s"] <= t0 + tenth])
         r["last"] = tenth_stats([f for f in frames if f["t_s"] >= t1 - tenth])
-    if rss:
-        warm = [m for t, m in rss if t - rss[0][0] <= (rss[-1][0] - rss[0][0]) / 10.0]
-        r["rss_warm_mib"], r["rss_end_mib"] = warm[-1], rss[-1][1]
-        r["rss_growth"] = (rss[-1][1] - warm[-1]) / warm[-1]
-    home = [lp for lp in loops if lp["scene"] == (loops[0]["scene"] if loops else None)]
+    r.update(rss_metrics([(t - rss[0][0], m) for t, m in rss]))
     r["loop_scenes"] = sorted({lp["scene"] for lp in loops})
-    r["drift_mm"] = max((sum((a - b) ** 2 for a, b in zip(lp["proxy_mm"], home[0]["proxy_mm"])) ** 0.5
-                         for lp in home), default=None)
+    r.update(drift_metrics(loops))
     r["failures"] = judge(r)
     with open(os.path.join(out, "result.json"), "w", encoding="utf-8") as f:
         json.dump({**r, "loop_ends": loops}, f, indent=1)
     write_svg(os.path.join(out, "soak.svg"), stem, rss, frames)
     return r
+
+
+def median(values):
+    v = sorted(values)
+    return None if not v else (v[len(v) // 2] if len(v) % 2 else 0.5 * (v[len(v) // 2 - 1] + v[len(v) // 2]))
+
+
+def rss_metrics(rss):
+    """RSS after warm-up (median of the second tenth) and at the end (median of the last tenth);
+    rss: (seconds from the start, MiB) samples."""
+    if len(rss) < 10:
+        return {}
+    span = rss[-1][0]
+    warm = median([m for t, m in rss if span / 10.0 < t <= span / 5.0])
+    end = median([m for t, m in rss if t >= span * 0.9])
+    if warm is None or end is None:
+        return {}
+    return {"rss_warm_mib": warm, "rss_end_mib": end, "rss_growth": (end - warm) / warm,
+            "rss_range_mib": [min(m for t, m in rss if t > span / 10.0), max(m for t, m in rss if t > span / 10.0)]}
+
+
+def drift_metrics(loops):
+    """The median resting point of the last tenth's loops against the first tenth's (only loops
+    that ended in the world's own scene), and the loops that ended over DRIFT_MAX_MM from the
+    first tenth's."""
+    home = [lp for lp in loops if lp["scene"] == (loops[0]["scene"] if loops else None)]
+    if len(home) < 2:
+        return {"drift_mm": None, "loops_off": 0}
+    n = max(1, len(home) // 10)
+    centre = lambda group: [median([lp["proxy_mm"][k] for lp in group]) for k in range(3)]  # noqa: E731
+    first, last = centre(home[:n]), centre(home[-n:])
+    dist = lambda a, b: sum((x - y) ** 2 for x, y in zip(a, b)) ** 0.5  # noqa: E731
+    return {"drift_mm": dist(first, last), "loops_off": sum(dist(lp["proxy_mm"], first) > DRIFT_MAX_MM for lp in home),
+            "largest_off_mm": max(dist(lp["proxy_mm"], first) for lp in home)}
 
 
 def judge(r):
@@ -235,7 +272,7 @@ def judge(r):
             b["jitter_p99_us_p50"] > JITTER_FACTOR * a["jitter_p99_us_p50"] + JITTER_SLACK_US:
         bad.append(f"jitter p99 {a['jitter_p99_us_p50']:.0f} -> {b['jitter_p99_us_p50']:.0f} us")
     if r["drift_mm"] is not None and r["drift_mm"] > DRIFT_MAX_MM:
-        bad.append(f"the proxy drifted {r['drift_mm']:.2f} mm between loops")
+        bad.append(f"the proxy's resting point moved {r['drift_mm']:.2f} mm from the first tenth's loops to the last's")
     return bad
 
 
@@ -269,7 +306,7 @@ def fmt(v, spec):
 
 def table(results):
     rows = ["| world | min | loops | RSS warm -> end MiB (growth) | rate Hz first / last | jitter p99 us first / last "
-            "(median of seconds) | frame ms p50 first / last | drift mm | presses retried | result |",
+            "(median of seconds) | frame ms p50 first / last | drift mm (loops off / largest mm) | presses retried | result |",
             "| --- | --- | --- | --- | --- | --- | --- | --- | --- | --- |"]
     for r in results:
         a, b = r.get("first", {}), r.get("last", {})
@@ -279,7 +316,8 @@ def table(results):
                     f"{fmt(a.get('rate_hz_p50'), '.0f')} / {fmt(b.get('rate_hz_p50'), '.0f')} | "
                     f"{fmt(a.get('jitter_p99_us_p50'), '.0f')} / {fmt(b.get('jitter_p99_us_p50'), '.0f')} | "
                     f"{fmt(a.get('frame_ms_p50'), '.0f')} / {fmt(b.get('frame_ms_p50'), '.0f')} | "
-                    f"{fmt(r.get('drift_mm'), '.2f')} | {len(r.get('missed', []))} | {'pass' if not r['failures'] else '; '.join(r['failures'])} |")
+                    f"{fmt(r.get('drift_mm'), '.2f')} ({r.get('loops_off', 0)} / {fmt(r.get('largest_off_mm'), '.2f')}) | "
+                    f"{len(r.get('missed', []))} | {'pass' if not r['failures'] else '; '.join(r['failures'])} |")
     return "\n".join(rows) + "\n"
 
 
@@ -290,7 +328,13 @@ def write_table(out, scenes):
         if os.path.exists(path):
             with open(path, encoding="utf-8") as f:
                 r = json.load(f)
-            r["failures"] = judge(r)  # the targets as this tool states them now
+            # The measures and targets as this tool states them now, from the saved samples.
+            rss_csv = os.path.join(os.path.dirname(path), "rss.csv")
+            if os.path.exists(rss_csv):
+                with open(rss_csv, encoding="ascii") as f:
+                    r.update(rss_metrics([tuple(map(float, line.split(","))) for line in f.read().split()[1:]]))
+            r.update(drift_metrics(r.get("loop_ends", [])))
+            r["failures"] = judge(r)
             results.append(r)
     with open(os.path.join(out, "soak.md"), "w", encoding="utf-8") as f:
         f.write(table(results))
