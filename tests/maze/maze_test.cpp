@@ -234,8 +234,10 @@ TEST(MazeSessionTest, TickFeedDrainedAtSlowFramesScoresLikeEveryTick) {
       EXPECT_EQ(a.ok, b.ok) << "pass " << p << " room " << i;
       // Pass 1 runs on the same scene tick for tick: the same times exactly. (The next pass's
       // scene reaches the loop up to a frame later than in the headless run.)
-      if (p == 0) EXPECT_EQ(a.enter_s, b.enter_s) << "room " << i;
-      if (p == 0) EXPECT_EQ(a.exit_s, b.exit_s) << "room " << i;
+      if (p == 0) {
+        EXPECT_EQ(a.enter_s, b.enter_s) << "room " << i;
+        EXPECT_EQ(a.exit_s, b.exit_s) << "room " << i;
+      }
     }
   EXPECT_EQ(feed.dropped(), 0u);
 }

@@ -95,7 +95,9 @@ TEST_P(CurvedDistanceGLTest, SurfaceNormalModeMeetsTheExactDistanceOnCurvedRecei
     RecordProperty(std::string(c.name) + "_normal_mode_max_mm", std::to_string(e.normal_mode_max));
     RecordProperty(std::string(c.name) + "_thesis_mode_max_mm", std::to_string(e.thesis_mode_max));
     RecordProperty(std::string(c.name) + "_pixels", std::to_string(e.compared));
-    if (c.type != SurfaceType::kMesh) EXPECT_GT(e.thesis_mode_max, 0.5) << c.name;
+    if (c.type != SurfaceType::kMesh) {
+      EXPECT_GT(e.thesis_mode_max, 0.5) << c.name;
+    }
   }
 }
 
