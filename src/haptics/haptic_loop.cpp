@@ -3,14 +3,10 @@
 #include "devices/sample_log.h"
 #include "haptics/effects/scene_effects.h"
 #include "haptics/proxy_model.h"
-#include "haptics/rtkit.h"
 #include "haptics/tick_feed.h"
 #include "haptics/workspace.h"
 
-#include <pthread.h>
 #include <sched.h>
-#include <sys/prctl.h>
-#include <sys/resource.h>
 #include <sys/syscall.h>
 #include <unistd.h>
 
@@ -18,7 +14,6 @@
 #include <cassert>
 #include <cerrno>
 #include <cmath>
-#include <cstring>
 
 namespace ps {
 
@@ -59,75 +54,6 @@ HapticLoop::HapticLoop(Device& device, Clock& clock, const HapticLoopParams& par
 }
 
 HapticLoop::~HapticLoop() { stop(); }
-
-namespace {
-
-// sched_setattr(2) has no glibc wrapper; the struct is the kernel's (include/uapi/linux/sched/types.h).
-struct SchedAttr {
-  std::uint32_t size;
-  std::uint32_t sched_policy;
-  std::uint64_t sched_flags;
-  std::int32_t sched_nice;
-  std::uint32_t sched_priority;
-  std::uint64_t sched_runtime, sched_deadline, sched_period;
-  std::uint32_t sched_util_min, sched_util_max;
-};
-
-// Asks for a shorter EEVDF slice for the calling thread (SCHED_OTHER, nice unchanged). Returns
-// 0 or an errno; kernels before 6.12 accept it and ignore the runtime.
-int request_slice(std::int64_t slice_us) {
-  SchedAttr attr{};
-  attr.size = sizeof attr;
-  attr.sched_policy = SCHED_OTHER;
-  attr.sched_nice = getpriority(PRIO_PROCESS, 0);
-  attr.sched_runtime = static_cast<std::uint64_t>(slice_us) * 1000u;
-  return syscall(SYS_sched_setattr, 0, &attr, 0u) == 0 ? 0 : errno;
-}
-
-}  // namespace
-
-void HapticLoop::start() {
-  stop_.store(false);
-  std::atomic<pid_t> tid{0};
-  thread_ = std::thread([this, &tid] {
-    tid.store(static_cast<pid_t>(syscall(SYS_gettid)));
-    tid.notify_one();
-    pthread_setname_np(pthread_self(), "ps-haptic");  // shows in top -H, ps -L, /proc/<pid>/task/*/comm
-    if (params_.sched_slice_us > 0) slice_error_.store(request_slice(params_.sched_slice_us));
-    if (params_.timer_slack_ns > 0) prctl(PR_SET_TIMERSLACK, static_cast<unsigned long>(params_.timer_slack_ns), 0, 0, 0);
-    while (!stop_.load(std::memory_order_relaxed)) scheduled_tick();
-  });
-  tid.wait(0);
-  if (params_.realtime_priority > 0) request_realtime(tid.load());
-}
-
-// SCHED_FIFO when this process may (CAP_SYS_NICE, RLIMIT_RTPRIO), else SCHED_RR through
-// RealtimeKit where the system runs it (haptics/rtkit.h), else normal priority, saying why.
-void HapticLoop::request_realtime(pid_t tid) {
-  sched_param sp{};
-  sp.sched_priority = std::min(params_.realtime_priority, 99);
-  const int err = pthread_setschedparam(thread_.native_handle(), SCHED_FIFO, &sp);
-  if (err == 0) {
-    priority_ = "SCHED_FIFO " + std::to_string(sp.sched_priority);
-    return;
-  }
-  const Result<int> rr = rtkit::make_thread_realtime(tid, sp.sched_priority);
-  priority_ = rr ? "SCHED_RR " + std::to_string(rr.value()) + " (RealtimeKit)"
-                 : std::string("normal (SCHED_FIFO refused: ") + std::strerror(err) + "; " + rr.error().message + ")";
-}
-
-std::string HapticLoop::scheduling() const {
-  std::string out = priority_;
-  if (params_.sched_slice_us > 0) {
-    const int err = slice_error_.load();
-    out += err == 0 ? ", slice " + std::to_string(params_.sched_slice_us) + " us"
-                    : std::string(", slice refused (") + std::strerror(err) + ")";
-  }
-  out += params_.timer_slack_ns > 0 ? ", timer slack " + std::to_string(params_.timer_slack_ns) + " ns"
-                                    : std::string(", timer slack: kernel default");
-  out += ", wake spin " + std::to_string(std::max<std::int64_t>(params_.wake_spin_us, 0)) + " us";
-  return out;
-}
 
 void HapticLoop::stop() {
   stop_.store(true);
@@ -222,13 +148,25 @@ void HapticLoop::place(const glm::dvec3& hand_mm, const std::optional<glm::dvec3
     const glm::dvec3& s = pending_place_surface_;
     v -= std::min(0.0, glm::dot(v, s)) * s;  // none of it into the surface under the hand
     kalman_.place(hand_mm, v);
+    sanitizer_.restart();  // else it would clamp the placed sample into a 5 m/s ramp the filter takes for speed
   } else {
-    kalman_ = Kalman3(params_.kalman);
-    have_fed_ = false;
+    restart_filter_now();
   }
-  sanitizer_.restart();  // else it would clamp the placed sample into a 5 m/s ramp the filter takes for speed
   stages_->proxy->place(hand_mm);
   local_.proxy_mm = hand_mm;
+}
+
+// The filter starts afresh from the next sample, at rest there.
+void HapticLoop::restart_filter_now() {
+  kalman_ = Kalman3(params_.kalman);
+  have_fed_ = false;
+  sanitizer_.restart();
+}
+
+void HapticLoop::restart_filter() {
+  std::lock_guard<std::mutex> lock(swap_mutex_);
+  pending_restart_ = true;
+  swap_pending_.store(true, std::memory_order_release);
 }
 
 const world::HapticScene* HapticLoop::scene() const {
@@ -243,6 +181,7 @@ void HapticLoop::adopt_pending_scene(Clock::Ns now) {
   if (!lock.owns_lock()) return;
   swap_pending_.store(false, std::memory_order_relaxed);
   if (std::exchange(pending_home_, false)) stages_->workspace.home();
+  if (std::exchange(pending_restart_, false)) restart_filter_now();
   if (!pending_) {  // a placement alone (place_hand, request_view_home)
     if (pending_place_) place(*pending_place_, pending_place_normal_);
     pending_place_.reset();

@@ -108,6 +108,12 @@ class HapticLoop {
   // into the surface now under it (`surface_normal`, outward), so neither the filter's coasting
   // between two mouse readings nor the proxy's path cuts through the surface (any thread).
   void place_hand(const glm::dvec3& hand_mm, const glm::dvec3& normal, const glm::dvec3& surface_normal);
+  // Any thread: the hand's filter starts afresh at the next tick, at rest at the device's next
+  // sample; the proxy stays where it is. For a device that has just put its hand somewhere new
+  // that is no motion of the person's (the maze window's clutch, docs/maze.md): fed that jump,
+  // the filter would carry the hand, and the proxy after it, on past the new place. Call it
+  // after the device has published the new place.
+  void restart_filter();
   const world::HapticScene* scene() const;  // the one in use (haptic thread / between ticks)
   // Any thread: the view goes back where the scene started ([navigation]'s offset and a rolling
   // surface's turn reset) at the next tick: run's Home key. With `place_hand_mm` (the hand over
@@ -162,6 +168,7 @@ class HapticLoop {
   void adopt_pending_scene(Clock::Ns now);  // haptic thread, at a tick's start
   // Haptic thread: the filter there (at rest, or keeping its velocity across `normal`), the proxy there.
   void place(const glm::dvec3& hand_mm, const std::optional<glm::dvec3>& normal = std::nullopt);
+  void restart_filter_now();  // haptic thread: at rest from the next sample on
 
   Device& device_;
   Clock& clock_;
@@ -184,6 +191,7 @@ class HapticLoop {
   std::atomic<bool> swap_pending_{false};
   std::atomic<bool> home_pending_{false};
   bool pending_home_ = false;  // request_view_home with a placement: both in one tick, under swap_mutex_
+  bool pending_restart_ = false;  // restart_filter, under swap_mutex_
   HapticState local_;        // haptic thread's working copy
   SampleRecorder* recorder_ = nullptr;
   std::array<TickFeed*, kMaxTickFeeds> tick_feeds_{};  // the first tick_feed_count_ are set

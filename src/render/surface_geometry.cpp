@@ -27,9 +27,16 @@ double SurfaceGeometry::nearest_w(const glm::dvec3& probe_mm, double fallback) c
 }
 
 Result<SurfaceGeometry> make_surface_geometry(const Surface& s, int index, const world::DeformableSurfaces* deformables) {
+  SurfaceGeometry g;
+  if (s.deform.enabled) {  // the world built it from the same drawn mesh: not built (a file read) twice
+    const Mesh* drawn = deformables ? deformables->mesh(index) : nullptr;
+    if (!drawn) return make_error("surface " + std::to_string(index) + " is deformable but has no deformed mesh (world::settled_deformables)");
+    g.bounds = mesh_bounds(*drawn);  // the rest mesh's: subdividing copies them and no step rewrites them
+    g.mesh = GpuMesh::upload(*drawn, true);
+    return g;
+  }
   auto mesh = build_drawn_surface_mesh(s);
   if (!mesh) return mesh.error();
-  SurfaceGeometry g;
   g.bounds = mesh_bounds(mesh.value());
   if (!mesh->w4.empty()) {
     g.sheet_positions = mesh->positions;
@@ -37,12 +44,7 @@ Result<SurfaceGeometry> make_surface_geometry(const Surface& s, int index, const
     g.w_min = *std::min_element(g.w4.begin(), g.w4.end());
     g.w_max = *std::max_element(g.w4.begin(), g.w4.end());
   }
-  if (s.deform.enabled) {
-    const Mesh* drawn = deformables ? deformables->mesh(index) : nullptr;
-    if (!drawn) return make_error("surface " + std::to_string(index) + " is deformable but has no deformed mesh (world::settled_deformables)");
-    g.mesh = GpuMesh::upload(*drawn, true);
-  } else
-    g.mesh = GpuMesh::upload(mesh.value());
+  g.mesh = GpuMesh::upload(mesh.value());
   return g;
 }
 

@@ -51,7 +51,8 @@ class DeformableSurfaces {
   // Every deformable surface's drawn mesh and how many steps have changed it (a drawer uploads
   // the mesh when the version is not the one it uploaded last).
   std::vector<Drawn> drawn() const;
-  // The drawn mesh of scene surface `surface` now; null if not deformable.
+  // The drawn mesh of scene surface `surface` now; null if not deformable. Its bounds_min/max stay
+  // the rest mesh's (the renderer's culling bounds): no step rewrites them.
   const Mesh* mesh(int surface) const;
   // The welded vertices of scene surface `surface` now (world mm); empty if not deformable.
   std::vector<glm::dvec3> positions(int surface) const;

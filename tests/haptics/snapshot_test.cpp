@@ -118,7 +118,9 @@ TEST(EventQueueThreadsTest, ProducerAndConsumerOnTwoThreads) {
   bool first = true, whole = true;
   auto consume = [&](const HapticEvent& e) {
     whole = whole && e.value == static_cast<double>(e.tick) && e.label_view() == std::to_string(e.tick);
-    if (!first) EXPECT_GT(e.tick, last);
+    if (!first) {
+      EXPECT_GT(e.tick, last);
+    }
     first = false;
     last = e.tick;
     ++received;

@@ -322,6 +322,9 @@ TEST(DeformableSurfacesTest, TheWorldSettlesAndStepsAndCountsEachStepThatMovedAS
   EXPECT_EQ(w.mesh(1)->positions, by_hand.mesh(1)->positions);
   EXPECT_EQ(w.mesh(1)->normals, by_hand.mesh(1)->normals);
   EXPECT_GT(w.stats().max_displacement_mm, 1.0);
+  // The dented mesh keeps the rest mesh's bounds (the renderer culls with them, unbuilt again).
+  EXPECT_EQ(w.mesh(1)->bounds_min, rest.value().bounds_min);
+  EXPECT_EQ(w.mesh(1)->bounds_max, rest.value().bounds_max);
 
   // The session's clock: the first advance only sets it, the next one steps and moves the
   // pressed surface once more; an advance to the same time does nothing.
