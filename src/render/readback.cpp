@@ -5,33 +5,6 @@
 
 namespace ps {
 
-namespace {
-
-// The surface pass writes its AOV target inside the footprint's rectangle only (the texture
-// keeps older frames' values elsewhere): outside it every pixel is (0, NaN, 0, 0), the values
-// that say "no probe above this pixel" (passes/surface.h). `rect`: GL window coordinates.
-Image no_probe_outside(Image img, const PixelRect& rect) {
-  const float none[4] = {0.0f, kNoProbeDistance, 0.0f, 0.0f};
-  for (int y = 0; y < img.height; ++y)
-    for (int x = 0; x < img.width; ++x)
-      if (!rect.contains(x, img.height - 1 - y))  // img is top row first
-        for (int c = 0; c < img.channels; ++c) img.at(x, y, c) = none[c];
-  return img;
-}
-
-Image pick_channel(const Image& src, int channel) {
-  Image out;
-  out.width = src.width;
-  out.height = src.height;
-  out.channels = 1;
-  out.pixels.resize(static_cast<size_t>(src.width) * src.height);
-  for (int y = 0; y < src.height; ++y)
-    for (int x = 0; x < src.width; ++x) out.at(x, y, 0) = src.at(x, y, channel);
-  return out;
-}
-
-}  // namespace
-
 Image read_region(const gl::Texture& tex, int w, int h, int channels_out, GLenum format, GLenum type) {
   const int in_channels = 4;
   Image img;
@@ -65,14 +38,37 @@ Image read_color_image(const SurfacePass& surface) {
   return read_region(surface.color(), surface.width(), surface.height(), 3, GL_RGBA, GL_UNSIGNED_BYTE);
 }
 
+// The surface pass writes its AOV target inside the footprint's rectangle only (the texture
+// keeps older frames' values elsewhere): outside it every pixel is (0, NaN, 0, 0), the values
+// that say "no probe above this pixel" (passes/surface.h).
+void read_surface_aov_into(const SurfacePass& surface, int channel, Image& out, std::vector<float>& raw) {
+  static constexpr float kNone[4] = {0.0f, kNoProbeDistance, 0.0f, 0.0f};
+  const int w = surface.width(), h = surface.height();
+  raw.resize(static_cast<size_t>(w) * h * 4);
+  glGetTextureSubImage(surface.aov().id(), 0, 0, 0, 0, w, h, 1, GL_RGBA, GL_FLOAT,
+                       static_cast<GLsizei>(raw.size() * sizeof(float)), raw.data());
+  out.width = w;
+  out.height = h;
+  out.channels = 1;
+  out.file_bits = 0;
+  out.pixels.resize(static_cast<size_t>(w) * h);
+  const PixelRect& rect = surface.shadow_rect();  // GL window coordinates: row 0 is the bottom
+  for (int y = 0; y < h; ++y)  // out: top row first
+    for (int x = 0; x < w; ++x)
+      out.at(x, y, 0) = rect.contains(x, h - 1 - y) ? raw[(static_cast<size_t>(h - 1 - y) * w + x) * 4 + channel]
+                                                    : kNone[channel];
+}
+
 Result<Image> read_aov_image(const SurfacePass& surface, const ReductionsPass& reductions, Aov aov) {
   const AovInfo& e = aov_info(aov);
   const int w = surface.width(), h = surface.height();
   switch (e.source) {
-    case AovSource::kSurfaceAov:
-      return pick_channel(no_probe_outside(read_region(surface.aov(), w, h, 4, GL_RGBA, GL_FLOAT),
-                                           surface.shadow_rect()),
-                          e.channel);
+    case AovSource::kSurfaceAov: {
+      Image img;
+      std::vector<float> raw;
+      read_surface_aov_into(surface, e.channel, img, raw);
+      return img;
+    }
     case AovSource::kNormal:
       return read_region(surface.normal(), w, h, 3, GL_RGBA, GL_FLOAT);
     case AovSource::kDisplacement: {

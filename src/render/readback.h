@@ -19,5 +19,9 @@ Image read_region(const gl::Texture& tex, int w, int h, int channels_out, GLenum
 // displacement AOV is drawn on request from the frame's targets (the frame itself uses row sums).
 Image read_color_image(const SurfacePass& surface);
 Result<Image> read_aov_image(const SurfacePass& surface, const ReductionsPass& reductions, Aov aov);
+// Channel `channel` of the surface pass's AOV target into `out` (1 channel, image size, top row
+// first; "no probe" outside shadow_rect()), through `raw`: both keep their storage, so a read
+// every frame (the window's shadow measure) allocates nothing once they have grown.
+void read_surface_aov_into(const SurfacePass& surface, int channel, Image& out, std::vector<float>& raw);
 
 }  // namespace ps

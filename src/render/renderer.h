@@ -121,6 +121,9 @@ class Renderer {
   Image read_color() const;                        // RGB, top row first, image size
   Result<Image> read_aov(Aov aov) const;
   Result<Image> read_aov(const std::string& name) const;  // unknown name: error listing aov_names()
+  // The same image as read_aov(aov), into `out` through `raw`, both reused: a read every frame
+  // (the window's shadow measure) allocates nothing once they have grown to the image.
+  Status read_aov_into(Aov aov, Image& out, std::vector<float>& raw) const;
 
   // An upper bound on the pixels a frame textures (the probe's shadow window seen face-on at
   // the probe, capped by the image): what RendererOptions::expected_frames is weighed with.

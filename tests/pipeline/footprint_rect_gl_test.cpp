@@ -160,6 +160,28 @@ TEST_P(FootprintRectGLTest, AovOutsideTheFootprintIsNoProbeAfterTheProbeMoved) {
       EXPECT_EQ(tex.at(x, y, 0), 0.0f) << x << "," << y;
     }
   EXPECT_GT(old_footprint, 1500);  // pi (8 / 0.3125)^2 ~ 2060 pixels, less the overlap margin
+
+  // The window's reused buffers (read_aov_into, every frame) give read_aov's bits, NaN included,
+  // whatever they held before (here: the older frame, and a raw buffer of another size); a
+  // second read into them keeps their storage (nothing allocated).
+  Image reused = before;
+  std::vector<float> raw(7, 1.0f);
+  for (Aov aov : {Aov::kIntensity, Aov::kDistance, Aov::kTexture, Aov::kNormal}) {
+    ASSERT_TRUE(r.read_aov_into(aov, reused, raw).ok());
+    const Image fresh = r.read_aov(aov).value();
+    ASSERT_EQ(reused.width, fresh.width);
+    ASSERT_EQ(reused.height, fresh.height);
+    ASSERT_EQ(reused.channels, fresh.channels);
+    ASSERT_EQ(reused.pixels.size(), fresh.pixels.size());
+    EXPECT_EQ(std::memcmp(reused.pixels.data(), fresh.pixels.data(), fresh.pixels.size() * sizeof(float)), 0)
+        << aov_info(aov).name;
+  }
+  ASSERT_TRUE(r.read_aov_into(Aov::kIntensity, reused, raw).ok());
+  const float* storage = reused.pixels.data();
+  const float* raw_storage = raw.data();
+  ASSERT_TRUE(r.read_aov_into(Aov::kDistance, reused, raw).ok());
+  EXPECT_EQ(reused.pixels.data(), storage);
+  EXPECT_EQ(raw.data(), raw_storage);
 }
 
 // The mean visible normal is reused while the camera stays and reduced again when it moves: a

@@ -130,8 +130,9 @@ Status open_events(const RunArgs& a, Session& s) {
 // The frame's wall time and, with a device sample in it, the latency from sample to frame.
 void count_frame(Session& s, const HapticState& st, std::chrono::steady_clock::time_point f0) {
   const auto f1 = std::chrono::steady_clock::now();
-  s.frame_ms.push_back(std::chrono::duration<double, std::milli>(f1 - f0).count());
-  if (st.have_sample) s.latency_ms.push_back(static_cast<double>(f1.time_since_epoch().count() - st.sample_clock_ns) * 1e-6);
+  s.last_frame_ms = std::chrono::duration<double, std::milli>(f1 - f0).count();
+  s.frame_ms.add(s.last_frame_ms);
+  if (st.have_sample) s.latency_ms.add(static_cast<double>(f1.time_since_epoch().count() - st.sample_clock_ns) * 1e-6);
 }
 
 Status window_loop(const RunArgs& a, Session& s) {
@@ -179,7 +180,7 @@ Status write_reports(const RunArgs& a, const Session& s) {
   if (!a.stats_path.empty()) {
     const Renderer& r = s.tune->renderer();
     const std::string json = stats_json(r.stats(), gl::backend_name(s.ctx->backend()), s.ctx->egl_device(), s.ctx->renderer(),
-                                        static_cast<int>(s.frame_ms.size()));
+                                        static_cast<int>(s.frame_ms.count()));
     if (Status st = write_file_atomic(a.stats_path, json); !st) return st;
   }
   if (!a.ui_report.empty()) {

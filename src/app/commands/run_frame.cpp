@@ -41,13 +41,13 @@ constexpr double kReadoutPeriodS = 0.25;
 // frame) and, with `distance`, the probe-surface distance the readouts show. Each AOV is one
 // float read-back of the image: ~6 ms at 512^2 on llvmpipe (measured on this project's
 // machine), so the distance is read only when the readouts refresh.
-Result<ShadowMeasure> measure_frame_shadow(const Renderer& r, int w, int h, bool distance) {
-  auto intensity = r.read_aov(Aov::kIntensity);
-  if (!intensity) return intensity.error();
-  if (!distance) return measure_shadow(intensity.value(), nullptr, w, h);
-  auto d = r.read_aov(Aov::kDistance);
-  if (!d) return d.error();
-  return measure_shadow(intensity.value(), &d.value(), w, h);
+// The images are read into `buf`, kept from frame to frame: no allocation per frame (three
+// image-size buffers a frame, allocated and freed, left the heap fragmented over hours).
+Result<ShadowMeasure> measure_frame_shadow(const Renderer& r, int w, int h, bool distance, AovBuffers& buf) {
+  if (Status s = r.read_aov_into(Aov::kIntensity, buf.intensity, buf.raw); !s) return s.error();
+  if (!distance) return measure_shadow(buf.intensity, nullptr, w, h);
+  if (Status s = r.read_aov_into(Aov::kDistance, buf.distance, buf.raw); !s) return s.error();
+  return measure_shadow(buf.intensity, &buf.distance, w, h);
 }
 
 // What the scene adds to the readouts: the button pressed, the flags set, the 4D turn, the roll.
@@ -81,7 +81,7 @@ HudReadouts readouts(const Session& s, const HapticState& st, const ShadowMeasur
   HudReadouts r;
   const std::string& path = s.tune->scene_path();
   r.scene = path.empty() ? cli::scene_display_name(path) : std::filesystem::path(path).filename().string();
-  r.frame_ms = s.frame_ms.empty() ? 0.0 : s.frame_ms.back();
+  r.frame_ms = s.last_frame_ms;
   if (const auto& gpu = s.tune->renderer().stats().gpu_timings_ms; !gpu.empty()) {
     double total = 0.0;
     for (const auto& [pass, ms] : gpu) total += ms;
@@ -246,7 +246,7 @@ std::string screenshot_state(const TuneSession& tune) {
 }
 
 void print_summary(const Session& s) {
-  const Percentiles p = s.loop->period_stats(), lat = percentiles(s.latency_ms), fr = percentiles(s.frame_ms);
+  const Percentiles p = s.loop->period_stats(), lat = s.latency_ms.percentiles(), fr = s.frame_ms.percentiles();
   std::printf("frames %zu (median %.1f ms); haptic ticks %zu, period p50 %.0f us p99 %.0f us p99.9 %.0f us "
               "max %.0f us; ", fr.count, fr.p50, p.count + 1, p.p50, p.p99, p.p999, p.max);
   if (lat.count == 0) std::printf("no device samples (latency not measured)\n");
@@ -260,7 +260,7 @@ Status draw_overlays(const RunArgs& a, Session& s, const HapticState& st, std::u
   const bool refresh = now_s - s.readouts_s >= kReadoutPeriodS;
   int w = 0, h = 0;  // ImGui's units: window coordinates, not framebuffer pixels
   glfwGetWindowSize(s.ctx->window(), &w, &h);
-  auto shadow = measure_frame_shadow(s.tune->renderer(), w, h, refresh || s.readouts_log.is_open());
+  auto shadow = measure_frame_shadow(s.tune->renderer(), w, h, refresh || s.readouts_log.is_open(), s.aov_buffers);
   if (!shadow) return shadow.error();
   // Built once a frame when it is logged, else only at a refresh (4 times a second).
   std::optional<HudReadouts> now;

@@ -19,6 +19,8 @@
 #include "app/window/window_input.h"
 #include "devices/glfw_input.h"
 #include "gl/context.h"
+#include "haptics/loop_stats.h"
+#include "image/image.h"
 #include "tune/tune_session.h"
 
 namespace ps::run_live {
@@ -32,6 +34,12 @@ struct RunArgs {
   bool quiet = false, watch = true, show_probe = false, show_device = false, panel = false;
   bool no_incremental = false;  // RendererOptions::incremental off
   RunEventsDesc events;  // --events, --mute, --audio-device (docs/sound.md)
+};
+
+// The window's per-frame read-backs (run_frame.cpp, measure_frame_shadow), kept between frames.
+struct AovBuffers {
+  Image intensity, distance;
+  std::vector<float> raw;  // the AOV target's four channels, as GL hands them over
 };
 
 struct Session {  // everything the window loop touches, grouped by owner thread
@@ -56,7 +64,11 @@ struct Session {  // everything the window loop touches, grouped by owner thread
   WindowInput input;
   int screenshots_saved = 0;          // numbers the next screenshot_NNNN.png
   PlaneAxes axes;
-  std::vector<double> latency_ms, frame_ms;
+  // Every frame's wall time and sample->frame latency, for the summary at exit: fixed memory
+  // however long the window runs.
+  StreamingPercentiles latency_ms, frame_ms;
+  double last_frame_ms = 0.0;
+  AovBuffers aov_buffers;  // the shadow measure's read-backs, reused every frame
   std::string pending_scene;          // a button's scene action, carried out after this frame
   std::vector<std::string> came_from; // scenes a button switched away from (Backspace goes back)
   bool going_back = false;            // the pending switch is a Backspace: do not remember it
