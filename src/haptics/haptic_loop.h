@@ -24,6 +24,7 @@
 #include <mutex>
 #include <optional>
 #include <string>
+#include <span>
 #include <thread>
 #include <vector>
 
@@ -142,7 +143,7 @@ class HapticLoop {
   // Written by the render thread once per frame, read by the haptic thread (rolling manifold).
   Snapshot<PublishedViewAxes>& view_axes() { return view_axes_; }
   // After stop() (or between run_ticks): measured periods in microseconds.
-  const std::vector<double>& periods_us() const { return periods_us_.values(); }
+  std::span<const double> periods_us() const { return periods_us_.values(); }
   Percentiles period_stats() const { return percentiles(periods_us_.values()); }
   // Storage of the two logs the thread appends to, fixed at construction (tests check it never
   // grows: a reallocation on the 1 kHz thread would stall a tick).

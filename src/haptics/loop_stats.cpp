@@ -6,7 +6,10 @@
 
 namespace ps {
 
-Percentiles percentiles(std::vector<double> v) { return percentiles_in_place(v); }
+Percentiles percentiles(std::span<const double> values) {
+  std::vector<double> v(values.begin(), values.end());
+  return percentiles_in_place(v);
+}
 
 Percentiles percentiles_in_place(std::span<double> v) {
   Percentiles p;

@@ -80,4 +80,17 @@ Result<Image> read_aov_image(const SurfacePass& surface, const ReductionsPass& r
   return make_error("read_aov: unhandled AOV source");  // unreachable: the switch covers AovSource
 }
 
+Status read_aov_image_into(const SurfacePass& surface, const ReductionsPass& reductions, Aov aov, Image& out,
+                          std::vector<float>& raw) {
+  const AovInfo& e = aov_info(aov);
+  if (e.source == AovSource::kSurfaceAov) {
+    read_surface_aov_into(surface, e.channel, out, raw);
+    return ok_status();
+  }
+  auto img = read_aov_image(surface, reductions, aov);  // the other sources are read on request only
+  if (!img) return img.error();
+  out = std::move(img.value());
+  return ok_status();
+}
+
 }  // namespace ps

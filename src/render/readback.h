@@ -2,6 +2,8 @@
 // the image-size region of a padded target, flipped to top row first.
 #pragma once
 
+#include <vector>
+
 #include "core/result.h"
 #include "gl/objects.h"
 #include "image/image.h"
@@ -23,5 +25,9 @@ Result<Image> read_aov_image(const SurfacePass& surface, const ReductionsPass& r
 // first; "no probe" outside shadow_rect()), through `raw`: both keep their storage, so a read
 // every frame (the window's shadow measure) allocates nothing once they have grown.
 void read_surface_aov_into(const SurfacePass& surface, int channel, Image& out, std::vector<float>& raw);
+// read_aov_image into `out`: the surface AOVs through read_surface_aov_into (nothing allocated
+// once the buffers have grown), the others as read_aov_image makes them.
+Status read_aov_image_into(const SurfacePass& surface, const ReductionsPass& reductions, Aov aov, Image& out,
+                          std::vector<float>& raw);
 
 }  // namespace ps

@@ -384,15 +384,7 @@ Image Renderer::read_color() const { return read_color_image(surface_); }
 Result<Image> Renderer::read_aov(Aov aov) const { return read_aov_image(surface_, reductions_, aov); }
 
 Status Renderer::read_aov_into(Aov aov, Image& out, std::vector<float>& raw) const {
-  const AovInfo& e = aov_info(aov);
-  if (e.source == AovSource::kSurfaceAov) {
-    read_surface_aov_into(surface_, e.channel, out, raw);
-    return ok_status();
-  }
-  auto img = read_aov(aov);  // the other sources are read on request only
-  if (!img) return img.error();
-  out = std::move(img.value());
-  return ok_status();
+  return read_aov_image_into(surface_, reductions_, aov, out, raw);
 }
 
 Result<Image> Renderer::read_aov(const std::string& name) const {
