@@ -111,7 +111,12 @@ Status apply_clutch(const MazeWindowParams& p, Window& w, maze::SessionCore& cor
   const PlaneAxes plane = floor_plane(*w.renderer);
   const glm::dvec3 hand = on_plane(plane, st.device_mm), probe = on_plane(plane, st.proxy_mm);
   const double overshoot = glm::length(hand - probe);
-  if (overshoot <= p.clutch_mm) return ok_status();
+  // The proxy follows the filtered hand: a mouse that jumped further than the filter has yet
+  // followed is ahead of the proxy with no wall in the way (seen: a clutch at 7.2 mm, the probe
+  // mid-corridor, when a 30 mm motion came in two polls). Only a proxy held away from the
+  // filtered hand, by a wall, is an overshoot to undo.
+  const double held = glm::length(on_plane(plane, st.position_mm) - probe);
+  if (overshoot <= p.clutch_mm || held <= p.clutch_mm) return ok_status();
   w.input->place(probe);
   clutched = true;
   // The haptic thread reads the placed hand within a tick; 50 ms keeps a frame drawn from a
