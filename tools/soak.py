@@ -343,6 +343,17 @@ def write_table(out, scenes):
     return 1 if any(r["failures"] for r in results) else 0
 
 
+def wait_for_display(timeout_s):
+    """Returns once the X display accepts a connection: twelve soaks starting at once on two
+    cores once had a window fail with "X11: Failed to open display" before its Xvfb served."""
+    deadline = time.monotonic() + timeout_s
+    while subprocess.call(["xdotool", "getdisplaygeometry"], stdout=subprocess.DEVNULL,
+                          stderr=subprocess.DEVNULL) != 0:
+        if time.monotonic() > deadline:
+            raise SystemExit(f"soak.py: the display {os.environ.get('DISPLAY')} did not open in {timeout_s:g} s")
+        time.sleep(0.5)
+
+
 def main():
     p = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
     p.add_argument("scenes", nargs="+", help="scene files, one soak each")
@@ -368,9 +379,12 @@ def main():
         if missing:
             print(f"soak.py: skipped, {' and '.join(missing)} not installed")
             return SKIP
-        return subprocess.call(["xvfb-run", "-a", "-s", "-screen 0 1280x800x24", sys.executable,
+        # -noreset: an X server regenerates when its last client leaves, and a connection made
+        # meanwhile fails (wait_for_display's own probe would cause one).
+        return subprocess.call(["xvfb-run", "-a", "-s", "-screen 0 1280x800x24 -noreset", sys.executable,
                                 os.path.abspath(__file__), "--inner", *sys.argv[1:]])
     os.makedirs(args.out, exist_ok=True)
+    wait_for_display(args.start_timeout)
     results = []
     for scene in args.scenes:
         print(f"soak {scene}: {args.minutes:g} min ...", flush=True)

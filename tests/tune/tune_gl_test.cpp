@@ -8,6 +8,8 @@
 #include <sstream>
 #include <thread>
 
+#include <glm/gtc/matrix_transform.hpp>
+
 #include "scene/scene_io.h"
 #include "support/gl_test.h"
 #include "tune/overrides_file.h"
@@ -222,6 +224,36 @@ TEST_P(TuneGLTest, SetSharesTheBakedTileUnlessTheTextureChanges) {
   ASSERT_TRUE(s->set("materials.table4_1_a.a_min", "0.5"));  // a range [0.5, 1]: another texture
   ASSERT_TRUE(s->set("materials.table4_1_a.a_max", "0.5"));  // all 0.5: half of it, still baked
   EXPECT_GT(s->renderer().stats().bake_ms, 0.0);
+}
+
+// An edit (a panel value, a 4D turn) rebuilds the renderer while a [navigation] or rolling view
+// has moved the camera. The frames after it, under the same pose, must show the same camera,
+// and the view back home (the haptic loop's restart, Home) the camera the scene started with.
+// Keeping the moved camera as the new renderer's own carried the pose twice: the picture
+// stayed turned after Home (seen in the rolling flat torus after a press and a 4D turn).
+TEST_P(TuneGLTest, AnEditWhileTheViewIsMovedKeepsTheCameraWithTheView) {
+  auto s = open_session({kBaked});
+  ASSERT_TRUE(s);
+  const Camera home = s->renderer().camera();
+  FrameInput moved;
+  moved.view = ViewPose{{5.0, -3.0, 2.0}, glm::dmat3(glm::rotate(glm::dmat4(1.0), 0.4, glm::dvec3(0.3, 1.0, 0.2)))};
+  ASSERT_TRUE(s->renderer().render(moved));
+  const Camera before = s->renderer().camera();
+  ASSERT_GT(glm::length(before.position - home.position), 1.0);
+  ASSERT_TRUE(s->set("light.ambient", "0.5"));
+  ASSERT_TRUE(s->renderer().render(moved));
+  auto expect_camera = [](const Camera& got, const Camera& want, const char* what) {
+    // 1e-9 mm: the same rotation applied and taken off again, in doubles.
+    EXPECT_LT(glm::length(got.position - want.position), 1e-9) << what;
+    EXPECT_LT(glm::length(got.target - want.target), 1e-9) << what;
+    EXPECT_LT(glm::length(got.up - want.up), 1e-9) << what;
+  };
+  expect_camera(s->renderer().camera(), before, "after the edit, the same pose");
+  ASSERT_TRUE(s->renderer().render(FrameInput{}));  // no pose change: the camera stays
+  FrameInput back;
+  back.view = ViewPose{};
+  ASSERT_TRUE(s->renderer().render(back));
+  expect_camera(s->renderer().camera(), home, "the view back home");
 }
 
 PS_INSTANTIATE_HEADLESS_BACKENDS(TuneGLTest);
