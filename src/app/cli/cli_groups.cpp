@@ -11,6 +11,7 @@
 #include "app/cli/cli.h"
 #include "gl/egl_device.h"
 #include "haptics/haptic_loop.h"
+#include "haptics/live_heap.h"
 #include "scene/scene_io.h"
 #include "tune/overrides_file.h"
 
@@ -251,6 +252,7 @@ Result<LiveLoopSetup> apply_live_loop(const LiveLoopArgs& args) {
   setup.spare = std::move(spare.value());
   const std::size_t cpus = setup.spare.spare >= 0 ? setup.spare.ours.size() : allowed_cpus().size();
   setup.render_threads = apply_render_threads(args.render_threads, std::max<std::size_t>(cpus, 1));
+  keep_large_blocks_mapped();  // hours of running: worlds coming and going leave RSS flat
   return setup;
 }
 

@@ -97,7 +97,8 @@ struct LiveLoopSetup {
   std::string report() const;  // "render threads 1 (...); spare CPU 1 (...)"
 };
 // Call first, before the GL context and the haptic thread exist: sets LP_NUM_THREADS (unless the
-// user set it) and leaves a CPU spare, confining the calling thread and every thread it starts.
+// user set it) and leaves a CPU spare, confining the calling thread and every thread it starts;
+// large blocks are kept mapped (haptics/live_heap.h).
 // The error (a bad --spare-cpu) is a usage error.
 Result<LiveLoopSetup> apply_live_loop(const LiveLoopArgs& args);
 // -q, --quiet.
