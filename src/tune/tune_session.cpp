@@ -74,7 +74,7 @@ Status TuneSession::rebuild(const std::map<std::string, std::string>& edits, boo
   // The camera as the workspace sees it: a fresh renderer's view pose is the scene's (none), and
   // the next frame's pose (a [navigation] offset, a rolling turn) carries it from there, as it
   // carried the old one. The world camera kept here was carried twice, and once the haptic loop
-  // restarted its view the picture stayed moved by the old pose, Home included (docs/window.md).
+  // restarted its view the picture stayed moved by the old pose, Home included (docs/fourd.md).
   if (renderer_ && keep_camera) fresh.value()->set_camera(renderer_->workspace_camera());
   if (renderer_) fresh.value()->set_show_probe(renderer_->show_probe());
   if (renderer_) fresh.value()->set_show_device(renderer_->show_device());

@@ -6,7 +6,7 @@ must come to rest where the first did (within 0.5 mm, the walks' drift tolerance
 the haptic loop's view; the picture's camera must follow it. It did not after an edit (the 4D
 turn rebuilds the renderer) made while the view was rolled: the rebuilt renderer kept the rolled
 camera as its own, the pose was carried onto it twice, and from then on the loops came to rest
-up to 250 mm apart, the probe out of reach with Home no help.
+87 to 1119 mm apart, the probe out of reach with Home no help.
 
     rolling_home_test.py EXE SCENE OUT_DIR      (exit 77: xvfb-run or xdotool missing)"""
 import json
