@@ -2,13 +2,14 @@
 """The hour-long soak's judgements (tools/soak.py, docs/hardening.md "Hours of running") on
 series built here with known answers: RSS that swings by 5 % every few minutes around a flat
 level is no growth, the same swings on a 2 % climb are; single loops that end away and come back
-are counted but are not drift, a resting point that moves for good is. No window, no X."""
+are counted but are not drift, a resting point that moves for good is; a window that ends early or
+crashes fails its world. No window, no X."""
 import math
 import os
 import sys
 
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "tools"))
-import soak  # noqa: E402
+import soak_measures as soak  # noqa: E402
 
 failures = []
 
@@ -61,6 +62,18 @@ check("drift judged", any("resting point moved" in f for f in soak.judge({**base
 # Loops that ended in another scene (a panel's world) are not compared.
 other = [{"scene": "a.toml", "proxy_mm": [0.0, 0.0, 0.0]}] + [{"scene": "b.toml", "proxy_mm": [99.0, 0.0, 0.0]}] * 5
 check("other scenes", soak.drift_metrics(other)["drift_mm"] is None, "loops in another scene were compared")
+
+# The window's end: closed by the soak after its time with status 0 is the only clean end. A glibc
+# abort 14 s before the end (as once seen, and passed, when the soak read only the readouts) fails.
+check("clean end", soak.exit_error(0, 2400.3, 2400.0, "frames 100 ...\n") is None, "a clean end was judged")
+crash = soak.exit_error(-6, 2386.0, 2400.0, "warning: sound is off\nfree(): corrupted unsorted chunks\n")
+check("crash", crash is not None and "after 2386 of 2400 s" in crash and "SIGABRT" in crash
+      and crash.endswith("free(): corrupted unsorted chunks"), f"got {crash!r}")
+check("crash judged", crash in soak.judge({**base, **flat, "error": crash}), "a crashed window passed")
+early = soak.exit_error(0, 600.0, 2400.0, "")
+check("early quit", early == "the window ended after 600 of 2400 s (exit status 0)", f"got {early!r}")
+late = soak.exit_error(1, 2401.0, 2400.0, "error: x")
+check("failed close", late == "the window ended when closed (exit status 1): error: x", f"got {late!r}")
 
 for f in failures:
     print("FAIL", f)
