@@ -16,8 +16,8 @@ Measured per world (docs/hardening.md, "Hours of running"):
   - frame times (the time between the states two frames drew) in the first and the last tenth;
   - after each loop, the proxy at the resting pointer: where the last tenth's loops leave it (their
     median) against where the first tenth's do, and how many single loops ended away from that;
-  - the window's end: a window that ends before its time (a crash) or does not exit with status 0
-    when closed fails its world.
+  - the window's end: a window that ends before its time (a crash), draws no frame for a whole
+    loop (hung) or does not exit with status 0 when closed fails its world.
 The measures and targets are tools/soak_measures.py.
 Writes OUT/<scene>/{readouts.jsonl, rss.csv, result.json, soak.svg} and OUT/soak.md (one table).
 Exit 0 when every world meets the targets, 1 when one misses, 2 bad input, 77 skipped (no
@@ -111,6 +111,8 @@ def soak_one(args, scene):
                 break  # the window ended mid-loop: the loop did not close
             win.wait_frames_after(win.now_t())
             last = win.frames()[-1]
+            if loops and last["t_s"] == loops[-1]["t_s"]:  # alive, but no frame for a whole loop
+                raise RuntimeError(f"the window drew no frame during loop {len(loops) + 1} (hung)")
             loops.append({"t_s": last["t_s"], "scene": last["scene"], "proxy_mm": last["proxy_mm"],
                           "view_offset_mm": last["view_offset_mm"]})
             if args.progress:
