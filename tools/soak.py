@@ -75,8 +75,6 @@ def rss_sampler(pid, out, stop):
         out.append((time.monotonic(), kb / 1024.0))
 
 
-
-
 def loop_file(args, stem):
     for name in (stem, LOOP_KIND.get(stem, ""), "default"):
         path = os.path.join(args.loop_dir, name + ".loop")
@@ -105,7 +103,7 @@ def soak_one(args, scene):
         win.wait_ready(args.start_timeout)
         sampler.start()
         t_start = time.monotonic()
-        while time.monotonic() - t_start < seconds and proc.poll() is None:
+        while time.monotonic() - t_start < seconds:
             run_loop(win, steps, misses, t_start)
             if proc.poll() is not None:
                 break  # the window ended mid-loop: the loop did not close
@@ -194,8 +192,6 @@ def summarize(stem, out, frames, rss, loops, error, misses=()):
         json.dump({**r, "loop_ends": loops}, f, indent=1)
     write_svg(os.path.join(out, "soak.svg"), stem, rss, frames)
     return r
-
-
 
 
 def write_svg(path, stem, rss, frames):
