@@ -13,6 +13,7 @@
 #include "api/api_context.h"
 #include "image/image.h"
 #include "render/renderer.h"
+#include "render/scene_frames.h"
 #include "scene/scene_io.h"
 
 namespace pseudoshadow {
@@ -207,10 +208,11 @@ Frame Renderer::render(const RenderDesc& desc) {
     ps::RendererOptions options;
     options.expected_frames = frames;
     m.renderer = value_or_throw(ps::open_renderer(m.scene, options));
+    ok_or_throw(ps::render_scene_frames(*m.renderer, frames));  // the CLI's frames, the start state first
   } else {
     m.renderer->set_probe_state(position, velocity);
+    for (int i = 0; i < frames; ++i) ok_or_throw(m.renderer->render_frame());
   }
-  for (int i = 0; i < frames; ++i) ok_or_throw(m.renderer->render_frame());
 
   Frame frame;
   const ps::Image color = m.renderer->read_color();

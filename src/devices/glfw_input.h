@@ -45,6 +45,7 @@ class GlfwInputDevice final : public Device {
   void poll(double now_s, const PointerView& view);
   DeviceSample read(double now_s) override { return latest_.read(); }
   std::string name() const override { return kind_ == Kind::kMouse ? "mouse" : "gamepad"; }
+  Kind kind() const { return kind_; }
   void add_scroll(double notches) { height_.scroll(notches); }
   void add_height_steps(int presses) { height_.step(presses); }
   double height_mm() const { return height_.mm(); }

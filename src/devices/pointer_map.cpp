@@ -59,6 +59,20 @@ glm::dvec2 project_to_window(const PointerView& view, const glm::dvec3& p_mm) {
   return {(ndc.x + 1.0) * 0.5 * view.window_size.x, (1.0 - ndc.y) * 0.5 * view.window_size.y};
 }
 
+std::optional<glm::dvec3> pointer_hit(const PointerView& view, const glm::dvec2& pointer) {
+  // A surface point within this of the plane is on it: the plane's closed-form hit is used, so a
+  // pointer over a flat scene maps exactly as without a floor (the surface search stops within
+  // 0.01 mm of a surface, FreeHeightParams::touch_epsilon_mm).
+  constexpr double kOnPlaneMm = 0.02;
+  const PointerRay ray = pointer_ray(view, pointer);
+  const std::optional<glm::dvec3> on_plane = intersect_plane(ray, view.plane);
+  const std::optional<glm::dvec3> surface = view.floor ? view.floor->first_hit(ray) : std::nullopt;
+  if (!surface || !finite(*surface)) return on_plane;
+  const double above = glm::dot(*surface - view.plane.origin, view.plane.n);
+  if (on_plane && std::abs(above) <= kOnPlaneMm) return on_plane;
+  return *surface - above * view.plane.n;
+}
+
 void HeightControl::set(double mm) {
   if (std::isnan(mm)) return;
   mm_ = std::clamp(mm, params_.min_mm, params_.max_mm);
@@ -84,7 +98,7 @@ void PointerMap::set_hit(const glm::dvec3& hit_mm) {
 
 glm::dvec3 PointerMap::absolute(const PointerView& view, const glm::dvec2& pointer, double height_mm) {
   if (std::isfinite(pointer.x) && std::isfinite(pointer.y) && view.window_size.x > 0.0 && view.window_size.y > 0.0)
-    if (auto h = intersect_plane(pointer_ray(view, pointer), view.plane)) {
+    if (auto h = pointer_hit(view, pointer)) {
       hit_ = *h;
       have_hit_ = true;
     }

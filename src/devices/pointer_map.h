@@ -7,7 +7,13 @@
 //            probe projected along n (passes/probe_depth.h), so its centre is the hit point:
 //            the shadow sits under the pointer on any camera and zoom.
 //            With view.floor set, h counts from the surface under the hit point instead
-//            (centre = hit + (R + lift + h) n): the probe hovers over whatever is there.
+//            (centre = hit + (R + lift + h) n): the probe hovers over whatever is there, and
+//            the hit point is where the pointer's ray first meets that surface (raised or
+//            lowered parts too: a box's top, a button's plate, a face), moved along n onto the
+//            plane; where the ray meets no surface, or meets it on the plane, the plane's hit as
+//            without a floor. The probe is lifted along n, not back along the ray, because the
+//            pseudo-shadow is the probe projected along n: lifted along n, the shadow's centre
+//            is the surface point under the pointer (docs/window.md, "Pointing by ray").
 //   relative (captured pointer): raw counts move the hit point along the plane, screen-aligned
 //            (right on screen = right on the plane), at a fixed mm per count.
 // Units: window positions in the units of the window size (GLFW screen coordinates, origin top
@@ -26,6 +32,11 @@ struct PlaneAxes {  // where the device moves: origin and orthonormal tangents/n
   glm::dvec3 origin{0.0}, t{1.0, 0.0, 0.0}, b{0.0, 1.0, 0.0}, n{0.0, 0.0, 1.0};
 };
 
+// A segment of the pointer's ray: from the near plane (t = 0) to the far plane (t = 1).
+struct PointerRay {
+  glm::dvec3 near_mm{0.0}, far_mm{0.0};
+};
+
 // The surface under the pointer, for a mapping whose height is relative to it (`run`'s mouse):
 // how far along the plane's normal n the centre of a probe sphere of radius R, lowered along
 // -n over `hit_mm` (a point on the plane), first touches a surface, minus R; 0 where nothing is
@@ -35,6 +46,9 @@ class SurfaceFloor {
  public:
   virtual ~SurfaceFloor() = default;
   virtual double lift_mm(const glm::dvec3& hit_mm, const glm::dvec3& n, double probe_radius_mm) const = 0;
+  // The first surface point the pointer's ray meets (the visible surface under the cursor), or
+  // none where it meets nothing between the near and far planes.
+  virtual std::optional<glm::dvec3> first_hit(const PointerRay& ray) const = 0;
 };
 
 // Everything the mapping needs, taken from the render thread's current state at every poll
@@ -49,17 +63,17 @@ struct PointerView {
   const SurfaceFloor* floor = nullptr;
 };
 
-// A segment of the pointer's ray: from the near plane (t = 0) to the far plane (t = 1).
-struct PointerRay {
-  glm::dvec3 near_mm{0.0}, far_mm{0.0};
-};
-
 PointerRay pointer_ray(const PointerView& view, const glm::dvec2& pointer);
 // The ray's point on the plane, or none when the ray is parallel to it or meets it outside the
 // near..far segment (behind the camera, or past what the camera draws).
 std::optional<glm::dvec3> intersect_plane(const PointerRay& ray, const PlaneAxes& plane);
 // Where a world point lands in the window (the inverse of pointer_ray for points in view).
 glm::dvec2 project_to_window(const PointerView& view, const glm::dvec3& p_mm);
+// The absolute mapping's hit point: with a floor, the surface point the ray meets first, moved
+// along n onto the plane (the plane's own hit where that point lies within 0.01 mm of the plane,
+// so a flat scene maps exactly as without a floor); without one, or where the ray meets no
+// surface, the plane's hit. None where neither is met.
+std::optional<glm::dvec3> pointer_hit(const PointerView& view, const glm::dvec2& pointer);
 
 // The person-controlled height h of the probe's lowest point above the hit point, mm.
 struct HeightParams {

@@ -303,7 +303,8 @@ void HapticLoop::servo(double t, double dt, Clock::Ns now) {
   Stages& s = *stages_;
   local_.position_mm = kalman_.position();
   local_.velocity_mm_s = kalman_.velocity();
-  const glm::dvec3 wall = s.workspace.navigate(last_fed_.position_mm, dt, local_);
+  const bool travel = !navigation_held_.load(std::memory_order_relaxed);
+  const glm::dvec3 wall = s.workspace.navigate(last_fed_.position_mm, dt, local_, travel);
   EffectTick fx{s.god_object(), local_, s.feed, events_, t, dt};
   const glm::dvec3 on_probe = wall + s.effects.on_probe(fx);
   const ForceResult f = s.proxy->step(params_.forces, local_.position_mm, local_.velocity_mm_s, t, on_probe);

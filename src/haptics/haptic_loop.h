@@ -122,6 +122,9 @@ class HapticLoop {
   // same tick: a proxy left where the old view had it would be dragged through the surface to
   // the hand, and on a rolling surface that contact turns the view away from home again.
   void request_view_home(std::optional<glm::dvec3> place_hand_mm = std::nullopt);
+  // Any thread: while held, [navigation] does not move the view (its walls still push): run's
+  // window holds it while the pointer is outside it or the window has lost the focus.
+  void hold_navigation(bool hold) { navigation_held_.store(hold, std::memory_order_relaxed); }
   void start();        // spawns the thread
   // After start(): "SCHED_FIFO 80", "SCHED_RR 20 (RealtimeKit)", "normal" or
   // "normal (SCHED_FIFO refused: <why>; RealtimeKit ...: <why>)".
@@ -191,6 +194,7 @@ class HapticLoop {
   glm::dvec3 pending_place_surface_{0.0};           // place_hand's surface_normal, under swap_mutex_
   std::atomic<bool> swap_pending_{false};
   std::atomic<bool> home_pending_{false};
+  std::atomic<bool> navigation_held_{false};  // hold_navigation
   bool pending_home_ = false;  // request_view_home with a placement: both in one tick, under swap_mutex_
   bool pending_restart_ = false;  // restart_filter, under swap_mutex_
   HapticState local_;        // haptic thread's working copy

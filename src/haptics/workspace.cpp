@@ -15,7 +15,12 @@ void Workspace::home() {
   roll_.reset();
 }
 
-glm::dvec3 Workspace::navigate(const glm::dvec3& device_mm, double dt, HapticState& s) {
+glm::dvec3 Workspace::navigate(const glm::dvec3& device_mm, double dt, HapticState& s, bool travel) {
+  // Every tick publishes this scene's pose, also where nothing moves it: a scene without
+  // [navigation] or a rolling surface must not show the pose the last scene left in the state
+  // (Field's -90 mm drawn under the panel), and Home must reach the state there too.
+  s.view_offset_mm = view_.offset;
+  s.view_rotation = view_.rotation;
   if (scene_ == nullptr) return glm::dvec3(0.0);
   const Navigation& nav = scene_->navigation();
   if (!nav.enabled && !scene_->any_fourd_roll()) return glm::dvec3(0.0);  // workspace = world
@@ -27,7 +32,9 @@ glm::dvec3 Workspace::navigate(const glm::dvec3& device_mm, double dt, HapticSta
     // the view must stop when the hand is back inside, not travel on (38 mm back in `run`).
     const glm::dvec3 half = 0.5 * nav.box_size_mm;
     const glm::dvec3 past = device_mm - glm::clamp(device_mm, nav.box_center - half, nav.box_center + half);
-    v = nav.speed_mm_s_per_mm * past;
+    // Held (the pointer out of the window, the window unfocused): the walls still push, the
+    // view stays; a mouse parked past a wall is no push of the person's.
+    if (travel) v = nav.speed_mm_s_per_mm * past;
     const double speed = glm::length(v);
     if (speed > nav.max_speed_mm_s) v *= nav.max_speed_mm_s / speed;
     view_.offset += view_.rotation * v * dt;

@@ -25,8 +25,10 @@ class Workspace {
   // [navigation]: moves the view by the push of `device_mm` (the device's own position, in the
   // workspace) past the box's walls; then (with navigation or a rolling surface) turns the
   // hand's filtered position and velocity (s.position_mm, s.velocity_mm_s, workspace) and
-  // `device_mm` into world ones in `s`. Returns the walls' force (world, N).
-  glm::dvec3 navigate(const glm::dvec3& device_mm, double dt, HapticState& s);
+  // `device_mm` into world ones in `s`. Returns the walls' force (world, N). Always writes the
+  // view's pose into `s` (identity for a scene that does not move it). `travel` false: the view
+  // holds still (the walls still push).
+  glm::dvec3 navigate(const glm::dvec3& device_mm, double dt, HapticState& s, bool travel = true);
   // After the proxy moved: the rolling manifold's step on the sheet contact of `god` (the proxy in
   // the scene; null with the plane model), with the
   // camera's axes (the render thread's, until it publishes them the scene file's); `tether_n`

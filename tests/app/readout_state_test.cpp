@@ -29,6 +29,24 @@ TEST(ProbeReadoutTest, OutOfReachHoveringTouching) {
   EXPECT_EQ(probe_readout(in).hover_mm, 0.0);
 }
 
+// The proxy held 4.6 mm from the hand (2.3 N through the coupling) with the contact flag off, as
+// seen on a button held flush: touching, never "hovering 0.0 mm" with a force. A proxy that is
+// where the hand is (0.01 mm: filter rounding), or where a field's pull puts it, is not held.
+TEST(ProbeReadoutTest, AProxyHeldAwayFromTheHandIsTouching) {
+  ProbeReadoutInput in;
+  in.distance_mm = 0.0;
+  in.hand_mm = {0.0, 0.0, -4.6};
+  const ProbeReadout held = probe_readout(in);
+  EXPECT_EQ(held.state, ProbeState::kTouching);
+  EXPECT_NEAR(held.pressed_mm, 4.6, 1e-12);
+  in.hand_mm = {0.0, 0.0, 0.01};
+  EXPECT_EQ(probe_readout(in).state, ProbeState::kHovering);
+  // A field's (or a body's, a wall's) pull holds the proxy 2 mm from the hand: no surface, hovering.
+  in.hand_mm = {0.0, 0.0, -2.0};
+  in.field_offset_mm = {0.0, 0.0, 2.0};
+  EXPECT_EQ(probe_readout(in).state, ProbeState::kHovering);
+}
+
 // Contact decides first: never "out of reach" with contact (flat_torus's front sheet, issue 27),
 // and the pressed depth is the hand's distance past the proxy (the plank pressed 8 x 0.5 mm).
 TEST(ProbeReadoutTest, ContactIsTouchingWithThePressedDepth) {
@@ -62,18 +80,22 @@ TEST(ReadoutsLogTest, OneJsonLineWithEveryField) {
   f.haptic_hz = 999.5;
   f.jitter_p99_us = 12.25;
   f.dent_mm = 2.5;
+  f.pointer_px = glm::dvec2(256.5, 100.0);
+  f.shadow_px = glm::dvec2(255.0, 102.25);
   const std::string line = readouts_json_line(f);
   EXPECT_EQ(line,
             "{\"frame\": 7, \"t_s\": 1.25, \"scene\": \"panel.toml\", \"state\": \"touching\", \"distance_mm\": 0, "
             "\"pressed_mm\": 1.5, \"penetration_mm\": 0, \"buried_mm\": 0, \"contact\": true, \"force_n\": 0.75, "
             "\"view_offset_mm\": [0, -12.5, 0], \"hand_mm\": [1, 2, 3], \"proxy_mm\": [1, 2, 4.5], "
             "\"button\": {\"index\": 2, \"depth_mm\": 2.9, \"travel_mm\": 3}, \"flags\": [\"light\"], \"keys\": 3, "
-            "\"haptic_hz\": 999.5, \"jitter_p99_us\": 12.25, \"dent_mm\": 2.5}");
+            "\"haptic_hz\": 999.5, \"jitter_p99_us\": 12.25, \"dent_mm\": 2.5, \"pointer_px\": [256.5, 100], "
+            "\"shadow_px\": [255, 102.25]}");
   ReadoutsFrame out;  // out of reach: distance null, no button, a scene without flags
   const std::string far = readouts_json_line(out);
   EXPECT_NE(far.find("\"state\": \"out of reach\", \"distance_mm\": null"), std::string::npos) << far;
   EXPECT_NE(far.find("\"button\": null, \"flags\": null"), std::string::npos) << far;
-  EXPECT_NE(far.find("\"dent_mm\": null}"), std::string::npos) << far;  // no deformable surface
+  EXPECT_NE(far.find("\"dent_mm\": null, \"pointer_px\": null, \"shadow_px\": null}"), std::string::npos)
+      << far;  // no deformable surface, no pointer in the window, no shadow
 }
 
 std::shared_ptr<const world::HapticScene> felt(const std::string& toml) {

@@ -87,6 +87,20 @@ def test_frame_equals_the_cli_png_exr_and_stats(tmp_path):
     assert f.stats["frames"] == 3 and f.stats["shadow_pixels"] > 0
 
 
+SHIPPED = sorted(p.relative_to(SCENES).as_posix() for p in SCENES.glob("**/*.toml")
+                 if p.parent.name not in ("materials", "maze"))  # materials, and the maze's own description
+
+
+@pytest.mark.parametrize("scene", SHIPPED)
+def test_every_shipped_scene_first_frame_equals_the_cli(scene, tmp_path):
+    """The library's first frame is built like `render`'s: the world as the scene starts it
+    (bodies, charges, bands) included, so the bytes are the CLI's for every shipped scene."""
+    run = cli("render", "--scene", SCENES / scene, "--size", "64x64", "--out", "c.png", "-q", cwd=tmp_path)
+    assert run.returncode == 0, run.stderr
+    got = ps.Renderer(scene=SCENES / scene, backend=BACKEND, set=SIZE).render()
+    assert_same(got.color, png_bytes(tmp_path / "c.png"), f"{scene}: the library's colour vs the CLI's PNG")
+
+
 def test_later_renders_continue_from_the_pushed_probe():
     r = ps.Renderer(backend=BACKEND, set=SIZE)  # default scene: the probe 1 mm into the plank
     z0 = 7.0

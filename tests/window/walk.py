@@ -58,7 +58,7 @@ def parse_walk(path):
             op, args = words[0], words[1:]
             checks = {"free": False, "unburied": False, "sheets": False, "still": False, "expect": None,
                       "scene": None, "switches": None, "home": False,
-                      "dent_min": None, "dent_max": None, "panel_still": False, "valid": False, "edited": None}
+                      "dent_min": None, "dent_max": None, "near": None, "panel_still": False, "valid": False, "edited": None}
             plain = []
             for w in args:
                 if w in ("free", "unburied", "sheets", "still", "home", "panel_still", "valid"):
@@ -69,6 +69,8 @@ def parse_walk(path):
                     checks["edited"] = w[len("edited="):]
                 elif w.startswith("dent_min=") or w.startswith("dent_max="):
                     checks[w[:8]] = float(w[9:])
+                elif w.startswith("near="):
+                    checks["near"] = float(w[len("near="):])
                 elif w.startswith("switches="):
                     checks["switches"] = int(w[len("switches="):])
                 elif w.startswith("expect="):
@@ -243,6 +245,20 @@ def tools_module(name):
     return __import__(name)
 
 
+def check_near(step, frame, where, report):
+    """near=PX: on the step's last frame the pseudo-shadow's centre (shadow_px, the --ui-report
+    measure) is within PX window pixels of the pointer (pointer_px)."""
+    pointer, shadow = frame.get("pointer_px"), frame.get("shadow_px")
+    if pointer is None or shadow is None:
+        return [f"{where}: frame {frame['frame']} has no {'pointer' if pointer is None else 'shadow'} on screen"]
+    d = ((pointer[0] - shadow[0]) ** 2 + (pointer[1] - shadow[1]) ** 2) ** 0.5
+    report["max_pointer_shadow_px"] = max(report.get("max_pointer_shadow_px", 0.0), d)
+    if d > step["near"]:
+        return [f"{where}: the shadow's centre {shadow} is {d:.1f} px from the pointer {pointer} at frame "
+                f"{frame['frame']} (at most {step['near']:g})"]
+    return []
+
+
 def check_step(step, frames, report):
     """The step's checks on its frames; returns failure messages."""
     where = f"walk line {step['line']} ({step['op']})"
@@ -302,6 +318,8 @@ def check_step(step, frames, report):
     if step["dent_max"] is not None and (frames[-1].get("dent_mm") or 0.0) > step["dent_max"]:
         out.append(f"{where}: still dented {frames[-1]['dent_mm']:.2f} mm at frame {frames[-1]['frame']}, "
                    f"expected at most {step['dent_max']} mm")
+    if step["near"] is not None:
+        out += check_near(step, frames[-1], where, report)
     if step["expect"]:
         state = frames[-1]["state"].replace(" ", "_")
         if state not in step["expect"]:
@@ -392,7 +410,8 @@ def walk(args):
                 span = [f for f in win.frames() if f["t_s"] < t0][-1:] + [f for f in win.frames() if t0 <= f["t_s"] <= t1]
                 win.wait_frames_after(t1 + 1.0)
                 span += [f for f in win.frames() if t1 < f["t_s"] <= t1 + 1.0]
-            if step["expect"] or step["scene"] or step["home"] or step["dent_max"] is not None or not span:  # the state the step ended in
+            if (step["expect"] or step["scene"] or step["home"] or step["dent_max"] is not None or step["near"] is not None
+                    or not span):  # the state the step ended in
                 span += [f for f in win.frames() if f["t_s"] > t1][:1]
             failures += check_step(step, span, report)
             if step["panel_still"]:  # every frame from the step's start (a flick's are few) to the one after it
@@ -434,6 +453,8 @@ def walk(args):
           f"{report['max_rest_penetration_mm']:.2f} mm at rest ({report['max_sweep_penetration_mm']:.2f} sweeping); taps counted {keys_counted} of {win.keys_sent}, "
           f"view drift at rest {report['max_rest_drift_mm']:.2f} mm"
           + (f", deepest dent {report['max_dent_mm']:.2f} mm" if "max_dent_mm" in report else "")
+          + (f", shadow at most {report['max_pointer_shadow_px']:.1f} px from the pointer at rest"
+             if "max_pointer_shadow_px" in report else "")
           + (f", panel still on {report['panel_frames_checked']} frames" if "panel_frames_checked" in report else ""))
     for f in failures:
         print(f"FAIL {f}")

@@ -242,6 +242,53 @@ TEST(UniverseTest, FieldsBoxMovesTheViewWhileTheHandPushesAWall) {
   EXPECT_NEAR((loop2.state().read().view_offset_mm.x - x0) / 0.4, nav.max_speed_mm_s, 1e-6);
 }
 
+// Field pushed 45 mm past its +x wall (a mouse at the window's edge), then 400 ticks held (run's
+// pointer outside the window): the view runs at max_speed_mm_s, then stays where it was while
+// the wall still pushes the hand back.
+TEST(UniverseTest, FieldsViewHoldsWhileNavigationIsHeld) {
+  auto field = load_scene(universe("field.toml"));
+  ASSERT_TRUE(field) << field.error().message;
+  auto hf = HapticScene::build(field.value());
+  ASSERT_TRUE(hf) << hf.error().message;
+  LogDevice hard({{0.0, {95, 0, 20}, 0, true}, {10.0, {95, 0, 20}, 0, true}}, true, "hard");
+  FakeClock clock;
+  HapticLoop loop(hard, clock, HapticLoopParams{}, &hf.value());
+  loop.run_ticks(500);
+  const glm::dvec3 x0 = loop.state().read().view_offset_mm;
+  ASSERT_GT(x0.x, 50.0);
+  loop.hold_navigation(true);
+  loop.run_ticks(400);
+  EXPECT_EQ(loop.state().read().view_offset_mm, x0) << "held: the view stays";
+  EXPECT_LT(loop.state().read().field_force_n.x, -10.0) << "held: the wall still pushes";
+  loop.hold_navigation(false);
+  loop.run_ticks(100);
+  EXPECT_GT(loop.state().read().view_offset_mm.x, x0.x + 20.0) << "released: the push moves it again";
+}
+
+// Field's view stays in Field: after it travelled, a switch to the panel (no [navigation], the
+// scene its button and Backspace go back to) publishes the panel's own view, and Home there
+// keeps it (the leak drew the panel 90 mm off, its shadow ~390 px from the pointer).
+TEST(UniverseTest, FieldsViewDoesNotLeakIntoThePanel) {
+  auto field = load_scene(universe("field.toml"));
+  auto panel = load_scene(universe("panel.toml"));
+  ASSERT_TRUE(field && panel);
+  auto hf = HapticScene::build(field.value());
+  auto hp = HapticScene::build(panel.value());
+  ASSERT_TRUE(hf && hp);
+  LogDevice hard({{0.0, {95, 0, 20}, 0, true}, {10.0, {95, 0, 20}, 0, true}}, true, "hard");
+  FakeClock clock;
+  HapticLoop loop(hard, clock, HapticLoopParams{}, &hf.value());
+  loop.run_ticks(500);
+  ASSERT_GT(loop.state().read().view_offset_mm.x, 50.0);
+  loop.replace_scene(std::make_shared<const HapticScene>(std::move(hp.value())), "panel.toml", glm::dvec3(0, 0, 20));
+  loop.run_ticks(10);
+  EXPECT_EQ(loop.state().read().view_offset_mm, glm::dvec3(0.0)) << "Field's view leaked into the panel";
+  EXPECT_EQ(loop.state().read().view_rotation, glm::dmat3(1.0));
+  loop.request_view_home();
+  loop.run_ticks(10);
+  EXPECT_EQ(loop.state().read().view_offset_mm, glm::dvec3(0.0));
+}
+
 }  // namespace
 }  // namespace ps::world
 

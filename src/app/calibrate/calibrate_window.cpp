@@ -8,6 +8,7 @@
 #include <backends/imgui_impl_opengl3.h>
 
 #include "app/window/imgui_scope.h"
+#include "app/window/text_box.h"
 
 #include <algorithm>
 #include <cmath>
@@ -120,12 +121,8 @@ void present(GLFWwindow* win, const gl::Texture* pair, const char* question, con
   if (pair)
     ImGui::GetBackgroundDrawList()->AddImage(reinterpret_cast<ImTextureID>(static_cast<std::intptr_t>(pair->id())),
                                              ImVec2(0, 0), ImGui::GetIO().DisplaySize, ImVec2(0, 1), ImVec2(1, 0));
-  ImGui::SetNextWindowPos(ImVec2(10, 10));
-  ImGui::SetNextWindowBgAlpha(0.7f);
-  ImGui::Begin("question", nullptr, ImGuiWindowFlags_NoDecoration | ImGuiWindowFlags_AlwaysAutoResize | ImGuiWindowFlags_NoInputs);
-  ImGui::Text("%s  Left / Right arrow.  Esc stops (every answer is kept).", question);
-  ImGui::TextUnformatted(progress.c_str());
-  ImGui::End();
+  draw_text_box("question", ImVec2(10, 10),
+                std::string(question) + "  Left / Right arrow.  Esc stops (every answer is kept).\n" + progress, 1.0f);
   ImGui::Render();
   ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
   glfwSwapBuffers(win);

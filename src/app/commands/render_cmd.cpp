@@ -13,6 +13,7 @@
 #include "gl/context.h"
 #include "prepare/prepare.h"
 #include "render/renderer.h"
+#include "render/scene_frames.h"
 
 namespace ps {
 
@@ -77,20 +78,15 @@ void declare(cli::Command& cmd, RenderArgs& a) {
   cli::add_quiet_option(app, a.quiet);
 }
 
-// The first frame shows the world where the scene starts it (bodies, charges, bands); the probe
-// then moves by each frame's displacement.
+// The scene's frames as the library draws them too (render/scene_frames.h), with a progress line.
 Status run_frames(Renderer& r, int frames, bool progress) {
   const auto t0 = std::chrono::steady_clock::now();
-  const FrameInput start = start_frame_input(r.scene());
-  for (int i = 0; i < frames; ++i) {
-    if (auto s = r.render(i == 0 ? start : FrameInput{}); !s) return s.error();
-    if (progress) {
-      const double secs = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-      std::fprintf(stderr, "\rframe %d/%d  %.1f s", i + 1, frames, secs);
-      if (i + 1 == frames) std::fputc('\n', stderr);
-    }
-  }
-  return ok_status();
+  return render_scene_frames(r, frames, [&](int i) {
+    if (!progress) return;
+    const double secs = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+    std::fprintf(stderr, "\rframe %d/%d  %.1f s", i + 1, frames, secs);
+    if (i + 1 == frames) std::fputc('\n', stderr);
+  });
 }
 
 // Every output path is checked before the render (a typo in --stats must not cost a render) and

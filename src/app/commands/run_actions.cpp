@@ -107,10 +107,22 @@ Status save_screenshots(Session& s, int w, int h) {
   return ok_status();
 }
 
+// The mouse's pointer out of the window or the focus elsewhere: [navigation] holds the view (a
+// mouse left past a wall would drive it on, 300 mm/s); a gamepad's only without the focus; a
+// recorded or scripted device never (it is not the window's). Back again: the cursor is a new
+// origin for a captured mouse, so the jump GLFW saw meanwhile never reaches the probe.
+void follow_window_presence(Session& s) {
+  WindowInput& in = s.input;
+  const bool mouse = s.glfw_device && s.glfw_device->kind() == GlfwInputDevice::Kind::kMouse;
+  s.loop->hold_navigation(s.glfw_device && !(in.focused && (in.pointer_inside || !mouse)));
+  if (std::exchange(in.regained, false) && s.glfw_device) s.glfw_device->rebase();
+}
+
 }  // namespace
 
 Status handle_keys(Session& s, int w, int h) {
   WindowInput& in = s.input;
+  follow_window_presence(s);
   if (in.toggle_capture && s.glfw_device) s.glfw_device->toggle_capture();
   in.toggle_capture = false;
   if (s.ui->panel().wants_input()) {  // scrolling or dragging over the panel: not for camera or probe

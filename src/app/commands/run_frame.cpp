@@ -91,7 +91,9 @@ HudReadouts readouts(const Session& s, const HapticState& st, const ShadowMeasur
   r.jitter_p99_us = st.jitter_p99_us;
   // A button's face pushing back is a touch too (the proxy rests on it while it travels).
   const bool on_button = st.button_pressed >= 0 && st.button_depth_mm > 0.0;
-  r.probe = probe_readout({shadow.min_distance_mm, st.in_contact || on_button, st.position_mm, st.proxy_mm});
+  const double coupling = s.loop->params().forces.coupling_n_per_mm;
+  r.probe = probe_readout({shadow.min_distance_mm, st.in_contact || on_button, st.position_mm, st.proxy_mm,
+                           st.field_force_n / std::max(coupling, 1e-9)});
   r.speed_mm_s = glm::length(st.velocity_mm_s);
   r.penetration_mm = s.tune->renderer().stats().max_penetration_mm;
   r.force_n = glm::length(st.force_n);
@@ -130,6 +132,12 @@ Status log_readouts(Session& s, const HapticState& st, const ShadowMeasure& shad
   f.haptic_hz = r.haptic_hz;
   f.jitter_p99_us = r.jitter_p99_us;
   if (const DeformationStats& d = s.tune->renderer().deformation(); d.surfaces > 0) f.dent_mm = d.max_displacement_mm;
+  int w = 0, h = 0;
+  double x = 0.0, y = 0.0;
+  glfwGetWindowSize(s.ctx->window(), &w, &h);
+  glfwGetCursorPos(s.ctx->window(), &x, &y);
+  if (x >= 0.0 && y >= 0.0 && x < w && y < h) f.pointer_px = glm::dvec2(x, y);
+  if (shadow.bbox) f.shadow_px = glm::dvec2(0.5 * (shadow.bbox->x0 + shadow.bbox->x1), 0.5 * (shadow.bbox->y0 + shadow.bbox->y1));
   return s.readouts_log.write(f);
 }
 

@@ -8,6 +8,7 @@
 #include <cstdio>
 
 #include "app/session/session.h"
+#include "app/window/text_box.h"
 #include "frame/haptic_frame.h"
 #include "maze/maze_screen.h"
 #include "render/present.h"
@@ -15,15 +16,6 @@
 namespace ps::maze_window {
 
 namespace {
-
-void text_window(const char* id, ImVec2 pos, const std::string& text, float scale) {
-  ImGui::SetNextWindowPos(pos);
-  ImGui::SetNextWindowBgAlpha(0.75f);
-  ImGui::Begin(id, nullptr, ImGuiWindowFlags_NoDecoration | ImGuiWindowFlags_AlwaysAutoResize | ImGuiWindowFlags_NoInputs);
-  ImGui::SetWindowFontScale(scale);
-  ImGui::TextUnformatted(text.c_str());
-  ImGui::End();
-}
 
 // A faint ring where the hand is, once a wall holds the probe away from it: the participant sees
 // how far the hand has run on (the clutch brings it back past MazeWindowParams::clutch_mm).
@@ -77,10 +69,10 @@ Status draw(Window& w, const maze::MazeDesc& desc, const HapticState& st, const 
   ImGui_ImplGlfw_NewFrame();
   ImGui::NewFrame();
   if (ov.show_hand && st.have_sample) draw_hand(w, st);
-  if (!ov.instructions.empty()) text_window("##instructions", ImVec2(30, 60), ov.instructions, 1.3f);
-  if (!ov.label.empty()) text_window("##label", ImVec2(10, 10), ov.label, 2.0f);
-  if (st.time_s < ov.score_until) text_window("##score", ImVec2(40, 80), ov.score, 1.6f);
-  if (ov.done) text_window("##done", ImVec2(40, fh - 60.0f), "The session is over.", 1.6f);
+  if (!ov.instructions.empty()) draw_text_box("##instructions", ImVec2(30, 60), ov.instructions, 1.3f);
+  if (!ov.label.empty()) draw_text_box("##label", ImVec2(10, 10), ov.label, 2.0f);
+  if (st.time_s < ov.score_until) draw_text_box("##score", ImVec2(40, 80), ov.score, 1.6f);
+  if (ov.done) draw_text_box("##done", ImVec2(40, fh - 60.0f), "The session is over.", 1.6f);
   ImGui::Render();
   ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
   glfwSwapBuffers(w.ctx->window());

@@ -48,6 +48,23 @@ double FreeHeight::lift_mm(const glm::dvec3& hit_mm, const glm::dvec3& n_ws, dou
   return 0.0;
 }
 
+std::optional<glm::dvec3> FreeHeight::first_hit(const PointerRay& ray) const {
+  if (!scene_) return std::nullopt;
+  const glm::dvec3 from = rotation_ * ray.near_mm + offset_mm_;
+  const glm::dvec3 along = rotation_ * (ray.far_mm - ray.near_mm);
+  const double length = glm::length(along);
+  if (!(length > 0.0) || !std::isfinite(length)) return std::nullopt;
+  const glm::dvec3 dir = along / length;
+  double t = 0.0;
+  for (int i = 0; i < params_.ray_max_steps && t <= length; ++i) {
+    const world::Contact c = scene_->closest(from + t * dir, params_.ray_query_mm);
+    if (c.hit && c.distance_mm < params_.touch_epsilon_mm)
+      return glm::transpose(rotation_) * (from + t * dir - offset_mm_);
+    t += c.hit ? c.distance_mm : params_.ray_query_mm;
+  }
+  return std::nullopt;  // past the far plane, or grazing a surface for every step: the plane
+}
+
 double buried_mm(const world::HapticScene& scene, const glm::dvec3& centre_mm) {
   // The overlap only: which side of a surface is inside is not known for an open mesh (Suzanne's
   // eyes) or a surface embedded in 4D (its sheets cross), so a centre deeper than R inside a

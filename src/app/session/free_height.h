@@ -3,6 +3,9 @@
 // proxy placed at it after a scene switch, a 4D turn, a panel edit or a reload - is on the free
 // side of whatever is under the pointer, and the height keys always free it (docs/window.md,
 // "When the hand is inside geometry").
+// The pointer's point is where its ray first meets the geometry (first_hit: sphere tracing, each
+// step the distance to the nearest surface, so it cannot step through a thin shell), moved onto
+// the plane (devices/pointer_map.h, pointer_hit).
 // A probe sphere of radius R is lowered along -n over the pointer's point on the plane, from
 // above everything (the camera's height over the plane), by conservative advancement (each step
 // the gap to the nearest surface, so it cannot pass through a thin shell) until it touches; a
@@ -12,6 +15,7 @@
 #pragma once
 
 #include <memory>
+#include <optional>
 
 #include <glm/glm.hpp>
 
@@ -25,6 +29,10 @@ struct FreeHeightParams {
   double below_plane_mm = 300.0;  // how far under the plane a surface is still "under the pointer"
   double touch_epsilon_mm = 0.01;  // gap at which the lowered sphere counts as touching
   int max_steps = 128;          // conservative-advancement steps (then: the plane, as without a floor)
+  // The pointer's ray is marched the same way (each step the gap to the nearest surface), with
+  // longer steps through free space: a camera's far plane can be metres away.
+  double ray_query_mm = 256.0;
+  int ray_max_steps = 512;  // a ray grazing a surface converges slowly; then the plane
 };
 
 class FreeHeight final : public SurfaceFloor {
@@ -42,6 +50,9 @@ class FreeHeight final : public SurfaceFloor {
   // Where the lowering starts, mm above the plane (the camera's height over it: above what it sees).
   void set_top_mm(double top_mm) { top_mm_ = top_mm; }
   double lift_mm(const glm::dvec3& hit_mm, const glm::dvec3& n, double probe_radius_mm) const override;
+  // Where the pointer's ray (workspace) first meets the haptic geometry, in the workspace: the
+  // visible surface under the cursor (a button's pocket counts as the button's place).
+  std::optional<glm::dvec3> first_hit(const PointerRay& ray) const override;
   // The outward normal of the surface the last lift_mm() found, in the workspace (the plane's
   // normal where nothing was under the pointer): the hand placed over it coasts along it.
   const glm::dvec3& last_normal() const { return last_normal_; }

@@ -4,7 +4,9 @@
 //   hovering d mm  no contact; d = the smallest probe-surface distance over the shadow (>= 0)
 //   touching       the haptic proxy is in contact; pressed p mm = how far the hand is past the
 //                  proxy (|hand - proxy|): the pseudo-haptic depth the person pushed in
-// Contact decides first, so "out of reach" never comes with contact.
+// Contact decides first, so "out of reach" never comes with contact. Contact is the proxy's: in
+// contact, or held away from where the hand (and the fields' pull) would put it: a surface's push
+// never reads as hovering.
 #pragma once
 
 #include <optional>
@@ -21,6 +23,9 @@ struct ProbeReadoutInput {
   bool in_contact = false;            // the haptic proxy touches a surface
   glm::dvec3 hand_mm{0.0};            // the filtered device position (world)
   glm::dvec3 proxy_mm{0.0};           // the proxy (world)
+  // Where fields, bodies and walls alone put the proxy from the hand (their force through the
+  // coupling: HapticState::field_force_n / k): that offset is no surface's hold.
+  glm::dvec3 field_offset_mm{0.0};
 };
 
 struct ProbeReadout {

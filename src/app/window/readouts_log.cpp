@@ -19,6 +19,7 @@ std::string num(double v) {
 }
 
 std::string vec(const glm::dvec3& v) { return "[" + num(v.x) + ", " + num(v.y) + ", " + num(v.z) + "]"; }
+std::string vec(const std::optional<glm::dvec2>& v) { return v ? "[" + num(v->x) + ", " + num(v->y) + "]" : "null"; }
 
 // Scene file names and flag names are plain, but a quote or backslash must not break the line.
 std::string str(const std::string& s) {
@@ -56,7 +57,8 @@ std::string readouts_json_line(const ReadoutsFrame& f) {
          ", \"proxy_mm\": " + vec(f.proxy_mm) + ", \"button\": " + button + ", \"flags\": " + flags +
          ", \"keys\": " + std::to_string(f.keys) +
          ", \"haptic_hz\": " + num(f.haptic_hz) + ", \"jitter_p99_us\": " + num(f.jitter_p99_us) +
-         ", \"dent_mm\": " + (f.dent_mm ? num(*f.dent_mm) : std::string("null")) + "}";
+         ", \"dent_mm\": " + (f.dent_mm ? num(*f.dent_mm) : std::string("null")) +
+         ", \"pointer_px\": " + vec(f.pointer_px) + ", \"shadow_px\": " + vec(f.shadow_px) + "}";
 }
 
 ReadoutsLog::~ReadoutsLog() { (void)close(); }

@@ -5,7 +5,9 @@
 // force_n, view_offset_mm, hand_mm, proxy_mm, button ({index, depth_mm, travel_mm} or null),
 // flags (names on, or null when the scene has none), keys (key presses handled this frame),
 // haptic_hz and jitter_p99_us (the haptic loop over the last second: what tools/soak.sh follows),
-// dent_mm (the deepest dent of a deformable surface as drawn; null when the scene has none).
+// dent_mm (the deepest dent of a deformable surface as drawn; null when the scene has none),
+// pointer_px (the cursor in window pixels; null outside the window) and shadow_px (the centre of
+// the pseudo-shadow's bounding box in window pixels, the measure --ui-report gives; null: none).
 #pragma once
 
 #include <cstdint>
@@ -41,6 +43,7 @@ struct ReadoutsFrame {
   double haptic_hz = 0.0;           // the haptic loop's rate over the last second
   double jitter_p99_us = 0.0;       // |period - nominal|, p99 over the last second
   std::optional<double> dent_mm;    // largest vertex displacement of the deformable surfaces
+  std::optional<glm::dvec2> pointer_px, shadow_px;  // window pixels (origin top left, y down)
 };
 
 // The frame as one JSON line (no newline); numbers with up to 4 decimals (0.1 um: far below any

@@ -47,6 +47,19 @@ void on_cursor(GLFWwindow* w, double x, double y) {
   in.last_y = y;
 }
 
+// Left or unfocused: a mouse parked past a [navigation] wall must not move the view on.
+void on_enter(GLFWwindow* w, int entered) {
+  WindowInput& in = input_of(w);
+  in.regained = in.regained || (entered && !in.pointer_inside);
+  in.pointer_inside = entered != 0;
+}
+
+void on_focus(GLFWwindow* w, int focused) {
+  WindowInput& in = input_of(w);
+  in.regained = in.regained || (focused && !in.focused);
+  in.focused = focused != 0;
+}
+
 }  // namespace
 
 void handle_key(WindowInput& in, int key, int action, int mods) {
@@ -101,6 +114,9 @@ void install_window_input(GLFWwindow* window, WindowInput& input) {
   glfwSetScrollCallback(window, on_scroll);
   glfwSetMouseButtonCallback(window, on_button);
   glfwSetCursorPosCallback(window, on_cursor);
+  glfwSetCursorEnterCallback(window, on_enter);  // before WindowUi: ImGui chains to these
+  glfwSetWindowFocusCallback(window, on_focus);
+  input.pointer_inside = glfwGetWindowAttrib(window, GLFW_HOVERED) == GLFW_TRUE;
 }
 
 void apply_orbit_zoom(WindowInput& in, Camera& camera) {

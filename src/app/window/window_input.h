@@ -34,6 +34,9 @@ struct WindowInput {
   int key_presses = 0;          // every key pressed (any key hides the help overlay)
   bool keys_captured = false;   // set by the panel while it has the keyboard: S/M/Q ignored
   bool dragging = false;        // right button held
+  // The pointer over the window and the window focused (GLFW's cursor-enter and focus events):
+  // [navigation] travels only while both hold. `regained`: one came back since the last frame.
+  bool pointer_inside = true, focused = true, regained = false;
   double last_x = 0.0, last_y = 0.0;
   double orbit_dx = 0.0, orbit_dy = 0.0;  // accumulated drag, pixels
   // 1 ... 6 (Shift: the other way): steps of a 4D turn of the scene's fourd surfaces in the xy,

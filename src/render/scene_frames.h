@@ -1,0 +1,19 @@
+// A scene's frames as `pseudoshadow render` draws them, for every caller that renders a scene
+// without a haptic loop (the CLI's render, the C++ API and so the Python module): the first frame
+// shows the world where the scene starts it (bodies, charges, bands: start_frame_input), the
+// rest hold it while the probe moves by each frame's displacement. One function, so the library's
+// first image is the CLI's byte for byte (tests/api).
+#pragma once
+
+#include <functional>
+
+#include "core/result.h"
+#include "render/renderer.h"
+
+namespace ps {
+
+// `frames` frames of `renderer`'s scene; `after_frame(i)` (optional) is called after frame i
+// (0-based): the CLI's progress line.
+Status render_scene_frames(Renderer& renderer, int frames, const std::function<void(int)>& after_frame = {});
+
+}  // namespace ps

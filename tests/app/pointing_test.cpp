@@ -1,0 +1,140 @@
+// Pointing by ray (devices/pointer_map.h, pointer_hit; app/session/free_height.h, first_hit):
+// the mouse's probe hovers over the visible surface under the cursor, so its pseudo-shadow (the
+// probe projected along the plane's normal) is centred on the pointer over raised parts too, on
+// a perspective camera. The expected points are closed-form ray/box/plane intersections, not the
+// sphere tracing under test. No GL, no window.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <optional>
+#include <string>
+
+#include "app/session/free_height.h"
+#include "devices/pointer_map.h"
+#include "scene/scene_io.h"
+#include "world/haptic_scene.h"
+
+namespace ps {
+namespace {
+
+std::shared_ptr<const world::HapticScene> felt(const std::string& toml) {
+  auto scene = parse_scene(toml, "f.toml", ".", {});
+  EXPECT_TRUE(scene) << scene.error().message;
+  auto built = world::HapticScene::build(scene.value());
+  EXPECT_TRUE(built) << built.error().message;
+  return std::make_shared<const world::HapticScene>(std::move(built.value()));
+}
+
+// A 40 x 40 mm block standing 30 mm out of the plane z = 0 (Weight's back button and Suzanne's
+// brow are raised like this above their pointer planes).
+constexpr const char* kBlockOnPlane =
+    "[probe]\nradius_mm = 8.0\n[materials.m]\nlambda_min = 0.5\n"
+    "[[surfaces]]\ntype = \"plane\"\nsize_mm = [4000.0, 4000.0]\nmaterial = \"m\"\n"
+    "[[surfaces]]\ntype = \"box\"\ncenter = [0.0, 0.0, 15.0]\nsize_mm = [40.0, 40.0, 30.0]\nmaterial = \"m\"\n";
+constexpr double kTop = 30.0, kHalf = 20.0, kRadius = 8.0;
+
+// The default camera (45 degrees down, perspective) looking at the plane's origin.
+PointerView perspective_view(const FreeHeight* floor) {
+  PointerView v;
+  v.camera.position = {0.0, -120.0, 120.0};
+  v.camera.fov_y_deg = 40.0;
+  v.window_size = {640.0, 480.0};
+  v.aspect = 640.0 / 480.0;
+  v.probe_radius_mm = kRadius;
+  v.floor = floor;
+  return v;
+}
+
+// Closed form: where the ray first meets the block's top or the plane (the block's sides are
+// not asked about: the tests point at neither).
+std::optional<glm::dvec3> visible_point(const PointerRay& ray) {
+  const glm::dvec3 d = ray.far_mm - ray.near_mm;
+  const double t_top = (kTop - ray.near_mm.z) / d.z;
+  const glm::dvec3 top = ray.near_mm + t_top * d;
+  if (std::abs(top.x) < kHalf && std::abs(top.y) < kHalf) return top;
+  const glm::dvec3 floor = ray.near_mm + (-ray.near_mm.z / d.z) * d;
+  if (std::abs(floor.x) < kHalf + 1.0 && std::abs(floor.y) < kHalf + 1.0) return std::nullopt;  // a side face
+  return floor;
+}
+
+// Over the block's top and over the plane around it, every pointer position puts the probe
+// straight above the visible point under the cursor, at the person's height above that
+// surface, so the shadow's centre projects back onto the pointer. Tolerances: 0.02 mm, the ray
+// march and the lowering each stop within 0.01 mm of a surface; 0.05 px follows from that at
+// this camera's scale (~3 px per mm at the target).
+TEST(PointingTest, TheShadowIsUnderThePointerOverRaisedParts) {
+  FreeHeight floor;
+  floor.set_scene(felt(kBlockOnPlane));
+  floor.set_top_mm(200.0);
+  const PointerView view = perspective_view(&floor);
+  const double h = 2.0;
+  int on_top = 0, on_plane = 0;
+  for (double y = 40.0; y < 480.0; y += 40.0)
+    for (double x = 40.0; x < 640.0; x += 40.0) {
+      const std::optional<glm::dvec3> q = visible_point(pointer_ray(view, {x, y}));
+      if (!q) continue;
+      // Over the plane within R of the block the lowered sphere rests on the block's edge.
+      const bool top = q->z > 1.0;
+      if (!top && std::max(std::abs(q->x), std::abs(q->y)) < kHalf + kRadius + 0.5) continue;
+      PointerMap map;
+      const glm::dvec3 centre = map.absolute(view, {x, y}, h);
+      SCOPED_TRACE(testing::Message() << "pointer " << x << "," << y);
+      EXPECT_NEAR(centre.x, q->x, 0.02);
+      EXPECT_NEAR(centre.y, q->y, 0.02);
+      EXPECT_NEAR(centre.z, q->z + kRadius + h, 0.02);
+      const glm::dvec2 shadow = project_to_window(view, *q);
+      EXPECT_NEAR(glm::length(shadow - glm::dvec2(x, y)), 0.0, 0.05);
+      (top ? on_top : on_plane)++;
+    }
+  EXPECT_GE(on_top, 8);
+  EXPECT_GE(on_plane, 40);
+}
+
+// What the old mapping did (the plane's hit, then dropped straight down onto the block): at the
+// block's centre the shadow lands tens of pixels from the pointer. The test above fails there.
+TEST(PointingTest, ThePlanesHitAloneMissesTheRaisedTop) {
+  const PointerView view = perspective_view(nullptr);
+  const glm::dvec2 pointer = project_to_window(view, {0.0, 0.0, kTop});
+  const std::optional<glm::dvec3> plane_hit = intersect_plane(pointer_ray(view, pointer), PlaneAxes{});
+  ASSERT_TRUE(plane_hit);
+  const glm::dvec2 dropped = project_to_window(view, {plane_hit->x, plane_hit->y, kTop});
+  EXPECT_GT(glm::length(dropped - pointer), 30.0);
+}
+
+// Where only the plane is under the pointer, the mapping is exactly today's (the same bits), so
+// walks over flat scenes replay unchanged; where the ray meets nothing, the plane's hit too.
+TEST(PointingTest, AFlatSceneMapsExactlyAsWithoutAFloor) {
+  FreeHeight floor;
+  floor.set_scene(felt("[materials.m]\nlambda_min = 0.5\n[[surfaces]]\ntype = \"plane\"\nsize_mm = [4000.0, 4000.0]\n"
+                       "material = \"m\"\n"));
+  FreeHeight nothing;
+  nothing.set_scene(felt("[materials.m]\nlambda_min = 0.5\n[[surfaces]]\ntype = \"sphere\"\n"
+                         "center = [0.0, 0.0, -900.0]\nradius_mm = 1.0\nmaterial = \"m\"\n"));
+  for (const FreeHeight* f : {&floor, &nothing})
+    for (double x = 10.0; x < 640.0; x += 70.0)
+      for (double y = 10.0; y < 480.0; y += 70.0) {
+        const std::optional<glm::dvec3> with = pointer_hit(perspective_view(f), {x, y});
+        const std::optional<glm::dvec3> without = pointer_hit(perspective_view(nullptr), {x, y});
+        ASSERT_EQ(with.has_value(), without.has_value());
+        if (!with) continue;
+        EXPECT_EQ(with->x, without->x);
+        EXPECT_EQ(with->y, without->y);
+        EXPECT_EQ(with->z, without->z);
+      }
+}
+
+// A moved workspace ([navigation] travelled 60 mm along x): the ray is marched through the
+// world, the block now sits at workspace x = -60, and its top is still found under the pointer.
+TEST(PointingTest, TheRayIsMarchedInTheWorldOfAMovedWorkspace) {
+  FreeHeight floor;
+  floor.set_scene(felt(kBlockOnPlane));
+  floor.set_pose(glm::dmat3(1.0), {60.0, 0.0, 0.0});
+  const PointerView view = perspective_view(&floor);
+  const glm::dvec2 pointer = project_to_window(view, {-60.0, 5.0, kTop});
+  const std::optional<glm::dvec3> hit = floor.first_hit(pointer_ray(view, pointer));
+  ASSERT_TRUE(hit);
+  EXPECT_NEAR(glm::length(*hit - glm::dvec3(-60.0, 5.0, kTop)), 0.0, 0.02);
+}
+
+}  // namespace
+}  // namespace ps
