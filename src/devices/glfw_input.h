@@ -63,6 +63,8 @@ class GlfwInputDevice final : public Device {
   // Main thread: the probe's point on the plane (its shadow's centre) is `hit_mm` from the next
   // poll on: where the hand starts, or where a clutch puts it back under the proxy.
   void place(const glm::dvec3& hit_mm) { map_.set_hit(hit_mm); }
+  // The last poll's jump of the point under the pointer across a silhouette (PointerMap).
+  double parallax_jump_mm() const { return map_.parallax_jump_mm(); }
 
  private:
   glm::dvec3 poll_mouse(const PointerView& view);

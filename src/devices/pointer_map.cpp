@@ -99,6 +99,10 @@ void PointerMap::set_hit(const glm::dvec3& hit_mm) {
 glm::dvec3 PointerMap::absolute(const PointerView& view, const glm::dvec2& pointer, double height_mm) {
   if (std::isfinite(pointer.x) && std::isfinite(pointer.y) && view.window_size.x > 0.0 && view.window_size.y > 0.0)
     if (auto h = pointer_hit(view, pointer)) {
+      const std::optional<glm::dvec3> on_plane = intersect_plane(pointer_ray(view, pointer), view.plane);
+      const glm::dvec3 parallax = on_plane ? *h - *on_plane : glm::dvec3(0.0);
+      parallax_jump_mm_ = have_hit_ ? glm::length(parallax - parallax_) : 0.0;
+      parallax_ = parallax;
       hit_ = *h;
       have_hit_ = true;
     }

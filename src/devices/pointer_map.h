@@ -120,10 +120,16 @@ class PointerMap {
   // Puts the hit point at `hit_mm` (a point on the plane): where a relative pointer starts, or
   // where a clutch re-centres it. Non-finite points are ignored.
   void set_hit(const glm::dvec3& hit_mm);
+  // How far the last absolute() call moved the hit point off the plane's own hit, beyond how far
+  // the previous call had it (mm): the surface's parallax jumps where the pointer crosses a
+  // silhouette (off a bump onto the ground behind it) and is smooth elsewhere.
+  double parallax_jump_mm() const { return parallax_jump_mm_; }
 
  private:
   glm::dvec3 centre(const PointerView& view, double height_mm) const;
   glm::dvec3 hit_{0.0};
+  glm::dvec3 parallax_{0.0};  // hit_ minus the plane's own hit (0 on the plane)
+  double parallax_jump_mm_ = 0.0;
   bool have_hit_ = false;
 };
 

@@ -80,8 +80,9 @@ bool RollingManifold::step(const RollParams& p, const ViewAxes& axes, const Roll
     facet_ = -1;
     return false;
   }
+  if (c.hand_at_rest && facet_ < 0) return false;  // a touch that starts at rest waits for motion
   const glm::dvec3 n = glm::normalize(c.normal);
-  const bool changed = retarget(axes, c, n, pose);
+  const bool changed = !c.hand_at_rest && retarget(axes, c, n, pose);
   if (changed) {
     ++turns_;
     changed_at_ = c.point;
@@ -96,7 +97,7 @@ bool RollingManifold::step(const RollParams& p, const ViewAxes& axes, const Roll
   pose.rotation = slerp_rotation(pose.rotation, target_, s);
   pose.offset = c.point - pose.rotation * contact_ws;
   // Glide: the screen centre approaches the contact point.
-  if (p.centre_s > 0.0) {
+  if (p.centre_s > 0.0 && !c.hand_at_rest) {
     const glm::dvec3 centre = pose.to_world(axes.centre_ws);
     pose.offset += (c.point - centre) * (1.0 - std::exp(-dt / p.centre_s));
   }

@@ -66,7 +66,17 @@ struct RollContact {
   int facet = -1;
   glm::dvec3 point{0.0};                   // contact point on the sheet
   glm::dvec3 normal{0.0, 0.0, 1.0};        // the facet's unit normal, on the proxy's side
+  // The hand has stopped (HapticState's filtered speed under kRollRestMmS): the view rolls only
+  // with the hand, so no new turn and no glide; a turn under way ends about the contact point.
+  bool hand_at_rest = false;
 };
+
+// Below this filtered hand speed the hand is at rest for the rolling manifold, mm/s: a hand
+// pressed on the rolling torus and held still had kept it tumbling (61 to 130 degrees in 2 s),
+// the glide moving the sheet under the held proxy onto the next facet, and on. 3 mm/s is under
+// any deliberate stroke (the slowest walks move at 20 mm/s) and above the filter's tail a few
+// hundred ms after a mouse stops.
+inline constexpr double kRollRestMmS = 3.0;
 
 class RollingManifold {
  public:

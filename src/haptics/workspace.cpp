@@ -5,6 +5,17 @@
 
 namespace ps {
 
+namespace {
+
+// Whether `p` (world) lies over one of the scene's buttons: within its rectangle, at any height.
+bool over_a_button(const world::HapticScene& scene, const glm::dvec3& p) {
+  for (const world::ButtonShape& b : scene.button_shapes())
+    if (b.over(b.to_local(p))) return true;
+  return false;
+}
+
+}  // namespace
+
 void Workspace::restart(const world::HapticScene* scene) {
   scene_ = scene;
   home();
@@ -31,7 +42,10 @@ glm::dvec3 Workspace::navigate(const glm::dvec3& device_mm, double dt, HapticSta
     // filter overshoots a step (a mouse jumping from the window's edge back to its centre), and
     // the view must stop when the hand is back inside, not travel on (38 mm back in `run`).
     const glm::dvec3 half = 0.5 * nav.box_size_mm;
-    const glm::dvec3 past = device_mm - glm::clamp(device_mm, nav.box_center - half, nav.box_center + half);
+    glm::dvec3 past = device_mm - glm::clamp(device_mm, nav.box_center - half, nav.box_center + half);
+    // Over a button (Field's back button lies beyond the box's wall): neither wall nor travel,
+    // so the probe reaches the button and the view stays while the person aims at it.
+    if (over_a_button(*scene_, view_.to_world(device_mm))) past = glm::dvec3(0.0);
     // Held (the pointer out of the window, the window unfocused): the walls still push, the
     // view stays; a mouse parked past a wall is no push of the person's.
     if (travel) v = nav.speed_mm_s_per_mm * past;
@@ -62,6 +76,7 @@ bool Workspace::roll(const world::GodObject* god, const Snapshot<PublishedViewAx
     rc.facet = c->fourd_facet;
     rc.point = c->point;
     rc.normal = c->normal;
+    rc.hand_at_rest = glm::length(s.velocity_mm_s) < fourd::kRollRestMmS;
   }
   const PublishedViewAxes camera = published.read();
   const fourd::ViewAxes& axes = camera.valid ? camera.axes : scene_->view_axes();

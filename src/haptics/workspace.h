@@ -27,7 +27,8 @@ class Workspace {
   // hand's filtered position and velocity (s.position_mm, s.velocity_mm_s, workspace) and
   // `device_mm` into world ones in `s`. Returns the walls' force (world, N). Always writes the
   // view's pose into `s` (identity for a scene that does not move it). `travel` false: the view
-  // holds still (the walls still push).
+  // holds still (the walls still push). A device over a button (its rectangle, at any height)
+  // neither moves the view nor meets a wall: a button beyond the box can be reached and pressed.
   glm::dvec3 navigate(const glm::dvec3& device_mm, double dt, HapticState& s, bool travel = true);
   // After the proxy moved: the rolling manifold's step on the sheet contact of `god` (the proxy in
   // the scene; null with the plane model), with the

@@ -60,6 +60,27 @@ TEST(UiLayoutTest, ShadowBoxScalesToTheWindowAndIsAbsentWithoutShadow) {
   EXPECT_EQ(none.pixels, 0u);
 }
 
+// A shadow seen in perspective: a solid core of 3 x 3 pixels around (20, 30) and a faint tail
+// reaching 20 pixels below it but only 8 above (the near half looks larger). The core's centre
+// is the middle of the core (pixel centres: 20.5, 30.5), scaled to the window; the box's centre
+// is 6 pixels lower. A second, fainter blob elsewhere does not move the core.
+TEST(UiLayoutTest, TheShadowsCentreIsItsCoreNotItsBox) {
+  Image intensity = gray(64, 64, 0.f);
+  for (int y = 22; y <= 50; ++y)
+    for (int x = 14; x <= 26; ++x) intensity.at(x, y, 0) = 0.2f;
+  for (int y = 29; y <= 31; ++y)
+    for (int x = 19; x <= 21; ++x) intensity.at(x, y, 0) = 1.f;
+  intensity.at(20, 30, 0) = 0.95f;  // within 10 % of the darkest: still the core
+  intensity.at(5, 45, 0) = 0.85f;   // outside it
+  const ShadowMeasure m = measure_shadow(intensity, nullptr, 128, 64);  // x2 wide
+  ASSERT_TRUE(m.core.has_value());
+  EXPECT_FLOAT_EQ(m.core->first, 2.f * 20.5f);
+  EXPECT_FLOAT_EQ(m.core->second, 30.5f);
+  ASSERT_TRUE(m.bbox.has_value());
+  EXPECT_GT(0.5f * (m.bbox->y0 + m.bbox->y1) - m.core->second, 5.f) << "the box's centre is lower";
+  EXPECT_FALSE(measure_shadow(gray(8, 6, 0.f), nullptr, 8, 6).core.has_value());
+}
+
 TEST(UiLayoutTest, RectanglesAreHalfOpen) {
   const UiRect a = UiRect::at(0, 0, 10, 10);
   EXPECT_FALSE(intersects(a, UiRect::at(10, 0, 5, 5))) << "touching edges do not overlap";

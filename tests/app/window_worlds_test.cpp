@@ -171,11 +171,26 @@ TEST(UiLayoutTest, APointerFlickingAwayAndBackFindsThePanelWhereItWas) {
   EXPECT_EQ(frame(256.f, 428.f, 0.33), PanelSide::kRight);
   EXPECT_EQ(frame(256.f, 400.f, 0.36), PanelSide::kRight);
   EXPECT_EQ(frame(428.f, 428.f, 0.39), PanelSide::kRight) << "back on the slider";
-  // A shadow that rests under the panel with the pointer away from it (a probe parked at the
-  // right, the pointer just beyond the clear margin) sends it over after the dwell.
+  // The pointer rests 80 px from the panel (the case) with the shadow under the strip:
+  // the panel keeps its side however long it rests (within kPanelPointerKeepPx).
   double t = 0.42;
-  for (; t < 0.42 + kPanelFlipDwellS - 0.01; t += 0.03) ASSERT_EQ(frame(256.f, 420.f, t), PanelSide::kRight);
-  EXPECT_EQ(frame(256.f, 420.f, 0.42 + kPanelFlipDwellS), PanelSide::kLeft);
+  for (; t < 4.0; t += 0.03) ASSERT_EQ(frame(278.f, 420.f, t), PanelSide::kRight) << "t " << t;
+  // The pointer leaves the window (no pointer: nothing near either strip) less than
+  // kPanelPointerMemoryS after it was over the panel: still kept.
+  frame(428.f, 428.f, 5.0);
+  const auto away = [&](double at) {
+    in.pointer.reset();
+    in.now_s = at;
+    in.last = last;
+    last = layout_ui(in).placement;
+    return last.panel_side;
+  };
+  for (t = 5.03; t < 5.0 + kPanelPointerMemoryS - 0.01; t += 0.03) ASSERT_EQ(away(t), PanelSide::kRight) << "t " << t;
+  // A shadow that rests under the panel with the pointer away for longer (a probe parked at the
+  // right) sends it over after the dwell. (At 512 px no place in the window is 150 px from the
+  // panel and clear of the other strip: there the panel moves only while the pointer is out.)
+  for (; t < 5.0 + kPanelPointerMemoryS + kPanelFlipDwellS - 0.01; t += 0.03) ASSERT_EQ(away(t), PanelSide::kRight);
+  EXPECT_EQ(away(5.0 + kPanelPointerMemoryS + kPanelFlipDwellS + 0.1), PanelSide::kLeft);
 }
 
 // Every min/max pair the loader checks stays ordered: dragging lambda_min from 1 to 16.98 over a

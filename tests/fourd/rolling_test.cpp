@@ -313,6 +313,45 @@ TEST(FourdRollingTest, WalkingTheFlatTorusKeepsTheTouchedFacetFacingTheViewer) {
 
 }
 
+// The view rolls only with the hand: a hand that walks 25 mm pressed 3 mm into the rolling
+// torus and then holds still, pressed, leaves the view where it is. Half a second after it
+// stops (the filter's tail, the last turn ending) the view turns less than 1 degree over the
+// next 3 s. Before the rest rule the glide moved the sheet under the held proxy onto the next
+// facet, and the next: the window showed 61 to 130 degrees in 2 s.
+TEST(FourdRollingTest, AHandHeldStillPressedDoesNotRollTheView) {
+  auto scene = load_scene(std::string(PS_SOURCE_DIR) + "/scenes/fourd/flat_torus_rolling.toml");
+  ASSERT_TRUE(scene) << scene.error().message;
+  auto hs = world::HapticScene::build(scene.value());
+  ASSERT_TRUE(hs) << hs.error().message;
+  const glm::dvec3 probe = scene.value().probe.position;
+  const world::Contact c0 = hs.value().closest(probe, 20.0);
+  ASSERT_TRUE(c0.hit);
+  const glm::dvec3 n0 = glm::normalize(probe - c0.point);
+  const double r = scene.value().probe.radius_mm;
+  const glm::dvec3 side = -glm::cross(n0, glm::normalize(glm::cross(n0, {0.0, 0.0, 1.0})));
+  const glm::dvec3 rest = c0.point + (r - 3.0) * n0;
+  std::vector<DeviceSample> samples;
+  samples.push_back({0.0, c0.point + (r + 5.0) * n0, 0, true});
+  samples.push_back({0.3, rest, 0, true});
+  for (int i = 1; i <= 50; ++i) samples.push_back({0.3 + 2.5 * i / 50, rest + 25.0 * i / 50 * side, 0, true});
+  samples.push_back({10.0, rest + 25.0 * side, 0, true});
+  LogDevice device(samples, true, "walk pressed, then hold");
+  FakeClock clock;
+  HapticLoop loop(device, clock, HapticLoopParams{}, &hs.value());
+  loop.run_ticks(3300);  // the walk ends at 2.8 s; half a second more
+  const HapticState held = loop.state().read();
+  ASSERT_GT(fourd::rotation_angle_between(glm::dmat3(1.0), held.view_rotation), 0.05) << "the walk rolled the view";
+  ASSERT_TRUE(held.in_contact) << "the hand holds pressed";
+  loop.run_ticks(3000);
+  const HapticState later = loop.state().read();
+  const double turned = fourd::rotation_angle_between(held.view_rotation, later.view_rotation);
+  std::printf("held still for 3 s: the view turned %.4f degrees, moved %.4f mm\n", glm::degrees(turned),
+              glm::length(later.view_offset_mm - held.view_offset_mm));
+  EXPECT_TRUE(later.in_contact);
+  EXPECT_LT(turned, glm::radians(1.0));
+  EXPECT_LT(glm::length(later.view_offset_mm - held.view_offset_mm), 0.5) << "no glide at rest either";
+}
+
 // run's Home key with the mouse (docs/window.md): the view goes back where the scene started
 // and the hand and the proxy are put over the surface in that view in the same tick. Were the
 // proxy left where the rolled view had it, it would be dragged through the torus to the hand,

@@ -265,6 +265,33 @@ TEST(UniverseTest, FieldsViewHoldsWhileNavigationIsHeld) {
   EXPECT_GT(loop.state().read().view_offset_mm.x, x0.x + 20.0) << "released: the push moves it again";
 }
 
+// Field's back button lies beyond the box's -x and +y walls: a hand over it meets neither wall
+// nor travel, so the proxy gets there, the view stays, and pressing fires the switch. Without it
+// the walls held the proxy 25 mm short and the view flew away (-1.3 m).
+TEST(UniverseTest, FieldsBackButtonIsReachedWithoutFlyingTheView) {
+  auto field = load_scene(universe("field.toml"));
+  ASSERT_TRUE(field) << field.error().message;
+  auto hf = HapticScene::build(field.value());
+  ASSERT_TRUE(hf) << hf.error().message;
+  const glm::dvec3 button = hf.value().button_shapes().at(0).center;
+  LogDevice hand({{0.0, button + glm::dvec3(0, 0, 20), 0, true}, {1.0, button + glm::dvec3(0, 0, 20), 0, true},
+                  {2.0, button + glm::dvec3(0, 0, -4), 0, true}, {10.0, button + glm::dvec3(0, 0, -4), 0, true}},
+                 true, "hand");
+  FakeClock clock;
+  HapticLoop loop(hand, clock, HapticLoopParams{}, &hf.value());
+  loop.run_ticks(1000);
+  const HapticState over = loop.state().read();
+  EXPECT_EQ(over.view_offset_mm, glm::dvec3(0.0)) << "over the button: the view stays";
+  EXPECT_LT(glm::length(glm::dvec2(over.proxy_mm - button)), 1.0) << "the proxy is over the button";
+  bool fired = false;
+  for (int i = 0; i < 15; ++i) {
+    loop.run_ticks(100);
+    loop.events().drain([&](const HapticEvent& e) { fired = fired || e.kind == EventKind::button_fired; });
+  }
+  EXPECT_TRUE(fired) << "pressed 4 mm below the face: the button fires";
+  EXPECT_EQ(loop.state().read().view_offset_mm, glm::dvec3(0.0));
+}
+
 // Field's view stays in Field: after it travelled, a switch to the panel (no [navigation], the
 // scene its button and Backspace go back to) publishes the panel's own view, and Home there
 // keeps it (the leak drew the panel 90 mm off, its shadow ~390 px from the pointer).

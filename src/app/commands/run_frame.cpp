@@ -137,7 +137,7 @@ Status log_readouts(Session& s, const HapticState& st, const ShadowMeasure& shad
   glfwGetWindowSize(s.ctx->window(), &w, &h);
   glfwGetCursorPos(s.ctx->window(), &x, &y);
   if (x >= 0.0 && y >= 0.0 && x < w && y < h) f.pointer_px = glm::dvec2(x, y);
-  if (shadow.bbox) f.shadow_px = glm::dvec2(0.5 * (shadow.bbox->x0 + shadow.bbox->x1), 0.5 * (shadow.bbox->y0 + shadow.bbox->y1));
+  if (shadow.core) f.shadow_px = glm::dvec2(shadow.core->first, shadow.core->second);
   return s.readouts_log.write(f);
 }
 
@@ -154,8 +154,11 @@ void fit_height_to_buttons(Session& s, const world::HapticScene& scene) {
   double deepest = 0.0;
   // The hover height counts from the surface under the pointer (app/session/free_height.h), a button's
   // face included: the range needs the deepest press below a face, not below the plane.
+  // The height moves the hand along the pointer plane's normal, which need not be the button's
+  // (Illusion's plane faces the camera): a button facing it at cos a needs 1 / cos a as much.
   for (const world::ButtonShape& b : scene.button_shapes())
-    deepest = std::max(deepest, world::deepest_press_mm({b}, coupling));
+    deepest = std::max(deepest, world::deepest_press_mm({b}, coupling) /
+                                    std::max(glm::dot(b.normal(), s.axes.n), 0.25));
   s.glfw_device->reach_depth(deepest > 0.0 ? deepest + GlfwInputParams{}.height.step_mm : 0.0);
 }
 
@@ -179,9 +182,13 @@ void poll_device(Session& s, double now_s, bool poll_glfw, bool view_at_rest) {
   // The surface under a hovering pointer rose or fell (a slope, a silhouette: off a box's top
   // onto the floor): the hand is put at its new height rather than pulled there, so neither the
   // filter's coasting between two readings (4-30 a second) nor the proxy's path cuts through
-  // the surface. 0.25 mm: half a height step, so the keys' own steps are not placements.
+  // the surface. 0.25 mm: half a height step, so the keys' own steps are not placements. So is a
+  // point under the pointer that jumped across a silhouette (off a bump onto what lies behind
+  // it: pointing by ray), 1 mm: the surface's parallax is smooth elsewhere, so strokes over it
+  // keep their speed.
   const glm::dvec3 after = s.glfw_device->read(0.0).position_mm;
-  if (s.loop && s.glfw_device->height_mm() >= 0.0 && std::abs(glm::dot(after - before, view.plane.n)) > 0.25)
+  const bool rose_or_fell = std::abs(glm::dot(after - before, view.plane.n)) > 0.25;
+  if (s.loop && s.glfw_device->height_mm() >= 0.0 && (rose_or_fell || s.glfw_device->parallax_jump_mm() > 1.0))
     s.loop->place_hand(after, view.plane.n, s.floor.last_normal());
 }
 

@@ -19,6 +19,20 @@ glm::dvec3 rest_on_buttons(const world::HapticScene& scene, glm::dvec3 p, const 
   return p;
 }
 
+// The ray's first meeting with a button's face (its rectangle) before `t_max`: the face is solid
+// for pointing as for hovering, or a ray would go on into the pocket behind it and put the probe
+// over the pocket's far wall (7.8 mm past Weight's button, seen from its camera).
+double first_button_face(const world::HapticScene& scene, const glm::dvec3& from, const glm::dvec3& dir, double t_max) {
+  double best = t_max;
+  for (const world::ButtonShape& b : scene.button_shapes()) {
+    const double facing = -glm::dot(dir, b.normal());
+    if (facing <= 1e-9) continue;  // seen from behind or edge-on
+    const double t = glm::dot(from - b.center, b.normal()) / facing;
+    if (t >= 0.0 && t < best && b.over(b.to_local(from + t * dir))) best = t;
+  }
+  return best;
+}
+
 }  // namespace
 
 double FreeHeight::lift_mm(const glm::dvec3& hit_mm, const glm::dvec3& n_ws, double r) const {
@@ -55,11 +69,11 @@ std::optional<glm::dvec3> FreeHeight::first_hit(const PointerRay& ray) const {
   const double length = glm::length(along);
   if (!(length > 0.0) || !std::isfinite(length)) return std::nullopt;
   const glm::dvec3 dir = along / length;
+  const auto in_workspace = [&](double t) { return glm::transpose(rotation_) * (from + t * dir - offset_mm_); };
   double t = 0.0;
   for (int i = 0; i < params_.ray_max_steps && t <= length; ++i) {
     const world::Contact c = scene_->closest(from + t * dir, params_.ray_query_mm);
-    if (c.hit && c.distance_mm < params_.touch_epsilon_mm)
-      return glm::transpose(rotation_) * (from + t * dir - offset_mm_);
+    if (c.hit && c.distance_mm < params_.touch_epsilon_mm) return in_workspace(first_button_face(*scene_, from, dir, t));
     t += c.hit ? c.distance_mm : params_.ray_query_mm;
   }
   return std::nullopt;  // past the far plane, or grazing a surface for every step: the plane

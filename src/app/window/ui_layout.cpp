@@ -87,6 +87,28 @@ float overlap_area(const UiRect& a, const UiRect& b) {
 
 UiRect grown(const UiRect& r, float by) { return {r.x0 - by, r.y0 - by, r.x1 + by, r.y1 + by}; }
 
+namespace {
+
+// The centroid of the shadow's core (pixels within kShadowCoreShare of its darkest), image pixels
+// (pixel centres at i + 0.5), searched within [x0, x1] x [y0, y1].
+std::pair<double, double> shadow_core(const Image& intensity, int x0, int y0, int x1, int y1) {
+  float darkest = 0.f;
+  for (int y = y0; y <= y1; ++y)
+    for (int x = x0; x <= x1; ++x) darkest = std::max(darkest, intensity.at(x, y, 0));
+  double sx = 0.0, sy = 0.0;
+  int n = 0;
+  for (int y = y0; y <= y1; ++y)
+    for (int x = x0; x <= x1; ++x)
+      if (intensity.at(x, y, 0) >= kShadowCoreShare * darkest) {
+        sx += x + 0.5;
+        sy += y + 0.5;
+        ++n;
+      }
+  return {sx / n, sy / n};  // n >= 1: the darkest pixel itself
+}
+
+}  // namespace
+
 ShadowMeasure measure_shadow(const Image& intensity, const Image* distance, int window_w, int window_h) {
   assert(intensity.channels == 1 && (!distance || distance->channels == 1) && "measure_shadow: expects 1-channel AOVs");
   assert((!distance || (intensity.width == distance->width && intensity.height == distance->height)) &&
@@ -107,6 +129,8 @@ ShadowMeasure measure_shadow(const Image& intensity, const Image* distance, int 
   // Image pixel i covers window pixels [i * sx, (i + 1) * sx): the window may be scaled.
   const float sx = static_cast<float>(window_w) / intensity.width, sy = static_cast<float>(window_h) / intensity.height;
   m.bbox = UiRect{x0 * sx, y0 * sy, (x1 + 1) * sx, (y1 + 1) * sy};
+  const auto [cx, cy] = shadow_core(intensity, x0, y0, x1, y1);
+  m.core = std::make_pair(static_cast<float>(cx * sx), static_cast<float>(cy * sy));
   return m;
 }
 
@@ -123,11 +147,13 @@ PanelSide panel_side(const UiLayoutInput& in, const UiRect& avoid) {
   const bool inside = in.pointer && in.pointer->first >= 0.f && in.pointer->first < in.width &&
                       in.pointer->second >= 0.f && in.pointer->second < in.height;
   if (in.last.panel_placed && inside) {
-    const UiRect near_keep = grown(panel_strip(in, last), kPanelPointerClearShare * in.panel_width);
-    const UiRect near_flip = grown(panel_strip(in, other), kPanelPointerClearShare * in.panel_width);
+    const UiRect near_keep = grown(panel_strip(in, last), kPanelPointerKeepPx);
+    const UiRect near_flip = grown(panel_strip(in, other), kPanelPointerKeepPx);
     const UiRect at = UiRect::at(in.pointer->first, in.pointer->second, 1.f, 1.f);
     if (intersects(at, near_keep) || intersects(at, near_flip)) return last;
   }
+  const std::optional<double>& over = in.last.pointer_on_panel_s;
+  if (in.last.panel_placed && over && in.now_s - *over < kPanelPointerMemoryS) return last;
   const float kept = overlap_area(panel_strip(in, last), avoid), flipped = overlap_area(panel_strip(in, other), avoid);
   return kept > 0.f && (flipped == 0.f || flipped < 0.5f * kept) ? other : last;
 }
@@ -153,6 +179,9 @@ void place_panel(const UiLayoutInput& in, const UiRect& avoid, UiLayout& out, fl
     if (!flip) out.placement.flip_wanted_since_s = since;
   }
   out.panel = panel_strip(in, out.placement.panel_side);
+  if (!in.last.panel_placed) out.placement.pointer_on_panel_s.reset();
+  if (in.pointer && intersects(UiRect::at(in.pointer->first, in.pointer->second, 1.f, 1.f), *out.panel))
+    out.placement.pointer_on_panel_s = in.now_s;
   if (out.placement.panel_side == PanelSide::kRight) x1 = out.panel->x0;
   else x0 = out.panel->x1;
 }

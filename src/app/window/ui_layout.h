@@ -39,7 +39,13 @@ struct ShadowMeasure {
   std::optional<UiRect> bbox;              // bounding box of the shadowed pixels; none: no shadow
   std::optional<double> min_distance_mm;   // smallest probe-surface distance d over them (if read)
   std::uint32_t pixels = 0;                // shadowed pixels (image pixels, not window pixels)
+  // The centre of the shadow's core (window pixels): the centroid of its pixels within
+  // kShadowCoreShare of its darkest, around the point under the probe. The box's centre is no
+  // centre: seen in perspective the near half of the shadow looks larger (23 px below the
+  // pointer on the Table 5.1 samples, 31 mm from the camera).
+  std::optional<std::pair<float, float>> core;
 };
+inline constexpr float kShadowCoreShare = 0.9f;
 // `intensity`: the intensity AOV (1 channel); `distance`: the distance AOV (1 channel, NaN
 // where no probe is above the pixel; the same size) or null: no min_distance_mm.
 ShadowMeasure measure_shadow(const Image& intensity, const Image* distance, int window_w, int window_h);
@@ -55,12 +61,18 @@ struct UiPlacement {
   bool panel_placed = false;  // the panel has been laid out since it was last opened
   // Since when (UiLayoutInput::now_s) the other side has been wanted without a break; none: it is not.
   std::optional<double> flip_wanted_since_s;
+  // When (UiLayoutInput::now_s) the pointer was last over the panel; none: not since it opened.
+  std::optional<double> pointer_on_panel_s;
 };
 
-// The panel changes sides only while the pointer is at least this share of the panel's width
-// away from both strips: the shadow (under the pointer, ~190 px wide at 1280 x 800) reaches a
-// strip before the pointer does, and a panel that fled from it could never be reached.
-constexpr float kPanelPointerClearShare = 0.5f;
+// The panel changes sides only while the pointer is at least this far from both strips, px:
+// the shadow (under the pointer, ~190 px wide at 1280 x 800) reaches a strip before the pointer
+// does, and a panel that fled from it could never be reached. (Half the panel's width, 77 px at
+// 512 px, let it change side under a pointer resting 80 px from it.)
+constexpr float kPanelPointerKeepPx = 150.f;
+// ... nor within this long of the pointer being over it, s: a person who left the panel for the
+// scene a moment ago comes back to it where it was.
+constexpr double kPanelPointerMemoryS = 2.0;
 // ... and only once the other side has been wanted for this long without a break: a pointer
 // that leaves the panel for the scene and comes back (a flick, a glance) finds it where it was,
 // though the shadow under the pointer was under the panel a frame ago. A shadow that really
@@ -95,7 +107,8 @@ struct UiLayout {
 // Panel: a strip along the right edge (full height), or along the left edge when the shadow
 // would be under it; if both would cover it, the side that covers less than half of what the
 // other does, else the last frame's side. Once shown it keeps its side while the pointer is in
-// the window near either strip (kPanelPointerClearShare), so the mouse can always reach it, and
+// the window near either strip (kPanelPointerKeepPx) or was over it lately (kPanelPointerMemoryS),
+// so the mouse can always reach it, and
 // changes side only after wanting to for kPanelFlipDwellS. Readouts: the corner of the rest of the window that keeps clear of
 // the shadow and the buttons, the farthest from the shadow first. Help: bottom or top centre of
 // the rest, else a corner, clear of the shadow, the buttons and the readouts; when the two
