@@ -12,18 +12,11 @@
 #include "app/session/free_height.h"
 #include "devices/pointer_map.h"
 #include "scene/scene_io.h"
+#include "support/felt.h"
 #include "world/haptic_scene.h"
 
 namespace ps {
 namespace {
-
-std::shared_ptr<const world::HapticScene> felt(const std::string& toml) {
-  auto scene = parse_scene(toml, "f.toml", ".", {});
-  EXPECT_TRUE(scene) << scene.error().message;
-  auto built = world::HapticScene::build(scene.value());
-  EXPECT_TRUE(built) << built.error().message;
-  return std::make_shared<const world::HapticScene>(std::move(built.value()));
-}
 
 // A 40 x 40 mm block standing 30 mm out of the plane z = 0 (Weight's back button and Suzanne's
 // brow are raised like this above their pointer planes).

@@ -9,6 +9,7 @@
 #include "app/window/readout_state.h"
 #include "app/window/readouts_log.h"
 #include "scene/scene_io.h"
+#include "support/felt.h"
 #include "world/haptic_scene.h"
 
 namespace ps {
@@ -96,14 +97,6 @@ TEST(ReadoutsLogTest, OneJsonLineWithEveryField) {
   EXPECT_NE(far.find("\"button\": null, \"flags\": null"), std::string::npos) << far;
   EXPECT_NE(far.find("\"dent_mm\": null, \"pointer_px\": null, \"shadow_px\": null}"), std::string::npos)
       << far;  // no deformable surface, no pointer in the window, no shadow
-}
-
-std::shared_ptr<const world::HapticScene> felt(const std::string& toml) {
-  auto scene = parse_scene(toml, "f.toml", ".", {});
-  EXPECT_TRUE(scene) << scene.error().message;
-  auto built = world::HapticScene::build(scene.value());
-  EXPECT_TRUE(built) << built.error().message;
-  return std::make_shared<const world::HapticScene>(std::move(built.value()));
 }
 
 constexpr const char* kSphereOnPlane =

@@ -3,6 +3,7 @@
 // key table (app/window/ui_layout.h, app/window/hud.h, app/window/run_keys.h).
 #include <gtest/gtest.h>
 
+#include <array>
 #include <cmath>
 #include <algorithm>
 #include <cstring>
@@ -280,6 +281,14 @@ TEST(HudTest, ButtonAndFlagsShowWhenTheSceneHasThem) {
   all.clear();
   for (const std::string& l : hud_lines(r)) all += l + "\n";
   EXPECT_NE(all.find("rolled      70 deg"), std::string::npos) << all;
+  // A surface embedded in 4D: its turn, and the legend line of its 4D-depth colours (the colours
+  // themselves are drawn over the gap between "far" and "near").
+  EXPECT_EQ(all.find("4D depth"), std::string::npos) << "no 4D surface, no legend:\n" << all;
+  r.turn4_deg = std::array<double, 6>{10.0, 0.0, 0.0, 0.0, 0.0, 0.0};
+  all.clear();
+  for (const std::string& l : hud_lines(r)) all += l + "\n";
+  EXPECT_NE(all.find("4D xy xz xw 10 0 0 deg"), std::string::npos) << all;
+  EXPECT_NE(all.find("4D depth    far" + std::string(14, ' ') + "near"), std::string::npos) << all;
 }
 
 TEST(RunKeysTest, EveryKeyOfTheWindowIsInTheTableOnce) {

@@ -7,6 +7,7 @@
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
+#include <memory>
 #include <random>
 
 #include "devices/sample_log.h"
@@ -313,31 +314,53 @@ TEST(FourdRollingTest, WalkingTheFlatTorusKeepsTheTouchedFacetFacingTheViewer) {
 
 }
 
+// The rolling flat torus and where its walks begin: the probe's start contact, the normal there,
+// the direction the walks go (along the sheet, sideways on screen) and the probe's radius.
+struct TorusStart {
+  std::unique_ptr<world::HapticScene> felt;  // null: the scene did not load (the test says why)
+  glm::dvec3 contact{0.0}, n{0.0}, side{0.0};
+  double r = 0.0;
+};
+
+TorusStart torus_start() {
+  TorusStart t;
+  auto scene = load_scene(std::string(PS_SOURCE_DIR) + "/scenes/fourd/flat_torus_rolling.toml");
+  EXPECT_TRUE(scene) << scene.error().message;
+  if (!scene) return t;
+  auto hs = world::HapticScene::build(scene.value());
+  EXPECT_TRUE(hs) << hs.error().message;
+  if (!hs) return t;
+  const glm::dvec3 probe = scene.value().probe.position;
+  const world::Contact c0 = hs.value().closest(probe, 20.0);
+  EXPECT_TRUE(c0.hit);
+  if (!c0.hit) return t;
+  t.felt = std::make_unique<world::HapticScene>(std::move(hs.value()));
+  t.contact = c0.point;
+  t.n = glm::normalize(probe - c0.point);
+  t.side = -glm::cross(t.n, glm::normalize(glm::cross(t.n, {0.0, 0.0, 1.0})));
+  t.r = scene.value().probe.radius_mm;
+  return t;
+}
+
 // The view rolls only with the hand: a hand that walks 25 mm pressed 3 mm into the rolling
 // torus and then holds still, pressed, leaves the view where it is. Half a second after it
 // stops (the filter's tail, the last turn ending) the view turns less than 1 degree over the
 // next 3 s. Before the rest rule the glide moved the sheet under the held proxy onto the next
 // facet, and the next: the window showed 61 to 130 degrees in 2 s.
 TEST(FourdRollingTest, AHandHeldStillPressedDoesNotRollTheView) {
-  auto scene = load_scene(std::string(PS_SOURCE_DIR) + "/scenes/fourd/flat_torus_rolling.toml");
-  ASSERT_TRUE(scene) << scene.error().message;
-  auto hs = world::HapticScene::build(scene.value());
-  ASSERT_TRUE(hs) << hs.error().message;
-  const glm::dvec3 probe = scene.value().probe.position;
-  const world::Contact c0 = hs.value().closest(probe, 20.0);
-  ASSERT_TRUE(c0.hit);
-  const glm::dvec3 n0 = glm::normalize(probe - c0.point);
-  const double r = scene.value().probe.radius_mm;
-  const glm::dvec3 side = -glm::cross(n0, glm::normalize(glm::cross(n0, {0.0, 0.0, 1.0})));
-  const glm::dvec3 rest = c0.point + (r - 3.0) * n0;
+  const TorusStart ts = torus_start();
+  ASSERT_TRUE(ts.felt);
+  const glm::dvec3 &c0 = ts.contact, &n0 = ts.n, &side = ts.side;
+  const double r = ts.r;
+  const glm::dvec3 rest = c0 + (r - 3.0) * n0;
   std::vector<DeviceSample> samples;
-  samples.push_back({0.0, c0.point + (r + 5.0) * n0, 0, true});
+  samples.push_back({0.0, c0 + (r + 5.0) * n0, 0, true});
   samples.push_back({0.3, rest, 0, true});
   for (int i = 1; i <= 50; ++i) samples.push_back({0.3 + 2.5 * i / 50, rest + 25.0 * i / 50 * side, 0, true});
   samples.push_back({10.0, rest + 25.0 * side, 0, true});
   LogDevice device(samples, true, "walk pressed, then hold");
   FakeClock clock;
-  HapticLoop loop(device, clock, HapticLoopParams{}, &hs.value());
+  HapticLoop loop(device, clock, HapticLoopParams{}, ts.felt.get());
   loop.run_ticks(3300);  // the walk ends at 2.8 s; half a second more
   const HapticState held = loop.state().read();
   ASSERT_GT(fourd::rotation_angle_between(glm::dmat3(1.0), held.view_rotation), 0.05) << "the walk rolled the view";
@@ -362,26 +385,20 @@ TEST(FourdRollingTest, AHandHeldStillPressedDoesNotRollTheView) {
 // Home without the placement fails it: the dragged proxy touches on 20 ticks and the view ends
 // 0.82 rad from home.)
 TEST(FourdRollingTest, HomeWithAPlacementPutsViewAndProxyBackInOneTick) {
-  auto scene = load_scene(std::string(PS_SOURCE_DIR) + "/scenes/fourd/flat_torus_rolling.toml");
-  ASSERT_TRUE(scene) << scene.error().message;
-  auto hs = world::HapticScene::build(scene.value());
-  ASSERT_TRUE(hs) << hs.error().message;
-  const glm::dvec3 probe = scene.value().probe.position;
-  const world::Contact c0 = hs.value().closest(probe, 20.0);
-  ASSERT_TRUE(c0.hit);
-  const glm::dvec3 n0 = glm::normalize(probe - c0.point);
-  const double r = scene.value().probe.radius_mm;
-  const glm::dvec3 side = -glm::cross(n0, glm::normalize(glm::cross(n0, {0.0, 0.0, 1.0})));
-  const glm::dvec3 rest = c0.point + (r - 1.0) * n0, lifted = rest + 25.0 * side + 1.5 * n0;
+  const TorusStart ts = torus_start();
+  ASSERT_TRUE(ts.felt);
+  const glm::dvec3 &c0 = ts.contact, &n0 = ts.n, &side = ts.side;
+  const double r = ts.r;
+  const glm::dvec3 rest = c0 + (r - 1.0) * n0, lifted = rest + 25.0 * side + 1.5 * n0;
   std::vector<DeviceSample> samples;
-  samples.push_back({0.0, c0.point + (r + 5.0) * n0, 0, true});
+  samples.push_back({0.0, c0 + (r + 5.0) * n0, 0, true});
   samples.push_back({0.3, rest, 0, true});
   for (int i = 1; i <= 50; ++i) samples.push_back({0.3 + 2.5 * i / 50, rest + 25.0 * i / 50 * side, 0, true});
   samples.push_back({3.0, lifted, 0, true});
   samples.push_back({10.0, lifted, 0, true});
   LogDevice device(samples, true, "walk, lift, Home");
   FakeClock clock;
-  HapticLoop loop(device, clock, HapticLoopParams{}, &hs.value());
+  HapticLoop loop(device, clock, HapticLoopParams{}, ts.felt.get());
   loop.run_ticks(4000);
   HapticState st = loop.state().read();
   ASSERT_GT(fourd::rotation_angle_between(glm::dmat3(1.0), st.view_rotation), 0.05) << "the walk rolled the view";

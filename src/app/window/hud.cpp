@@ -12,6 +12,7 @@
 #include <cstdio>
 
 #include "app/window/run_keys.h"
+#include "fourd/fourd_mesh.h"
 #include "gl/gl.h"
 
 namespace ps {
@@ -99,6 +100,33 @@ void draw_button_labels(const std::vector<ButtonOverlay>& buttons) {
   }
 }
 
+// The 4D-depth colour legend: a line of the readouts whose gap between "far" and "near" is filled
+// with the surfaces' colour map (fourd::depth_colour, gamma-encoded as the image is).
+constexpr const char* kDepthLegendName = "4D depth";
+constexpr const char* kDepthLegendGap = "            ";
+
+ImU32 depth_colour_u32(double t) {
+  const glm::dvec3 c = glm::pow(fourd::depth_colour(t), glm::dvec3(1.0 / 2.2));
+  return IM_COL32(static_cast<int>(255.0 * c.r + 0.5), static_cast<int>(255.0 * c.g + 0.5),
+                  static_cast<int>(255.0 * c.b + 0.5), 255);
+}
+
+void draw_depth_legend(const UiRect& box, const std::string& hud_text) {
+  const std::size_t at = hud_text.find(kDepthLegendName);
+  if (at == std::string::npos) return;
+  const int row = static_cast<int>(std::count(hud_text.begin(), hud_text.begin() + static_cast<long>(at), '\n'));
+  const ImVec2 pad = ImGui::GetStyle().WindowPadding;
+  const std::string before = hud_text.substr(at, hud_text.find("far", at) + 4 - at);
+  const float h = ImGui::GetTextLineHeight(), w = ImGui::CalcTextSize(kDepthLegendGap).x;
+  const float x0 = box.x0 + pad.x + ImGui::CalcTextSize(before.c_str()).x, y0 = box.y0 + pad.y + row * h;
+  constexpr int kStops = 4;  // the map's five stops, linear between them
+  for (int i = 0; i < kStops; ++i) {
+    const ImU32 a = depth_colour_u32(double(i) / kStops), b = depth_colour_u32(double(i + 1) / kStops);
+    ImGui::GetForegroundDrawList()->AddRectFilledMultiColor(ImVec2(x0 + w * i / kStops, y0 + 0.15f * h),
+                                                            ImVec2(x0 + w * (i + 1) / kStops, y0 + 0.85f * h), a, b, b, a);
+  }
+}
+
 }  // namespace
 
 std::vector<std::string> hud_lines(const HudReadouts& r) {
@@ -130,6 +158,7 @@ std::vector<std::string> hud_lines(const HudReadouts& r) {
     const std::array<double, 6>& a = *r.turn4_deg;
     out.push_back(line("4D xy xz xw", "%.0f %.0f %.0f deg", a[0], a[1], a[2]));
     out.push_back(line("4D yz yw zw", "%.0f %.0f %.0f deg", a[3], a[4], a[5]));
+    out.push_back(line(kDepthLegendName, "far %s near", kDepthLegendGap));  // the colours: draw()
   }
   if (!r.error.empty()) out.push_back(line("reload", "FAILED (F1)"));
   if (!r.notice.empty()) out.push_back(line("note", "%s", r.notice.c_str()));
@@ -209,7 +238,10 @@ UiFrameReport WindowUi::draw(const HudReadouts& readouts, const ShadowMeasure& s
     dock.y1 = display.y;  // the expanded size; a collapsed panel draws its title bar only
     report.panel = panel_.draw(session, dock);
   }
-  if (layout.hud) report.hud = text_box("##readouts", *layout.hud, hud_text, 0.65f);
+  if (layout.hud) {
+    report.hud = text_box("##readouts", *layout.hud, hud_text, 0.65f);
+    draw_depth_legend(*report.hud, hud_text);
+  }
   if (layout.help) report.help = text_box("##help", *layout.help, layout.help_narrow ? help_narrow : help, 0.8f);
   ImGui::Render();
   glBindFramebuffer(GL_FRAMEBUFFER, 0);
