@@ -287,8 +287,12 @@ Status draw_overlays(const RunArgs& a, Session& s, const HapticState& st, std::u
     glfwSetWindowTitle(s.ctx->window(), title_summary(s.readouts).c_str());
     s.readouts_s = now_s;
   }
-  const Scene& sc = s.tune->renderer().scene();  // its camera: the one this frame drew with
-  const auto buttons = project_buttons(sc, sc.camera, static_cast<double>(sc.render.width) / sc.render.height,
+  // Through the camera this frame drew with (orbited, zoomed, moved by [navigation] or a rolling
+  // view), not the scene file's: each label stays on its plate while the view moves (Field's
+  // label had stayed where the plate started).
+  const Scene& sc = s.tune->renderer().scene();
+  const auto buttons = project_buttons(sc, s.tune->renderer().camera(),
+                                       static_cast<double>(sc.render.width) / sc.render.height,
                                        static_cast<float>(w), static_cast<float>(h));
   UiFrameReport report = s.ui->draw(s.readouts, shadow.value(), *s.tune, now_s, buttons);
   report.frame = frame;
