@@ -2,45 +2,73 @@
 # Set up a fresh Debian 12 machine and build pseudoshadow. Idempotent: installs only missing
 # packages (apt is not touched at all when everything is present), configures build/ only when it
 # is not configured yet (later CMakeLists changes are picked up by `cmake --build` itself), then
-# builds. Works from any directory. Usage: tools/bootstrap.sh
+# builds. Works from any directory.
+#
+# Usage: tools/bootstrap.sh           the program only: what the first image needs (README command 1)
+#        tools/bootstrap.sh --tests   everything: the test binaries and their tools too (command 2)
+#
+# Each phase prints its elapsed time, so a slow first run shows where the time went.
 set -euo pipefail
 
+# What building and running the program needs (the first image, the window, sound, devices).
 readonly kPackages=(
-  build-essential cmake pkg-config
+  build-essential cmake pkg-config ccache
   libglfw3-dev libglm-dev libosmesa6-dev libegl-dev libegl1-mesa-dev libgl1-mesa-dri libgl-dev
   glslang-dev glslang-tools spirv-tools
-  libopenimageio-dev openimageio-tools libpng-dev
+  libopenimageio-dev openimageio-tools libpng-dev  # the tools: OpenImageIO's CMake config checks oiiotool
   libgtest-dev libgmock-dev libbenchmark-dev
   libassimp-dev assimp-testmodels libembree-dev libimgui-dev libtomlplusplus-dev nlohmann-json3-dev
-  libcli11-dev gnuplot-nox xvfb xauth clang libclang-rt-14-dev ccache dpkg-dev file
-  libopenal-dev libsndfile1-dev libsdl2-dev pybind11-dev python3-dev python3-numpy python3-pytest
-  python3-matplotlib parallel xdotool libdbus-1-dev dbus rtkit
+  libcli11-dev gnuplot-nox
+  libopenal-dev libsndfile1-dev libsdl2-dev pybind11-dev python3-dev python3-numpy
+  libdbus-1-dev dbus rtkit
+)
+# What only the test suite and its sanitizer step need (`--tests`): the window tests' X server
+# and input, the compilers for sanitizer and fuzz builds, Python test tools, packaging checks.
+readonly kTestPackages=(
+  xvfb xauth xdotool clang libclang-rt-14-dev dpkg-dev file
+  python3-pytest python3-matplotlib parallel
 )
 
 repo_root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 build_dir="${repo_root}/build"
 ccache_launcher="env;CCACHE_BASEDIR=${repo_root};CCACHE_NOHASHDIR=true;ccache"
+with_tests=0
+started=${SECONDS}
+phase_started=${SECONDS}
 
 log() { echo "bootstrap: $*"; }
 die() { echo "bootstrap: error: $*" >&2; exit 1; }
+
+# "name: 1 min 05 s (total 3 min 10 s)": how long the phase just finished took, and the run so far.
+phase_done() {
+  local took=$((SECONDS - phase_started)) total=$((SECONDS - started))
+  printf 'bootstrap: %s: %d min %02d s (total %d min %02d s)\n' "$1" $((took / 60)) $((took % 60)) \
+    $((total / 60)) $((total % 60))
+  phase_started=${SECONDS}
+}
 
 # `dpkg -s` also succeeds for removed packages whose config files remain, so check the status line.
 is_installed() {
   dpkg -s "$1" 2>/dev/null | grep -q '^Status: install ok installed$'
 }
 
+wanted_packages() {
+  printf '%s\n' "${kPackages[@]}"
+  [ "${with_tests}" -eq 0 ] || printf '%s\n' "${kTestPackages[@]}"
+}
+
 missing_packages() {
   local pkg
-  for pkg in "${kPackages[@]}"; do
+  while read -r pkg; do
     is_installed "${pkg}" || echo "${pkg}"
-  done
+  done < <(wanted_packages)
 }
 
 install_packages() {
   local -a missing
   mapfile -t missing < <(missing_packages)
   if [ "${#missing[@]}" -eq 0 ]; then
-    log "all ${#kPackages[@]} packages present"
+    log "all $(wanted_packages | wc -l) packages present"
     return 0
   fi
   local -a as_root=()
@@ -73,18 +101,45 @@ configure() {
     die "cmake configure failed"
 }
 
+# Without --tests only the program is built (shaders and data are read from the sources at run
+# time through build/share/pseudoshadow); the test binaries, the Python module, the benchmarks'
+# extra programs and the shader validation targets come with --tests.
 build() {
-  log "building with $(nproc) jobs"
-  cmake --build "${build_dir}" -j"$(nproc)" || die "build failed"
-  log "done; run the tests with: ctest --test-dir ${build_dir} --output-on-failure"
+  if [ "${with_tests}" -eq 1 ]; then
+    log "building everything (program and tests) with $(nproc) jobs"
+    cmake --build "${build_dir}" -j"$(nproc)" || die "build failed"
+    return 0
+  fi
+  log "building the program with $(nproc) jobs (the tests build with --tests)"
+  cmake --build "${build_dir}" -j"$(nproc)" --target pseudoshadow || die "build failed"
+}
+
+parse_args() {
+  local arg
+  for arg in "$@"; do
+    case "${arg}" in
+      --tests) with_tests=1 ;;
+      -h|--help) sed -n '2,10p' "${BASH_SOURCE[0]}" | sed 's/^# \{0,1\}//'; exit 0 ;;
+      *) die "unknown argument '${arg}' (use --tests to build the test suite too, or --help)" ;;
+    esac
+  done
 }
 
 main() {
+  parse_args "$@"
   cd "${repo_root}"
   command -v dpkg >/dev/null 2>&1 || die "dpkg not found: this script targets Debian 12"
   install_packages
+  phase_done "packages"
   configure
+  phase_done "configure"
   build
+  phase_done "build"
+  if [ "${with_tests}" -eq 1 ]; then
+    log "done; run the tests with: ctest --test-dir ${build_dir} --output-on-failure -j$(nproc)"
+  else
+    log "done; the program is ${build_dir}/pseudoshadow"
+  fi
 }
 
 main "$@"

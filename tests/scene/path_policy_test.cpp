@@ -101,6 +101,32 @@ TEST_F(PathPolicyTest, IncludesAndButtonScenesAreConfinedToo) {
   EXPECT_NE(b.error().message.find("'action' names"), std::string::npos) << b.error().message;
 }
 
+// A scene copied out of scenes/ keeps "../textures/..." references that now point nowhere: the
+// refusal names the shipped file of that name, and writing that path in the scene works.
+TEST_F(PathPolicyTest, ARefusalNamesTheShippedFileOfThatName) {
+  Result<Scene> s = parse("intensity_lut = \"../textures/intensity_thesis.lut\"");
+  ASSERT_FALSE(s);
+  const std::string& m = s.error().message;
+  const std::string marker = "The shipped data has a file of that name, ";
+  const std::size_t at = m.find(marker);
+  ASSERT_NE(at, std::string::npos) << m;
+  const std::size_t from = at + marker.size();
+  const std::string shipped = m.substr(from, m.find(": write that path", from) - from);
+  EXPECT_EQ(fs::path(shipped).filename(), "intensity_thesis.lut") << m;
+  EXPECT_EQ(fs::path(shipped).parent_path().filename(), "textures") << m;
+  Result<Scene> fixed = parse("intensity_lut = \"" + shipped + "\"");
+  ASSERT_TRUE(fixed) << fixed.error().message;
+  EXPECT_GT(fixed->materials[0].intensity_lut.points.size(), 1u);
+}
+
+// A name the shipped data lacks gets no such line, only the --allow-path way.
+TEST_F(PathPolicyTest, ARefusalWithoutAShippedNamesakeOnlyOffersAllowPath) {
+  Result<Scene> s = parse("intensity_lut = \"" + (elsewhere() / "outside.lut").string() + "\"");
+  ASSERT_FALSE(s);
+  EXPECT_EQ(s.error().message.find("shipped data has"), std::string::npos) << s.error().message;
+  EXPECT_NE(s.error().message.find("--allow-path"), std::string::npos) << s.error().message;
+}
+
 TEST_F(PathPolicyTest, AllowPathAdmitsAFolder) {
   const std::string file = (elsewhere() / "outside.lut").string();
   Result<Scene> s = parse("intensity_lut = \"" + file + "\"", {}, {elsewhere().string()});
