@@ -17,6 +17,7 @@ int run_bench(int argc, char** argv);          // src/app/bench/bench_cmd.cpp
 int run_tune(int argc, char** argv);           // src/app/commands/tune_cmd.cpp
 int run_maze(int argc, char** argv);           // src/app/maze/maze_cmd.cpp
 int run_calibrate(int argc, char** argv);      // src/app/calibrate/calibrate_cmd.cpp
+int run_doctor(int argc, char** argv);         // src/app/commands/doctor_cmd.cpp
 
 struct CommandInfo {
   std::string_view name;
@@ -34,6 +35,7 @@ inline constexpr CommandInfo kCommands[] = {
     {"tune", "parameter sweeps into a labelled contact sheet, or a scripted console session", run_tune},
     {"maze", "the haptic cue maze of seed 003: run a participant, script one, summarize the logs", run_maze},
     {"calibrate", "2AFC staircases measure JNDs along a curve; write a lookup table of equal-looking steps", run_calibrate},
+    {"doctor", "check GL backends, display, audio, gamepads, real-time scheduling and data; how to fix each", run_doctor},
 };
 
 }  // namespace ps
