@@ -101,8 +101,8 @@ double true_jnd(const SimulatedObserver& o, double x, double max_delta) {
   return 0.5 * (lo + hi);
 }
 
-void run_simulated(Calibration& c, SimulatedObserver& o) {
-  while (!c.done()) c.answer(o.answer_left(c.current(), c.spec().kind));
+void run_simulated(Calibration& c, SimulatedObserver& o, const std::function<bool()>& stop) {
+  while (!c.done() && !(stop && stop())) c.answer(o.answer_left(c.current(), c.spec().kind));
 }
 
 Lut equalising_lut(CurveKind kind, const CurveFn& shown, const std::vector<double>& refs,

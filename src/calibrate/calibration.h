@@ -99,8 +99,9 @@ class SimulatedObserver {
 // to max_delta; max_delta when it never gets there).
 double true_jnd(const SimulatedObserver& o, double x, double max_delta);
 
-// Runs `c` to the end with `o` answering.
-void run_simulated(Calibration& c, SimulatedObserver& o);
+// Runs `c` to the end with `o` answering, or until `stop` (asked before each trial) says so
+// (the CLI's SIGTERM/SIGINT/SIGHUP: app/cli/stop_signal.h).
+void run_simulated(Calibration& c, SimulatedObserver& o, const std::function<bool()>& stop = {});
 
 // The table that makes equal steps of x look equally different (Fechner): S(x) = integral of
 // 1 / JND over [0, x] (the JNDs linear between the references, constant beyond them), and the

@@ -1,11 +1,14 @@
 #include "maze/maze_log.h"
 
 #include <cerrno>
+#include <chrono>
+#include <ctime>
 #include <cstdio>
 #include <cstring>
 #include <fstream>
 #include <fcntl.h>
 #include <unistd.h>
+#include <utility>
 
 #include <nlohmann/json.hpp>
 
@@ -61,6 +64,20 @@ json pass_end_json(const PassScore& s) {
               {"pass_time_s", s.end_s - s.start_s},
               {"time_s", s.end_s},
               {"score", score}};
+}
+
+// Now, UTC, to the millisecond ("2025-03-01T10:22:33.123Z"): session_start's `started_at`, which
+// tells two runs of one participant's session apart (`maze summarize` refuses one given twice).
+std::string utc_now() {
+  const auto now = std::chrono::system_clock::now();
+  const std::time_t secs = std::chrono::system_clock::to_time_t(now);
+  const auto ms = std::chrono::duration_cast<std::chrono::milliseconds>(now.time_since_epoch()).count() % 1000;
+  std::tm tm{};
+  gmtime_r(&secs, &tm);
+  char buf[40];
+  const std::size_t n = std::strftime(buf, sizeof buf, "%Y-%m-%dT%H:%M:%S", &tm);
+  std::snprintf(buf + n, sizeof buf - n, ".%03dZ", static_cast<int>(ms));
+  return buf;
 }
 
 }  // namespace
@@ -132,6 +149,7 @@ Status SessionLog::session_start(const SessionInfo& info, const Route& route) {
                      {"correct_route", correct},
                      {"labels", labels},
                      {"planned_orders", planned},
+                     {"started_at", utc_now()},
                      {"time_s", 0.0}}
                     .dump());
 }
@@ -178,9 +196,31 @@ Status SessionLog::resumed(int resume, int pass, int room, double time_s, const 
                     .dump());
 }
 
-Status SessionLog::session_end(const std::string& reason, int passes, int trials_to_criterion, double time_s) {
+namespace {
+constexpr std::pair<EndReason, const char*> kEndReasons[] = {
+    {EndReason::kCriterion, "criterion"}, {EndReason::kMaxPasses, "max_passes"},
+    {EndReason::kDeviceEnded, "device_ended"}, {EndReason::kQuit, "quit"},
+    {EndReason::kPracticeEnded, "practice_ended"}, {EndReason::kTerminated, "terminated"}};
+}  // namespace
+
+const char* end_reason_name(EndReason r) {
+  for (const auto& [reason, name] : kEndReasons)
+    if (reason == r) return name;
+  return "?";
+}
+
+bool parse_end_reason(const std::string& name, EndReason& out) {
+  for (const auto& [reason, text] : kEndReasons)
+    if (name == text) {
+      out = reason;
+      return true;
+    }
+  return false;
+}
+
+Status SessionLog::session_end(EndReason reason, int passes, int trials_to_criterion, double time_s) {
   return append(json{{"type", "session_end"},
-                     {"reason", reason},
+                     {"reason", end_reason_name(reason)},
                      {"passes", passes},
                      {"trials_to_criterion", trials_to_criterion > 0 ? json(trials_to_criterion) : json(nullptr)},
                      {"time_s", time_s}}

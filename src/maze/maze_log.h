@@ -18,6 +18,21 @@ namespace ps::maze {
 
 inline constexpr const char* kLogSchema = "pseudoshadow-maze/1";
 
+// Why a session ended: session_end's `reason`. kCriterion and kMaxPasses end it by the study's
+// rule; the others cut it short (`maze --resume` goes on from them).
+enum class EndReason {
+  kCriterion,      // a pass with every room right
+  kMaxPasses,      // the description's max_passes without one
+  kDeviceEnded,    // a log device played to its end
+  kQuit,           // Esc or Q in the window
+  kPracticeEnded,  // Space or Enter ended the practice pass (DIR/practice/ only)
+  kTerminated,     // SIGTERM, SIGINT or SIGHUP (docs/maze.md, "A signal")
+};
+const char* end_reason_name(EndReason r);  // "criterion", "max_passes", ...
+bool parse_end_reason(const std::string& name, EndReason& out);
+// Ended by the study's rule (criterion, max_passes): complete, nothing to resume.
+inline bool completes_session(EndReason r) { return r == EndReason::kCriterion || r == EndReason::kMaxPasses; }
+
 // Reads a session log: each non-empty line parsed and handed to `on_line` with its
 // "file:line: " prefix (for its own errors: an exception it throws becomes one); the first line
 // must be the session_start line. Returns how many lines the file has. Errors name file:line;
@@ -71,8 +86,7 @@ class SessionLog {
   // `maze --resume`: the session goes on at `pass`, `room` (from 0) at session time time_s, with
   // `device`, its stream in device_log (the resume's own file); resume counts from 1.
   Status resumed(int resume, int pass, int room, double time_s, const std::string& device, const std::string& device_log);
-  // reason: "criterion", "max_passes", "device_ended" or "quit".
-  Status session_end(const std::string& reason, int passes, int trials_to_criterion, double time_s);
+  Status session_end(EndReason reason, int passes, int trials_to_criterion, double time_s);
   const std::string& path() const { return path_; }
   int lines() const { return lines_; }
 

@@ -74,10 +74,10 @@ void read_line(const json& j, ResumePoint& r) {
     r.current.pass = static_cast<int>(r.done.size());
     r.current_started = false;
   } else if (type == "session_end") {
-    r.ended = j.at("reason").get<std::string>();
+    r.ended = parse_name<EndReason>(j.at("reason"), &parse_end_reason, "session_end reason");
   } else if (type == "resumed") {
     ++r.resumes;
-    r.ended.clear();  // a quit session resumed is open again
+    r.ended.reset();  // a quit (or terminated) session resumed is open again
   }
 }
 
@@ -95,8 +95,9 @@ Result<ResumePoint> read_resume_point(const std::string& log_path) {
   auto n = read_session_log(log_path, "give the DIR a `maze` run wrote", ", nothing to resume (start the session again)",
                             [&](const json& j, const std::string&) { read_line(j, r); });
   if (!n) return n.error();
-  if (r.ended == "criterion" || r.ended == "max_passes")
-    return make_error(log_path + ":" + std::to_string(n.value()) + ": the session ended (" + r.ended + "): nothing to resume");
+  if (r.ended && completes_session(*r.ended))
+    return make_error(log_path + ":" + std::to_string(n.value()) + ": the session ended (" + end_reason_name(*r.ended) +
+                      "): nothing to resume");
   return r;
 }
 

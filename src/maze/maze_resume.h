@@ -5,6 +5,7 @@
 // but not left is walked again). No GL, no I/O besides reading the log.
 #pragma once
 
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -22,7 +23,7 @@ struct ResumePoint {
   bool current_started = false;    // its pass_start line is in the log
   double time_s = 0.0;             // session time of the last room left (or pass start): where it goes on
   int resumes = 0;                 // `resumed` lines already in the log
-  std::string ended;               // a session_end's reason already in the log ("": none)
+  std::optional<EndReason> ended;  // a session_end's reason already in the log (none: open)
 };
 
 // Reads DIR's session log. Errors name file:line; a session that ended by the criterion or

@@ -79,7 +79,7 @@ Status SessionCore::handle(const std::vector<TrackEvent>& events, double time_s,
         if (Status s = on_score(e.score); !s) return s;
     }
     if (e.kind == TrackEvent::Kind::kFinished) {
-      result_.reason = e.criterion ? "criterion" : "max_passes";
+      finished_by_ = e.criterion ? EndReason::kCriterion : EndReason::kMaxPasses;
       end_time_s_ = time_s;
       if (e.criterion) result_.trials_to_criterion = static_cast<int>(result_.scores.size());
     }
@@ -96,14 +96,44 @@ Status SessionCore::handle(const std::vector<TrackEvent>& events, double time_s,
   return log_.pass_start(tracker_.pass(), options_.route.order(tracker_.pass()), time_s);
 }
 
-Result<SessionResult> SessionCore::finish(double time_s, const std::string& reason_if_open) {
-  if (result_.reason.empty()) result_.reason = reason_if_open;
+Result<SessionResult> SessionCore::finish(double time_s, EndReason reason_if_open) {
+  result_.reason = finished_by_.value_or(reason_if_open);
   result_.passes = static_cast<int>(result_.scores.size());
   result_.time_s = time_s;
   if (Status s = log_.session_end(result_.reason, result_.passes, result_.trials_to_criterion, result_.time_s); !s)
     return s.error();
   return result_;
 }
+
+namespace {
+
+// The headless session's tick loop beside the session's own step: the frames, the recorder, the pace.
+struct TickDriver {
+  const SessionOptions& o;
+  SessionCore& core;
+  SampleRecorder& recorder;
+  const FrameFn& on_frame;
+  std::chrono::steady_clock::time_point wall_start = std::chrono::steady_clock::now();
+  int frame = 0;
+
+  // After tick k (state st): the frame due (frame i shows the state after the tick at or before
+  // i / fps, as in `replay`), the recorder's flush once per second of session time, the pace.
+  Status after(std::uint64_t k, const HapticState& st) {
+    const double rate = o.haptics.rate_hz;
+    if (on_frame && o.fps > 0.0 && k == static_cast<std::uint64_t>(std::floor(frame / o.fps * rate + 1e-9))) {
+      const FrameView view{frame, st, core.scene(), core.take_scene_changed(), core.label()};
+      if (Status s = on_frame(view); !s) return s;
+      ++frame;
+    }
+    if (!o.record_path.empty() && (k + 1) % static_cast<std::uint64_t>(rate) == 0)
+      if (Status s = recorder.flush(); !s) return s;
+    if (o.pace > 0.0 && k % 10 == 0)
+      std::this_thread::sleep_until(wall_start + std::chrono::duration<double>((st.time_s - o.haptics.start_time_s) / o.pace));
+    return ok_status();
+  }
+};
+
+}  // namespace
 
 Result<SessionResult> run_session(Device& device, const SessionOptions& o, const FrameFn& on_frame,
                                   const ScoreFn& on_score) {
@@ -114,32 +144,25 @@ Result<SessionResult> run_session(Device& device, const SessionOptions& o, const
   HapticLoop loop(device, clock, o.haptics, core.haptic().get());
   SampleRecorder recorder(o.record_path);
   if (!o.record_path.empty()) loop.set_recorder(&recorder);
-  const double rate = o.haptics.rate_hz;
   // The loop's clock starts at start_time_s (a resumed session: where it stopped).
   const double start_s = o.haptics.start_time_s;
-  const auto ticks = static_cast<std::uint64_t>(std::floor(std::max(0.0, device.duration_s() - start_s) * rate + 1e-9)) + 1;
-  const auto wall_start = std::chrono::steady_clock::now();
-  int frame = 0;
+  const auto ticks =
+      static_cast<std::uint64_t>(std::floor(std::max(0.0, device.duration_s() - start_s) * o.haptics.rate_hz + 1e-9)) + 1;
+  TickDriver driver{o, core, recorder, on_frame};
   HapticState st;
   st.time_s = start_s;
   std::uint64_t done = 0;
+  bool stopped = false;
   for (std::uint64_t k = 0; k < ticks && !core.finished(); ++k) {
+    // Between ticks: the log has every line of the ticks before, the recorder their samples.
+    if ((stopped = o.stop && o.stop())) break;
     loop.run_ticks(1);
     st = loop.state().read();
     if (Status s = core.step(st, loop, on_score); !s) return s.error();
     done = k + 1;
-    // Frame i shows the state after the tick at (or before) i / fps, as in `replay`.
-    if (on_frame && o.fps > 0.0 && k == static_cast<std::uint64_t>(std::floor(frame / o.fps * rate + 1e-9))) {
-      const FrameView view{frame, st, core.scene(), core.take_scene_changed(), core.label()};
-      if (Status s = on_frame(view); !s) return s.error();
-      ++frame;
-    }
-    if (!o.record_path.empty() && (k + 1) % static_cast<std::uint64_t>(rate) == 0)
-      if (Status s = recorder.flush(); !s) return s.error();  // once per second of session time
-    if (o.pace > 0.0 && k % 10 == 0)
-      std::this_thread::sleep_until(wall_start + std::chrono::duration<double>((st.time_s - start_s) / o.pace));
+    if (Status s = driver.after(k, st); !s) return s.error();
   }
-  auto result = core.finish(st.time_s, "device_ended");
+  auto result = core.finish(st.time_s, stopped ? EndReason::kTerminated : EndReason::kDeviceEnded);
   if (!result) return result.error();
   result->ticks = done;
   if (!o.record_path.empty())

@@ -33,6 +33,10 @@ struct SessionOptions {
   // `maze --resume`: where the interrupted session stands (log_path is then its existing log,
   // appended to; haptics.start_time_s must be resume->time_s: the loop's clock goes on from there).
   std::optional<ResumePoint> resume;
+  // Asked between ticks (run_session) or frames (the window): true ends the session at once
+  // through its normal end, reason kTerminated (the CLI's StopSignals, app/cli/stop_signal.h).
+  // Empty: never.
+  std::function<bool()> stop;
 };
 
 struct FrameView {
@@ -44,7 +48,7 @@ struct FrameView {
 };
 
 struct SessionResult {
-  std::string reason;  // "criterion", "max_passes", "device_ended"
+  EndReason reason = EndReason::kDeviceEnded;  // kCriterion, kMaxPasses, kDeviceEnded, kTerminated, ...
   int passes = 0;
   int branches = 0;             // rooms left in this run (a device that took none is suspect)
   int trials_to_criterion = 0;  // the pass (from 1) that had every room right; 0: none
@@ -87,8 +91,9 @@ class SessionCore {
   Status log_clutch(double time_s, double overshoot_mm, const glm::dvec3& hand_mm, const glm::dvec3& probe_mm) {
     return log_.clutch(time_s, overshoot_mm, hand_mm, probe_mm);
   }
-  // Writes session_end (`reason_if_open` when the tracker has not finished: device_ended, quit).
-  Result<SessionResult> finish(double time_s, const std::string& reason_if_open);
+  // Writes session_end (`reason_if_open` when the tracker has not finished: device_ended, quit,
+  // terminated).
+  Result<SessionResult> finish(double time_s, EndReason reason_if_open);
 
  private:
   Status resume(const ResumePoint& r);
@@ -103,6 +108,7 @@ class SessionCore {
   std::shared_ptr<const world::HapticScene> haptic_;
   bool scene_changed_ = true;
   double end_time_s_ = 0.0;
+  std::optional<EndReason> finished_by_;  // the tracker's end (criterion, max_passes), once reached
   SessionResult result_;
 };
 

@@ -3,13 +3,11 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
-#include <cstdlib>
-#include <fstream>
-#include <sstream>
+#include <filesystem>
+#include <stdexcept>
 
 #include <nlohmann/json.hpp>
 
-#include "core/file_io.h"
 #include "core/json_int.h"
 #include "maze/maze_log.h"
 
@@ -18,13 +16,6 @@ namespace ps::maze {
 namespace {
 
 using nlohmann::json;
-
-std::string fmt(double v, int digits = 3) {
-  if (std::isnan(v)) return "";  // a CI of fewer than two participants: no number
-  char buf[48];
-  std::snprintf(buf, sizeof buf, "%.*f", digits, v);
-  return buf;
-}
 
 int cue_index(const json& j, const std::string& where) {
   Cue c = Cue::kNone;
@@ -40,6 +31,8 @@ void read_line(ParticipantSummary& p, const json& j, const std::string& where) {
     p.session = json_int_or(j, "session", 1);
     p.condition = j.at("condition").get<std::string>();
     p.seed = json_int<std::uint64_t>(j.at("seed"), "seed");
+    p.started_at = j.value("started_at", std::string());
+    p.start_line = j.dump();
   } else if (type == "branch") {
     const auto c = static_cast<std::size_t>(cue_index(j.at("cue"), where));
     ++p.trials[c];
@@ -58,29 +51,81 @@ void read_line(ParticipantSummary& p, const json& j, const std::string& where) {
   } else if (type == "resumed") {  // one session, interrupted: what follows continues it
     ++p.resumed;
     p.ended = false;
-    p.end_reason.clear();
   } else if (type == "session_end") {
     p.ended = true;
-    p.end_reason = j.at("reason").get<std::string>();
+    if (!j.at("reason").is_string() || !parse_end_reason(j.at("reason").get<std::string>(), p.end_reason))
+      throw std::runtime_error("unknown session_end reason " + j.at("reason").dump());
     p.trials_to_criterion = j.at("trials_to_criterion").is_null() ? 0 : json_int<int>(j.at("trials_to_criterion"), "trials_to_criterion");
   }
 }
 
-std::string csv_header_cues(const std::string& prefix) {
-  std::string h;
-  for (int c = 0; c < kCueCount; ++c) h += "," + prefix + cue_name(static_cast<Cue>(c));
-  return h;
+// A folder's session logs (find_session_logs): its own, else each subfolder's, in name order.
+std::vector<std::string> logs_in_folder(const std::filesystem::path& dir) {
+  if (std::filesystem::is_regular_file(dir / "session.jsonl")) return {(dir / "session.jsonl").string()};
+  std::vector<std::string> logs;
+  std::error_code ec;
+  for (const auto& entry : std::filesystem::directory_iterator(dir, ec))
+    if (entry.is_directory() && std::filesystem::is_regular_file(entry.path() / "session.jsonl"))
+      logs.push_back((entry.path() / "session.jsonl").string());
+  std::sort(logs.begin(), logs.end());
+  return logs;
 }
 
 }  // namespace
 
+double ParticipantSummary::mean_room_time_s(int cue) const {
+  const auto c = static_cast<std::size_t>(cue);
+  return trials[c] > 0 ? room_time_s[c] / trials[c] : std::nan("");
+}
+
+Result<std::vector<std::string>> find_session_logs(const std::vector<std::string>& args, std::vector<std::string>& notes) {
+  std::vector<std::string> logs;
+  for (const std::string& arg : args) {
+    std::error_code ec;
+    if (!std::filesystem::is_directory(arg, ec)) {
+      if (!std::filesystem::exists(arg, ec))
+        return make_error(arg + ": no such file or folder (give session logs, participants' folders or a study folder)");
+      logs.push_back(arg);
+      continue;
+    }
+    const std::vector<std::string> found = logs_in_folder(arg);
+    if (found.empty()) notes.push_back(arg + ": no session.jsonl in it or in its subfolders: nothing from it");
+    logs.insert(logs.end(), found.begin(), found.end());
+  }
+  return logs;
+}
+
 Result<ParticipantSummary> summarize_log(const std::string& path) {
   ParticipantSummary p;
   p.log = path;
-  auto n = read_session_log(path, "give the session.jsonl a `maze` run wrote", "",
+  auto n = read_session_log(path, "give the session.jsonl a `maze` run wrote, or its folder", "",
                             [&](const json& j, const std::string& where) { read_line(p, j, where); });
   if (!n) return n.error();
   return p;
+}
+
+namespace {
+
+// Two logs of one run: the same participant, session and start (started_at, or for logs written
+// before that field the same session_start line).
+bool same_run(const ParticipantSummary& a, const ParticipantSummary& b) {
+  if (a.participant != b.participant || a.session != b.session) return false;
+  return a.started_at.empty() || b.started_at.empty() ? a.start_line == b.start_line : a.started_at == b.started_at;
+}
+
+}  // namespace
+
+Status check_no_duplicates(const std::vector<ParticipantSummary>& people) {
+  for (std::size_t i = 0; i < people.size(); ++i)
+    for (std::size_t k = 0; k < i; ++k) {
+      const ParticipantSummary &a = people[k], &b = people[i];
+      if (!same_run(a, b)) continue;
+      return make_error(a.log + " and " + b.log + " are the same session (participant " + a.participant + ", session " +
+                        std::to_string(a.session) +
+                        (a.started_at.empty() ? ", the same session_start line" : ", started " + a.started_at) +
+                        "): give each session once");
+    }
+  return ok_status();
 }
 
 namespace {
@@ -113,7 +158,7 @@ void fill_group(GroupSummary& g, const std::vector<const ParticipantSummary*>& m
     total.push_back(p->total_time_s);
     for (std::size_t c = 0; c < kCueCount; ++c) {
       errors[c].push_back(p->errors[c]);
-      room_time[c].push_back(p->mean_room_time_s(static_cast<int>(c)));
+      if (p->trials[c] > 0) room_time[c].push_back(p->mean_room_time_s(static_cast<int>(c)));  // left that room
     }
     for (std::size_t i = 0; i < p->pass_time_s.size(); ++i) {
       if (pass_time.size() <= i) pass_time.emplace_back();
@@ -140,7 +185,7 @@ void fill_group(GroupSummary& g, const std::vector<const ParticipantSummary*>& m
 MeanCi mean_ci(const std::vector<double>& values) {
   MeanCi r;
   r.n = static_cast<int>(values.size());
-  if (r.n == 0) return {0.0, std::nan(""), 0};
+  if (r.n == 0) return {std::nan(""), std::nan(""), 0};  // no mean of nobody: "—" in summary.md
   for (double v : values) r.mean += v;
   r.mean /= r.n;
   if (r.n < 2) return {r.mean, std::nan(""), r.n};
@@ -164,78 +209,6 @@ std::vector<GroupSummary> summarize_groups(const std::vector<ParticipantSummary>
   return groups;
 }
 
-namespace {
-
-// participants.csv, trials.csv and the markdown's participant table.
-void participant_tables(const std::vector<ParticipantSummary>& people, std::ostringstream& pc, std::ostringstream& tc,
-                        std::ostringstream& md) {
-  pc << "participant,session,condition,seed,passes,trials_to_criterion,ended,total_time_s" << csv_header_cues("errors_")
-     << csv_header_cues("room_time_s_") << ",end_reason,resumed\n";
-  tc << "participant,session,condition,pass,correct,pass_time_s\n";
-  md << "## Participants\n\n| participant | session | condition | seed | passes | trials to criterion | total time (s) |";
-  for (int c = 0; c < kCueCount; ++c) md << " errors " << cue_name(static_cast<Cue>(c)) << " |";
-  md << " end |\n|---|---|---|---|---|---|---|---|";
-  for (int c = 0; c < kCueCount; ++c) md << "---|";
-  md << "\n";
-  for (const ParticipantSummary& p : people) {
-    const std::string ttc = p.trials_to_criterion > 0 ? std::to_string(p.trials_to_criterion) : "";
-    pc << p.participant << "," << p.session << "," << p.condition << "," << p.seed << "," << p.passes << "," << ttc << ","
-       << (p.ended ? "yes" : "no") << "," << fmt(p.total_time_s);
-    md << "| " << p.participant << " | " << p.session << " | " << p.condition << " | " << p.seed << " | " << p.passes << " | "
-       << (ttc.empty() ? "not reached" : ttc) << " | " << fmt(p.total_time_s, 2) << " |";
-    for (int c = 0; c < kCueCount; ++c) pc << "," << p.errors[static_cast<std::size_t>(c)], md << " " << p.errors[static_cast<std::size_t>(c)] << " |";
-    for (int c = 0; c < kCueCount; ++c) pc << "," << fmt(p.mean_room_time_s(c));
-    pc << "," << p.end_reason_or_crashed() << "," << p.resumed << "\n";
-    md << " " << p.end_reason_or_crashed() << (p.ended ? "" : " (log cut short)")
-       << (p.resumed > 0 ? ", resumed " + std::to_string(p.resumed) + "x" : "") << " |\n";
-    for (std::size_t i = 0; i < p.pass_time_s.size(); ++i)
-      tc << p.participant << "," << p.session << "," << p.condition << "," << i + 1 << "," << p.pass_correct[i] << "," << fmt(p.pass_time_s[i]) << "\n";
-  }
-}
-
-// rooms.csv: one row per room left, every participant.
-std::string rooms_table(const std::vector<ParticipantSummary>& people) {
-  std::ostringstream rc;
-  rc << "participant,condition,session,pass,room,cue,exit,correct,time_s,path_mm,contacts_floor,contacts_wall,"
-        "contacts_ceiling,contacts_hidden\n";
-  for (const ParticipantSummary& p : people)
-    for (const RoomTrial& r : p.rooms) {
-      rc << p.participant << "," << p.condition << "," << p.session << "," << r.pass << "," << r.room << "," << r.cue << ","
-         << r.exit << "," << (r.correct ? "yes" : "no") << "," << fmt(r.time_s) << "," << fmt(r.path_mm, 2);
-      for (int k : r.contacts) rc << "," << k;
-      rc << "\n";
-    }
-  return rc.str();
-}
-
-// groups.csv and the markdown's group table.
-void group_tables(const std::vector<GroupSummary>& groups, std::ostringstream& gc, std::ostringstream& md) {
-  gc << "condition,session,participants,reached_criterion,mean_trials_to_criterion,mean_total_time_s"
-     << csv_header_cues("mean_errors_") << csv_header_cues("mean_room_time_s_") << ",excluded,ci95_total_time_s"
-     << csv_header_cues("ci95_errors_") << "\n";
-  md << "\n## Groups\n\n| condition | session | participants (excluded) | reached criterion | mean trials to criterion | mean total time (s) ± 95 % CI |";
-  for (int c = 0; c < kCueCount; ++c) md << " mean room time " << cue_name(static_cast<Cue>(c)) << " (s) |";
-  md << "\n|---|---|---|---|---|---|";
-  for (int c = 0; c < kCueCount; ++c) md << "---|";
-  md << "\n";
-  for (const GroupSummary& g : groups) {
-    gc << g.condition << "," << g.session << "," << g.participants << "," << g.reached_criterion << "," << fmt(g.mean_trials_to_criterion)
-       << "," << fmt(g.mean_total_time_s);
-    md << "| " << g.condition << " | " << g.session << " | " << g.participants << " (" << g.excluded << ") | "
-       << g.reached_criterion << " | " << fmt(g.mean_trials_to_criterion, 2) << " | " << fmt(g.mean_total_time_s, 2)
-       << (std::isnan(g.ci_total_time_s) ? "" : " ± " + fmt(g.ci_total_time_s, 2)) << " |";
-    for (int c = 0; c < kCueCount; ++c) gc << "," << fmt(g.mean_errors[static_cast<std::size_t>(c)]);
-    for (int c = 0; c < kCueCount; ++c)
-      gc << "," << fmt(g.mean_room_time_s[static_cast<std::size_t>(c)]), md << " " << fmt(g.mean_room_time_s[static_cast<std::size_t>(c)], 2) << " |";
-    gc << "," << g.excluded << "," << fmt(g.ci_total_time_s);
-    for (int c = 0; c < kCueCount; ++c) gc << "," << fmt(g.ci_errors[static_cast<std::size_t>(c)]);
-    gc << "\n";
-    md << "\n";
-  }
-}
-
-}  // namespace
-
 std::vector<RetestSummary> summarize_retests(const std::vector<ParticipantSummary>& people) {
   std::vector<RetestSummary> out;
   for (const ParticipantSummary& first : people) {
@@ -254,32 +227,6 @@ std::vector<RetestSummary> summarize_retests(const std::vector<ParticipantSummar
     }
   }
   return out;
-}
-
-Status write_tables(const std::string& dir, const std::vector<ParticipantSummary>& people,
-                    const std::vector<GroupSummary>& groups, const std::vector<RetestSummary>& retests) {
-  std::ostringstream pc, gc, tc, rc, md;
-  md << "# Maze summary\n\n";
-  participant_tables(people, pc, tc, md);
-  group_tables(groups, gc, md);
-  rc << "condition,retested,faster_on_retest,share_faster\n";
-  if (!retests.empty())
-    md << "\n## Retest (session 2 against session 1, seed 003 §VII)\n\n| condition | retested | faster on retest | share |\n"
-          "|---|---|---|---|\n";
-  for (const RetestSummary& r : retests) {
-    rc << r.condition << "," << r.retested << "," << r.faster << "," << fmt(r.share_faster()) << "\n";
-    md << "| " << r.condition << " | " << r.retested << " | " << r.faster << " | " << fmt(100.0 * r.share_faster(), 0) << " % |\n";
-  }
-  md << "\nErrors per room are wrong exits summed over all passes; room time is the time from entering a room to "
-        "leaving it by an exit, averaged over passes. Group means leave out aborted sessions (quit, device_ended, "
-        "crashed: the count in brackets) unless summarize was given --include-aborted; ± is the 95 % confidence "
-        "interval (Student's t). Per-room trials: rooms.csv. Plots: errors_by_room.png, time_per_trial.png.\n";
-  for (const auto& [name, text] : {std::pair<std::string, std::string>{"participants.csv", pc.str()},
-                                   {"groups.csv", gc.str()}, {"trials.csv", tc.str()}, {"rooms.csv", rooms_table(people)},
-                                   {"retest.csv", rc.str()},
-                                   {"summary.md", md.str()}})
-    if (Status s = write_file_atomic(dir + "/" + name, text); !s) return s;
-  return ok_status();
 }
 
 }  // namespace ps::maze

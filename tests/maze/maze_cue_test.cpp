@@ -256,7 +256,7 @@ TEST(MazeCueTest, CuesShowInTheSessionLog) {
   o.log_path = dir + "/session.jsonl";
   auto r = run_session(*dev.value(), o, nullptr, nullptr);
   ASSERT_TRUE(r) << r.error().message;
-  ASSERT_EQ(r->reason, "criterion");
+  ASSERT_EQ(r->reason, EndReason::kCriterion);
   std::map<std::string, nlohmann::json> room;
   for (const std::string& line : test::read_lines(o.log_path)) {
     const auto j = nlohmann::json::parse(line);

@@ -46,7 +46,7 @@ TEST(MazeLogTest, EveryLineIsWrittenOnceAndSyncedBeforeAppendReturns) {
   ASSERT_TRUE(log->pass_start(0, {}, 0.0));
   EXPECT_EQ(trace.calls, (std::vector<std::string>{"w", "s"}));  // synced before the next line
   ASSERT_TRUE(log->clutch(1.5, 3.0, {1, 2, 0}, {1, 0, 0}));
-  ASSERT_TRUE(log->session_end("quit", 1, 0, 2.0));
+  ASSERT_TRUE(log->session_end(EndReason::kQuit, 1, 0, 2.0));
   EXPECT_EQ(trace.calls, (std::vector<std::string>{"w", "s", "w", "s", "w", "s"}));
   EXPECT_EQ(log->lines(), 3);
 }
@@ -72,7 +72,7 @@ TEST(MazeLogTest, FailedSyncIsReported) {
   const std::string path = fresh_log("unsynced.maze.jsonl");
   auto log = SessionLog::open(path, sys);
   ASSERT_TRUE(log);
-  const Status s = log->session_end("quit", 0, 0, 0.0);
+  const Status s = log->session_end(EndReason::kQuit, 0, 0, 0.0);
   ASSERT_FALSE(s);
   EXPECT_NE(s.error().message.find("unsynced.maze.jsonl: cannot sync the session log"), std::string::npos)
       << s.error().message;

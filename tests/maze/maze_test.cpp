@@ -249,7 +249,7 @@ TEST(MazeSessionTest, TickFeedDrainedAtSlowFramesScoresLikeEveryTick) {
   ASSERT_TRUE(every);
   auto reference = run_session(*every.value(), o, nullptr, nullptr);
   ASSERT_TRUE(reference) << reference.error().message;
-  ASSERT_EQ(reference->reason, "criterion");
+  ASSERT_EQ(reference->reason, EndReason::kCriterion);
 
   o.log_path = dir + "/slow_frames.jsonl";
   auto dev = open_log_device("trajectory:" + dir + "/p.traj");
@@ -269,9 +269,9 @@ TEST(MazeSessionTest, TickFeedDrainedAtSlowFramesScoresLikeEveryTick) {
     });
     ASSERT_TRUE(stepped) << stepped.error().message;
   }
-  auto slow = core.value()->finish(core.value()->end_time_s(), "device_ended");
+  auto slow = core.value()->finish(core.value()->end_time_s(), EndReason::kDeviceEnded);
   ASSERT_TRUE(slow) << slow.error().message;
-  EXPECT_EQ(slow->reason, "criterion");
+  EXPECT_EQ(slow->reason, EndReason::kCriterion);
   EXPECT_EQ(slow->trials_to_criterion, reference->trials_to_criterion);
   ASSERT_EQ(slow->scores.size(), reference->scores.size());
   for (std::size_t p = 0; p < slow->scores.size(); ++p)
@@ -300,7 +300,7 @@ TEST(MazeSessionTest, EveryRouteIsReachable) {
       auto r = scripted_session(temp_dir("reachable_" + std::to_string(seed) + (cues ? "_on" : "_off")), d.value(),
                                 route, cues, {correct_choices(route, 0)});
       ASSERT_TRUE(r) << r.error().message;
-      EXPECT_EQ(r->reason, "criterion") << "seed " << seed << " cues " << cues;
+      EXPECT_EQ(r->reason, EndReason::kCriterion) << "seed " << seed << " cues " << cues;
       ASSERT_EQ(r->scores.size(), 1u);
       for (const Trial& t : r->scores[0].trials) EXPECT_TRUE(t.ok) << cue_name(t.cue) << " took " << exit_name(t.chosen);
     }
@@ -315,7 +315,7 @@ TEST(MazeSessionTest, WrongExitIsAFailedTrialAndThePerfectPassEnds) {
   const std::string dir = temp_dir("wrong_then_right");
   auto r = scripted_session(dir, d.value(), route, true, {choices_with_errors(route, 0, 2), correct_choices(route, 1)});
   ASSERT_TRUE(r) << r.error().message;
-  EXPECT_EQ(r->reason, "criterion");
+  EXPECT_EQ(r->reason, EndReason::kCriterion);
   EXPECT_EQ(r->trials_to_criterion, 2);
   ASSERT_EQ(r->scores.size(), 2u);
   EXPECT_EQ(r->scores[0].correct(), 4);
@@ -357,7 +357,7 @@ TEST(MazeSessionTest, MaxPassesEndsASessionWithoutCriterion) {
   auto r = scripted_session(temp_dir("max_passes"), d.value(), route, false,
                             {choices_with_errors(route, 0, 1), choices_with_errors(route, 1, 1), correct_choices(route, 2)});
   ASSERT_TRUE(r) << r.error().message;
-  EXPECT_EQ(r->reason, "max_passes");
+  EXPECT_EQ(r->reason, EndReason::kMaxPasses);
   EXPECT_EQ(r->passes, 2);
   EXPECT_EQ(r->trials_to_criterion, 0);
 }

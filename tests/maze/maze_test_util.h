@@ -1,10 +1,12 @@
 // Helpers shared by the maze tests: the shipped description, a per-test temporary directory
-// (unique per process and name: the suite runs tests in parallel), a file's lines, a child
-// process running the real program.
+// (unique per process and name: the suite runs tests in parallel), a file's lines (and a line
+// without its wall-clock start), a child process running the real program.
 #pragma once
 
+#include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <regex>
 #include <string>
 #include <sys/types.h>
 #include <unistd.h>
@@ -29,10 +31,20 @@ inline std::vector<std::string> read_lines(const std::string& path) {
   return lines;
 }
 
-// Starts args[0] (an absolute path) with args in a child process; returns its pid.
-inline pid_t spawn(const std::vector<std::string>& args) {
+// A log line without session_start's wall-clock `started_at`: two runs of one session compare
+// equal line for line apart from it.
+inline std::string without_start_time(const std::string& line) {
+  static const std::regex started_at(R"("started_at":"[^"]*",)");
+  return std::regex_replace(line, started_at, "");
+}
+
+// Starts args[0] (an absolute path) with args in a child process; returns its pid. Its stdout
+// and stderr go to the files named, if any.
+inline pid_t spawn(const std::vector<std::string>& args, const std::string& out = "", const std::string& err = "") {
   const pid_t pid = fork();
   if (pid == 0) {
+    if (!out.empty() && !std::freopen(out.c_str(), "w", stdout)) _exit(126);
+    if (!err.empty() && !std::freopen(err.c_str(), "w", stderr)) _exit(126);
     std::vector<char*> argv;
     for (const std::string& a : args) argv.push_back(const_cast<char*>(a.c_str()));
     argv.push_back(nullptr);

@@ -12,6 +12,7 @@
 #include "app/calibrate/calibrate_window.h"
 #include "app/cli/cli.h"
 #include "app/cli/cli_groups.h"
+#include "app/cli/stop_signal.h"
 #include "app/commands.h"
 #include "core/file_io.h"
 #include "reference/modulation.h"
@@ -81,6 +82,7 @@ void declare(cli::Command& cmd, CalibrateArgs& a) {
       ->type_name("LOG.csv");
   cli::add_quiet_option(app, a.quiet);
   cmd.usage("pseudoshadow calibrate --curve distance|speed --out FILE.lut [--observer simulated] [options]");
+  app.footer(std::string(cli::kExitStatusHelp) + cli::kExitSignalHelp);
 }
 
 std::string number(double v) {
@@ -187,15 +189,17 @@ Status resume_from(const std::string& path, calibrate::Calibration& cal, calibra
 
 // The trials still to run (none after a finished --resume): by the simulated observer, or in
 // the window (answered by the simulated observer's script, or by the person).
+// `stop`: a signal asked to stop (app/cli/stop_signal.h); the trials end as Esc ends them.
 Status collect_answers(const CalibrateArgs& a, calibrate::Calibration& cal, calibrate::SimulatedObserver& observer,
-                       const Scene& scene, const Material& m, const std::string& log_path) {
+                       const Scene& scene, const Material& m, const std::string& log_path,
+                       const std::function<bool()>& stop) {
   const bool simulated = a.observer == "simulated";
   if (cal.done()) return ok_status();
   if (simulated && !a.window) {
-    calibrate::run_simulated(cal, observer);
+    calibrate::run_simulated(cal, observer, stop);
     return ok_status();
   }
-  CalibrateWindowParams wp{scene, m, log_path, {}};
+  CalibrateWindowParams wp{scene, m, log_path, {}, stop};
   const calibrate::CurveKind kind = cal.spec().kind;
   if (simulated) wp.script = [&observer, kind](const calibrate::Trial& t) { return observer.answer_left(t, kind); };
   return run_calibrate_window(cal, wp);
@@ -214,6 +218,14 @@ bool report_stopped(const calibrate::Calibration& cal, const std::string& log_pa
     return false;
   }
   return true;
+}
+
+// After a signal: where the trials are and the command line that goes on from them; 128 + the
+// signal's number.
+int report_signal(const cli::Command& cmd, const cli::StopSignals& stop, const std::string& log_path) {
+  const std::string next = "resume with: " + cli::command_with(cmd.name(), cmd.args(), "--resume", log_path);
+  std::fprintf(stderr, "%s\n", cli::stop_line("calibrate", stop.received(), "trial log", log_path, next).c_str());
+  return stop.exit_code();
 }
 
 int calibrate_main(const cli::Command& cmd, const CalibrateArgs& a) {
@@ -236,12 +248,16 @@ int calibrate_main(const cli::Command& cmd, const CalibrateArgs& a) {
   const bool simulated = a.observer == "simulated";
   if (!a.resume.empty())
     if (Status s = resume_from(a.resume, cal, simulated ? &observer : nullptr); !s) return cmd.fail(s.error());
-  if (Status s = collect_answers(a, cal, observer, scene.value(), *m, log_path); !s) return cmd.fail(s.error());
+  const cli::StopSignals stop;  // SIGTERM, SIGINT, SIGHUP: the trials end as Esc ends them
+  if (Status s = collect_answers(a, cal, observer, scene.value(), *m, log_path, stop.predicate()); !s)
+    return cmd.fail(s.error());
   if (Status s = write_file_atomic(log_path, calibrate::format_trial_log(cal)); !s) return cmd.fail(s.error());
-  if (!cal.done() && !report_stopped(cal, log_path)) return cli::kExitOk;
+  // The signal's line comes last, after what was written.
+  const auto done = [&] { return stop.requested() ? report_signal(cmd, stop, log_path) : cli::kExitOk; };
+  if (!cal.done() && !report_stopped(cal, log_path)) return done();
   if (Status s = write_table(a, cal, *m, shown, range); !s) return cmd.fail(s.error());
   if (!a.quiet) std::printf("calibrate: trials %s\n", log_path.c_str());
-  return cli::kExitOk;
+  return done();
 }
 
 }  // namespace

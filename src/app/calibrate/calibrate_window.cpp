@@ -172,7 +172,7 @@ Status run_trials(GLFWwindow* win, calibrate::Calibration& cal, const CalibrateW
   std::size_t shown = static_cast<std::size_t>(-1);  // the last trial drawn (index), none yet
   while (!cal.done() && !glfwWindowShouldClose(win)) {
     glfwPollEvents();
-    if (answers.quit) break;
+    if (answers.quit || (p.stop && p.stop())) break;
     if (glfwGetTime() < blank_until) {  // a blank between trials: the next one is seen to be new
       answers.left.clear();             // a press now would answer a trial not yet shown
       present(win, nullptr, question, progress_text(cal));

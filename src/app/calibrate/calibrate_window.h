@@ -18,10 +18,13 @@ struct CalibrateWindowParams {
   // Set: answers each trial once its stimuli have been drawn (true: left), instead of the keys
   // (`--observer simulated --window`: the scripted observer, shown).
   std::function<bool(const calibrate::Trial&)> script;
+  // Asked every frame: true ends the trials as Esc does (the CLI's SIGTERM/SIGINT/SIGHUP,
+  // app/cli/stop_signal.h). Empty: never.
+  std::function<bool()> stop;
 };
 
-// Runs until the calibration is done or the window is closed (Esc, Q): an early stop is not an
-// error, cal.done() tells.
+// Runs until the calibration is done, the window is closed (Esc, Q) or p.stop says so: an early
+// stop is not an error, cal.done() tells.
 Status run_calibrate_window(calibrate::Calibration& cal, const CalibrateWindowParams& p);
 
 }  // namespace ps

@@ -1,5 +1,6 @@
 #include "app/cli/cli.h"
 
+#include <algorithm>
 #include <charconv>
 #include <cmath>
 #include <cstdio>
@@ -105,6 +106,7 @@ std::string Command::unknown_argument(const std::string& arg) const {
 }
 
 int Command::run(int argc, char** argv, const std::function<int()>& action) {
+  args_.assign(argv + std::min(argc, 1), argv + argc);
   try {
     app_.parse(argc, argv);
   } catch (const CLI::CallForHelp&) {

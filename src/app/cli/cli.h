@@ -54,6 +54,10 @@ class Command {
   // line and exit 2, then calls `action` and returns its exit status.
   int run(int argc, char** argv, const std::function<int()>& action);
 
+  // The arguments after the command's name, as given (set by run()): a stopped command prints
+  // them back in its resume line (app/cli/stop_signal.h).
+  const std::vector<std::string>& args() const { return args_; }
+
   // "pseudoshadow NAME: MESSAGE" on stderr (one line); returns the exit status to pass on.
   int fail(const Error& e, int exit_code = kExitRuntime) const;
   int usage_error(const Error& e) const { return fail(e, kExitUsage); }
@@ -63,6 +67,7 @@ class Command {
 
   std::string name_, prefix_;
   CLI::App app_;
+  std::vector<std::string> args_;
 };
 
 // Adds an option whose value is handed to `apply` as it is met on the command line, so

@@ -11,6 +11,7 @@
 
 #include "app/cli/cli.h"
 #include "app/cli/cli_groups.h"
+#include "app/cli/stop_signal.h"
 #include "app/commands.h"
 #include "app/commands/run_live.h"
 #include "app/window/run_keys.h"
@@ -108,7 +109,7 @@ void declare(cli::Command& cmd, RunArgs& a) {
   cli::add_int(app, "--frames", "N", a.frames, 1, 100'000'000, "quit after N frames");
   cli::add_positive(app, "--quit-after", "S", a.quit_after_s, 1e9, "5", "quit after S seconds");
   cli::add_quiet_option(app, a.quiet, "no summary");
-  app.footer(run_footer() + cli::kExitStatusHelp);
+  app.footer(run_footer() + cli::kExitStatusHelp + cli::kExitSignalHelp);
 }
 
 // Files are polled 5 times a second, so a saved change is on screen within ~0.2 s plus one
@@ -135,7 +136,8 @@ void count_frame(Session& s, const HapticState& st, std::chrono::steady_clock::t
   if (st.have_sample) s.latency_ms.add(static_cast<double>(f1.time_since_epoch().count() - st.sample_clock_ns) * 1e-6);
 }
 
-Status window_loop(const RunArgs& a, Session& s) {
+// `stop`: a signal asked to stop (app/cli/stop_signal.h): the loop ends as Esc ends it.
+Status window_loop(const RunArgs& a, Session& s, const cli::StopSignals& stop) {
   GLFWwindow* win = s.ctx->window();
   const auto t0 = std::chrono::steady_clock::now();
   double last_flush = 0.0, last_watch = 0.0;
@@ -144,7 +146,7 @@ Status window_loop(const RunArgs& a, Session& s) {
     const double now_s = std::chrono::duration<double>(f0 - t0).count();
     s.now_s = now_s;
     glfwPollEvents();
-    if (glfwWindowShouldClose(win) || s.input.quit) break;
+    if (glfwWindowShouldClose(win) || s.input.quit || stop.requested()) break;
     if ((a.frames > 0 && static_cast<long long>(frame) >= a.frames) || (a.quit_after_s > 0 && now_s >= a.quit_after_s)) break;
     poll_device(s, s.loop->state().read().time_s, !s.ui->panel().wants_input());
     HapticState st;
@@ -191,6 +193,21 @@ Status write_reports(const RunArgs& a, const Session& s) {
   return ok_status();
 }
 
+// After a signal: what was closed as at a normal end, and how to see it again; 128 + the signal.
+int report_stop(const RunArgs& a, const cli::StopSignals& stop) {
+  std::string what, path = a.record, next;
+  if (!a.record.empty()) {
+    what = "recording";
+    next = "replay with: pseudoshadow replay --log " + a.record + " --out DIR";
+  }
+  if (!a.events.log_path.empty()) {
+    what += what.empty() ? "event log" : " and event log";
+    path += path.empty() ? a.events.log_path : ", " + a.events.log_path;
+  }
+  std::fprintf(stderr, "%s\n", cli::stop_line("run", stop.received(), what, path, next).c_str());
+  return stop.exit_code();
+}
+
 int run(const cli::Command& cmd, const RunArgs& a) {
   auto scene = cli::load_scene_or_default(a.scene);
   if (!scene) return cmd.fail(scene.error(), cli::scene_exit_code(scene.error()));
@@ -208,7 +225,8 @@ int run(const cli::Command& cmd, const RunArgs& a) {
   for (int i = 0; i < 100 && !s.loop->state().read().have_sample; ++i)
     std::this_thread::sleep_for(std::chrono::milliseconds(1));
   if (!a.quiet) std::printf("haptic thread: %s; %s\n", s.loop->scheduling().c_str(), live->report().c_str());
-  const Status looped = window_loop(a, s);
+  const cli::StopSignals stop;  // SIGTERM, SIGINT, SIGHUP: the window closes as with Esc
+  const Status looped = window_loop(a, s, stop);
   s.loop->stop();  // join the haptic thread before touching what it wrote
   s.vibration->close();
   if (s.recorder)
@@ -219,7 +237,7 @@ int run(const cli::Command& cmd, const RunArgs& a) {
   if (Status st = write_reports(a, s); !st) return cmd.fail(st.error());
   if (!a.quiet) print_summary(s);
   if (!a.quiet && s.vibration->active()) std::printf("%s\n", s.vibration->summary().c_str());
-  return cli::kExitOk;
+  return stop.requested() ? report_stop(a, stop) : cli::kExitOk;
 }
 
 }  // namespace

@@ -1,6 +1,6 @@
 // `pseudoshadow maze`: the haptic cue maze of seed 003 as an experiment (docs/maze.md).
 //   maze --participant ID --seed N --cues on|off [--device trajectory:FILE|playback:FILE] [--out DIR]
-//   maze summarize LOGS... --out DIR
+//   maze summarize LOG|DIR... --out DIR
 //   maze script --seed N --out FILE.traj [--errors K]
 // With a log device the session runs headless and deterministically (maze/maze_session.h);
 // without one it opens the window (app/maze/maze_window.cpp).
@@ -9,8 +9,10 @@
 
 #include "app/cli/cli.h"
 #include "app/cli/cli_groups.h"
+#include "app/cli/stop_signal.h"
 #include "app/commands.h"
 #include "app/maze/maze_plan_cmd.h"
+#include "app/maze/maze_summarize_cmd.h"
 #include "app/maze/maze_window.h"
 #include "app/session/session.h"
 #include "core/file_io.h"
@@ -20,7 +22,6 @@
 #include "maze/maze_screen.h"
 #include "maze/maze_script.h"
 #include "maze/maze_session.h"
-#include "maze/maze_summary.h"
 #include "render/renderer.h"
 #include "scene/scene_io.h"
 
@@ -35,7 +36,7 @@ constexpr const char* kDescription =
     "room order come from the seed. Writes DIR/session.jsonl (the session log), DIR/device.log (the\n"
     "device stream) and a score picture per pass. With --device trajectory:FILE or playback:FILE the\n"
     "session runs headless and deterministically; without --device it opens a window.\n"
-    "Also: `maze summarize LOGS... --out DIR`, `maze script --seed N --out FILE.traj`, `maze plan --participants N\n"
+    "Also: `maze summarize LOGS|DIRS... --out DIR`, `maze script --seed N --out FILE.traj`, `maze plan --participants N\n"
     "--out plan.csv` (then `maze --plan plan.csv --participant P03`) and `maze --resume DIR`.";
 
 std::string default_maze() { return default_scene_base_dir() + "/maze/maze.toml"; }
@@ -111,39 +112,50 @@ void declare(cli::Command& cmd, MazeArgs& a) {
   cli::add_live_loop_options(app, a.live);
   cli::add_quiet_option(app, a.quiet);
   cmd.usage("pseudoshadow maze --participant ID --seed N --cues on|off [--device trajectory:FILE] [--out DIR]");
+  app.footer(std::string(cli::kExitStatusHelp) + cli::kExitSignalHelp);
 }
 
-int run_headless(const cli::Command& cmd, const MazeArgs& a, const maze::SessionOptions& base) {
-  auto fail = [&cmd](const Error& e) { return cmd.fail(e); };
+// --every N: the GL context and the frame writer (none without --every).
+struct HeadlessFrames {
+  std::unique_ptr<gl::Context> ctx;
+  std::unique_ptr<maze::FrameWriter> writer;
+  maze::FrameFn on_frame() {
+    if (!writer) return {};
+    return [this](const maze::FrameView& v) { return writer->on_frame(v); };
+  }
+};
+
+Status open_frames(const MazeArgs& a, const maze::MazeDesc& desc, HeadlessFrames& f) {
+  if (a.every <= 0) return ok_status();  // GL only when frames are asked for: a session alone needs none
+  if (Status s = prepare_output_dir(a.out_dir + "/frames/frame_00000.png"); !s) return s;
+  auto c = cli::open_context(a.gl_opts);
+  if (!c) return c.error();
+  f.ctx = std::move(c.value());
+  f.writer = std::make_unique<maze::FrameWriter>(desc, a.out_dir + "/frames", static_cast<int>(a.every));
+  return ok_status();
+}
+
+int run_headless(const cli::Command& cmd, const MazeArgs& a, const maze::SessionOptions& base, maze::EndReason& ended) {
   auto device = open_device_log(a.device);
   if (!device) return cmd.fail(make_error("--device: " + device.error().message));
   maze::SessionOptions o = base;
   o.pace = a.pace;
   o.fps = a.every > 0 ? a.fps : 0.0;
-  // GL only when frames are asked for: a session alone needs none.
-  std::unique_ptr<gl::Context> ctx;
-  std::unique_ptr<maze::FrameWriter> frames;
-  if (a.every > 0) {
-    if (Status s = prepare_output_dir(a.out_dir + "/frames/frame_00000.png"); !s) return fail(s.error());
-    auto c = cli::open_context(a.gl_opts);
-    if (!c) return fail(c.error());
-    ctx = std::move(c.value());
-    frames = std::make_unique<maze::FrameWriter>(o.desc, a.out_dir + "/frames", static_cast<int>(a.every));
-  }
-  const maze::FrameFn on_frame = frames ? maze::FrameFn([&](const maze::FrameView& v) { return frames->on_frame(v); })
-                                        : maze::FrameFn();
+  HeadlessFrames frames;
+  if (Status s = open_frames(a, o.desc, frames); !s) return cmd.fail(s.error());
   auto on_score = [&](const maze::PassScore& s) -> Status {
     if (!a.quiet) std::printf("pass %d: %d of 6 rooms right\n", s.pass + 1, s.correct());
     return write_image(a.out_dir + "/score_pass_" + std::to_string(s.pass + 1) + ".png", maze::score_image(s, o.info.cues));
   };
-  auto r = maze::run_session(*device->device, o, on_frame, on_score);
-  if (!r) return fail(r.error());
-  if (r->reason == "device_ended" && r->branches == 0)
+  auto r = maze::run_session(*device->device, o, frames.on_frame(), on_score);
+  if (!r) return cmd.fail(r.error());
+  ended = r->reason;
+  if (r->reason == maze::EndReason::kDeviceEnded && r->branches == 0)
     std::fprintf(stderr, "pseudoshadow maze: warning: %s ended before the first branch: is it this session's (seed %llu)?\n",
                  a.device.c_str(), static_cast<unsigned long long>(o.route.seed));
   if (!a.quiet)
     std::printf("maze: %s after %d pass%s (%s), %.2f s of session; log %s\n", a.participant.c_str(), r->passes,
-                r->passes == 1 ? "" : "es", r->reason.c_str(), r->time_s, o.log_path.c_str());
+                r->passes == 1 ? "" : "es", maze::end_reason_name(r->reason), r->time_s, o.log_path.c_str());
   return cli::kExitOk;
 }
 
@@ -162,18 +174,36 @@ bool opens_window(const MazeArgs& a) {
   return a.window || a.device.empty() || a.device == "mouse" || a.device == "gamepad";
 }
 
-int run_session_of(const cli::Command& cmd, const MazeArgs& a, const maze::SessionOptions& o) {
+// After a signal (app/cli/stop_signal.h): where the log is and how to go on; 128 + the signal.
+int report_stop(const cli::StopSignals& stop, const maze::SessionOptions& o, maze::EndReason ended) {
+  const std::string dir = std::filesystem::path(o.log_path).parent_path().string();
+  const std::string next = maze::completes_session(ended)
+                               ? std::string("the session had ended (") + maze::end_reason_name(ended) + "): nothing to resume"
+                               : "resume with: pseudoshadow maze --resume " + (dir.empty() ? "." : dir);
+  std::fprintf(stderr, "%s\n", cli::stop_line("maze", stop.received(), "log", o.log_path, next).c_str());
+  return stop.exit_code();
+}
+
+int run_session_of(const cli::Command& cmd, const MazeArgs& a, const maze::SessionOptions& options) {
   const bool live = a.device.empty() || a.device == "mouse" || a.device == "gamepad";
   if (a.practice && !live)
     return cmd.usage_error(make_error("--practice: a practice pass is for a participant at the window; give "
                                       "--device mouse or gamepad (or none), not a log"));
-  if (a.practice && o.resume)
+  if (a.practice && options.resume)
     return cmd.usage_error(make_error("--practice: a resumed session goes on where it stopped, without practice"));
+  // SIGTERM, SIGINT, SIGHUP: the session ends as `terminated` through its normal end.
+  const cli::StopSignals stop;
+  maze::SessionOptions o = options;
+  o.stop = stop.predicate();
+  maze::EndReason ended = maze::EndReason::kQuit;
+  int rc = cli::kExitOk;
   if (opens_window(a)) {
     const MazeWindowParams wp{a.no_clutch ? 0.0 : a.clutch_mm, !a.hide_hand, a.practice};
-    return run_maze_window(cmd, o, a.device, a.live, wp);
+    rc = run_maze_window(cmd, o, a.device, a.live, wp, &ended);
+  } else {
+    rc = run_headless(cmd, a, o, ended);
   }
-  return run_headless(cmd, a, o);
+  return rc == cli::kExitOk && stop.requested() ? report_stop(stop, o, ended) : rc;
 }
 
 // --resume DIR: the session in DIR's log goes on where it stopped (maze/maze_resume.h).
@@ -242,46 +272,6 @@ int maze_main(const cli::Command& cmd, const MazeArgs& a) {
   return run_session_of(cmd, args, o);
 }
 
-// --- maze summarize -------------------------------------------------------------------------
-
-struct SummarizeArgs {
-  std::vector<std::string> logs;
-  std::string out_dir;
-  bool no_plots = false, quiet = false, include_aborted = false;
-};
-
-void declare_summarize(cli::Command& cmd, SummarizeArgs& a) {
-  CLI::App& app = cmd.app();
-  app.add_option("logs", a.logs, "session logs (DIR/session.jsonl of each participant)")->type_name("LOG");
-  cli::add_output(app, "--out", a.out_dir, "DIR",
-                  "writes participants.csv, groups.csv, trials.csv, rooms.csv, summary.md and the plots there (required); it "
-                  "must exist, or only its last component may be missing (it is created)");
-  app.add_flag("--no-plots", a.no_plots, "tables only (no gnuplot needed)");
-  app.add_flag("--include-aborted", a.include_aborted,
-               "count aborted sessions (quit, device_ended, crashed) in the group means too (default: left out, "
-               "counted in groups.csv's `excluded`)");
-  cli::add_quiet_option(app, a.quiet);
-  cmd.usage("pseudoshadow maze summarize LOGS... --out DIR");
-}
-
-int summarize_main(const cli::Command& cmd, const SummarizeArgs& a) {
-  if (a.logs.empty() || a.out_dir.empty())
-    return cmd.usage_error(make_error("give at least one log and --out DIR (e.g. maze summarize p1/session.jsonl p2/session.jsonl --out summary)"));
-  std::vector<maze::ParticipantSummary> people;
-  for (const std::string& log : a.logs) {
-    auto p = maze::summarize_log(log);
-    if (!p) return cmd.fail(p.error());
-    people.push_back(std::move(p.value()));
-  }
-  const auto groups = maze::summarize_groups(people, a.include_aborted);
-  if (Status s = prepare_output_dir(a.out_dir + "/summary.md"); !s) return cmd.fail(s.error());
-  if (Status s = maze::write_tables(a.out_dir, people, groups, maze::summarize_retests(people)); !s) return cmd.fail(s.error());
-  if (!a.no_plots)
-    if (Status s = maze::write_plots(a.out_dir, people, groups); !s) return cmd.fail(s.error());
-  if (!a.quiet) std::printf("summarized %zu participants in %zu groups into %s\n", people.size(), groups.size(), a.out_dir.c_str());
-  return cli::kExitOk;
-}
-
 // --- maze script ------------------------------------------------------------------------------
 
 struct ScriptArgs {
@@ -340,11 +330,7 @@ int script_main(const cli::Command& cmd, const ScriptArgs& a) {
 
 int run_maze(int argc, char** argv) {
   const std::string_view sub = argc >= 2 ? argv[1] : "";
-  if (sub == "summarize")
-    return cli::run_command<SummarizeArgs>(argc - 1, argv + 1, "maze summarize",
-                                           "Tables (CSV, markdown) and plots (PNG) of maze session logs, per "
-                                           "participant and per condition (docs/maze.md).",
-                                           declare_summarize, summarize_main);
+  if (sub == "summarize") return run_maze_summarize(argc - 1, argv + 1);
   if (sub == "plan") return run_maze_plan(argc - 1, argv + 1);
   if (sub == "script")
     return cli::run_command<ScriptArgs>(argc - 1, argv + 1, "maze script",

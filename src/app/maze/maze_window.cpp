@@ -44,7 +44,8 @@ struct LivePass {
   std::unique_ptr<vibration::LiveVibration> vib;
   SampleRecorder recorder;
   TickFeed ticks{kTrackFeedTicks};
-  std::string reason = "quit";  // why the pass ended: session_end's reason
+  // Why the pass ended (session_end's reason unless the tracker ended it: criterion, max_passes).
+  maze::EndReason reason = maze::EndReason::kQuit;
   LivePass(Window& w, const maze::SessionOptions& o, const maze::SessionCore& core, const cli::LiveLoopArgs& live)
       : loop(*w.device, clock, o.haptics, core.haptic().get()),
         vib(cli::open_live_vibration(live, core.scene().scene, loop)),
@@ -157,12 +158,21 @@ Status follow_scene(maze::SessionCore& core, Window& w, LivePass& pass) {
   return ok_status();
 }
 
+// A signal asked the command to stop (SessionOptions::stop, the CLI's StopSignals).
+bool stop_asked(const maze::SessionOptions& o) { return o.stop && o.stop(); }
+
 // The pass is over: kScoreSeconds after the session ended (its last score stays up that long),
-// or when a log device has played to its end.
-bool pass_over(const Window& w, const HapticState& st, double end_at, std::string& reason) {
+// when a log device has played to its end, or when a signal asked to stop (after the ticks so
+// far were stepped: every room they crossed is logged).
+bool pass_over(const maze::SessionOptions& o, const Window& w, const HapticState& st, double end_at,
+               maze::EndReason& reason) {
+  if (stop_asked(o)) {
+    reason = maze::EndReason::kTerminated;
+    return true;
+  }
   if (end_at >= 0.0) return st.time_s > end_at;
   if (w.device->duration_s() < 0.0 || st.time_s <= w.device->duration_s()) return false;
-  reason = "device_ended";
+  reason = maze::EndReason::kDeviceEnded;
   return true;
 }
 
@@ -184,16 +194,15 @@ Status window_loop(const maze::SessionOptions& o, const MazeWindowParams& p, maz
     if (!take_input(w, st)) return ok_status();
     if (clutched) pass.loop.restart_filter();  // after the poll that published the new place
     if (practice && std::exchange(w.events.start, false)) {
-      pass.reason = "practice_ended";
+      pass.reason = maze::EndReason::kPracticeEnded;
       return ok_status();
     }
     if (Status s = step_session(core, pass, on_score); !s) return s;
-    if (core.finished() && end_at < 0.0) {
+    if (core.finished() && end_at < 0.0) {  // logged; the score stays up kScoreSeconds
       end_at = st.time_s + kScoreSeconds;
-      pass.reason = "logged";
       ov.done = true;
     }
-    if (pass_over(w, st, end_at, pass.reason)) return ok_status();
+    if (pass_over(o, w, st, end_at, pass.reason)) return ok_status();
     if (Status s = follow_scene(core, w, pass); !s) return s;
     ov.label = core.label();
     ov.show_hand = p.show_hand && w.input;
@@ -207,7 +216,7 @@ Status window_loop(const maze::SessionOptions& o, const MazeWindowParams& p, maz
 
 // The render thread's loop: input, the session's step on the newest haptic state, the frame,
 // with the pass's haptic thread and vibration running. In practice (`practice`), Space or Enter
-// ends the pass early (reason "practice_ended").
+// ends the pass early (reason practice_ended).
 Status run_pass(const maze::SessionOptions& o, const MazeWindowParams& p, maze::SessionCore& core, Window& w,
                 LivePass& pass, bool practice) {
   pass.loop.start();
@@ -222,9 +231,9 @@ Result<maze::SessionResult> end_pass(const maze::SessionOptions& o, maze::Sessio
                                      const Status& looped, bool practice) {
   pass.loop.stop();
   pass.vib->close();
-  const bool logged = pass.reason == "logged";
+  const bool logged = core.finished();
   const double end_time = logged ? core.end_time_s() : std::max(o.haptics.start_time_s, pass.loop.state().read().time_s);
-  auto result = core.finish(end_time, logged ? "quit" : pass.reason);
+  auto result = core.finish(end_time, pass.reason);
   if (Status s = pass.recorder.close(); !s) return s.error();
   if (!looped) return looped.error();
   if (const std::uint64_t lost = pass.ticks.dropped(); lost > 0 && !practice)
@@ -240,7 +249,7 @@ Result<bool> wait_for_start(const maze::SessionOptions& o, Window& w, const std:
   const HapticState still;  // no sample: the scene's own camera and probe at the start
   for (;;) {
     glfwWaitEventsTimeout(0.05);  // nothing moves: redraw at 20 Hz, not as fast as it can
-    if (w.events.quit || glfwWindowShouldClose(w.ctx->window())) return false;
+    if (w.events.quit || glfwWindowShouldClose(w.ctx->window()) || stop_asked(o)) return false;
     if (std::exchange(w.events.start, false)) break;
     if (Status s = draw(w, o.desc, still, ov, false); !s) return s.error();
   }
@@ -289,8 +298,10 @@ Result<bool> run_practice(const maze::SessionOptions& o, const MazeWindowParams&
   if (Status s = use_scene(w, core.scene().scene); !s) return s.error();
   LivePass pass(w, po.value(), core, live_args);
   const Status looped = run_pass(po.value(), p, core, w, pass, true);
-  if (auto result = end_pass(po.value(), core, pass, looped, true); !result) return result.error();
-  if (pass.reason == "quit") return false;
+  auto result = end_pass(po.value(), core, pass, looped, true);
+  if (!result) return result.error();
+  // Its one pass done (max_passes) or ended early with Space goes on; Esc or a signal stops.
+  if (result->reason == maze::EndReason::kQuit || result->reason == maze::EndReason::kTerminated) return false;
   if (Status s = use_scene(w, scored.scene().scene); !s) return s.error();
   w.input->place(on_plane(floor_plane(*w.renderer), w.renderer->scene().probe.position));
   Result<bool> go = wait_for_start(o, w, kPracticeOver);
@@ -301,7 +312,7 @@ Result<bool> run_practice(const maze::SessionOptions& o, const MazeWindowParams&
 }  // namespace
 
 int run_maze_window(const cli::Command& cmd, const maze::SessionOptions& o, const std::string& device,
-                    const cli::LiveLoopArgs& live_args, const MazeWindowParams& params) {
+                    const cli::LiveLoopArgs& live_args, const MazeWindowParams& params, maze::EndReason* ended) {
   auto live = cli::apply_live_loop(live_args);  // before the context and the haptic thread
   if (!live) return cmd.usage_error(live.error());
   auto opened = maze::SessionCore::open(o);
@@ -321,12 +332,15 @@ int run_maze_window(const cli::Command& cmd, const maze::SessionOptions& o, cons
     if (go && go.value()) {
       if (w.input) w.input->poll(o.haptics.start_time_s, pointer_view(*w.renderer, floor_plane(*w.renderer)));
       looped = run_pass(o, params, core, w, pass, false);
+    } else if (stop_asked(o)) {
+      pass.reason = maze::EndReason::kTerminated;  // before the start, or in the practice
     }
   }
   auto result = end_pass(o, core, pass, looped, false);
   if (!result) return cmd.fail(result.error());
+  if (ended) *ended = result->reason;
   std::printf("maze: %s after %d pass%s (%s), %.1f s; log %s\n", o.info.participant.c_str(), result->passes,
-              result->passes == 1 ? "" : "es", result->reason.c_str(), result->time_s, o.log_path.c_str());
+              result->passes == 1 ? "" : "es", maze::end_reason_name(result->reason), result->time_s, o.log_path.c_str());
   return cli::kExitOk;
 }
 

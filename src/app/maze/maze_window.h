@@ -26,7 +26,9 @@ struct MazeWindowParams {
 
 // `device`: "mouse" (or empty), or a trajectory:/playback: log played in real time. `live`: how the
 // renderer and the haptic thread share the cores (--render-threads, --spare-cpu).
+// `ended` (optional): why the session ended, for the caller's message after a signal
+// (options.stop ends the session as terminated).
 int run_maze_window(const cli::Command& cmd, const maze::SessionOptions& options, const std::string& device,
-                    const cli::LiveLoopArgs& live, const MazeWindowParams& params = {});
+                    const cli::LiveLoopArgs& live, const MazeWindowParams& params = {}, maze::EndReason* ended = nullptr);
 
 }  // namespace ps
