@@ -53,7 +53,7 @@ Result<std::vector<const toml::node*>> include_entries(const FileInfo& file,
   if (node->is_string()) return std::vector<const toml::node*>{node};
   const toml::array* array = node->as_array();
   const std::string shape = ": 'include' must be a file name or an array of file names "
-                            "(e.g. include = [\"materials/seed002.toml\"])";
+                            "(e.g. include = [\"materials/virtual_universe.toml\"])";
   if (!array) return make_error(at(file, *node) + shape);
   for (const toml::node& entry : *array) {
     if (!entry.is_string()) return make_error(at(file, entry) + shape);

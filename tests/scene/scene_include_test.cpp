@@ -104,7 +104,7 @@ TEST_F(SceneIncludeTest, AMissingFileNamesTheIncludingLine) {
             name("lib/a.toml") + ":1: 'include' file not found: " + name("lib/b.toml"));
   EXPECT_EQ(error_of("include = [3]\n"),
             name("scene.toml") + ":1: 'include' must be a file name or an array of file names "
-            "(e.g. include = [\"materials/seed002.toml\"])");
+            "(e.g. include = [\"materials/virtual_universe.toml\"])");
 }
 
 TEST_F(SceneIncludeTest, ACycleIsAnErrorNamingTheCycle) {
@@ -167,8 +167,8 @@ TEST_F(SceneIncludeTest, SetReachesAnIncludedMaterial) {
 
 // The shipped library: every material parses, and each feels the way its name says
 // (relations between materials, stated independently of the numbers in the file).
-TEST(SceneLibraryTest, Seed002MaterialsParseAndDifferInFeel) {
-  std::string text = "include = [\"materials/seed002.toml\"]\n";
+TEST(SceneLibraryTest, VirtualUniverseMaterialsParseAndDifferInFeel) {
+  std::string text = "include = [\"materials/virtual_universe.toml\"]\n";
   const char* names[] = {"polished_wood", "rough_wood", "sandpaper", "cobblestone", "magnetic",
                          "water", "thick_fluid", "rubber", "plastic", "sticky"};
   for (const char* n : names) text += "[[surfaces]]\nmaterial = \"" + std::string(n) + "\"\n";
