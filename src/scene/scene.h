@@ -101,6 +101,7 @@ struct Material {
   // Gain of its vibrotactile texture (src/vibration/, docs/vibration.md): 0 silences the
   // surface (its texture and its contact transients); untextured materials have no texture term.
   double vibration_gain = 1.0;
+  bool operator==(const Material&) const = default;
 };
 
 enum class SurfaceType { kPlane, kSphere, kTorus, kHeightField, kMesh, kBox, kFourd };
