@@ -266,8 +266,8 @@ vec2 analytic_normal_distance(vec3 p, vec3 n, vec2 uv0) {
   return coverage > 0.0 ? vec2(s, coverage) : vec2(kFar, 0.0);
 }
 
-// Cutaway (seed 000 §6.3): a fragment of another sheet than the probe's, within u_cutaway.w of
-// the segment from the eye to the probe and in front of the probe, is not drawn.
+// Cutaway (Hanson & Zhang §6.3): a fragment of another sheet than the probe's, within u_cutaway.w
+// of the segment from the eye to the probe and in front of the probe, is not drawn.
 bool cut_away() {
   if (u_cutaway.w <= 0.0 || abs(v_w4 - u_sheet.y) <= u_sheet.z) return false;
   vec3 probe = u_cutaway.xyz;

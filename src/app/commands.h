@@ -33,7 +33,7 @@ inline constexpr CommandInfo kCommands[] = {
     {"bench-haptics", "measure the haptic loop's rate, jitter and latency while rendering", run_bench_haptics},
     {"bench", "sweep accuracy knobs: time vs error CSV + plot, skip ratios, peak RSS", run_bench},
     {"tune", "parameter sweeps into a labelled contact sheet, or a scripted console session", run_tune},
-    {"maze", "the haptic cue maze of seed 003: run a participant, script one, summarize the logs", run_maze},
+    {"maze", "the haptic cue maze of Sepulveda-Cervantes et al.: run a participant, script one, summarize the logs", run_maze},
     {"calibrate", "2AFC staircases measure JNDs along a curve; write a lookup table of equal-looking steps", run_calibrate},
     {"doctor", "check GL backends, display, audio, gamepads, real-time scheduling and data; how to fix each", run_doctor},
 };

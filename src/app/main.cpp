@@ -15,7 +15,11 @@ std::string top_help() {
       "usage: pseudoshadow <command> [options]\n\n"
       "Draws the pseudo-shadow of a probe on virtual surfaces: a translucent shadow-like projection\n"
       "whose opacity shows proximity, whose Gabor texture shows the surface's tactile texture\n"
-      "(amplitude following probe speed), and whose displacement pushes the probe out of the surface.\n\n"
+      "(amplitude following probe speed), and whose displacement pushes the probe out of the surface.\n"
+      "The method is that of the thesis \"Augmenting Visual Feedback Using Sensory Substitution\".\n"
+      "Its worlds follow Sandia's \"A Virtual Universe\" (scenes/universe), Hanson & Zhang's\n"
+      "\"Multimodal Exploration of the Fourth Dimension\" (scenes/fourd) and Sepulveda-Cervantes et\n"
+      "al.'s \"Haptic Cues for Effective Learning in 3D Maze Navigation\" (`maze`); docs/references.md.\n\n"
       "commands:\n";
   for (const ps::CommandInfo& c : ps::kCommands) {
     std::string name(c.name);

@@ -16,8 +16,8 @@ struct SynthParams {
   // Contact click: gain = click_min + (click_max - click_min) * (1 - exp(-v / click_ref)),
   // v = approach speed (mm/s). A slow touch is still audible; a fast one saturates.
   double click_min_gain = 0.1, click_max_gain = 0.6, click_ref_speed_mm_s = 60.0;
-  // Body impact (seed 002 §4): gain = impact_max * (1 - exp(-v / impact_ref)), v = impact speed
-  // (mm/s): monotone, 0 at rest, saturating at impact_max (63 % of it at v = impact_ref).
+  // Body impact (A Virtual Universe §4): gain = impact_max * (1 - exp(-v / impact_ref)), v = impact
+  // speed (mm/s): monotone, 0 at rest, saturating at impact_max (63 % of it at v = impact_ref).
   double impact_max_gain = 0.9, impact_ref_speed_mm_s = 300.0;
 };
 

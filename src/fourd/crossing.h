@@ -1,4 +1,4 @@
-// Sheet crossings (seed 000 §5): the moments the proxy passes a place where another sheet of
+// Sheet crossings (Hanson & Zhang §5): the moments the proxy passes a place where another sheet of
 // its surface crosses its own in the 3D image, and whether it passes in front of that sheet
 // (its own sheet nearer the 4D eye: larger w) or behind it. Fed the proxy's contact point on
 // its sheet every haptic tick; reports a crossing when the point's signed distance from the

@@ -32,7 +32,7 @@ struct FourdMesh {
   std::vector<glm::dvec3> normals;       // per vertex: unit normal of the 3D image
   double w_min = 0.0, w_max = 0.0;
 
-  // The seed's "polygon number" (Table 1): grid quads, each drawn as two triangles.
+  // Hanson & Zhang's "polygon number" (Table 1): grid quads, each drawn as two triangles.
   int polygons() const { return nu * nv; }
   // Facet f's w range and its 3D bounding sphere (for the local model's radius test).
   double tri_w_min(std::size_t f) const;

@@ -1,16 +1,16 @@
-// The proxy's local model on a surface embedded in 4D (seed 000 §4.2) and the sticky-stylus
+// The proxy's local model on a surface embedded in 4D (Hanson & Zhang §4.2) and the sticky-stylus
 // proxy that keeps to it (§4.1). Geometry: the FourdMesh's 3D image times `scale_mm`, so
 // positions are in mm; w is the 4D depth (4D units).
 //   kContinuity: eq. 3-4. Starting at the proxy's facet, facets are added while their w range
 //                meets [w_cur - D, w_cur + D], D = |w_cur - w_pre| + w_slack, walking from a
 //                facet to the facets whose 3D bounding boxes touch it (4D proximity only: no
 //                mesh connectivity), within radius_mm of the contact point.
-//   kAdjacency:  the seed's alternative: the facets reached through shared mesh edges (the
+//   kAdjacency:  Hanson & Zhang's alternative: the facets reached through shared mesh edges (the
 //                surface's parameter-space topology, FourdMesh::neighbours) within radius_mm
 //                measured along the surface (facet centroid to centroid), not through space.
 //   kNearest:    every facet: the nearest-surface model, which jumps between sheets where the
 //                3D image crosses itself (for comparison).
-// w_slack is not in the seed: eq. 4 alone has D = 0 when the proxy rests, which admits no facet
+// w_slack is not in the paper: eq. 4 alone has D = 0 when the proxy rests, which admits no facet
 // beyond the current one. Its default is twice the median |w change| along a mesh edge, so the
 // window takes in a couple of facets' worth of the sheet's own w change and nothing of a
 // sheet that crosses it with a larger w gap (docs/fourd.md).
@@ -83,7 +83,7 @@ class LocalModel {
   double auto_w_slack_ = 0.0;
 };
 
-// The sticky stylus of seed 000 §4.1 on the local model: each tick the proxy moves to the
+// The sticky stylus of Hanson & Zhang §4.1 on the local model: each tick the proxy moves to the
 // closest point of the local model to the device, and w_pre, w_cur follow (eq. 3, step 5).
 struct ProxyState {
   int facet = -1;
@@ -98,7 +98,7 @@ class SheetProxy {
       : model_(model), kind_(kind), params_(params) {}
   // Attaches the proxy to the closest point of the whole surface to `device_mm`.
   void reset(const glm::dvec3& device_mm);
-  // One servo tick (seed 000 §4.2 steps 1-5).
+  // One servo tick (Hanson & Zhang §4.2 steps 1-5).
   const ProxyState& update(const glm::dvec3& device_mm);
   const ProxyState& state() const { return state_; }
 

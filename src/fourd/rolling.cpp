@@ -55,12 +55,12 @@ double rotation_angle_between(const glm::dmat3& a, const glm::dmat3& b) {
 bool RollingManifold::retarget(const ViewAxes& axes, const RollContact& c, const glm::dvec3& n,
                                const ViewPose& pose) {
   if (facet_ < 0) {
-    // The first facet of a touch: it turns to face the viewer (seed §6.1).
+    // The first facet of a touch: it turns to face the viewer (Hanson & Zhang §6.1).
     target_ = rotate_between(pose.rotation * axes.toward_viewer_ws, n) * pose.rotation;
     return true;
   }
   if (c.facet == facet_ || !(glm::length(c.point - changed_at_) >= kMinTravelMm)) return false;
-  // Seed §6.2: T the proxy's incremental motion on the facet it leaves (this tick's step
+  // Hanson & Zhang §6.2: T the proxy's incremental motion on the facet it leaves (this tick's step
   // crosses the edge, so it is taken in that facet's plane), T' its projection on the new
   // facet; the view turns as the path turns (the surface, seen from the person, the other way).
   const glm::dvec3 step = c.point - last_point_;
@@ -68,7 +68,7 @@ bool RollingManifold::retarget(const ViewAxes& axes, const RollContact& c, const
   const glm::dvec3 t_prime = t - glm::dot(t, n) * n;
   glm::dmat3 r = target_;
   if (glm::length(t_prime) > 1e-12 * (1.0 + glm::length(t))) r = rotate_between(t, t_prime) * r;
-  // What the seed's rule leaves (T oblique to the shared edge): the shortest turn that puts
+  // What their rule leaves (T oblique to the shared edge): the shortest turn that puts
   // the new facet's normal exactly toward the viewer.
   target_ = rotate_between(r * axes.toward_viewer_ws, n) * r;
   return true;

@@ -1,5 +1,5 @@
-// The 4D haptic rolling manifold (seed 000 §6, docs/fourd.md "Rolling manifold"): as the proxy
-// walks from facet to facet of a surface embedded in 4D, the view turns so that the facet it
+// The 4D haptic rolling manifold (Hanson & Zhang §6, docs/fourd.md "Rolling manifold"): as the
+// proxy walks from facet to facet of a surface embedded in 4D, the view turns so that the facet it
 // touches faces the viewer and glides so that the contact point comes to the screen centre,
 // graphics and haptics together; a rubber-band tether (§6.4, eq. 1 with beta = 3) pulls the
 // hand back toward the line of sight through the screen centre.
@@ -26,8 +26,8 @@ struct ViewPose {
   glm::dvec3 to_workspace(const glm::dvec3& world) const { return glm::transpose(rotation) * (world - offset); }
 };
 
-// Seed 000 §6.2: Rotate(theta, N) with N = T x T' / |T x T'| and cos theta = T . T' (T, T' any
-// non-zero vectors; they are normalised): the rotation that takes T's direction to T''s. The
+// Hanson & Zhang §6.2: Rotate(theta, N) with N = T x T' / |T x T'| and cos theta = T . T' (T, T'
+// any non-zero vectors; they are normalised): the rotation that takes T's direction to T''s. The
 // identity when they are parallel; a half turn about an axis perpendicular to T when they are
 // opposite.
 glm::dmat3 rotate_between(const glm::dvec3& t, const glm::dvec3& t_prime);
@@ -83,9 +83,9 @@ class RollingManifold {
   // Forgets the interest facet (a new scene, a lifted proxy); the pose is left as it is.
   void reset() { facet_ = -1; }
   // One tick: when the proxy has crossed into another facet, the target orientation becomes
-  // the seed's Rotate(theta, N) (T: the contact point's motion since the last tick, T': T
+  // Hanson & Zhang's Rotate(theta, N) (T: the contact point's motion since the last tick, T': T
   // projected on the new facet), then made exact by the shortest turn that brings the new
-  // facet's normal onto the direction toward the viewer (the seed's rule alone leaves a tilt
+  // facet's normal onto the direction toward the viewer (their rule alone leaves a tilt
   // when T crosses the shared edge obliquely; docs/fourd.md). The pose then turns toward the
   // target about the contact point (the contact stays where it is on screen and under the
   // hand) and glides so the contact point approaches the screen centre. Returns true when the

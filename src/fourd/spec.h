@@ -9,10 +9,10 @@
 
 namespace ps::fourd {
 
-// The seed's four surfaces (seed 000 Table 1), parametrisations in docs/fourd.md.
+// Hanson & Zhang's four surfaces (their Table 1), parametrisations in docs/fourd.md.
 enum class SurfaceKind { kFlatTorus, kSpunTrefoil, kRoman, kTwistSpunTrefoil };
 enum class Projection4 { kPerspective, kOrthographic };
-// How the proxy's local model is chosen (seed 000 §4.2): by 4D-depth continuity (eq. 3-4), by
+// How the proxy's local model is chosen (Hanson & Zhang §4.2): by 4D-depth continuity (eq. 3-4), by
 // mesh adjacency in parameter space, or every facet (the nearest-surface model, for comparison).
 enum class LocalModelKind { kContinuity, kAdjacency, kNearest };
 
@@ -28,7 +28,7 @@ struct Spec {
   double eye_distance = 4.0;
   // Rotation angles in the xy, xz, xw, yz, yw, zw planes (degrees), applied in that order.
   std::array<double, 6> rotation_deg{};
-  // Grid cells along u and v; 0 = the surface's default (seed 000 Table 1 polygon counts).
+  // Grid cells along u and v; 0 = the surface's default (Hanson & Zhang, Table 1 polygon counts).
   int nu = 0, nv = 0;
   int twists = 2;  // twist-spun trefoil: turns of the knotted ball per spin (Zeeman's k)
   LocalModelKind local_model = LocalModelKind::kContinuity;
@@ -36,18 +36,18 @@ struct Spec {
   double suggest_kp_n_per_mm = 0.0;
   double suggest_kv_n_s_per_mm = 0.0;
   double suggest_lookahead_s = 0.05;
-  // Cutaway (seed 000 §6.3): other sheets within this radius of the line from the eye to the
+  // Cutaway (Hanson & Zhang §6.3): other sheets within this radius of the line from the eye to the
   // probe, between them, are not drawn, so the probe and its shadow stay in view; 0 = off. mm.
   double cutaway_mm = 0.0;
-  // Crossing diagram (seed 000 §3, Fig. 3b): each vertex is drawn this many mm nearer the eye
+  // Crossing diagram (Hanson & Zhang §3, Fig. 3b): each vertex is drawn this many mm nearer the eye
   // per unit of w (along its line of sight, so the picture does not move): where two sheets
   // cross, the one nearer the 4D eye wins a band along the crossing and is seen continuous,
   // the other interrupted. 0 = off (plain 3D depth).
   double crossing_diagram_mm = 0.0;
-  // Wireframe (seed 000 Fig. 5c): the surface drawn as the edges of its triangles, so the probe's
-  // w-coloured path (replay --show-path) and the sheets behind show through it.
+  // Wireframe (Hanson & Zhang, Fig. 5c): the surface drawn as the edges of its triangles, so the
+  // probe's w-coloured path (replay --show-path) and the sheets behind show through it.
   bool wireframe = false;
-  // The rolling manifold (seed 000 §6, fourd/rolling.h): the view turns and glides with the
+  // The rolling manifold (Hanson & Zhang §6, fourd/rolling.h): the view turns and glides with the
   // proxy's walk over this surface; the tether pulls the hand toward the screen centre.
   RollParams roll;
   bool operator==(const Spec&) const = default;

@@ -1,10 +1,10 @@
-// Force suggestions (seed 000 §4.3, eq. 5): a "power assisted" push that steers the proxy
+// Force suggestions (Hanson & Zhang §4.3, eq. 5): a "power assisted" push that steers the proxy
 // toward where the hand is predicted to go,
 //   f_pd = K_p (P_des - P) - K_v (V_des - V),
 // projected on the local facet (its tangent plane: the suggestion never pushes into or out of
 // the surface). P, V: the contact point and its velocity; P_des, V_des: the desired ones, from
 // the Kalman filter's velocity (haptics/kalman.h) carried ahead by `lookahead_s`. The sign of
-// the K_v term is the seed's. Units: mm, mm/s, N.
+// the K_v term is Hanson & Zhang's. Units: mm, mm/s, N.
 #pragma once
 
 #include <glm/glm.hpp>

@@ -1,4 +1,4 @@
-// The seed's four surfaces embedded in R^4 (seed 000 Table 1), as functions of (u, v) in
+// Hanson & Zhang's four surfaces embedded in R^4 (their Table 1), as functions of (u, v) in
 // [0, 1]^2, before any 4D rotation. Parametrisations and sources: docs/fourd.md.
 //   flat torus        (cos 2pi u, sin 2pi u, cos 2pi v, sin 2pi v): on the 3-sphere of radius sqrt 2
 //   spun trefoil      Artin spinning of a knotted arc about the plane c = 0 of the half-space c >= 0
@@ -17,7 +17,7 @@
 
 namespace ps::fourd {
 
-// Default grid cells (nu, nv): nu * nv = the seed's polygon count (900, 2800, 1600, 2800).
+// Default grid cells (nu, nv): nu * nv = Hanson & Zhang's polygon count (900, 2800, 1600, 2800).
 glm::ivec2 default_grid(SurfaceKind kind);
 // "flat_torus", "spun_trefoil", "roman", "twist_spun_trefoil" (the scene file's names).
 const char* surface_name(SurfaceKind kind);

@@ -3,7 +3,7 @@
 // haptic thread (docs/fourd.md, "Touching the 4D-continuous sheet"). A query may carry a w
 // window: then only facets whose w range meets it count, so a sheet that crosses the proxy's
 // sheet in the 3D image (at another w) is not there for the proxy: it slides through it as
-// through a ghost (seed 000 §4.2, eq. 3-4, the local model by 4D-depth continuity).
+// through a ghost (Hanson & Zhang §4.2, eq. 3-4, the local model by 4D-depth continuity).
 // Built once per haptic scene; closest() is const, thread-safe and allocation-free.
 #pragma once
 
@@ -38,7 +38,7 @@ class FourdTouch {
   FourdTouch(const FourdMesh& mesh, double scale_mm, const glm::dmat3& rotation, const glm::dvec3& center_mm);
 
   TouchHit closest(const glm::dvec3& p, double max_distance_mm, const WWindow& window = {}) const;
-  // The local model by mesh adjacency (seed 000 §4.2's alternative, fourd_local_model =
+  // The local model by mesh adjacency (the alternative of Hanson & Zhang §4.2, fourd_local_model =
   // "adjacency"): only the facets reached from `start_facet` through shared mesh edges within
   // `radius_mm` along the surface (from `start_point`, then centroid to centroid), at most
   // kMaxAdjacent of them. A sheet that crosses this one in the 3D image is near in space but

@@ -1,14 +1,14 @@
 // Force models of the haptic loop (docs/haptics.md has the equations and defaults).
 // Units: mm, mm/s, s, newtons (N). The device is a sphere of the probe's radius; the surface is
 // the render thread's local model: a plane (normal n, point p0) around the last contact,
-// "local model by continuity" (seed paper 000 §4.2), updated once per rendered frame.
+// "local model by continuity" (Hanson & Zhang §4.2), updated once per rendered frame.
 //   penetration   r = R - n.(x - p0)                     (mm, > 0 in contact)
 //   spring        f_n = alpha r^(1+beta) n               (sticky stylus, 000 eq. 1)
 //   damping       f_d = -K_d (n.v) n                     (radial velocity, 000 eq. 2)
-//   viscosity     f_v = -b v                             (seed 003, room 2)
+//   viscosity     f_v = -b v                             (Sepulveda-Cervantes et al., room 2)
 //   friction      tangent part through Q = I - n n^T: a proxy sticks while
 //                 |k_t Q(proxy - x)| <= mu_s |f_n| and slides at |f_t| = mu_d |f_n|
-//   external      f_e = F0 + F1 sin(2 pi f t)            (seed 003, room 5)
+//   external      f_e = F0 + F1 sin(2 pi f t)            (Sepulveda-Cervantes et al., room 5)
 #pragma once
 
 #include <cstdint>
@@ -36,7 +36,7 @@ struct HapticsParams {
   double external_frequency_hz = 1.0;       // f
   double max_force_n = 8.0;                 // magnitude clamp (device safety)
   // Haptic scene contacts: the normal force follows the interpolated vertex normal at the
-  // contact (seed 002 §6) instead of the god-object's own direction (proxy - device).
+  // contact (A Virtual Universe §6) instead of the god-object's own direction (proxy - device).
   bool force_shading = true;
   // Virtual coupling of device and proxy (docs/haptics.md, "Pseudo-haptic coupling"): a force
   // F on the probe from the scene's fields and bodies moves the god-object's goal to

@@ -1,4 +1,4 @@
-// Kalman filter for device position -> filtered position and velocity (seed paper 000 §4.3):
+// Kalman filter for device position -> filtered position and velocity (Hanson & Zhang §4.3):
 //   state x = [P, V] per axis,  x_{k+1} = A x_k + B u_k,  y_k = C x_k + z_k,
 //   A = [[1, T], [0, 1]],  B = [T^2/2, T],  C = [1, 0],
 // with u_k a white random acceleration (sd accel_sd_mm_s2), so the process noise is

@@ -57,8 +57,8 @@ struct MaterialForces {
   }
 };
 
-// The contact point's last kMaxFrictionHistoryTicks steps in a ring buffer (seed 002: the
-// friction direction is the step between the projected previous and current points,
+// The contact point's last kMaxFrictionHistoryTicks steps in a ring buffer (A Virtual Universe §3:
+// the friction direction is the step between the projected previous and current points,
 // averaged over a history for stability). reset() when contact is lost.
 class FrictionHistory {
  public:

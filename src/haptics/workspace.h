@@ -42,7 +42,7 @@ class Workspace {
  private:
   const world::HapticScene* scene_ = nullptr;
   fourd::ViewPose view_;         // workspace -> world (navigation's offset, rolling's turn)
-  fourd::RollingManifold roll_;  // seed 000 §6 on a fourd surface with fourd_roll
+  fourd::RollingManifold roll_;  // Hanson & Zhang §6 on a fourd surface with fourd_roll
 };
 
 }  // namespace ps

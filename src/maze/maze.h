@@ -1,5 +1,5 @@
-// The haptic cue maze of seed 003 §V-VII (docs/maze.md): a maze description (room size,
-// corridor length, cue parameters; scenes/maze/*.toml), the participant's route drawn from a
+// The haptic cue maze of Sepulveda-Cervantes et al. §V-VII (docs/maze.md): a maze description (room
+// size, corridor length, cue parameters; scenes/maze/*.toml), the participant's route drawn from a
 // seed, and the generator that turns both into the ordinary scene model (scene/scene.h), one
 // scene per pass through the rooms, so the renderer, the haptic loop, replay and goldens work
 // on it unchanged. No GL.
@@ -34,7 +34,8 @@
 
 namespace ps::maze {
 
-// The five cue rooms and the dummy learning room (seed 003 §V items 1-5, §VI item 7).
+// The five cue rooms and the dummy learning room (Sepulveda-Cervantes et al.: §V items 1-5,
+// §VI item 7).
 enum class Cue { kNone, kTexture, kViscosity, kElastic, kHiddenSphere, kExternalForce };
 inline constexpr int kRoomsPerPass = 6;  // the dummy room, then the five cue rooms
 inline constexpr std::array<Cue, 5> kCueRooms = {Cue::kTexture, Cue::kViscosity, Cue::kElastic,
@@ -68,7 +69,8 @@ struct MazeDesc {
   double wall_thickness_mm = 6.0;
   double probe_radius_mm = 6.0;
   int max_passes = 10;              // a session stops after this many passes without criterion
-  // The walls, floor and ceiling of every room (always touchable, seed 003 §VI item 6).
+  // The walls, floor and ceiling of every room (always touchable: Sepulveda-Cervantes et al.,
+  // §VI item 6).
   double wall_stiffness_n_per_mm = 0.5;
   // Low friction on every room's surfaces (the cue rooms' too, so friction is no cue): a probe
   // pushed diagonally into a wall slides along it instead of sticking (MazeSceneTest.WallsLetTheProbeSlide).
@@ -108,9 +110,9 @@ Result<MazeDesc> load_maze_desc(const std::string& path);
 Result<MazeDesc> parse_maze_desc(const std::string& text, const std::string& source_name);
 
 // A participant's route: the correct exit of every room (by its cue, fixed for the participant)
-// and the order of the five cue rooms in each pass (drawn again every pass, seed 003 §V: "the
-// rooms are presented in random order so the correct route is not in the same order all the
-// time"). The dummy room is always first.
+// and the order of the five cue rooms in each pass (drawn again every pass, as in
+// Sepulveda-Cervantes et al. §V: "the rooms are presented in random order so the correct route
+// is not in the same order all the time"). The dummy room is always first.
 struct Route {
   std::uint64_t seed = 0;
   std::array<Exit, 6> correct{};  // indexed by static_cast<int>(Cue)
@@ -151,11 +153,13 @@ struct MazeScene {
 
 // The scene of pass `pass`: that pass's six rooms in order, plus the previous pass's last room
 // (so switching scenes at the end of a pass is seamless; for pass 0 the start corridor), closed
-// after the last room. cues = false: every room is the dummy room (seed 003 §VI item 5).
+// after the last room. cues = false: every room is the dummy room (Sepulveda-Cervantes et al.,
+// §VI item 5).
 Result<MazeScene> generate_scene(const MazeDesc& desc, const Route& route, bool cues, int pass);
 
-// The label shown on screen while the probe is in `cue`'s room (empty with cues on: seed 003
-// §VI item 2, "during trials with haptic cues enabled the labels are hidden").
+// The label shown on screen while the probe is in `cue`'s room (empty with cues on, as in
+// Sepulveda-Cervantes et al. §VI item 2: "during trials with haptic cues enabled the labels
+// are hidden").
 std::string room_label_text(Cue cue, bool cues);
 
 // The camera that follows the probe: above and behind it, looking at the floor under it.

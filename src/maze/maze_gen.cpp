@@ -141,8 +141,9 @@ std::string header(const MazeDesc& d, const glm::dvec3& probe, bool texture, boo
     << "]\n\n[materials.wall]\nalbedo = " << vec(d.wall_albedo) << "\ntextured = false\n"
     << "[materials.wall.haptic]\nstiffness_n_per_mm = " << num(d.wall_stiffness_n_per_mm) << friction(d);
   if (texture) {
-    // Same look as every room (seed 003 §V: landmarks inhibited); the Gabor texture shows only
-    // in the pseudo-shadow near the probe, at its peak for a probe moving at lambda * peak_hz.
+    // Same look as every room (Sepulveda-Cervantes et al. §V: landmarks inhibited); the Gabor
+    // texture shows only in the pseudo-shadow near the probe, at its peak for a probe moving at
+    // lambda * peak_hz.
     o << "\n[materials.texture]\nalbedo = " << vec(d.wall_albedo) << "\ntextured = true\na_min = 1.0\na_max = 1.0\n"
       << "lambda_min = " << num(d.texture_lambda_mm) << "\nlambda_max = " << num(d.texture_lambda_mm)
       << "\ntheta_min = 0.0\ntheta_max = 180.0\npeak_hz = " << num(d.texture_peak_hz)

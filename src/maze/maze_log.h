@@ -49,8 +49,8 @@ struct SessionInfo {
   std::string device;        // as given: trajectory:FILE, playback:FILE, mouse, ...
   std::string device_log;    // the device stream's file name, next to the log
   int max_passes = 10;
-  // Which session of this participant: 1 the first, 2 a retest "after a short time" (seed 003
-  // §VII), ... `maze summarize` compares a participant's sessions.
+  // Which session of this participant: 1 the first, 2 a retest "after a short time"
+  // (Sepulveda-Cervantes et al. §VII), ... `maze summarize` compares a participant's sessions.
   int session = 1;
 };
 

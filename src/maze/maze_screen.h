@@ -1,6 +1,7 @@
 // What the maze puts on screen besides the scene, as pictures: the room label in a frame's top
-// left corner (cues off only: seed 003 §VI item 2) and the score screen after a pass (§VI item
-// 3). The headless session writes them; tests read them. No GL (image/text.h's bitmap font).
+// left corner (cues off only: Sepulveda-Cervantes et al. §VI item 2) and the score screen
+// after a pass (§VI item 3). The headless session writes them; tests read them. No GL
+// (image/text.h's bitmap font).
 #pragma once
 
 #include <string>

@@ -1,9 +1,10 @@
 // `pseudoshadow maze summarize`: session logs (maze_log.h) into tables per participant and per
 // group (condition), as CSV and markdown, and two plots (errors per room by condition, time per
-// trial), in the spirit of seed 003 §VII's comparison of the two groups. Reading and the
-// numbers need no gnuplot; only write_plots() does. A mean over nobody (N = 0: every session of a
-// group aborted, a room no one left) is NaN here, an empty cell in the CSV files and "—" in
-// summary.md; a plot with nothing to draw is skipped with a note (plan_plots), never left empty.
+// trial), in the spirit of the comparison of the two groups in Sepulveda-Cervantes et al. §VII.
+// Reading and the numbers need no gnuplot; only write_plots() does. A mean over nobody (N = 0:
+// every session of a group aborted, a room no one left) is NaN here, an empty cell in the CSV
+// files and "—" in summary.md; a plot with nothing to draw is skipped with a note (plan_plots),
+// never left empty.
 #pragma once
 
 #include <array>
@@ -80,8 +81,8 @@ struct GroupSummary {  // one condition in one session (1: the first; 2: the ret
   std::vector<int> pass_n;                         // participants who made each pass
 };
 
-// Seed 003 §VII's retest: per condition, of the participants with a complete first session
-// and a complete session 2, how many took less time in session 2.
+// The retest of Sepulveda-Cervantes et al. §VII: per condition, of the participants with a complete
+// first session and a complete session 2, how many took less time in session 2.
 struct RetestSummary {
   std::string condition;
   int retested = 0, faster = 0;

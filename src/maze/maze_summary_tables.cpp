@@ -129,7 +129,7 @@ Status write_tables(const std::string& dir, const std::vector<ParticipantSummary
   group_tables(groups, gc, md);
   rc << "condition,retested,faster_on_retest,share_faster\n";
   if (!retests.empty())
-    md << "\n## Retest (session 2 against session 1, seed 003 §VII)\n\n| condition | retested | faster on retest | share |\n"
+    md << "\n## Retest (session 2 against session 1, Sepulveda-Cervantes et al. §VII)\n\n| condition | retested | faster on retest | share |\n"
           "|---|---|---|---|\n";
   for (const RetestSummary& r : retests) {
     rc << r.condition << "," << r.retested << "," << r.faster << "," << fmt(r.share_faster()) << "\n";

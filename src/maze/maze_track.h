@@ -1,7 +1,7 @@
-// Branch detection and scoring from the probe's path (seed 003 §VI items 3-4): which exit the
-// probe (the haptic proxy: the avatar the participant steers) leaves each room by, the trial's
-// numbers (time, path length, contacts and contact time per surface kind, forces), the score of
-// each pass, and the end of the session when a pass has every room right. No GL, no I/O.
+// Branch detection and scoring from the probe's path (Sepulveda-Cervantes et al. §VI items 3-4):
+// which exit the probe (the haptic proxy: the avatar the participant steers) leaves each room by,
+// the trial's numbers (time, path length, contacts and contact time per surface kind, forces), the
+// score of each pass, and the end of the session when a pass has every room right. No GL, no I/O.
 #pragma once
 
 #include <array>

@@ -52,8 +52,8 @@ struct SurfaceBlock {
   // x: 1 = the pseudo-shadow falls on one sheet of a surface embedded in 4D only (fourd: the
   // probe's sheet); y: that sheet's w; z: half-width of the band of w that counts as it.
   glm::vec4 sheet{0.0f};
-  // Cutaway of the other sheets between the eye and the probe (seed 000 §6.3): xyz the probe's
-  // centre, w the radius (0: off); eye: xyz the camera position (perspective, w = 1) or its
+  // Cutaway of the other sheets between the eye and the probe (Hanson & Zhang §6.3): xyz the
+  // probe's centre, w the radius (0: off); eye: xyz the camera position (perspective, w = 1) or its
   // view direction (orthographic, w = 0).
   glm::vec4 cutaway{0.0f};
   // The sphere/capsule probe in plane coordinates (u, v, height along ref_n) mm: end a with the

@@ -1,5 +1,5 @@
-// Pictures on buttons (issue "The Virtual Universe", seed 002 §2: "a virtual wall with four
-// buttons each containing a picture of the world to which it leads"). A [[buttons]] entry with
+// Pictures on buttons (issue "The Virtual Universe", A Virtual Universe §2: "a virtual wall with
+// four buttons each containing a picture of the world to which it leads"). A [[buttons]] entry with
 // `picture = true` and a "scene:FILE" action gets a picture of FILE, rendered headless by the
 // renderer (kPictureSize square, one frame, the scene's own camera, no pictures of its own: a
 // panel and its worlds may lead to each other), as its plate's albedo texture, mapped along

@@ -1,4 +1,4 @@
-// The field-magnitude map of seed 002's Field world ("show what people would rather look at
+// The field-magnitude map of Sandia's Field world ("show what people would rather look at
 // than feel"): a surface with `field_map = true` (a plane or a box, lying along world X and Y)
 // shows |F|, the force the scene's charges put on the probe, as a colour map over its top. |F| is
 // evaluated in the horizontal plane at the charges' mean height (where their pulls can cancel),

@@ -90,11 +90,12 @@ struct RendererOptions {
   // the rest of the last frame; the results are the same bits (tests compare). false: every
   // frame redraws every pixel (FrameStats::drawn_pixels tells which).
   bool incremental = true;
-  // The scene's deformable surfaces (seed 002 §6's bendable polygons), as their owner steps them:
-  // a session steps them each frame before drawing it (frame/haptic_frame.h step_deformation);
-  // the renderer never steps them, it draws them and uploads each one whose version changed. They
-  // must be this scene's (world::settled_deformables). Null: create() makes them settled under the
-  // scene's probe (what `render` shows); deformables() hands them to the session.
+  // The scene's deformable surfaces (the bendable polygons of A Virtual Universe §6), as
+  // their owner steps them: a session steps them each frame before drawing it
+  // (frame/haptic_frame.h step_deformation); the renderer never steps them, it draws them and
+  // uploads each one whose version changed. They must be this scene's
+  // (world::settled_deformables). Null: create() makes them settled under the scene's probe
+  // (what `render` shows); deformables() hands them to the session.
   std::shared_ptr<world::DeformableSurfaces> deformation;
 };
 
@@ -165,14 +166,14 @@ class Renderer {
   // On a surface embedded in 4D, the probe's sheet (FrameInput::sheet) shows the pseudo-shadow on
   // that sheet only (docs/fourd.md); with set_show_path(true) each frame given a sheet also adds
   // the probe's position to its path, drawn after the pseudo-shadow as a tube coloured by w
-  // (fourd::depth_colour over the surface's w range; seed 000 Fig. 5c).
+  // (fourd::depth_colour over the surface's w range; Hanson & Zhang, Fig. 5c).
   void set_show_path(bool show) { world_view_.set_show_path(show); }
   void set_show_device(bool show) { world_view_.set_show_device(show); }
   bool show_device() const { return world_view_.show_device(); }
-  // Seed 002 §6's bendable polygons (world/deformable_surfaces.h, RendererOptions::deformation):
-  // each frame draws them as their owner has stepped them, uploading the meshes whose version
-  // changed. Null when the scene has none. The session steps them (frame/haptic_frame.h
-  // step_deformation); the renderer never does.
+  // The bendable polygons of A Virtual Universe §6 (world/deformable_surfaces.h,
+  // RendererOptions::deformation): each frame draws them as their owner has stepped them, uploading
+  // the meshes whose version changed. Null when the scene has none. The session steps them
+  // (frame/haptic_frame.h step_deformation); the renderer never does.
   world::DeformableSurfaces* deformables() const { return deformables_.get(); }
   // What the deformable surfaces' last step did (all zero without any).
   const DeformationStats& deformation() const;

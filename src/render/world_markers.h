@@ -37,8 +37,8 @@ std::vector<WorldMarker> world_markers(const Scene& scene, const glm::dvec3& pro
                                        std::span<const ChargeMarker> extra_charges = {},
                                        const glm::dvec3& force_n = glm::dvec3(0.0));
 
-// Where the probe is drawn when it is felt at `felt_mm` (seed 002 §3, "Illusion"): near a surface
-// with a visual_stretch (within its felt bounding radius + the probe's radius + 10 mm) the
+// Where the probe is drawn when it is felt at `felt_mm` (A Virtual Universe §3, "Illusion"): near a
+// surface with a visual_stretch (within its felt bounding radius + the probe's radius + 10 mm) the
 // position is stretched like the surface, about its centre along its local axes, so the drawn
 // probe travels the drawn (stretched) shape while the hand travels the felt one; the stretch
 // fades out linearly over the next 20 mm. The first stretched surface near the probe counts.
@@ -46,7 +46,7 @@ std::vector<WorldMarker> world_markers(const Scene& scene, const glm::dvec3& pro
 glm::dvec3 visual_position(const Scene& scene, const glm::dvec3& felt_mm);
 inline constexpr double kStretchReachMarginMm = 10.0, kStretchFadeMm = 20.0;
 
-// The rolling manifold's rubber band (seed 000 §6.4, docs/fourd.md): from the probe to the
+// The rolling manifold's rubber band (Hanson & Zhang §6.4, docs/fourd.md): from the probe to the
 // nearest point of the line of sight through the screen centre of `camera` (the world camera a
 // frame draws with), the line the tether pulls toward; a == b when the probe is on that line.
 // Drawn so a mouse, which feels no force, still sees the band.

@@ -17,8 +17,8 @@ namespace ps {
 inline constexpr int kMaxFrictionHistoryTicks = 32;
 inline constexpr int kMaxHapticWaves = 16;
 
-// One term of a haptic texture along the surface (seed 002 §3): a sine or square wave of the
-// surface coordinate along `direction` (a unit tangent direction in the surface's local frame,
+// One term of a haptic texture along the surface (A Virtual Universe §3): a sine or square wave of
+// the surface coordinate along `direction` (a unit tangent direction in the surface's local frame,
 // normalised by the scene reader),
 // pushing along the surface normal with amplitude `amplitude_n`.
 struct HapticWave {

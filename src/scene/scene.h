@@ -101,12 +101,14 @@ struct Material {
   // Gain of its vibrotactile texture (src/vibration/, docs/vibration.md): 0 silences the
   // surface (its texture and its contact transients); untextured materials have no texture term.
   double vibration_gain = 1.0;
+  bool operator==(const Material&) const = default;
 };
 
 enum class SurfaceType { kPlane, kSphere, kTorus, kHeightField, kMesh, kBox, kFourd };
 
-// Seed 002 §6's bendable polygons (world/deformable.h): the drawn vertices on springs to their
-// rest positions and to their neighbours, dented by the probe; the felt shape stays at rest.
+// The bendable polygons of A Virtual Universe §6 (world/deformable.h): the drawn vertices on
+// springs to their rest positions and to their neighbours, dented by the probe; the felt
+// shape stays at rest.
 struct DeformParams {
   bool enabled = false;               // `deformable`
   double base_n_per_mm = 0.05;        // spring from each vertex to its base point
@@ -115,7 +117,7 @@ struct DeformParams {
   double mass_g = 1.0;                // per vertex
   double max_mm = 6.0;                // no vertex moves farther from its base point
   // The drawn mesh is split (each triangle into four, edge midpoints shared) until no edge is
-  // longer than this, so a dent is round on a coarse mesh (seed 002's "divided into six").
+  // longer than this, so a dent is round on a coarse mesh (Sandia's "divided into six").
   double max_edge_mm = 1.5;
 };
 
@@ -143,10 +145,10 @@ struct Surface {
   bool visible = true;       // false: felt but not drawn (a hidden object)
   bool touchable = true;     // false: drawn but not felt
   // Drawn stretched by these factors along its local axes, about `center`, while it is felt
-  // unstretched (seed 002 §3, "Illusion"); the drawn probe is stretched alike near it
+  // unstretched (A Virtual Universe §3, "Illusion"); the drawn probe is stretched alike near it
   // (visual_position). [1, 1, 1]: as felt.
   glm::dvec3 visual_stretch{1.0};
-  // Field map (seed 002 §5): the surface shows |F| of the scene's charges as a colour map
+  // Field map (A Virtual Universe §5): the surface shows |F| of the scene's charges as a colour map
   // (render/field_map.h).
   // It gets its own material, `field_map_material` (a white copy of `material`).
   bool field_map = false;
@@ -197,11 +199,13 @@ struct Field {
   FieldType type = FieldType::kUniform;
   // gravity: the acceleration of every body (mm/s^2)
   glm::dvec3 acceleration_mm_s2{0.0, 0.0, -9810.0};
-  // uniform: F = force_n + fluctuation_n sin(2 pi frequency_hz t) on the probe (seed 003 room 5)
+  // uniform: F = force_n + fluctuation_n sin(2 pi frequency_hz t) on the probe
+  // (Sepulveda-Cervantes et al., room 5)
   glm::dvec3 force_n{0.0};
   glm::dvec3 fluctuation_n{0.0};
   double frequency_hz = 1.0;
-  // viscous: F = -viscosity_n_s_per_mm v on the probe inside the region (seed 003 room 2)
+  // viscous: F = -viscosity_n_s_per_mm v on the probe inside the region
+  // (Sepulveda-Cervantes et al., room 2)
   double viscosity_n_s_per_mm = 0.0;
   // uniform and viscous: a box region (centre, full edges, XYZ Euler rotation); uniform fields
   // without size_mm act everywhere, viscous ones need it
@@ -210,7 +214,7 @@ struct Field {
   glm::dvec3 size_mm{0.0};
   glm::dvec3 rotation_deg{0.0};
   // charge: a point charge at `position`; F = charge (p - c) / (|p - c|^2 + s^2)^(3/2), s =
-  // softening_mm (seed 002 §5: Coulomb's law, softened so it stays finite at the charge)
+  // softening_mm (A Virtual Universe §5: Coulomb's law, softened so it stays finite at the charge)
   glm::dvec3 position{0.0};
   double charge_n_mm2 = 0.0;  // > 0 pushes the probe away, < 0 pulls it in
   double softening_mm = 2.0;
@@ -219,7 +223,8 @@ struct Field {
 
 inline constexpr int kMaxSceneBodies = 4;  // the haptic state carries this many positions
 
-// [[bodies]]: a mass hanging from the proxy on a spring (seed 002 §4; docs/haptics.md, "Bodies").
+// [[bodies]]: a mass hanging from the proxy on a spring (A Virtual Universe §4;
+// docs/haptics.md, "Bodies").
 struct Body {
   double mass_g = 50.0;
   double spring_n_per_mm = 0.1;        // spring between the proxy and the body
@@ -248,7 +253,7 @@ inline constexpr int kMaxSceneButtons = 16;
 inline constexpr std::size_t kMaxButtonLabelChars = 32;  // one short line on the button
 inline constexpr int kMaxSceneFlags = 32;  // HapticState::flags is a 32-bit mask
 
-// [[buttons]]: a flush button in a surface (seed 002 §2; docs/haptics.md, "Buttons"): a
+// [[buttons]]: a flush button in a surface (A Virtual Universe §2; docs/haptics.md, "Buttons"): a
 // rectangle of the face it sits in that gives way to the probe with its own spring, and past
 // `travel_mm` stops pushing and fires its action.
 enum class ButtonActionKind { kScene, kFlag };
@@ -278,9 +283,10 @@ struct Button {
   int line = 0;
 };
 
-// [navigation] (seed 002 §5, Field's craft): the probe moves in a box of the device's workspace;
-// pushing a wall of it moves the view (and the box with it) in that direction at a speed that
-// follows the push, and the wall pushes back. HapticLoop applies it (docs/universe.md, "Field").
+// [navigation] (A Virtual Universe §5, Field's craft): the probe moves in a box of the device's
+// workspace; pushing a wall of it moves the view (and the box with it) in that direction at a
+// speed that follows the push, and the wall pushes back. HapticLoop applies it
+// (docs/universe.md, "Field").
 struct Navigation {
   bool enabled = false;                  // the table is present
   glm::dvec3 box_center{0.0};            // workspace (device) mm

@@ -3,8 +3,11 @@
 // to the file that names them. Within one file, its own definitions replace those of its
 // includes; two includes that define one name differently are an error unless the including
 // file defines that name itself. A file reached twice by different routes (a diamond) is not a
-// cycle; a file that includes itself, directly or not, is.
+// cycle; a file that includes itself, directly or not, is. A renamed library keeps its old
+// file for one release holding only `renamed_to = "NEW.toml"`: it stands for NEW.toml and says
+// so on stderr each time it is loaded.
 #include <algorithm>
+#include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
@@ -44,16 +47,19 @@ std::string at(const FileInfo& file, const toml::node& node) {
   return file.name + ":" + std::to_string(line);
 }
 
-// The include entries of a document: a string or an array of strings, with their nodes.
+// The include entries of a document: a string or an array of strings, with their nodes; for a
+// renamed library (`library`: an included file; checked by load), its new name.
 Result<std::vector<const toml::node*>> include_entries(const FileInfo& file,
-                                                       const toml::table& doc) {
+                                                       const toml::table& doc, bool library) {
   std::vector<const toml::node*> out;
+  const toml::node* renamed = library ? doc.get("renamed_to") : nullptr;
+  if (renamed) return std::vector<const toml::node*>{renamed};
   const toml::node* node = doc.get("include");
   if (!node) return out;
   if (node->is_string()) return std::vector<const toml::node*>{node};
   const toml::array* array = node->as_array();
   const std::string shape = ": 'include' must be a file name or an array of file names "
-                            "(e.g. include = [\"materials/seed002.toml\"])";
+                            "(e.g. include = [\"materials/virtual_universe.toml\"])";
   if (!array) return make_error(at(file, *node) + shape);
   for (const toml::node& entry : *array) {
     if (!entry.is_string()) return make_error(at(file, entry) + shape);
@@ -111,6 +117,21 @@ Result<FileInfo> locate(const Walk& walk, const FileInfo& from, const toml::node
   return file;
 }
 
+// A renamed library's old file: `renamed_to` must be its only key, a file name beside it. One
+// line on stderr names both files as messages name them (relative to the including scene).
+Status announce_rename(const FileInfo& file, const toml::table& doc, const toml::node& renamed) {
+  const std::string to = renamed.value<std::string>().value_or("");
+  if (to.empty() || doc.size() != 1 || fs::path(to).has_parent_path()) {
+    return make_error(at(file, renamed) + ": 'renamed_to' must be the only key of a renamed "
+                      "library, the new file's name in the same folder (e.g. renamed_to = "
+                      "\"virtual_universe.toml\")");
+  }
+  const std::string shown = (fs::path(file.name).parent_path() / to).string();
+  std::fprintf(stderr, "%s was renamed to %s; the old name goes in the next release\n",
+               file.name.c_str(), shown.c_str());
+  return ok_status();
+}
+
 Result<toml::table*> load(Walk& walk, const FileInfo& from, const toml::node& entry,
                           const FileInfo& file) {
   ++walk.files_read;
@@ -122,8 +143,11 @@ Result<toml::table*> load(Walk& walk, const FileInfo& from, const toml::node& en
   Result<toml::table> parsed = parse_toml(*text, file.name);
   if (!parsed) return parsed.error();
   auto doc = std::make_unique<toml::table>(std::move(parsed.value()));
+  if (const toml::node* renamed = doc->get("renamed_to")) {
+    if (Status s = announce_rename(file, *doc, *renamed); !s) return s.error();
+  }
   for (const auto& [key, node] : *doc) {
-    if (key.str() == "include" || key.str() == "materials") continue;
+    if (key.str() == "include" || key.str() == "materials" || key.str() == "renamed_to") continue;
     return make_error(at(file, node) + ": an included file may hold only 'include' and "
                       "[materials.NAME] tables (found '" + std::string(key.str()) + "')");
   }
@@ -162,7 +186,8 @@ Status merge_include(Walk& walk, const FileInfo& from, const toml::node& entry,
 
 // All materials `doc` provides: those of its includes, replaced by its own definitions.
 Status collect(Walk& walk, const FileInfo& file, toml::table& doc, MaterialSet& out) {
-  Result<std::vector<const toml::node*>> entries = include_entries(file, doc);
+  Result<std::vector<const toml::node*>> entries =
+      include_entries(file, doc, /*library=*/walk.stack.size() > 1);
   if (!entries) return entries.error();
   std::map<std::string, std::string> conflicts;
   for (const toml::node* entry : *entries) {

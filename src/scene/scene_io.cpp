@@ -223,7 +223,7 @@ Status read_world(const ParseContext& ctx, const toml::table& root, Scene& scene
       !s)
     return s;
   if (Status s = check_charges(ctx, scene); !s) return s;
-  // A field map with nothing to map (seed 002's Field with an empty charge list) is a mistake
+  // A field map with nothing to map (Sandia's Field with an empty charge list) is a mistake
   // the picture would hide: a uniformly dark floor.
   const bool any_charge = std::any_of(scene.fields.begin(), scene.fields.end(),
                                       [](const Field& f) { return f.type == FieldType::kCharge; });

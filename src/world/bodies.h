@@ -1,5 +1,5 @@
-// The scene's [[bodies]] on the haptic side (docs/haptics.md, "Bodies"; seed 002 §4): each a
-// mass on a spring hanging from the proxy, falling with the scene's gravity fields and
+// The scene's [[bodies]] on the haptic side (docs/haptics.md, "Bodies"; A Virtual Universe §4):
+// each a mass on a spring hanging from the proxy, falling with the scene's gravity fields and
 // bouncing on its floor. Integrated by velocity Verlet (symplectic: an undamped spring keeps its
 // energy) in `substeps` steps per haptic tick of simulated time tick x time_scale. The hand
 // feels each spring's pull. No allocation after construction.

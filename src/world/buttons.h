@@ -1,6 +1,6 @@
-// The scene's [[buttons]] on the haptic side (seed 002 §2; docs/haptics.md, "Buttons"): a flush
-// button is a rectangle of the face it sits in that gives way. Its geometry (ButtonShape) makes
-// a hole in that face with a pocket behind it, travel x 1.5 deep, whose walls and bottom are
+// The scene's [[buttons]] on the haptic side (A Virtual Universe §2; docs/haptics.md, "Buttons"): a
+// flush button is a rectangle of the face it sits in that gives way. Its geometry (ButtonShape)
+// makes a hole in that face with a pocket behind it, travel x 1.5 deep, whose walls and bottom are
 // solid (HapticScene::closest). Its state (ButtonSet, on the haptic thread) pushes the probe
 // back out with the button's own spring while the probe presses it in, and at `travel_mm`
 // stops pushing and fires, once: it re-arms only when the probe has left the button.
@@ -56,7 +56,7 @@ struct ButtonStepResult {
   double depth_mm = 0.0;             // and how far
 };
 
-// A press counts only when the probe comes at the button's face from the front (seed 002's
+// A press counts only when the probe comes at the button's face from the front (Sandia's
 // push), never when it arrives sideways already below the face (a slide across the wall with
 // the hand pressed in) or was already there when the scene began (a switch or the start with
 // the probe sunk): such a button is held flush instead, and is ready for a press once the probe

@@ -1,8 +1,8 @@
-// Seed 002 §6's bendable polygons: a surface's drawn vertices tied by springs to base points (where
-// they rest) and to their neighbours, pushed in by the probe and drawn deformed. The deformation
-// is graphical, as in the seed: the haptic scene keeps the rest shape (the god-object and its
-// force are unchanged), and what a person sees is a dent that follows the drawn probe, so the
-// probe never gets "lost within a compliant object". docs/universe.md, "Poly".
+// The bendable polygons of A Virtual Universe §6: a surface's drawn vertices tied by springs to
+// base points (where they rest) and to their neighbours, pushed in by the probe and drawn deformed.
+// The deformation is graphical, as in A Virtual Universe: the haptic scene keeps the rest shape
+// (the god-object and its force are unchanged), and what a person sees is a dent that follows the
+// drawn probe, so the probe never gets "lost within a compliant object". docs/universe.md, "Poly".
 //
 // Model, per welded vertex i with displacement u_i = x_i - b_i from its base point b_i:
 //   m u_i'' = -k_b u_i + k_n sum_{j ~ i} (u_j - u_i) - c u_i'
@@ -15,10 +15,10 @@
 // would be 0 within the depth map's precision and the contact patch would break up into specks
 // of "contact" and "almost"; a tenth of a millimetre in, the whole dent reads as contact.) Every
 // displacement is clamped to max_mm (the bound a violent trajectory cannot break).
-// Windowed (seed 002: "windowing of the local area"): each step simulates only the vertices that
-// are displaced or moving (above 1e-4 mm or 1e-3 mm/s: a tenth of a micrometre is far below a
-// pixel at any zoom a person uses) or near the probe, and three rings of their neighbours; the
-// rest are exactly at rest, and a vertex that has come back below those is put exactly at rest.
+// Windowed (A Virtual Universe §6: "windowing of the local area"): each step simulates only the
+// vertices that are displaced or moving (above 1e-4 mm or 1e-3 mm/s: a tenth of a micrometre is far
+// below a pixel at any zoom a person uses) or near the probe, and three rings of their neighbours;
+// the rest are exactly at rest, and a vertex that has come back below those is put exactly at rest.
 // A press costs its neighbourhood, not the mesh.
 // Normals: each drawn vertex keeps its rest normal (the file's, Gouraud across a facet) turned by
 // the change of its welded neighbourhood's area-weighted normal, so at rest the surface shades as
@@ -96,12 +96,12 @@ class Deformable {
 // max_edge_mm, at most 3 times and while the result stays under max_triangles.
 Mesh subdivide(const Mesh& mesh, double max_edge_mm, std::size_t max_triangles = 400'000);
 
-// Where the probe is drawn when it presses a deformable surface (seed 002 §6, the pseudo-haptic
-// way): the god-object `proxy_mm` stays on the felt rest surface while the hand (`device_mm`, the
-// filtered device) goes in; the drawn probe goes in by the share of that depth a spring of the
-// surface's stiffness k leaves to the hand's coupling k_c: k_c / (k_c + k) (the buttons' rule, so
-// a softer surface dents deeper), at most the surface's deform max_mm and half the probe radius.
-// Elsewhere: `proxy_mm` unchanged.
+// Where the probe is drawn when it presses a deformable surface (A Virtual Universe §6, the
+// pseudo-haptic way): the god-object `proxy_mm` stays on the felt rest surface while the hand
+// (`device_mm`, the filtered device) goes in; the drawn probe goes in by the share of that depth a
+// spring of the surface's stiffness k leaves to the hand's coupling k_c: k_c / (k_c + k) (the
+// buttons' rule, so a softer surface dents deeper), at most the surface's deform max_mm and half
+// the probe radius. Elsewhere: `proxy_mm` unchanged.
 glm::dvec3 pressed_position(const Scene& scene, int contact_surface, const glm::dvec3& proxy_mm,
                             const glm::dvec3& device_mm, double coupling_n_per_mm);
 

@@ -3,7 +3,7 @@
 // settles a scene's surfaces under its probe (what `render` shows), and a session steps them each
 // frame before it is drawn (frame/haptic_frame.h step_deformation). The renderer only draws them:
 // it uploads each surface whose version (drawn()) changed since its last upload. The haptic scene keeps
-// the rest shapes (the deformation is graphical, seed 002 §6).
+// the rest shapes (the deformation is graphical, A Virtual Universe §6).
 #pragma once
 
 #include <cstdint>

@@ -12,7 +12,7 @@
 //      then slides toward the new target in steps shorter than R, pushed back out of anything
 //      it enters, and back to 1. A step that cannot be made safe is not taken.
 // Each closest-point query is limited to R + the remaining step (+ a margin): only facets near
-// the proxy are examined, the local model (seed paper 000 §4.2); Step::facets_visited counts them.
+// the proxy are examined, the local model (Hanson & Zhang §4.2); Step::facets_visited counts them.
 // No allocation: the haptic thread calls update() and move_to() every tick.
 #pragma once
 

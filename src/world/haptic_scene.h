@@ -102,7 +102,7 @@ class HapticScene {
       if (f.surface == surface) return f.suggestion;
     return {};
   }
-  // Its rolling manifold (seed 000 §6, fourd/rolling.h); off for any other surface.
+  // Its rolling manifold (Hanson & Zhang §6, fourd/rolling.h); off for any other surface.
   fourd::RollParams fourd_roll(int surface) const {
     for (const FourdShape& f : fourd_)
       if (f.surface == surface) return f.roll;
@@ -141,7 +141,7 @@ class HapticScene {
     fourd::LocalModelKind model;
     fourd::FourdTouch touch;
     fourd::SuggestionParams suggestion;  // eq. 5 (fourd/suggestion.h)
-    fourd::RollParams roll;              // seed 000 §6 (fourd/rolling.h)
+    fourd::RollParams roll;              // Hanson & Zhang §6 (fourd/rolling.h)
   };
   // closest(): the sheet's closest point within `limit`, kept to the hint's sheet by its local model.
   fourd::TouchHit touch_sheet(const FourdShape& f, const glm::dvec3& p, double limit, double max_distance_mm,

@@ -2,7 +2,7 @@
 // (rtcPointQuery with a user callback) on the haptic thread. Embree does the traversal and the
 // pruning by the query radius; the distance to each candidate triangle is computed here in
 // double precision, and the force-shading normal is interpolated from welded vertex normals
-// at the barycentric coordinates of the closest point (seed paper 002 §6: the normal follows
+// at the barycentric coordinates of the closest point (A Virtual Universe §6: the normal follows
 // the surface across polygon edges, so a coarse mesh feels smooth).
 // Thread safety: build on one thread, then closest() from any number of threads (Embree's
 // committed scenes are read-only); closest() does not allocate.
@@ -44,7 +44,7 @@ class MeshBvh {
   Status commit();  // builds the BVH; closest() needs it
 
   // Closest point on any mesh within max_distance_mm of p (hit = false if none). `hint`: a
-  // hit of a nearby earlier query (local model by continuity, seed paper 000 §4.2): its
+  // hit of a nearby earlier query (local model by continuity, Hanson & Zhang §4.2): its
   // triangle's distance starts the search radius, so Embree prunes almost every other leaf
   // when p has moved little. The result is the same with or without it.
   MeshHit closest(const glm::dvec3& p, double max_distance_mm, const MeshHit* hint = nullptr) const;

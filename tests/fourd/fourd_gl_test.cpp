@@ -43,10 +43,10 @@ TEST_P(FourdGLTest, PseudoShadowStaysOnTheProbesSheet) {
   EXPECT_NE(other, own);
 }
 
-// The probe's path coloured by w (seed 000 Fig. 5c): with the surface hidden, a path laid at the
-// surface's smallest w is drawn bluish (blue > red in its pixels), one at its largest w reddish,
-// and without set_show_path nothing is drawn. The camera looks at the path from the side, so
-// its tube (0.6 mm) covers a few pixels of each of its 128^2.
+// The probe's path coloured by w (Hanson & Zhang, Fig. 5c): with the surface hidden, a path laid at
+// the surface's smallest w is drawn bluish (blue > red in its pixels), one at its largest w
+// reddish, and without set_show_path nothing is drawn. The camera looks at the path from the side,
+// so its tube (0.6 mm) covers a few pixels of each of its 128^2.
 TEST_P(FourdGLTest, ProbePathIsColouredByDepth) {
   auto scene = load_scene(std::string(PS_SOURCE_DIR) + "/scenes/fourd/roman.toml",
                           {"render.size=[128,128]", "surfaces.0.visible=false", "camera.position=[0,-60,0]",
@@ -89,8 +89,8 @@ TEST_P(FourdGLTest, ProbePathIsColouredByDepth) {
   EXPECT_GT(near.r, near.b);
 }
 
-// Cutaway (seed 000 §6.3): the probe 0.5 mm off the Roman surface's sheet through (-0.15, cos 15,
-// sin 15), seen from where another sheet hides it. Without the cutaway no pixel shows its
+// Cutaway (Hanson & Zhang §6.3): the probe 0.5 mm off the Roman surface's sheet through (-0.15, cos
+// 15, sin 15), seen from where another sheet hides it. Without the cutaway no pixel shows its
 // pseudo-shadow; with a 15 mm cutaway the other sheet opens around the line of sight and the
 // shadow is seen (over 100 of the 256^2 pixels; 223 measured).
 TEST_P(FourdGLTest, CutawayOpensTheOtherSheetsInFrontOfTheProbe) {
@@ -113,10 +113,10 @@ TEST_P(FourdGLTest, CutawayOpensTheOtherSheetsInFrontOfTheProbe) {
   EXPECT_GT(open, 50u);
 }
 
-// Crossing diagram (seed 000 Fig. 3b): where the Roman surface's sheets cross, the one nearer
-// the 4D eye (larger w: red) is drawn over the other (blue) in a band along the crossing: with
-// fourd_crossing_diagram_mm = 10 more pixels are red-dominant and fewer blue-dominant than with
-// plain 3D depth (measured: red 3144 -> 4440 pixels, blue 2984 -> 1852).
+// Crossing diagram (Hanson & Zhang, Fig. 3b): where the Roman surface's sheets cross, the one
+// nearer the 4D eye (larger w: red) is drawn over the other (blue) in a band along the crossing:
+// with fourd_crossing_diagram_mm = 10 more pixels are red-dominant and fewer blue-dominant than
+// with plain 3D depth (measured: red 3144 -> 4440 pixels, blue 2984 -> 1852).
 TEST_P(FourdGLTest, CrossingDiagramDrawsTheSheetNearerThe4DEyeOnTop) {
   auto count = [](double k, int& red, int& blue) {
     auto scene = load_scene(std::string(PS_SOURCE_DIR) + "/scenes/fourd/roman.toml",
@@ -142,9 +142,9 @@ TEST_P(FourdGLTest, CrossingDiagramDrawsTheSheetNearerThe4DEyeOnTop) {
   EXPECT_LT(blue1, blue0 - 100);
 }
 
-// Wireframe (seed 000 Fig. 5c): the flat torus drawn as its triangles' edges, at 384^2, covers
-// a fraction of the pixels it covers filled (measured 28 714 of 62 963), yet every part of it
-// still shows: its pixels spread over the same bounding box, to 2 pixels.
+// Wireframe (Hanson & Zhang, Fig. 5c): the flat torus drawn as its triangles' edges, at 384^2,
+// covers a fraction of the pixels it covers filled (measured 28 714 of 62 963), yet every part of
+// it still shows: its pixels spread over the same bounding box, to 2 pixels.
 TEST_P(FourdGLTest, WireframeDrawsTheEdgesOnly) {
   auto covered = [](bool wire, glm::ivec4& box) {
     auto scene = load_scene(std::string(PS_SOURCE_DIR) + "/scenes/fourd/flat_torus.toml",

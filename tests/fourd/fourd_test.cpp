@@ -1,7 +1,7 @@
 // The 4D maths and the shipped surfaces against closed forms: rotations are orthonormal,
 // projection round-trips, the flat torus lies on the 3-sphere of radius sqrt 2 with w in its
 // known range, the Roman surface's image crosses itself along its three double lines, and the
-// scenes under scenes/fourd load at the seed's polygon counts. No GL.
+// scenes under scenes/fourd load at Hanson & Zhang's polygon counts. No GL.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -197,9 +197,9 @@ TEST(FourdSurfaceTest, EyeInsideTheSurfaceIsAnError) {
   EXPECT_NE(mesh.error().message.find("fourd_eye_distance"), std::string::npos) << mesh.error().message;
 }
 
-// The shipped scenes load, and their meshes have the seed's polygon counts (two triangles a
+// The shipped scenes load, and their meshes have Hanson & Zhang's polygon counts (two triangles a
 // polygon, minus the poles' degenerate ones) and a colour per vertex.
-TEST(FourdSceneTest, ShippedScenesLoadAtTheSeedsPolygonCounts) {
+TEST(FourdSceneTest, ShippedScenesLoadAtThePapersPolygonCounts) {
   const std::pair<const char*, int> scenes[] = {
       {"flat_torus", 900}, {"spun_trefoil", 2800}, {"roman", 1600}, {"twist_spun_trefoil", 2800}};
   for (const auto& [name, polygons] : scenes) {

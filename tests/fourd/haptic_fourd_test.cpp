@@ -109,7 +109,7 @@ TEST(FourdHapticLoopTest, ProxySlidesThroughTheOtherSheetOnlyWithContinuity) {
 namespace ps {
 namespace {
 
-// Sheet crossings through the loop (seed 000 §5): following the sheet through (s, cos 15,
+// Sheet crossings through the loop (Hanson & Zhang §5): following the sheet through (s, cos 15,
 // sin 15) (w = +0.87) across the double line, the proxy passes the other sheet (w = -0.87) once,
 // in front of it (+1); following that other sheet, through (s, sin 15, cos 15), it passes the
 // first once, behind it (-1). The device reaches s = 0 (x = 20 mm) at t = 0.4 s, tick 400; the

@@ -1,7 +1,7 @@
-// The proxy's local model on a surface embedded in 4D (seed 000 §4.2): a scripted device path
-// across a visual intersection of the Roman surface keeps the proxy's w continuous with the
+// The proxy's local model on a surface embedded in 4D (Hanson & Zhang §4.2): a scripted device
+// path across a visual intersection of the Roman surface keeps the proxy's w continuous with the
 // 4D-continuity and the mesh-adjacency models, while the nearest-surface model jumps to the
-// other sheet; and the local model's size against the whole surface (seed 000 Table 1). No GL.
+// other sheet; and the local model's size against the whole surface (their Table 1). No GL.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -99,11 +99,11 @@ TEST(FourdLocalModelTest, ContinuityKeepsTheSheetWhereNearestSurfaceJumps) {
 namespace ps::fourd {
 namespace {
 
-// Seed 000 Table 1: the local model's size against the whole surface, for the four shipped
+// Hanson & Zhang, Table 1: the local model's size against the whole surface, for the four shipped
 // scenes, while the proxy follows a path on the surface (u from 0.1 to 0.6 at v = 0.37, 1000
 // ticks; the device on the surface). The counts are printed (docs/fourd.md quotes them); the
 // test holds that a local model is a small part of the surface (under a quarter of it, the
-// seed's ratio) and more than the proxy's own facet.
+// paper's ratio) and more than the proxy's own facet.
 TEST(FourdLocalModelTest, LocalModelIsASmallPartOfTheSurface) {
   for (const char* name : {"flat_torus", "spun_trefoil", "roman", "twist_spun_trefoil"}) {
     auto scene = load_scene(std::string(PS_SOURCE_DIR) + "/scenes/fourd/" + name + ".toml");

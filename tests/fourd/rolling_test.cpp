@@ -1,5 +1,5 @@
-// The 4D haptic rolling manifold (seed 000 §6, src/fourd/rolling.h, docs/fourd.md "Rolling
-// manifold"): the seed's Rotate(theta, N), the rubber-band tether (eq. 1, beta = 3), one step
+// The 4D haptic rolling manifold (Hanson & Zhang §6, src/fourd/rolling.h, docs/fourd.md "Rolling
+// manifold"): Hanson & Zhang's Rotate(theta, N), the rubber-band tether (eq. 1, beta = 3), one step
 // across a facet edge, and the haptic loop walking over the flat torus with the view rolling.
 #include <gtest/gtest.h>
 
@@ -32,7 +32,7 @@ double angle(const glm::dvec3& a, const glm::dvec3& b) {
 // Rotate(theta, N) of §6.2 takes T's direction to T''s, about N = T x T' / |T x T'| (fixed), by
 // theta = acos(T . T'), and is a rotation (R^T R = I, det 1). 1e-12: double rounding of a few
 // products of unit vectors. Parallel: the identity; opposite: a half turn.
-TEST(FourdRollingTest, RotateBetweenIsTheSeedsAxisAngle) {
+TEST(FourdRollingTest, RotateBetweenIsThePapersAxisAngle) {
   std::mt19937 rng(7);
   std::normal_distribution<double> g;
   for (int i = 0; i < 200; ++i) {
@@ -105,7 +105,7 @@ TEST(FourdRollingTest, TetherIsEquationOneWithBetaThree) {
 // One step across an edge between two facets (a fold of 30 degrees about the y axis through the
 // origin): with no smoothing the new facet faces the viewer at once (1e-12), the contact point
 // keeps its place in the workspace (the hand does not jump; 1e-12 mm), and when the motion T (the
-// step taken in the plane of the facet it leaves) crosses the edge at right angles the seed's
+// step taken in the plane of the facet it leaves) crosses the edge at right angles Hanson & Zhang's
 // rule alone does it (what is left to correct is
 // under 1e-9 rad); crossing obliquely it leaves a tilt that the correction removes.
 TEST(FourdRollingTest, CrossingAnEdgeTurnsTheNewFacetToTheViewerAboutTheContact) {
@@ -124,12 +124,12 @@ TEST(FourdRollingTest, CrossingAnEdgeTurnsTheNewFacetToTheViewerAboutTheContact)
     EXPECT_LT(angle(pose.rotation * axes.toward_viewer_ws, n0), 1e-12) << "facet 0 already faces the viewer";
     const glm::dvec3 after = glm::dvec3(0.15 * std::cos(fold), 0.15 * oblique, 0.15 * std::sin(fold));
     const glm::dvec3 after_ws = pose.to_workspace(after);
-    // The seed's rule alone, for comparison.
+    // Hanson & Zhang's rule alone, for comparison.
     const glm::dvec3 step = after - before, t = step - glm::dot(step, n0) * n0, tp = t - glm::dot(t, n1) * n1;
     const glm::dmat3 seed = fourd::rotate_between(t, tp) * pose.rotation;
     const double left = angle(seed * axes.toward_viewer_ws, n1);
     ASSERT_TRUE(m.step(p, axes, {true, 1, after, n1}, 1e-3, pose));
-    std::printf("T oblique %.1f: the seed's Rotate leaves %.3g rad; after the step %.3g rad\n", oblique, left,
+    std::printf("T oblique %.1f: the paper's Rotate leaves %.3g rad; after the step %.3g rad\n", oblique, left,
                 angle(pose.rotation * axes.toward_viewer_ws, n1));
     EXPECT_LT(angle(pose.rotation * axes.toward_viewer_ws, n1), 1e-12);
     EXPECT_LT(glm::length(pose.to_workspace(after) - after_ws), 1e-12);
@@ -139,8 +139,8 @@ TEST(FourdRollingTest, CrossingAnEdgeTurnsTheNewFacetToTheViewerAboutTheContact)
   }
 }
 
-// An oblique crossing: the seed's Rotate(theta, N) takes T (the motion, in the facet it leaves)
-// to T' (T projected on the new facet), so the motion keeps its direction in the workspace:
+// An oblique crossing: Hanson & Zhang's Rotate(theta, N) takes T (the motion, in the facet it
+// leaves) to T' (T projected on the new facet), so the motion keeps its direction in the workspace:
 // target' ^T T' = target ^T T. The correction that then turns the new normal toward the viewer
 // turns about T' itself (T' is normal to both the normal it moves and the new normal), so it
 // keeps this exactly. T taken in the new facet's plane instead turns the motion by 0.13 rad here
@@ -268,7 +268,7 @@ RollRun roll_run(const std::vector<std::string>& extra) {
   return out;
 }
 
-// Seed 000 §6: "the facet of interest faces the viewer". With the turn at once (the seed) the
+// Hanson & Zhang §6: "the facet of interest faces the viewer". With the turn at once (theirs) the
 // touched facet's normal is the view direction to rounding at every tick (1e-6 rad: the
 // published rotation is the product of some thousand turns, each exact to ~1e-15). With the
 // default 80 ms smoothing it lags the turns: each leaves e^(-dt/80 ms) of itself when the next
@@ -277,7 +277,7 @@ RollRun roll_run(const std::vector<std::string>& extra) {
 // 0.35 rad, 1.2 theta); the mean stays small. The walk crosses many
 // facets (the torus's facets are ~5 mm here). The view turns about the contact point, so the
 // proxy (radius r, resting on the facet) moves in the workspace by at most r x the tick's turn
-// plus the hand's own 0.01 mm a tick: with the turn at once that is a visible step (the seed's),
+// plus the hand's own 0.01 mm a tick: with the turn at once that is a visible step (theirs),
 // with the smoothing under 0.5 mm a tick;
 // and after the hand is back at the centre and holds, the glide has brought the contact point
 // to the line of sight through the screen centre (0.5 mm: e^(-2 s / 0.5 s) of a 25 mm walk

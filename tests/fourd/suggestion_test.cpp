@@ -1,4 +1,4 @@
-// Force suggestions (seed 000 §4.3, eq. 5) against their definition. No GL.
+// Force suggestions (Hanson & Zhang §4.3, eq. 5) against their definition. No GL.
 #include <gtest/gtest.h>
 
 #include "fourd/suggestion.h"

@@ -1,4 +1,4 @@
-// Kalman filter (seed paper 000 §4.3) on synthetic hand-like motion with measurement noise.
+// Kalman filter (Hanson & Zhang §4.3) on synthetic hand-like motion with measurement noise.
 #include <gtest/gtest.h>
 
 #include <cmath>

@@ -99,9 +99,10 @@ TEST(MazeSummaryTest, TablesAndPlotsAreWritten) {
     EXPECT_GT(std::filesystem::file_size(dir + png), 1000u) << png;
 }
 
-// Seed 003 §VII's retest: P1 (cues on) took 40 s, then 30 s in session 2: faster; P2 (cues
-// off) 20 s, then 25 s: slower; P3 was cut short (no complete first session): not counted. The
-// retest sessions form groups of their own (session 2), not mixed into session 1's means.
+// The retest of Sepulveda-Cervantes et al. §VII: P1 (cues on) took 40 s, then 30 s in
+// session 2: faster; P2 (cues off) 20 s, then 25 s: slower; P3 was cut short (no complete first
+// session): not counted. The retest sessions form groups of their own (session 2), not mixed
+// into session 1's means.
 TEST(MazeSummaryTest, RetestComparesSessionTwoWithSessionOne) {
   auto people = three();
   for (const char* f : {"p1_cues_on_retest.jsonl", "p2_cues_off_retest.jsonl"}) {

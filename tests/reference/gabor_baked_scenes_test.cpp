@@ -173,8 +173,9 @@ TEST(GaborBakedScenesTest, AutoChoosesTheMeasuredTileForEveryShippedMaterial) {
   for (const auto& entry : std::filesystem::directory_iterator(std::string(PS_SOURCE_DIR) + "/scenes")) {
     if (entry.path().extension() != ".toml") continue;
     const std::string file = entry.path().filename().string();
-    // The materials demo draws five materials from the library scenes/materials/seed002.toml;
-    // kExpected holds one material per scene, and the library's outcomes are not measured yet.
+    // The materials demo draws five materials from the library scenes/materials/
+    // virtual_universe.toml; kExpected holds one material per scene, and the library's
+    // outcomes are not measured yet.
     if (file == "materials_demo.toml") continue;
     auto scene = load_scene(entry.path().string(), {});
     ASSERT_TRUE(scene.ok()) << scene.error().message;

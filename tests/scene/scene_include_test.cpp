@@ -104,7 +104,42 @@ TEST_F(SceneIncludeTest, AMissingFileNamesTheIncludingLine) {
             name("lib/a.toml") + ":1: 'include' file not found: " + name("lib/b.toml"));
   EXPECT_EQ(error_of("include = [3]\n"),
             name("scene.toml") + ":1: 'include' must be a file name or an array of file names "
-            "(e.g. include = [\"materials/seed002.toml\"])");
+            "(e.g. include = [\"materials/virtual_universe.toml\"])");
+}
+
+// A renamed library keeps its old file for one release, holding only `renamed_to`: it loads the
+// new file's materials and prints one line naming both files as messages name them.
+TEST_F(SceneIncludeTest, ARenamedLibraryStandsForItsNewFileAndSaysSo) {
+  write("lib/new.toml", kLibrary);
+  write("lib/old.toml", "# moved\nrenamed_to = \"new.toml\"\n");
+  const std::string surfaces = "[[surfaces]]\nmaterial = \"oak\"\n";
+  ::testing::internal::CaptureStderr();
+  Result<Scene> old_name = load("include = [\"lib/old.toml\"]\n" + surfaces);
+  EXPECT_EQ(::testing::internal::GetCapturedStderr(),
+            name("lib/old.toml") + " was renamed to " + name("lib/new.toml") +
+                "; the old name goes in the next release\n");
+  ASSERT_TRUE(old_name) << old_name.error().message;
+  ::testing::internal::CaptureStderr();
+  Result<Scene> new_name = load("include = [\"lib/new.toml\"]\n" + surfaces);
+  EXPECT_EQ(::testing::internal::GetCapturedStderr(), "") << "the new name says nothing";
+  ASSERT_TRUE(new_name) << new_name.error().message;
+  EXPECT_EQ(old_name->materials, new_name->materials);
+  EXPECT_EQ(old_name->materials[0].haptic.stiffness_n_per_mm, 0.9);
+}
+
+TEST_F(SceneIncludeTest, ARenamedLibraryHoldsNothingElse) {
+  const std::string must = ":2: 'renamed_to' must be the only key of a renamed library, the new "
+                           "file's name in the same folder (e.g. renamed_to = "
+                           "\"virtual_universe.toml\")";
+  write("lib/old.toml", "# moved\nrenamed_to = \"new.toml\"\n[materials.oak]\n");
+  EXPECT_EQ(error_of("include = [\"lib/old.toml\"]\n"), name("lib/old.toml") + must);
+  write("lib/old.toml", "# moved\nrenamed_to = \"../new.toml\"\n");
+  EXPECT_EQ(error_of("include = [\"lib/old.toml\"]\n"), name("lib/old.toml") + must);
+  write("lib/old.toml", "# moved\nrenamed_to = 3\n");
+  EXPECT_EQ(error_of("include = [\"lib/old.toml\"]\n"), name("lib/old.toml") + must);
+  write("lib/old.toml", "# moved\nrenamed_to = \"missing.toml\"\n");
+  EXPECT_EQ(error_of("include = [\"lib/old.toml\"]\n"),
+            name("lib/old.toml") + ":2: 'include' file not found: " + name("lib/missing.toml"));
 }
 
 TEST_F(SceneIncludeTest, ACycleIsAnErrorNamingTheCycle) {
@@ -167,8 +202,8 @@ TEST_F(SceneIncludeTest, SetReachesAnIncludedMaterial) {
 
 // The shipped library: every material parses, and each feels the way its name says
 // (relations between materials, stated independently of the numbers in the file).
-TEST(SceneLibraryTest, Seed002MaterialsParseAndDifferInFeel) {
-  std::string text = "include = [\"materials/seed002.toml\"]\n";
+TEST(SceneLibraryTest, VirtualUniverseMaterialsParseAndDifferInFeel) {
+  std::string text = "include = [\"materials/virtual_universe.toml\"]\n";
   const char* names[] = {"polished_wood", "rough_wood", "sandpaper", "cobblestone", "magnetic",
                          "water", "thick_fluid", "rubber", "plastic", "sticky"};
   for (const char* n : names) text += "[[surfaces]]\nmaterial = \"" + std::string(n) + "\"\n";
@@ -196,6 +231,29 @@ TEST(SceneLibraryTest, Seed002MaterialsParseAndDifferInFeel) {
   }
   EXPECT_FALSE(feel("cobblestone").texture.empty());
   EXPECT_FALSE(feel("sandpaper").texture.empty());
+}
+
+// The library's old name works for one release: the same ten materials, and one line on stderr.
+TEST(SceneLibraryTest, TheOldNameSeed002LoadsTheVirtualUniverseMaterialsAndSaysSo) {
+  std::string surfaces;
+  for (const char* n : {"polished_wood", "rough_wood", "sandpaper", "cobblestone", "magnetic",
+                        "water", "thick_fluid", "rubber", "plastic", "sticky"}) {
+    surfaces += "[[surfaces]]\nmaterial = \"" + std::string(n) + "\"\n";
+  }
+  auto parse = [&](const std::string& library) {  // named as a scene under scenes/ would be
+    return parse_scene("include = [\"materials/" + library + "\"]\n" + surfaces, "scenes/s.toml",
+                       test::scenes_dir());
+  };
+  ::testing::internal::CaptureStderr();
+  Result<Scene> old_name = parse("seed002.toml");
+  EXPECT_EQ(::testing::internal::GetCapturedStderr(),
+            "scenes/materials/seed002.toml was renamed to scenes/materials/virtual_universe.toml; "
+            "the old name goes in the next release\n");
+  ASSERT_TRUE(old_name) << old_name.error().message;
+  Result<Scene> new_name = parse("virtual_universe.toml");
+  ASSERT_TRUE(new_name) << new_name.error().message;
+  ASSERT_EQ(old_name->materials.size(), 10u);
+  EXPECT_EQ(old_name->materials, new_name->materials);
 }
 
 TEST(SceneLibraryTest, MaterialsDemoLoads) {

@@ -1,6 +1,6 @@
-// [[buttons]] on the haptic side (seed 002 §2): the button's spring and its firing against the
-// closed form, the hole and pocket it makes in its face for the god-object, and through the
-// haptic loop (the drawn proxy resists by the coupling, flags toggle, events). No GL.
+// [[buttons]] on the haptic side (A Virtual Universe §2): the button's spring and its firing
+// against the closed form, the hole and pocket it makes in its face for the god-object, and through
+// the haptic loop (the drawn proxy resists by the coupling, flags toggle, events). No GL.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -192,7 +192,7 @@ TEST(ButtonLoopTest, ResistsThroughTheCouplingThenFiresOncePerPress) {
   for (std::size_t i = 0; i < deep.size(); ++i) EXPECT_EQ(event_json(repeat[i]), event_json(deep[i])) << i;
 }
 
-// Seed 002's push is along the button's normal: a probe that slides onto the button sideways with
+// Sandia's push is along the button's normal: a probe that slides onto the button sideways with
 // the hand pressed in (over the wall beside it, the proxy resting on the face) does not press it.
 // The button holds it flush (a held button gives way by kHeldShare of the hand's depth) and never
 // fires however deep the hand goes; lifted clear of the face, the next push is a press and fires.

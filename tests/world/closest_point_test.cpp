@@ -216,7 +216,7 @@ TEST(MeshBvhTest, WeldedShadingNormalsOfASphereAreRadial) {
 }
 
 TEST(MeshBvhTest, RadiusLimitedQueriesTouchOnlyTheLocalModel) {
-  // Seed 000 §4.2 / Table 1: a query near the proxy examines only nearby facets. A torus of
+  // Hanson & Zhang §4.2 / Table 1: a query near the proxy examines only nearby facets. A torus of
   // 48 x 24 x 2 = 2304 triangles, area 4 pi^2 R r = 11844 mm^2; a query 1 mm off the surface
   // limited to 9 mm (R = 8 + 1) covers at most a disc of ~pi 9^2 = 254 mm^2: 2 % of the area,
   // ~50 triangles. Embree visits whole leaves (up to 4 triangles each, boxes larger than the

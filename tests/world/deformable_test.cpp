@@ -1,8 +1,8 @@
-// Seed 002 §6's bendable polygons (world/deformable.h) on a tessellated sphere, against what the
-// model promises: the dent takes the probe's shape and no more, the free vertices settle where
-// the spring web balances (checked with an adjacency built here, independently), springs bring
-// the surface back, seams stay closed, and nothing a probe does makes a vertex NaN or move past
-// the bound. No GL.
+// The bendable polygons of A Virtual Universe §6 (world/deformable.h) on a tessellated sphere,
+// against what the model promises: the dent takes the probe's shape and no more, the free vertices
+// settle where the spring web balances (checked with an adjacency built here, independently),
+// springs bring the surface back, seams stay closed, and nothing a probe does makes a vertex NaN or
+// move past the bound. No GL.
 #include <gtest/gtest.h>
 
 #include <cmath>

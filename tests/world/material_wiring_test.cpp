@@ -54,7 +54,8 @@ ForceResult held_at(const HapticScene& scene, const glm::dvec3& x, const glm::dv
   return compute_proxy_force(HapticsParams{}, god, x, v, 0.0);
 }
 
-// seed 002 §3 as docs/haptics.md writes it: F_m 16 s^2 (1 - s)^2, s = gap / range, inside (0, range).
+// A Virtual Universe §3 as docs/haptics.md writes it: F_m 16 s^2 (1 - s)^2, s = gap / range,
+// inside (0, range).
 double magnetic_pull(double force_n, double range_mm, double gap_mm) {
   if (gap_mm <= 0.0 || gap_mm >= range_mm) return 0.0;
   const double s = gap_mm / range_mm;

@@ -327,8 +327,8 @@ TEST_P(UniverseReplayGLTest, FieldsViewTravelsWithTheBox) {
 // object, and the renderer's push-out of the drawn probe is along the surface normal, tenths of
 // a millimetre at most here);
 // a solid material keeps the drawn probe out of the drawn ellipsoid (un-stretched, it is at
-// least r + R from the centre, to 0.01 mm), while water lets it in (seed 002: a non-compliant
-// material "made it seem harder").
+// least r + R from the centre, to 0.01 mm), while water lets it in (A Virtual Universe §3: a
+// non-compliant material "made it seem harder").
 TEST_P(UniverseReplayGLTest, IllusionStretchesThePathAndSolidsKeepTheProbeOut) {
   auto replay = [&](const std::string& material, double& felt_x, double& drawn_x, double& min_gap) {
     World w = open_world("illusion.toml",

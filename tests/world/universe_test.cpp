@@ -197,11 +197,12 @@ TEST(UniverseTest, PanelLeadsToEveryWorldAndEachWorldBack) {
   }
 }
 
-// Field's box (seed 002 §5), through the loop on tests/haptics/data/universe_field_navigate.traj:
-// 10 mm past the +x wall the view travels +x at 15 x 10 = 150 mm/s (2 %: the Kalman filter
-// takes a few ms to reach the held position), the wall pushes back with 0.5 N/mm x 10 mm, the
-// hand's world position is its workspace position plus the view's offset, and back inside the
-// box the view stays where it went. Pushed 30 mm past, the speed stops at max_speed_mm_s.
+// Field's box (A Virtual Universe §5), through the loop on
+// tests/haptics/data/universe_field_navigate.traj: 10 mm past the +x wall the view travels +x at 15
+// x 10 = 150 mm/s (2 %: the Kalman filter takes a few ms to reach the held position), the wall
+// pushes back with 0.5 N/mm x 10 mm, the hand's world position is its workspace position plus the
+// view's offset, and back inside the box the view stays where it went. Pushed 30 mm past, the speed
+// stops at max_speed_mm_s.
 TEST(UniverseTest, FieldsBoxMovesTheViewWhileTheHandPushesAWall) {
   // The box universe_field_navigate.traj was written for (field.toml's is narrower now, so that
   // a mouse reaches its side walls: UniverseMouseGLTest).

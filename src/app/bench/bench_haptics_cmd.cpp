@@ -43,8 +43,8 @@ void print_report(const HapticLoop& loop, double seconds, const std::vector<doub
               st.last_stall_ms, static_cast<unsigned long long>(st.skipped_ticks));
   std::printf("frames:      %zu, ms p50 %.1f  p99 %.1f  max %.1f\n", f.count, f.p50, f.p99, f.max);
   std::printf("latency ms (device sample -> frame finished): p50 %.1f  p99 %.1f  max %.1f\n", l.p50, l.p99, l.max);
-  // Seed 000 Table 1: polygons in the overall model vs those a tick examined (sampled once per
-  // frame from the published state; ticks in free space count too).
+  // Hanson & Zhang, Table 1: polygons in the overall model vs those a tick examined (sampled once
+  // per frame from the published state; ticks in free space count too).
   const Percentiles fc = percentiles(facets);
   std::printf("haptic scene: %zu analytic shapes, %zu triangles overall; local model per tick: mean %.1f  "
               "p99 %.0f  max %.0f triangles\n",

@@ -1,4 +1,5 @@
-// `pseudoshadow maze`: the haptic cue maze of seed 003 as an experiment (docs/maze.md).
+// `pseudoshadow maze`: the haptic cue maze of Sepulveda-Cervantes et al. as an experiment,
+// docs/maze.md.
 //   maze --participant ID --seed N --cues on|off [--device trajectory:FILE|playback:FILE] [--out DIR]
 //   maze summarize LOG|DIR... --out DIR
 //   maze script --seed N --out FILE.traj [--errors K]
@@ -30,9 +31,10 @@ namespace ps {
 namespace {
 
 constexpr const char* kDescription =
-    "The haptic cue maze of seed 003 (docs/maze.md): a learning room, then five rooms of one shape\n"
-    "whose only difference is a haptic cue (texture, viscosity, elastic walls, a hidden sphere, an\n"
-    "external force); each has an entrance and three exits, one of them correct. The route and the\n"
+    "The haptic cue maze of Sepulveda-Cervantes et al., \"Haptic Cues for Effective Learning in 3D\n"
+    "Maze Navigation\" (docs/maze.md, docs/references.md): a learning room, then five rooms of one\n"
+    "shape whose only difference is a haptic cue (texture, viscosity, elastic walls, a hidden sphere,\n"
+    "an external force); each has an entrance and three exits, one of them correct. The route and the\n"
     "room order come from the seed. Writes DIR/session.jsonl (the session log), DIR/device.log (the\n"
     "device stream) and a score picture per pass. With --device trajectory:FILE or playback:FILE the\n"
     "session runs headless and deterministically; without --device it opens a window.\n"
@@ -81,7 +83,8 @@ void declare(cli::Command& cmd, MazeArgs& a) {
   cli::add_int(app, "--seed", "N", a.seed, 0LL, 9'007'199'254'740'991LL,
                "the participant's seed: correct exits and room orders (required)");
   cli::add_int(app, "--session", "K", a.session, 1LL, 1000LL,
-               "which session of this participant (default 1; 2: a retest with the same seed, seed 003 §VII)");
+               "which session of this participant (default 1; 2: a retest with the same seed, as in "
+               "Sepulveda-Cervantes et al. §VII)");
   cli::add_choice(app, "--cues", "on|off", a.cues, {"on", "off"}, "on",
                   "on: haptic cues, labels hidden; off: no cues, rooms labelled on screen (required)");
   cli::add_choice(app, "--device", "DEVICE", a.device, {"mouse", "gamepad", "trajectory:FILE", "playback:FILE"},

@@ -169,7 +169,7 @@ void TunePanel::fourd_section(TuneSession& session, const Surface& s, std::size_
     apply(session, prefix + "fourd_suggest_kp_n_per_mm", number(kp));
   if (slider("suggestion K_v (N s/mm)", prefix + "fourd_suggest_kv_n_s_per_mm", &kv, 1, 0.f, 0.05f, false))
     apply(session, prefix + "fourd_suggest_kv_n_s_per_mm", number(kv));
-  // The rolling manifold (seed 000 §6): the view turns with the proxy's walk over the surface.
+  // The rolling manifold (Hanson & Zhang §6): the view turns with the proxy's walk.
   bool roll = s.fourd.roll.on;
   const bool toggled = ImGui::Checkbox(("rolling manifold##" + prefix).c_str(), &roll);
   record_rect(prefix + "fourd_roll");

@@ -52,7 +52,7 @@ class TunePanel {
   void contents(TuneSession& session);
   void material_section(TuneSession& session);
   void probe_camera_section(TuneSession& session);
-  // The haptic world's knobs (seed 002's Virtual Universe): each drawn-stretched surface's
+  // The haptic world's knobs (Sandia's Virtual Universe): each drawn-stretched surface's
   // stretch (Illusion) and each body's time scale (Weight). Shown only for scenes that have them.
   void world_section(TuneSession& session);
   void fourd_section(TuneSession& session, const Surface& s, std::size_t i);

@@ -1,6 +1,6 @@
 // The effects that follow the proxy's contact on a surface embedded in 4D (docs/fourd.md), asked
 // after the proxy moved (effects/effect.h): sheet crossings (an event, no force) and the force
-// suggestion toward the desired state (seed 000 eq. 5).
+// suggestion toward the desired state (Hanson & Zhang, eq. 5).
 #pragma once
 
 #include "fourd/crossing.h"
@@ -8,7 +8,7 @@
 
 namespace ps {
 
-// Seed 000 §5: a cue each time the proxy's contact point on a surface embedded in 4D passes
+// Hanson & Zhang §5: a cue each time the proxy's contact point on a surface embedded in 4D passes
 // through another sheet of it; sheet_crossing's value is +1 in front of it, -1 behind it.
 class CrossingEffect final : public HapticEffect {
  public:
