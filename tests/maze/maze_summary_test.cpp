@@ -99,6 +99,22 @@ TEST(MazeSummaryTest, TablesAndPlotsAreWritten) {
     EXPECT_GT(std::filesystem::file_size(dir + png), 1000u) << png;
 }
 
+// Sessions that all ended before their first pass (quit at the instructions: no timed pass, every
+// participant left out as aborted) still get their tables and both plots, empty: gnuplot failed
+// on the time plot's x range with no point at all.
+TEST(MazeSummaryTest, PlotsOfSessionsWithNoPass) {
+  auto p = summarize_log(data("p4_cues_on_quit.jsonl"));
+  ASSERT_TRUE(p) << p.error().message;
+  ASSERT_TRUE(p->pass_time_s.empty());
+  const std::vector<ParticipantSummary> people{p.value()};
+  const auto groups = summarize_groups(people, false);
+  const std::string dir = test::temp_dir("summary_no_pass");
+  ASSERT_TRUE(write_tables(dir, people, groups, summarize_retests(people)));
+  auto plots = write_plots(dir, people, groups);
+  ASSERT_TRUE(plots) << plots.error().message;
+  EXPECT_GT(std::filesystem::file_size(dir + "/time_per_trial.png"), 1000u);
+}
+
 // Seed 003 §VII's retest: P1 (cues on) took 40 s, then 30 s in session 2: faster; P2 (cues
 // off) 20 s, then 25 s: slower; P3 was cut short (no complete first session): not counted. The
 // retest sessions form groups of their own (session 2), not mixed into session 1's means.
