@@ -35,6 +35,7 @@ import time
 HERE = os.path.dirname(os.path.abspath(__file__))
 sys.path.insert(0, os.path.join(HERE, "..", "tests", "window"))
 import walk  # noqa: E402  (the window driver the window tests use)
+import window_proc  # noqa: E402
 from soak_measures import MAX_RETRIES, drift_metrics, exit_error, judge, rss_metrics, tenth_stats  # noqa: E402
 
 SKIP = 77
@@ -45,8 +46,8 @@ LOOP_KIND = {"flat_torus": "fourd", "flat_torus_rolling": "fourd", "roman": "fou
 class Follow(walk.Window):
     """The walk's window, reading the readouts log incrementally (an hour is ~50 000 lines)."""
 
-    def __init__(self, proc, log_path):
-        super().__init__(proc, log_path)
+    def __init__(self, proc, log_path, console_path=None):
+        super().__init__(proc, log_path, console_path)
         self._frames, self._pos, self._partial = [], 0, ""
 
     def frames(self):
@@ -94,14 +95,14 @@ def soak_one(args, scene):
     seconds = args.minutes * 60.0
     cmd = [os.path.abspath(args.exe), "run", "--scene", os.path.abspath(scene), "--readouts-log", log, "--mute",
            "--quit-after", str(seconds + 120.0), *args.run_arg]
-    console = open(os.path.join(out, "console.txt"), "w")
-    proc = subprocess.Popen(cmd, cwd=out, stdout=console, stderr=subprocess.STDOUT)
-    win, rss, stop = Follow(proc, log), [], threading.Event()
-    sampler = threading.Thread(target=rss_sampler, args=(proc.pid, rss, stop), daemon=True)
+    console = os.path.join(out, "console.txt")
+    open(console, "w").close()  # this soak's output only (a retry's follows the first try's)
+    win, rss, stop = Follow(None, log, console), [], threading.Event()
     loops, misses, error = [], [], None
     try:
-        win.wait_ready(args.start_timeout)
-        sampler.start()
+        window_proc.open_window(win, lambda: window_proc.start_process(cmd, out, console), args.start_timeout)
+        proc = win.proc
+        threading.Thread(target=rss_sampler, args=(proc.pid, rss, stop), daemon=True).start()
         t_start = time.monotonic()
         while time.monotonic() - t_start < seconds:
             run_loop(win, steps, misses, t_start)
@@ -120,17 +121,15 @@ def soak_one(args, scene):
         if proc.poll() is None:
             win.xdo("key", "--delay", "0", "Escape")
             proc.wait(timeout=20)
-        console.close()
-        with open(console.name, encoding="utf-8", errors="replace") as f:
+        with open(console, encoding="utf-8", errors="replace") as f:
             error = exit_error(proc.returncode, ran_s, seconds, f.read())
     except (RuntimeError, subprocess.CalledProcessError, subprocess.TimeoutExpired) as e:
         error = str(e)
     finally:
         stop.set()
-        if proc.poll() is None:
-            proc.kill()
-            proc.wait()
-        console.close()
+        if win.proc is not None and win.proc.poll() is None:
+            win.proc.kill()
+            win.proc.wait()
     return summarize(stem, out, win.frames(), rss, loops, error, misses)
 
 

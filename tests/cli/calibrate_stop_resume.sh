@@ -6,6 +6,7 @@
 # usage: calibrate_stop_resume.sh PSEUDOSHADOW OUT_DIR
 set -euo pipefail
 exe=$1 out=$2
+source "$(dirname "$0")/../window/window_start.sh"
 rm -rf "$out"; mkdir -p "$out"; cd "$out"
 fail() { echo "calibrate_stop_resume: $*" >&2; exit 1; }
 args=(calibrate --curve speed --references 10,20 --reversals 8 --average-last 4 --seed 5 -q)
@@ -14,9 +15,7 @@ args=(calibrate --curve speed --references 10,20 --reversals 8 --average-last 4 
 k=$(awk -F, 'NR > 1 && $10 == 1 { if (++rev[$3] == 8) { print NR - 1; exit } }' full.trials.csv)
 [ -n "$k" ] || fail "no staircase finished in the full run"
 head -n $((k + 1)) full.trials.csv > part.csv
-"$exe" "${args[@]}" --resume part.csv --out stop.lut > stop.txt 2>&1 &
-pid=$!
-xdotool search --sync --onlyvisible --name "pseudoshadow calibrate" >/dev/null
+start_window "pseudoshadow calibrate" stop.txt "$exe" "${args[@]}" --resume part.csv --out stop.lut
 # A press answers the pair on screen: none before the first stimuli are drawn (seconds on
 # software GL), none in the 0.3 s blank after an answer. So: press, and wait (up to 5 s: a
 # frame's time) for the log, rewritten after every answer, to grow before pressing again.

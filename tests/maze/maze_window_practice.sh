@@ -15,11 +15,11 @@ mkdir -p "$out"
 fail() { echo "maze_window_practice: $*" >&2; [ -f "$out/run.txt" ] && cat "$out/run.txt" >&2; exit 1; }
 
 source "$(dirname "$0")/window_stream.sh"
+source "$(dirname "$0")/../window/window_start.sh"
 
 xdotool mousemove 640 400
-"$exe" maze --maze "$maze" --participant P --seed 11 --cues on --practice --out "$out/s" >"$out/run.txt" 2>&1 &
-pid=$!
-timeout 30 xdotool search --sync --onlyvisible --name "pseudoshadow maze - P" >/dev/null || fail "no window after 30 s"
+start_window "pseudoshadow maze - P" "$out/run.txt" \
+  "$exe" maze --maze "$maze" --participant P --seed 11 --cues on --practice --out "$out/s"
 sleep 1
 xdotool key space                      # instructions -> practice
 wait_stream_file_past "$out/s/practice/device.log.partial" 1.5

@@ -12,3 +12,15 @@ wait_stream_file_past() {
   done
   fail "$1 never reached $2 s"
 }
+
+# Session seconds of the first sample in stream file $1, once there is one (at most 30 s).
+stream_first_time_of() {
+  for _ in $(seq 300); do
+    if [ -f "$1" ] && grep -qv '^#' "$1"; then
+      grep -v '^#' "$1" | head -n 1 | awk '{print $1 + 0}'
+      return 0
+    fi
+    sleep 0.1
+  done
+  fail "$1 has no sample after 30 s"
+}
