@@ -292,14 +292,7 @@ def main():
             print(f"soak.py: no such file: {path}", file=sys.stderr)
             return 2
     if not args.inner:
-        missing = [t for t in ("xvfb-run", "xdotool") if shutil.which(t) is None]
-        if missing:
-            print(f"soak.py: skipped, {' and '.join(missing)} not installed")
-            return SKIP
-        # -noreset: an X server regenerates when its last client leaves, and a connection made
-        # meanwhile fails (wait_for_display's own probe would cause one).
-        return subprocess.call(["xvfb-run", "-a", "-s", "-screen 0 1280x800x24 -noreset", sys.executable,
-                                os.path.abspath(__file__), "--inner", *sys.argv[1:]])
+        return window_proc.under_xvfb(__file__, sys.argv[1:], "1280x800x24", "soak.py")
     os.makedirs(args.out, exist_ok=True)
     wait_for_display(args.start_timeout)
     results = []

@@ -25,7 +25,9 @@ import time
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 sys.path.insert(0, HERE)
+sys.path.insert(0, os.path.join(HERE, "..", "window"))
 import doc_commands  # noqa: E402
+import window_proc  # noqa: E402
 import doc_plan  # noqa: E402
 import doc_run  # noqa: E402
 
@@ -121,13 +123,7 @@ def main():
         doc_plan.print_plan(plan)
         return 0
     if args.group == "window" and not args.inner:
-        missing = [t for t in ("xvfb-run", "xdotool") if shutil.which(t) is None]
-        if missing:
-            print(f"docs_test: skipped, {' and '.join(missing)} not installed")
-            return SKIP
-        # -noreset: a server regenerating as its last client leaves refuses connections meanwhile.
-        return doc_run.call(["xvfb-run", "-a", "-s", "-screen 0 1280x1024x24 -noreset", sys.executable,
-                             os.path.abspath(__file__), "--inner", *sys.argv[1:]])
+        return window_proc.under_xvfb(__file__, sys.argv[1:], "1280x1024x24", "docs_test", call=doc_run.call)
     os.makedirs(args.work, exist_ok=True)
     t0, failures = time.monotonic(), []
     for doc, steps, files in plan:

@@ -302,16 +302,8 @@ def main():
             return 2
     if args.inner:
         return walk(args)
-    missing = [t for t in ("xvfb-run", "xdotool") if shutil.which(t) is None]
-    if missing:
-        print(f"walk.py: skipped, {' and '.join(missing)} not installed")
-        return SKIP
     # One X server per walk, the size of the screen; the window opens at its top left.
-    # -noreset: an X server regenerates when its last client leaves, and a connection made
-    # meanwhile fails ("X11: Failed to open display"): before the window connects, each of the
-    # walk's `xdotool search` polls is that last client.
-    return subprocess.call(["xvfb-run", "-a", "-s", "-screen 0 1280x800x24 -noreset", sys.executable, os.path.abspath(__file__),
-                            "--inner", *sys.argv[1:]])
+    return window_proc.under_xvfb(__file__, sys.argv[1:], "1280x800x24", "walk.py")
 
 
 if __name__ == "__main__":

@@ -8,8 +8,11 @@ display number two `xvfb-run -a` raced for), and that is the machine's, not the 
 Standard library only.
 """
 import json
+import os
 import re
+import shutil
 import subprocess
+import sys
 import time
 
 # The lines the program prints when GLFW cannot open the display or create the window
@@ -17,6 +20,21 @@ import time
 DISPLAY_FAILURE = re.compile(r"glfwInit failed|glfwCreateWindow\([^)]*\) failed|Failed to open display")
 TAIL_LINES = 20  # of the console, in a failure's message
 RETRY_WAIT_S = 1.0
+SKIP = 77  # ctest's skip status
+
+
+def under_xvfb(script, argv, screen, who, call=subprocess.call):
+    """Runs `python3 script --inner argv` under its own X server (xvfb-run -a, SCREEN as
+    "WxHxD") and returns its status; SKIP, with a line saying why, where xvfb-run or xdotool is
+    not installed. -noreset: an X server regenerates when its last client leaves, and a
+    connection made meanwhile fails ("X11: Failed to open display"): before a window connects,
+    each `xdotool search` poll is that last client."""
+    missing = [t for t in ("xvfb-run", "xdotool") if shutil.which(t) is None]
+    if missing:
+        print(f"{who}: skipped, {' and '.join(missing)} not installed")
+        return SKIP
+    return call(["xvfb-run", "-a", "-s", f"-screen 0 {screen} -noreset", sys.executable, os.path.abspath(script),
+                 "--inner", *argv])
 
 
 def console_tail(path, lines=TAIL_LINES):
