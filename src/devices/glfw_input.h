@@ -65,7 +65,6 @@ class GlfwInputDevice final : public Device {
   void place(const glm::dvec3& hit_mm) { map_.set_hit(hit_mm); }
   // The last poll's jump of the point under the pointer across a silhouette (PointerMap).
   double parallax_jump_mm() const { return map_.parallax_jump_mm(); }
-  double hover_jump_mm() const { return map_.hover_jump_mm(); }
 
  private:
   glm::dvec3 poll_mouse(const PointerView& view);

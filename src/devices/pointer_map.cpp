@@ -120,16 +120,8 @@ glm::dvec3 PointerMap::absolute(const PointerView& view, const glm::dvec2& point
       parallax_ = parallax;
       hit_ = *h.hit;
       have_hit_ = true;
-      const bool was_raised = raised_.has_value();
       raised_ = h.raised;
       toward_eye_ = h.toward_eye;
-      const glm::dvec3 c = centre(view, height_mm);
-      hover_jump_mm_ = was_raised || raised_
-                           ? std::max(0.0, glm::length(c - hit_ - offset_) - std::abs(height_mm - last_height_mm_))
-                           : 0.0;
-      offset_ = c - hit_;
-      last_height_mm_ = height_mm;
-      return c;
     }
   }
   return centre(view, height_mm);

@@ -145,11 +145,6 @@ class PointerMap {
   // the previous call had it (mm): the surface's parallax jumps where the pointer crosses a
   // silhouette (off a bump onto the ground behind it) and is smooth elsewhere.
   double parallax_jump_mm() const { return parallax_jump_mm_; }
-  // How far the last absolute() call moved the probe off the place the hit point's own move and
-  // the height's change account for, while over a raised part (0 elsewhere; mm): where the
-  // surface under the pointer turns (a hollow's rim, an edge), hovering along its normal jumps
-  // sideways, which a move along the plane's normal does not show.
-  double hover_jump_mm() const { return hover_jump_mm_; }
 
  private:
   glm::dvec3 centre(const PointerView& view, double height_mm) const;
@@ -158,9 +153,6 @@ class PointerMap {
   glm::dvec3 toward_eye_{0.0, 0.0, 1.0};
   glm::dvec3 parallax_{0.0};  // hit_ minus the plane's own hit (0 on the plane)
   double parallax_jump_mm_ = 0.0;
-  glm::dvec3 offset_{0.0};  // the last centre minus its hit point
-  double last_height_mm_ = 0.0;
-  double hover_jump_mm_ = 0.0;
   bool have_hit_ = false;
 };
 

@@ -89,7 +89,6 @@ class HapticScene {
     return n;
   }
   const MeshBvh& meshes() const { return meshes_; }
-  bool has_fourd() const { return !fourd_.empty(); }
   // The haptic geometry of surface `surface` if it is embedded in 4D (type fourd), else null.
   const fourd::FourdTouch* fourd_touch(int surface) const {
     for (const FourdShape& f : fourd_)

@@ -185,12 +185,10 @@ void poll_device(Session& s, double now_s, bool poll_glfw, bool view_at_rest) {
   // the surface. 0.25 mm: half a height step, so the keys' own steps are not placements. So is a
   // point under the pointer that jumped across a silhouette (off a bump onto what lies behind
   // it: pointing by ray), 1 mm: the surface's parallax is smooth elsewhere, so strokes over it
-  // keep their speed; and so is a probe hovering along a surface's normal that turned sideways
-  // by more than 1 mm beyond the pointer's own move (devices/pointer_map.h, hover_jump_mm).
+  // keep their speed.
   const glm::dvec3 after = s.glfw_device->read(0.0).position_mm;
   const bool rose_or_fell = std::abs(glm::dot(after - before, view.plane.n)) > 0.25;
-  const bool jumped = s.glfw_device->parallax_jump_mm() > 1.0 || s.glfw_device->hover_jump_mm() > 1.0;
-  if (s.loop && s.glfw_device->height_mm() >= 0.0 && (rose_or_fell || jumped))
+  if (s.loop && s.glfw_device->height_mm() >= 0.0 && (rose_or_fell || s.glfw_device->parallax_jump_mm() > 1.0))
     s.loop->place_hand(after, view.plane.n, s.floor.last_normal());
 }
 

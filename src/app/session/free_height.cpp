@@ -80,55 +80,31 @@ std::optional<glm::dvec3> FreeHeight::first_hit(const PointerRay& ray) const {
   return std::nullopt;  // past the far plane, or grazing a surface for every step: the plane
 }
 
-// A sphere of radius r moved out from p along dir until it is `gap` clear of the geometry (from
-// r + gap out: touching p; further in a hollow, up to kReach radii): its centre, and the surface
-// point nearest to it (where its shadow's dark core lies). None where that path leaves p through
-// another surface (a sheet of a surface embedded in 4D, an eye inside Suzanne's head): the probe
-// would be behind it.
+// A sphere of radius r lowered along -dir onto the geometry until `gap` from it, from
+// kReach radii out (none when that start is already closer, a hollow deeper than that): its
+// centre, and the surface point nearest to it (where its shadow's dark core lies).
 std::optional<std::pair<glm::dvec3, glm::dvec3>> FreeHeight::drop_along(const glm::dvec3& p, const glm::dvec3& dir,
                                                                          double r, double gap) const {
-  constexpr double kReach = 3.0, kLeaveMm = 0.1;
-  const double eps = params_.touch_epsilon_mm;
-  double t = r + gap;
-  world::Contact near = scene_->closest(p + t * dir, params_.query_mm);
-  for (int i = 0; near.hit && near.distance_mm < r + gap - eps; ++i) {
-    t += std::max(r + gap - near.distance_mm, eps);
-    if (t > kReach * r + gap || i >= params_.max_steps) return std::nullopt;
-    near = scene_->closest(p + t * dir, params_.query_mm);
+  constexpr double kReach = 3.0;
+  glm::dvec3 c = p + (r + gap + kReach * r) * dir;
+  for (int i = 0; i < params_.max_steps; ++i) {
+    const world::Contact near = scene_->closest(c, params_.query_mm);
+    const double step = (near.hit ? near.distance_mm : params_.query_mm) - (r + gap);
+    if (i == 0 && step < -params_.touch_epsilon_mm) return std::nullopt;
+    if (step < params_.touch_epsilon_mm) {
+      if (!near.hit) return std::nullopt;
+      return std::make_pair(c, near.point);
+    }
+    c -= step * dir;
   }
-  if (!near.hit) return std::nullopt;
-  // The path from p to the centre meets no surface on the way (sphere tracing a point).
-  for (double s = kLeaveMm; s < t;) {
-    const world::Contact c = scene_->closest(p + s * dir, t - s);
-    if (!c.hit) break;
-    if (c.distance_mm < eps && s > 2.0 * kLeaveMm) return std::nullopt;
-    s += std::max(c.distance_mm, eps);
-  }
-  return std::make_pair(p + t * dir, near.point);
-}
-
-// Whether a point is seen from the eye's side: the line back along the ray from it meets no
-// surface (a sheet in front of a probe would hide it: drawn, it would be inside).
-bool FreeHeight::in_sight(const glm::dvec3& c, const glm::dvec3& toward_eye) const {
-  constexpr double kFarMm = 4000.0;
-  double s = 0.0;
-  for (int i = 0; i < params_.ray_max_steps && s < kFarMm; ++i) {
-    const world::Contact near = scene_->closest(c + s * toward_eye, params_.ray_query_mm);
-    if (near.hit && near.distance_mm < params_.touch_epsilon_mm) return false;
-    s += near.hit ? near.distance_mm : params_.ray_query_mm;
-  }
-  return true;
+  return std::nullopt;
 }
 
 std::optional<glm::dvec3> FreeHeight::hover_centre(const glm::dvec3& surface_ws, const glm::dvec3& toward_eye_ws,
                                                    const glm::dvec3& plane_n_ws, double r, double height_mm) const {
   // The normal is read from just in front of the point (a query on the surface itself has no side).
   constexpr double kFrontMm = 0.5;
-  // A surface embedded in 4D keeps the lowering along n: its sheets cross, and what lies in
-  // front of a sheet is not always seen by the closest-point queries (each keeps to one sheet by
-  // continuity), so a probe over the hit could be hidden behind another sheet (31.5 mm on
-  // Roman's walk); lowered from above it rests on the top sheet.
-  if (!scene_ || scene_->has_fourd()) return std::nullopt;
+  if (!scene_) return std::nullopt;
   const glm::dvec3 p = rotation_ * surface_ws + offset_mm_;
   const glm::dvec3 eye = rotation_ * toward_eye_ws;
   for (const world::ButtonShape& b : scene_->button_shapes())
@@ -147,8 +123,7 @@ std::optional<glm::dvec3> FreeHeight::hover_centre(const glm::dvec3& surface_ws,
   std::optional<std::pair<glm::dvec3, glm::dvec3>> best;
   glm::dvec3 best_dir{0.0};
   for (const glm::dvec3& dir : {n, rotation_ * plane_n_ws, eye}) {
-    auto dropped = drop_along(p, dir, r, gap);
-    if (dropped && !in_sight(dropped->first, eye)) dropped.reset();
+    const auto dropped = drop_along(p, dir, r, gap);
     if (dropped && (!best || glm::length(dropped->second - p) < glm::length(best->second - p) - 1e-9)) {
       best = dropped;
       best_dir = dir;

@@ -66,7 +66,6 @@ class FreeHeight final : public SurfaceFloor {
  private:
   std::optional<std::pair<glm::dvec3, glm::dvec3>> drop_along(const glm::dvec3& p, const glm::dvec3& dir, double r,
                                                               double gap) const;
-  bool in_sight(const glm::dvec3& c, const glm::dvec3& toward_eye) const;
   FreeHeightParams params_;
   std::shared_ptr<const world::HapticScene> scene_;
   glm::dmat3 rotation_{1.0};
