@@ -59,28 +59,18 @@ glm::dvec2 project_to_window(const PointerView& view, const glm::dvec3& p_mm) {
   return {(ndc.x + 1.0) * 0.5 * view.window_size.x, (1.0 - ndc.y) * 0.5 * view.window_size.y};
 }
 
-PointerHits pointer_hits(const PointerView& view, const glm::dvec2& pointer) {
+std::optional<glm::dvec3> pointer_hit(const PointerView& view, const glm::dvec2& pointer) {
   // A surface point within this of the plane is on it: the plane's closed-form hit is used, so a
   // pointer over a flat scene maps exactly as without a floor (the surface search stops within
   // 0.01 mm of a surface, FreeHeightParams::touch_epsilon_mm).
   constexpr double kOnPlaneMm = 0.02;
   const PointerRay ray = pointer_ray(view, pointer);
-  PointerHits out;
-  const glm::dvec3 back = ray.near_mm - ray.far_mm;
-  if (glm::length(back) > 0.0) out.toward_eye = glm::normalize(back);
-  out.on_plane = intersect_plane(ray, view.plane);
-  out.hit = out.on_plane;
+  const std::optional<glm::dvec3> on_plane = intersect_plane(ray, view.plane);
   const std::optional<glm::dvec3> surface = view.floor ? view.floor->first_hit(ray) : std::nullopt;
-  if (!surface || !finite(*surface)) return out;
+  if (!surface || !finite(*surface)) return on_plane;
   const double above = glm::dot(*surface - view.plane.origin, view.plane.n);
-  if (out.on_plane && std::abs(above) <= kOnPlaneMm) return out;
-  out.raised = surface;
-  out.hit = *surface - above * view.plane.n;
-  return out;
-}
-
-std::optional<glm::dvec3> pointer_hit(const PointerView& view, const glm::dvec2& pointer) {
-  return pointer_hits(view, pointer).hit;
+  if (on_plane && std::abs(above) <= kOnPlaneMm) return on_plane;
+  return *surface - above * view.plane.n;
 }
 
 void HeightControl::set(double mm) {
@@ -95,10 +85,6 @@ void HeightControl::reach_depth(double depth_mm) {
 }
 
 glm::dvec3 PointerMap::centre(const PointerView& view, double height_mm) const {
-  if (raised_ && view.floor)
-    if (const std::optional<glm::dvec3> c = view.floor->hover_centre(*raised_, toward_eye_, view.plane.n, view.probe_radius_mm,
-                                                                           height_mm))
-      return *c;
   const glm::dvec3 at = hit(view);
   const double lift = view.floor ? view.floor->lift_mm(at, view.plane.n, view.probe_radius_mm) : 0.0;
   return at + (view.probe_radius_mm + (std::isfinite(lift) ? lift : 0.0) + height_mm) * view.plane.n;
@@ -108,22 +94,18 @@ void PointerMap::set_hit(const glm::dvec3& hit_mm) {
   if (!finite(hit_mm)) return;
   hit_ = hit_mm;
   have_hit_ = true;
-  raised_.reset();
 }
 
 glm::dvec3 PointerMap::absolute(const PointerView& view, const glm::dvec2& pointer, double height_mm) {
-  if (std::isfinite(pointer.x) && std::isfinite(pointer.y) && view.window_size.x > 0.0 && view.window_size.y > 0.0) {
-    const PointerHits h = pointer_hits(view, pointer);
-    if (h.hit) {
-      const glm::dvec3 parallax = h.on_plane ? *h.hit - *h.on_plane : glm::dvec3(0.0);
+  if (std::isfinite(pointer.x) && std::isfinite(pointer.y) && view.window_size.x > 0.0 && view.window_size.y > 0.0)
+    if (auto h = pointer_hit(view, pointer)) {
+      const std::optional<glm::dvec3> on_plane = intersect_plane(pointer_ray(view, pointer), view.plane);
+      const glm::dvec3 parallax = on_plane ? *h - *on_plane : glm::dvec3(0.0);
       parallax_jump_mm_ = have_hit_ ? glm::length(parallax - parallax_) : 0.0;
       parallax_ = parallax;
-      hit_ = *h.hit;
+      hit_ = *h;
       have_hit_ = true;
-      raised_ = h.raised;
-      toward_eye_ = h.toward_eye;
     }
-  }
   return centre(view, height_mm);
 }
 
@@ -135,7 +117,6 @@ glm::dvec3 PointerMap::relative(const PointerView& view, const glm::dvec2& count
   if (finite(moved)) {
     hit_ = moved;
     have_hit_ = true;
-    raised_.reset();  // the relative mapping moves on the plane
   }
   return centre(view, height_mm);
 }

@@ -49,17 +49,6 @@ class SurfaceFloor {
   // The first surface point the pointer's ray meets (the visible surface under the cursor), or
   // none where it meets nothing between the near and far planes.
   virtual std::optional<glm::dvec3> first_hit(const PointerRay& ray) const = 0;
-  // Where a probe of radius R hovers `height_mm` over the raised surface point `surface_mm` (a
-  // first_hit; `toward_eye` a unit vector back along the ray, `plane_n` the pointer plane's
-  // normal) so that its nearest surface point - where the shadow's dark core lies - is as near
-  // the pointer's as it can be: on a smooth slope, along that surface's own normal. None for a
-  // button's face (pressed along the plane's normal) or where nothing fits: then the probe is
-  // lowered along the plane's normal over the plane's point (lift_mm).
-  virtual std::optional<glm::dvec3> hover_centre(const glm::dvec3& surface_mm, const glm::dvec3& toward_eye,
-                                                 const glm::dvec3& plane_n, double probe_radius_mm,
-                                                 double height_mm) const {
-    return std::nullopt;
-  }
 };
 
 // Everything the mapping needs, taken from the render thread's current state at every poll
@@ -81,20 +70,10 @@ std::optional<glm::dvec3> intersect_plane(const PointerRay& ray, const PlaneAxes
 // Where a world point lands in the window (the inverse of pointer_ray for points in view).
 glm::dvec2 project_to_window(const PointerView& view, const glm::dvec3& p_mm);
 // The absolute mapping's hit point: with a floor, the surface point the ray meets first, moved
-// along n onto the plane (the plane's own hit where that point lies within 0.02 mm of the plane,
+// along n onto the plane (the plane's own hit where that point lies within 0.01 mm of the plane,
 // so a flat scene maps exactly as without a floor); without one, or where the ray meets no
 // surface, the plane's hit. None where neither is met.
 std::optional<glm::dvec3> pointer_hit(const PointerView& view, const glm::dvec2& pointer);
-
-// pointer_hit with what it found on the way: the ray (pointing back at it: the eye's side), the
-// plane's own hit and the raised surface point (none on the plane or where no surface is met).
-struct PointerHits {
-  std::optional<glm::dvec3> hit;       // pointer_hit's answer
-  std::optional<glm::dvec3> on_plane;  // the ray's own point on the plane
-  std::optional<glm::dvec3> raised;    // the surface point off the plane that `hit` was moved from
-  glm::dvec3 toward_eye{0.0, 0.0, 1.0};  // unit, from the surface back along the ray
-};
-PointerHits pointer_hits(const PointerView& view, const glm::dvec2& pointer);
 
 // The person-controlled height h of the probe's lowest point above the hit point, mm.
 struct HeightParams {
@@ -149,8 +128,6 @@ class PointerMap {
  private:
   glm::dvec3 centre(const PointerView& view, double height_mm) const;
   glm::dvec3 hit_{0.0};
-  std::optional<glm::dvec3> raised_;  // the raised surface point under the pointer (absolute only)
-  glm::dvec3 toward_eye_{0.0, 0.0, 1.0};
   glm::dvec3 parallax_{0.0};  // hit_ minus the plane's own hit (0 on the plane)
   double parallax_jump_mm_ = 0.0;
   bool have_hit_ = false;

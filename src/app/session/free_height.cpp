@@ -1,7 +1,6 @@
 #include "app/session/free_height.h"
 
 #include <algorithm>
-#include <utility>
 #include <cmath>
 
 namespace ps {
@@ -78,61 +77,6 @@ std::optional<glm::dvec3> FreeHeight::first_hit(const PointerRay& ray) const {
     t += c.hit ? c.distance_mm : params_.ray_query_mm;
   }
   return std::nullopt;  // past the far plane, or grazing a surface for every step: the plane
-}
-
-// A sphere of radius r lowered along -dir onto the geometry until `gap` from it, from
-// kReach radii out (none when that start is already closer, a hollow deeper than that): its
-// centre, and the surface point nearest to it (where its shadow's dark core lies).
-std::optional<std::pair<glm::dvec3, glm::dvec3>> FreeHeight::drop_along(const glm::dvec3& p, const glm::dvec3& dir,
-                                                                         double r, double gap) const {
-  constexpr double kReach = 3.0;
-  glm::dvec3 c = p + (r + gap + kReach * r) * dir;
-  for (int i = 0; i < params_.max_steps; ++i) {
-    const world::Contact near = scene_->closest(c, params_.query_mm);
-    const double step = (near.hit ? near.distance_mm : params_.query_mm) - (r + gap);
-    if (i == 0 && step < -params_.touch_epsilon_mm) return std::nullopt;
-    if (step < params_.touch_epsilon_mm) {
-      if (!near.hit) return std::nullopt;
-      return std::make_pair(c, near.point);
-    }
-    c -= step * dir;
-  }
-  return std::nullopt;
-}
-
-std::optional<glm::dvec3> FreeHeight::hover_centre(const glm::dvec3& surface_ws, const glm::dvec3& toward_eye_ws,
-                                                   const glm::dvec3& plane_n_ws, double r, double height_mm) const {
-  // The normal is read from just in front of the point (a query on the surface itself has no side).
-  constexpr double kFrontMm = 0.5;
-  if (!scene_) return std::nullopt;
-  const glm::dvec3 p = rotation_ * surface_ws + offset_mm_;
-  const glm::dvec3 eye = rotation_ * toward_eye_ws;
-  for (const world::ButtonShape& b : scene_->button_shapes())
-    if (b.over(b.to_local(p))) return std::nullopt;  // pressed along the plane's normal (lift_mm)
-  // Read twice: from in front along the ray, then from in front along that first normal (the
-  // second query's point lies on p's own normal line up to the first's small error).
-  glm::dvec3 n = eye;
-  for (int i = 0; i < 2; ++i) {
-    const world::Contact c = scene_->closest(p + kFrontMm * n, params_.query_mm);
-    if (!c.hit || !(glm::length(c.normal) > 0.5)) return std::nullopt;
-    n = glm::dot(c.normal, eye) >= 0.0 ? c.normal : -c.normal;  // an open mesh seen from behind
-  }
-  // Lowered along the surface's normal, the plane's and the view ray: the one whose nearest
-  // surface point is nearest the pointer's (on a smooth bump: the normal, exactly).
-  const double gap = std::max(height_mm, 0.0);
-  std::optional<std::pair<glm::dvec3, glm::dvec3>> best;
-  glm::dvec3 best_dir{0.0};
-  for (const glm::dvec3& dir : {n, rotation_ * plane_n_ws, eye}) {
-    const auto dropped = drop_along(p, dir, r, gap);
-    if (dropped && (!best || glm::length(dropped->second - p) < glm::length(best->second - p) - 1e-9)) {
-      best = dropped;
-      best_dir = dir;
-    }
-  }
-  if (!best) return std::nullopt;
-  last_normal_ = glm::transpose(rotation_) * glm::normalize(best->first - best->second);
-  // Pressing in (a negative height) goes on along the same direction.
-  return glm::transpose(rotation_) * (best->first + (height_mm - gap) * best_dir - offset_mm_);
 }
 
 double buried_mm(const world::HapticScene& scene, const glm::dvec3& centre_mm) {

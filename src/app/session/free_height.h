@@ -16,7 +16,6 @@
 
 #include <memory>
 #include <optional>
-#include <utility>
 
 #include <glm/glm.hpp>
 
@@ -54,18 +53,11 @@ class FreeHeight final : public SurfaceFloor {
   // Where the pointer's ray (workspace) first meets the haptic geometry, in the workspace: the
   // visible surface under the cursor (a button's pocket counts as the button's place).
   std::optional<glm::dvec3> first_hit(const PointerRay& ray) const override;
-  // The probe over a raised point along that surface's normal (devices/pointer_map.h); sets
-  // last_normal() to it.
-  std::optional<glm::dvec3> hover_centre(const glm::dvec3& surface_mm, const glm::dvec3& toward_eye,
-                                         const glm::dvec3& plane_n, double probe_radius_mm,
-                                         double height_mm) const override;
   // The outward normal of the surface the last lift_mm() found, in the workspace (the plane's
   // normal where nothing was under the pointer): the hand placed over it coasts along it.
   const glm::dvec3& last_normal() const { return last_normal_; }
 
  private:
-  std::optional<std::pair<glm::dvec3, glm::dvec3>> drop_along(const glm::dvec3& p, const glm::dvec3& dir, double r,
-                                                              double gap) const;
   FreeHeightParams params_;
   std::shared_ptr<const world::HapticScene> scene_;
   glm::dmat3 rotation_{1.0};
