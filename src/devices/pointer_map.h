@@ -13,7 +13,10 @@
 //            plane; where the ray meets no surface, or meets it on the plane, the plane's hit as
 //            without a floor. The probe is lifted along n, not back along the ray, because the
 //            pseudo-shadow is the probe projected along n: lifted along n, the shadow's centre
-//            is the surface point under the pointer (docs/window.md, "Pointing by ray").
+//            is the surface point under the pointer (docs/window.md, "Pointing by ray"). Over a
+//            slope the hit point moves downhill (SurfaceFloor::lowering_point) and the lift is a
+//            sphere of R + h's, so the probe rests h from the pointed point along the slope's
+//            normal and that point is the nearest to it: the shadow's dark core ("Over a slope").
 //   relative (captured pointer): raw counts move the hit point along the plane, screen-aligned
 //            (right on screen = right on the plane), at a fixed mm per count.
 // Units: window positions in the units of the window size (GLFW screen coordinates, origin top
@@ -49,6 +52,14 @@ class SurfaceFloor {
   // The first surface point the pointer's ray meets (the visible surface under the cursor), or
   // none where it meets nothing between the near and far planes.
   virtual std::optional<glm::dvec3> first_hit(const PointerRay& ray) const = 0;
+  // Where, over a surface point the ray met (`surface_mm`, not on a button), the probe is to be
+  // lowered along -n so that the surface point nearest to it - where its shadow's dark core lies -
+  // is `surface_mm` itself: on a slope that is R sin(slope) downhill of it. The same height over
+  // the plane as `surface_mm`. The default: `surface_mm` (lowered straight over it).
+  virtual glm::dvec3 lowering_point(const glm::dvec3& surface_mm, const glm::dvec3& /*n*/, double /*probe_radius_mm*/,
+                                    const glm::dvec3& /*toward_eye*/) const {
+    return surface_mm;
+  }
 };
 
 // Everything the mapping needs, taken from the render thread's current state at every poll
@@ -73,7 +84,9 @@ glm::dvec2 project_to_window(const PointerView& view, const glm::dvec3& p_mm);
 // along n onto the plane (the plane's own hit where that point lies within 0.01 mm of the plane,
 // so a flat scene maps exactly as without a floor); without one, or where the ray meets no
 // surface, the plane's hit. None where neither is met.
-std::optional<glm::dvec3> pointer_hit(const PointerView& view, const glm::dvec2& pointer);
+// `hover_mm`: the probe's height h; on a slope the point is moved downhill so that a probe
+// hovering h above the surface (a sphere of R + h lowered along -n) is nearest the pointed point.
+std::optional<glm::dvec3> pointer_hit(const PointerView& view, const glm::dvec2& pointer, double hover_mm = 0.0);
 
 // The person-controlled height h of the probe's lowest point above the hit point, mm.
 struct HeightParams {

@@ -66,9 +66,9 @@ TEST(PointingTest, TheShadowIsUnderThePointerOverRaisedParts) {
     for (double x = 40.0; x < 640.0; x += 40.0) {
       const std::optional<glm::dvec3> q = visible_point(pointer_ray(view, {x, y}));
       if (!q) continue;
-      // Over the plane within R of the block the lowered sphere rests on the block's edge.
+      // Over the plane within R + h of the block the lowered probe keeps h from the block's edge.
       const bool top = q->z > 1.0;
-      if (!top && std::max(std::abs(q->x), std::abs(q->y)) < kHalf + kRadius + 0.5) continue;
+      if (!top && std::max(std::abs(q->x), std::abs(q->y)) < kHalf + kRadius + h + 0.5) continue;
       PointerMap map;
       const glm::dvec3 centre = map.absolute(view, {x, y}, h);
       SCOPED_TRACE(testing::Message() << "pointer " << x << "," << y);
@@ -114,6 +114,63 @@ TEST(PointingTest, AFlatSceneMapsExactlyAsWithoutAFloor) {
         EXPECT_EQ(with->y, without->y);
         EXPECT_EQ(with->z, without->z);
       }
+}
+
+// A dome: a sphere of 40 mm standing 30 mm out of the plane z = 0 (the torus's and Suzanne's
+// slopes are curved like this). Lowered straight over the point under the pointer, the probe
+// would touch the dome R sin(slope) uphill of it - 5.7 mm at 45 degrees for this 8 mm probe,
+// ~17 px on this camera - and the shadow's dark core (where the probe is nearest the surface)
+// would sit there. Lowered over the point (R + h) sin(slope) downhill instead, it is nearest the
+// pointed point itself, h away along the dome's normal. Expected values are closed form (ray/sphere, the sphere's normal); 0.05 mm: the
+// ray march and the lowering each stop within 0.01 mm of a surface, and the normal is read
+// 0.5 mm in front of the surface.
+TEST(PointingTest, OverASlopeTheProbeTouchesThePointUnderThePointer) {
+  constexpr double kDomeR = 40.0;
+  const glm::dvec3 centre(0.0, 0.0, -10.0);
+  FreeHeight floor;
+  floor.set_scene(felt(
+      "[probe]\nradius_mm = 8.0\n[materials.m]\nlambda_min = 0.5\n"
+      "[[surfaces]]\ntype = \"plane\"\nsize_mm = [4000.0, 4000.0]\nmaterial = \"m\"\n"
+      "[[surfaces]]\ntype = \"sphere\"\ncenter = [0.0, 0.0, -10.0]\nradius_mm = 40.0\nmaterial = \"m\"\n"));
+  floor.set_top_mm(200.0);
+  const PointerView view = perspective_view(&floor);
+  int slopes = 0;
+  for (const glm::dvec3 dir : {glm::dvec3(0.6, -0.5, 0.62), glm::dvec3(-0.7, -0.3, 0.65), glm::dvec3(0.2, 0.1, 0.97),
+                               glm::dvec3(-0.5, 0.2, 0.84), glm::dvec3(0.75, 0.0, 0.66)}) {
+    const glm::dvec2 pointer = project_to_window(view, centre + kDomeR * glm::normalize(dir));
+    // Closed form: the ray's first meeting with the dome.
+    const PointerRay ray = pointer_ray(view, pointer);
+    const glm::dvec3 d = glm::normalize(ray.far_mm - ray.near_mm);
+    const glm::dvec3 oc = ray.near_mm - centre;
+    const double b = glm::dot(oc, d);
+    const glm::dvec3 seen = ray.near_mm + (-b - std::sqrt(b * b - (glm::dot(oc, oc) - kDomeR * kDomeR))) * d;
+    if (seen.z < 0.5) continue;  // under the plane: not on a slope
+    const glm::dvec3 normal = glm::normalize(seen - centre);
+    SCOPED_TRACE(testing::Message() << "slope " << std::acos(normal.z) * 180.0 / M_PI << " deg");
+    PointerMap map;
+    // Touching (h = 0): the centre is R along the dome's normal from the pointed point.
+    EXPECT_NEAR(glm::length(map.absolute(view, pointer, 0.0) - (seen + kRadius * normal)), 0.0, 0.05);
+    // Hovering (h = 2 mm): 2 mm further along the dome's normal, so the pointed point is still
+    // the nearest (a sphere of R + h lowered the same way touches it).
+    EXPECT_NEAR(glm::length(map.absolute(view, pointer, 2.0) - (seen + (kRadius + 2.0) * normal)), 0.0, 0.05);
+    ++slopes;
+  }
+  EXPECT_GE(slopes, 4);
+}
+
+// Lowered straight over the pointed point (the rule before), the same dome's 45-degree slope
+// puts the touched point more than 5 mm uphill: the test above fails there.
+TEST(PointingTest, LoweredStraightOverASlopeTheProbeTouchesUphill) {
+  FreeHeight floor;
+  floor.set_scene(felt(
+      "[probe]\nradius_mm = 8.0\n[materials.m]\nlambda_min = 0.5\n"
+      "[[surfaces]]\ntype = \"sphere\"\ncenter = [0.0, 0.0, -10.0]\nradius_mm = 40.0\nmaterial = \"m\"\n"));
+  floor.set_top_mm(200.0);
+  const glm::dvec3 on_slope = glm::dvec3(0.0, 0.0, -10.0) + 40.0 * glm::normalize(glm::dvec3(1.0, 0.0, 1.0));
+  const double lift = floor.lift_mm({on_slope.x, on_slope.y, 0.0}, {0.0, 0.0, 1.0}, kRadius);
+  const glm::dvec3 probe(on_slope.x, on_slope.y, lift + kRadius);
+  const glm::dvec3 touched = glm::dvec3(0.0, 0.0, -10.0) + 40.0 * glm::normalize(probe - glm::dvec3(0.0, 0.0, -10.0));
+  EXPECT_GT(glm::length(touched - on_slope), 5.0);
 }
 
 // A moved workspace ([navigation] travelled 60 mm along x): the ray is marched through the

@@ -186,9 +186,14 @@ void poll_device(Session& s, double now_s, bool poll_glfw, bool view_at_rest) {
   // point under the pointer that jumped across a silhouette (off a bump onto what lies behind
   // it: pointing by ray), 1 mm: the surface's parallax is smooth elsewhere, so strokes over it
   // keep their speed.
+  // So is a hover whose straight way from the last reading to this one (and half as far again:
+  // the filter coasts on between readings) comes within half the hover height of a surface: over
+  // a curved surface the hovering places lie on a curve and the chord between two cuts it.
   const glm::dvec3 after = s.glfw_device->read(0.0).position_mm;
+  const double hover = s.glfw_device->height_mm();
   const bool rose_or_fell = std::abs(glm::dot(after - before, view.plane.n)) > 0.25;
-  if (s.loop && s.glfw_device->height_mm() >= 0.0 && (rose_or_fell || s.glfw_device->parallax_jump_mm() > 1.0))
+  const bool cuts = hover > 0.25 && !s.floor.path_clear(before, after + 0.5 * (after - before), view.probe_radius_mm, 0.5 * hover);
+  if (s.loop && hover >= 0.0 && (rose_or_fell || cuts || s.glfw_device->parallax_jump_mm() > 1.0))
     s.loop->place_hand(after, view.plane.n, s.floor.last_normal());
 }
 

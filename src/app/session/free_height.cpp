@@ -35,31 +35,73 @@ double first_button_face(const world::HapticScene& scene, const glm::dvec3& from
 
 }  // namespace
 
-double FreeHeight::lift_mm(const glm::dvec3& hit_mm, const glm::dvec3& n_ws, double r) const {
-  last_normal_ = n_ws;
-  if (!scene_) return 0.0;
-  const glm::dvec3 n = rotation_ * n_ws;
-  const glm::dvec3 hit = rotation_ * hit_mm + offset_mm_;
+std::optional<FreeHeight::Lowered> FreeHeight::lower(const glm::dvec3& over, const glm::dvec3& n, double r) const {
   const double top = std::max(top_mm_, 0.0);
-  glm::dvec3 p = hit + (r + top) * n;
+  glm::dvec3 p = over + (r + top) * n;
   // A start inside an object (a camera inside a room's walls): no free side to find from here.
   const world::Contact start = scene_->closest(p, params_.query_mm);
-  if (start.hit && (start.distance_mm < r || glm::dot(p - start.point, start.normal) < 0.0)) return 0.0;
+  if (start.hit && (start.distance_mm < r || glm::dot(p - start.point, start.normal) < 0.0)) return std::nullopt;
   double fallen = 0.0;
   const double longest = top + params_.below_plane_mm;
   for (int i = 0; i < params_.max_steps; ++i) {
     const world::Contact c = scene_->closest(p, params_.query_mm);
     const double gap = (c.hit ? c.distance_mm : params_.query_mm) - r;
     if (gap < params_.touch_epsilon_mm) {
-      if (c.hit) last_normal_ = glm::transpose(rotation_) * c.normal;
-      p = rest_on_buttons(*scene_, p, n, r);
-      return glm::dot(p - hit, n) - r;
+      if (!c.hit) return std::nullopt;
+      return Lowered{p, c.point, c.normal};
     }
     fallen += gap;
-    if (fallen > longest) return 0.0;  // nothing under the pointer: the plane
+    if (fallen > longest) return std::nullopt;  // nothing under the pointer: the plane
     p -= gap * n;
   }
-  return 0.0;
+  return std::nullopt;
+}
+
+double FreeHeight::lift_mm(const glm::dvec3& hit_mm, const glm::dvec3& n_ws, double r) const {
+  last_normal_ = n_ws;
+  if (!scene_) return 0.0;
+  const glm::dvec3 n = rotation_ * n_ws;
+  const glm::dvec3 hit = rotation_ * hit_mm + offset_mm_;
+  const std::optional<Lowered> down = lower(hit, n, r);
+  if (!down) return 0.0;
+  last_normal_ = glm::transpose(rotation_) * down->normal;
+  const glm::dvec3 p = rest_on_buttons(*scene_, down->centre, n, r);
+  return glm::dot(p - hit, n) - r;
+}
+
+std::optional<glm::dvec3> FreeHeight::normal_at(const glm::dvec3& p, const glm::dvec3& eye) const {
+  // Read from just in front of the point (a query on the surface itself has no side), twice: from
+  // in front along the ray, then along that first normal (nearer p's own normal line).
+  constexpr double kFrontMm = 0.5;
+  glm::dvec3 m = eye;
+  for (int i = 0; i < 2; ++i) {
+    const world::Contact c = scene_->closest(p + kFrontMm * m, params_.query_mm);
+    // The shading normal (a mesh's vertex normals interpolated; the normal itself on analytic
+    // shapes): the facets' own normals jump at every edge, and the place beside the point with them.
+    if (!c.hit || !(glm::length(c.shaded_normal) > 0.5)) return std::nullopt;
+    m = glm::dot(c.shaded_normal, eye) >= 0.0 ? c.shaded_normal : -c.shaded_normal;  // an open mesh seen from behind
+  }
+  return m;
+}
+
+glm::dvec3 FreeHeight::lowering_point(const glm::dvec3& surface_ws, const glm::dvec3& n_ws, double r,
+                                      const glm::dvec3& toward_eye_ws) const {
+  if (!scene_) return surface_ws;
+  const glm::dvec3 p = rotation_ * surface_ws + offset_mm_;
+  const glm::dvec3 n = rotation_ * n_ws;
+  for (const world::ButtonShape& b : scene_->button_shapes())
+    if (b.over(b.to_local(p))) return surface_ws;  // pressed along the plane's normal (lift_mm)
+  const std::optional<glm::dvec3> m = normal_at(p, rotation_ * toward_eye_ws);
+  if (!m) return surface_ws;
+  // A sphere touching p from outside has its centre at p + R m: lowered along -n over the point
+  // below that centre, it first touches p (on a surface whose curvature radius exceeds R).
+  const glm::dvec3 shift = r * (*m - glm::dot(*m, n) * n);
+  if (glm::length(shift) < 1e-6) return surface_ws;
+  const std::optional<Lowered> shifted = lower(p + shift, n, r);
+  if (!shifted) return surface_ws;
+  const std::optional<Lowered> straight = lower(p, n, r);
+  if (straight && glm::length(straight->touched - p) <= glm::length(shifted->touched - p)) return surface_ws;
+  return glm::transpose(rotation_) * (p + shift - offset_mm_);
 }
 
 std::optional<glm::dvec3> FreeHeight::first_hit(const PointerRay& ray) const {
@@ -77,6 +119,25 @@ std::optional<glm::dvec3> FreeHeight::first_hit(const PointerRay& ray) const {
     t += c.hit ? c.distance_mm : params_.ray_query_mm;
   }
   return std::nullopt;  // past the far plane, or grazing a surface for every step: the plane
+}
+
+bool FreeHeight::path_clear(const glm::dvec3& from_mm, const glm::dvec3& to_mm, double r, double clearance_mm) const {
+  constexpr double kMinStepMm = 0.05;  // a dip shorter than this between two steps is not looked for
+  if (!scene_) return true;
+  const glm::dvec3 from = rotation_ * from_mm + offset_mm_;
+  const glm::dvec3 along = rotation_ * (to_mm - from_mm);
+  const double length = glm::length(along);
+  if (!std::isfinite(length)) return false;
+  const glm::dvec3 dir = length > 0.0 ? along / length : glm::dvec3(0.0);
+  double t = 0.0;
+  for (int i = 0; i < params_.max_steps; ++i) {
+    const world::Contact c = scene_->closest(from + std::min(t, length) * dir, params_.query_mm);
+    const double gap = (c.hit ? c.distance_mm : params_.query_mm) - r;
+    if (gap <= clearance_mm) return false;
+    if (t >= length) return true;
+    t += std::max(gap - clearance_mm, kMinStepMm);  // 1-Lipschitz: no nearer surface within that step
+  }
+  return false;
 }
 
 double buried_mm(const world::HapticScene& scene, const glm::dvec3& centre_mm) {

@@ -53,11 +53,30 @@ class FreeHeight final : public SurfaceFloor {
   // Where the pointer's ray (workspace) first meets the haptic geometry, in the workspace: the
   // visible surface under the cursor (a button's pocket counts as the button's place).
   std::optional<glm::dvec3> first_hit(const PointerRay& ray) const override;
+  // Over a slope, the point beside `surface_mm` (downhill, by R sin(slope)) where the probe is
+  // lowered so that the surface point nearest to it is `surface_mm`: the shadow's dark core under
+  // the pointer. The straight lowering is kept where it comes nearer (hollows narrower than the
+  // probe, an overhang over the shifted point) and over buttons (they are pressed along n).
+  glm::dvec3 lowering_point(const glm::dvec3& surface_mm, const glm::dvec3& n, double probe_radius_mm,
+                            const glm::dvec3& toward_eye) const override;
+  // Whether a probe sphere of radius r moved straight from `from_mm` to `to_mm` (workspace) stays
+  // more than `clearance_mm` from every surface (sphere tracing along the segment; a segment
+  // grazing that clearance for more than `max_steps` steps counts as not clear).
+  bool path_clear(const glm::dvec3& from_mm, const glm::dvec3& to_mm, double r, double clearance_mm) const;
   // The outward normal of the surface the last lift_mm() found, in the workspace (the plane's
   // normal where nothing was under the pointer): the hand placed over it coasts along it.
   const glm::dvec3& last_normal() const { return last_normal_; }
 
  private:
+  struct Lowered {
+    glm::dvec3 centre{0.0}, touched{0.0}, normal{0.0};  // world; touched: the surface point nearest the centre
+  };
+  // A probe sphere of radius r lowered along -n (world) over `over` from the camera's height
+  // (top_mm_ above it) until it touches; none where it starts inside or nothing is under it.
+  std::optional<Lowered> lower(const glm::dvec3& over, const glm::dvec3& n, double r) const;
+  // The outward surface normal at a surface point p (world), on the side facing `eye`.
+  std::optional<glm::dvec3> normal_at(const glm::dvec3& p, const glm::dvec3& eye) const;
+
   FreeHeightParams params_;
   std::shared_ptr<const world::HapticScene> scene_;
   glm::dmat3 rotation_{1.0};
