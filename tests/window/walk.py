@@ -37,12 +37,32 @@ def fail_input(path, line_no, msg):
     sys.exit(2)
 
 
-def parse_walk(path):
+def include_walk(path, n, words, scene):
+    """`include FILE [optional]`: FILE's steps here ({scene}: the scene's name, e.g. the scene's own
+    pointing walk, walks/pointing/); `optional`: nothing where FILE does not exist."""
+    if len(words) not in (2, 3) or words[2:] not in ([], ["optional"]):
+        fail_input(path, n, "include takes a file and optionally the word 'optional'")
+    rel = words[1].replace("{scene}", scene)
+    target = os.path.join(os.path.dirname(os.path.abspath(path)), rel)
+    if not os.path.exists(target):
+        if words[2:] == ["optional"]:
+            return []
+        fail_input(path, n, f"include: {target} does not exist")
+    steps = parse_walk(target, scene)
+    for st in steps:
+        st["line"] = f"{rel}:{st['line']}"
+    return steps
+
+
+def parse_walk(path, scene=""):
     steps = []
     with open(path, encoding="utf-8") as f:
         for n, raw in enumerate(f, 1):
             words = raw.split("#", 1)[0].split()
             if not words:
+                continue
+            if words[0] == "include":
+                steps += include_walk(path, n, words, scene)
                 continue
             op, args = words[0], words[1:]
             checks = {"free": False, "unburied": False, "sheets": False, "still": False, "expect": None,
@@ -255,7 +275,7 @@ def print_report(args, win, report, keys_counted, failures):
 
 
 def walk(args):
-    steps = parse_walk(args.walk)
+    steps = parse_walk(args.walk, win_scene_stem(args))
     os.makedirs(args.out, exist_ok=True)
     log = os.path.join(args.out, "readouts.jsonl")
     for name in os.listdir(args.out):  # a rerun's files only

@@ -1,0 +1,92 @@
+#!/usr/bin/env python3
+"""Where a pointing walk rests the pointer: N points spread over a scene's visible surfaces.
+
+    PYTHONPATH=build/python tools/pointing_points.py SCENE.toml [--count 8] [--margin 14]
+
+Renders the scene's first frame through the Python module (the CLI's first frame) with the
+`normal` AOV and prints walk lines (`move X Y` / `wait ... near=6`) for tests/window/walks/.
+The rule, so the points are chosen without looking at where the shadow lands:
+  - a pixel qualifies where a surface is drawn (a non-zero normal) that faces the pointer's plane
+    (normal . reference normal >= --min-facing, 0.5: up to 60 degrees of slope; a wall seen
+    edge-on from the plane's normal cannot carry a shadow under the pointer, docs/window.md);
+  - at least --margin pixels from any pixel that does not (silhouettes, steep walls, the sky), so
+    a hand's pixel of jitter does not fall off an edge;
+  - outside the readouts box (top left) where the window draws over the image, and 64 px from
+    the window's edges (a shadow cut there has its centre pulled inwards);
+  - spread by farthest-point sampling from the qualifying pixel nearest the window's centre.
+The points are the walk's inputs, not its expected outputs: the check (near=PX) measures the
+shadow the window draws there.
+"""
+import argparse
+import sys
+
+import numpy as np
+
+# The readouts box of the window (src/app/window/hud.cpp) at its widest, window pixels: the
+# pointer over it still points at the scene, but the box hides the shadow drawn there.
+READOUTS_BOX = (300, 210)
+# Window pixels from the window's edges: a shadow cut by the edge has its centre pulled inwards.
+EDGE = 64
+
+
+def qualifying(normal, reference, min_facing, margin):
+    drawn = np.linalg.norm(normal, axis=2) > 0.5
+    facing = drawn & (normal @ np.asarray(reference, dtype=np.float32) >= min_facing)
+    ok = facing.copy()
+    for _ in range(margin):  # erosion by one pixel, margin times (4-neighbourhood)
+        shifted = ok.copy()
+        shifted[1:, :] &= ok[:-1, :]
+        shifted[:-1, :] &= ok[1:, :]
+        shifted[:, 1:] &= ok[:, :-1]
+        shifted[:, :-1] &= ok[:, 1:]
+        shifted[0, :] = shifted[-1, :] = False
+        shifted[:, 0] = shifted[:, -1] = False
+        ok = shifted
+    ok[: READOUTS_BOX[1], : READOUTS_BOX[0]] = False
+    ok[:EDGE, :] = ok[-EDGE:, :] = False
+    ok[:, :EDGE] = ok[:, -EDGE:] = False
+    return ok
+
+
+def spread(ok, count):
+    ys, xs = np.nonzero(ok)
+    if len(xs) == 0:
+        return []
+    h, w = ok.shape
+    pts = np.stack([xs + 0.5, ys + 0.5], axis=1)
+    first = int(np.argmin(np.hypot(pts[:, 0] - w / 2, pts[:, 1] - h / 2)))
+    chosen = [first]
+    dist = np.hypot(pts[:, 0] - pts[first, 0], pts[:, 1] - pts[first, 1])
+    while len(chosen) < min(count, len(pts)):
+        nxt = int(np.argmax(dist))
+        chosen.append(nxt)
+        dist = np.minimum(dist, np.hypot(pts[:, 0] - pts[nxt, 0], pts[:, 1] - pts[nxt, 1]))
+    return [(pts[i, 0] / w, pts[i, 1] / h) for i in chosen]
+
+
+def main():
+    ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    ap.add_argument("scene")
+    ap.add_argument("--count", type=int, default=8)
+    ap.add_argument("--margin", type=int, default=14, help="pixels from any edge of the qualifying area")
+    ap.add_argument("--min-facing", type=float, default=0.5)
+    ap.add_argument("--near", type=float, default=6.0, help="the walk's tolerance, window pixels")
+    a = ap.parse_args()
+    try:
+        import pseudoshadow
+    except ImportError:
+        sys.exit("pointing_points: the Python module is not found: run with PYTHONPATH=build/python")
+    frame = pseudoshadow.Renderer(a.scene).render(aovs=["normal"])
+    ok = qualifying(frame.aovs["normal"], frame.stats["reference_normal"], a.min_facing, a.margin)
+    points = spread(ok, a.count)
+    if len(points) < a.count:
+        sys.exit(f"pointing_points: only {len(points)} qualifying points in {a.scene}")
+    print(f"# {a.count} points over the visible surfaces (tools/pointing_points.py --margin {a.margin} "
+          f"--min-facing {a.min_facing:g})")
+    for x, y in points:
+        print(f"move {x:.3f} {y:.3f}")
+        print(f"wait 1.5 free still near={a.near:g}")
+
+
+if __name__ == "__main__":
+    main()
