@@ -83,9 +83,14 @@ def main():
         sys.exit(f"pointing_points: only {len(points)} qualifying points in {a.scene}")
     print(f"# {a.count} points over the visible surfaces (tools/pointing_points.py --margin {a.margin} "
           f"--min-facing {a.min_facing:g})")
+    # From the window's centre (where the walks rest the pointer first), point to point as a hand
+    # moves a mouse, in 0.5 s: a jump across the window in one reading sends the hand's filter
+    # swinging out of reach for ~2 s before it settles.
+    at = (0.5, 0.5)
     for x, y in points:
-        print(f"move {x:.3f} {y:.3f}")
+        print(f"sweep {at[0]:.3f} {at[1]:.3f} {x:.3f} {y:.3f} 0.5 free")
         print(f"wait 1.5 free still near={a.near:g}")
+        at = (x, y)
 
 
 if __name__ == "__main__":
