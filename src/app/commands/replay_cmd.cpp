@@ -14,6 +14,7 @@
 #include "core/output_set.h"
 #include "devices/sample_log.h"
 #include "gl/context.h"
+#include "haptics/session_driver.h"
 #include "image/text.h"
 #include "prepare/prepare.h"
 #include "scene/scene_io.h"
@@ -250,7 +251,7 @@ int replay(const cli::Command& cmd, const ReplayArgs& a) {
   auto scene = cli::load_scene_or_default(a.scene);
   if (!scene) return cmd.fail(scene.error(), cli::scene_exit_code(scene.error()));
   // The frames the session will give (replay_session: one per 1/fps of the log, plus the first).
-  const int frames = static_cast<int>(std::floor(std::max(0.0, device->device->duration_s()) * a.fps + 1e-9)) + 1;
+  const int frames = FrameSchedule{.fps = a.fps}.frames_in(device->device->duration_s());
   auto gl_state = open_renderer(a, scene.value(), frames);
   if (!gl_state) return fail(gl_state.error());
   auto haptic_scene = world::HapticScene::build(scene.value());  // what the proxy collides with

@@ -67,7 +67,6 @@ struct ReplayOptions {
   // vibration track of `replay --vibration`). Null: the loop keeps no tick feed.
   std::function<void(const TickSample&)> on_tick;
 };
-inline constexpr std::size_t kReplayTickFeedCapacity = 4096;
 
 struct ReplayResult {
   int frames = 0;
@@ -78,8 +77,9 @@ struct ReplayResult {
 using FrameSink = std::function<Status(int index, double time_s, const HapticState&, const Renderer&)>;
 
 // Deterministic: a FakeClock drives the loop on this thread (no haptic thread), frames at
-// exactly i / fps. Same scene + same log => the same images, byte for byte. A pointer device
-// must have its view set (pointer_view) before.
+// exactly i / fps (haptics/session_driver.h: the schedule, the events, the recording). Same
+// scene + same log => the same images, byte for byte. A pointer device must have its view set
+// (pointer_view) before.
 Result<ReplayResult> replay_session(Renderer& renderer, Device& device, const ReplayOptions& options,
                                     const FrameSink& sink);
 
