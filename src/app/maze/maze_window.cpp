@@ -63,11 +63,11 @@ Status use_scene(Window& w, const Scene& scene) {
   return ok_status();
 }
 
-Status open_device(const std::string& device, const maze::SessionOptions& o, Window& w) {
-  if (device.empty() || device == "mouse" || device == "gamepad") {
+Status open_device(const DeviceSpec& device, const maze::SessionOptions& o, Window& w) {
+  if (!device.is_log()) {
     GlfwInputParams params;
     params.mm_per_count = kMmPerCount;
-    const bool mouse = device != "gamepad";
+    const bool mouse = device.kind == DeviceKind::kMouse;
     auto m = std::make_unique<GlfwInputDevice>(mouse ? GlfwInputDevice::Kind::kMouse : GlfwInputDevice::Kind::kGamepad,
                                                w.ctx->window(), params);
     // The hand starts where the probe starts: its point on the floor under the probe's start.
@@ -84,7 +84,7 @@ Status open_device(const std::string& device, const maze::SessionOptions& o, Win
   return ok_status();
 }
 
-Status open_window(const maze::SessionOptions& o, const std::string& device, const maze::SessionCore& core, Window& w) {
+Status open_window(const maze::SessionOptions& o, const DeviceSpec& device, const maze::SessionCore& core, Window& w) {
   gl::ContextDesc desc;
   desc.backend = gl::Backend::kGlfw;
   desc.window_width = desc.window_height = o.desc.image_size;
@@ -264,7 +264,7 @@ Result<bool> show_instructions(const maze::SessionOptions& o, Window& w) {
   Result<bool> go = wait_for_start(o, w, o.desc.instructions);
   // The mouse relative (captured): the camera follows the probe, so an absolute pointer would
   // chase it. The gamepad's stick is relative already. The grab is a new relative origin.
-  if (go && go.value() && w.input && w.input->name() == "mouse") w.input->toggle_capture();
+  if (go && go.value() && w.input && w.input->kind() == GlfwInputDevice::Kind::kMouse) w.input->toggle_capture();
   return go;
 }
 
@@ -311,7 +311,7 @@ Result<bool> run_practice(const maze::SessionOptions& o, const MazeWindowParams&
 
 }  // namespace
 
-int run_maze_window(const cli::Command& cmd, const maze::SessionOptions& o, const std::string& device,
+int run_maze_window(const cli::Command& cmd, const maze::SessionOptions& o, const DeviceSpec& device,
                     const cli::LiveLoopArgs& live_args, const MazeWindowParams& params, maze::EndReason* ended) {
   auto live = cli::apply_live_loop(live_args);  // before the context and the haptic thread
   if (!live) return cmd.usage_error(live.error());

@@ -49,22 +49,26 @@ PointerView pointer_view(const Renderer& renderer, const PlaneAxes& plane, glm::
   return v;
 }
 
-Result<LogDeviceSpec> open_device_log(const std::string& spec) {
-  const std::string kind = spec.substr(0, spec.find(':'));
-  if (kind != "trajectory" && kind != "playback" && kind != "pointer")
-    return make_error("device '" + spec + "': expected trajectory:FILE, playback:FILE or pointer:FILE");
+Result<LogDeviceSpec> open_device_log(const DeviceSpec& spec) {
   LogDeviceSpec out;
-  if (kind == "pointer") {
+  if (spec.kind == DeviceKind::kPointer) {
     auto d = open_pointer_device(spec);
     if (!d) return d.error();
     out.pointer = d.value().get();
     out.device = std::move(d.value());
     return out;
   }
+  if (!spec.is_log()) return device_spec_error(spec.text(), kLogDeviceKinds);
   auto d = open_log_device(spec);
   if (!d) return d.error();
   out.device = std::move(d.value());
   return out;
+}
+
+Result<LogDeviceSpec> open_device_log(const std::string& spec) {
+  auto parsed = parse_device_spec(spec, kLogDeviceKinds);
+  if (!parsed) return parsed.error();
+  return open_device_log(parsed.value());
 }
 
 SurfaceModel initial_surface_model(const PlaneAxes& plane, double probe_radius_mm) {

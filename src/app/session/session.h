@@ -7,6 +7,7 @@
 #include <string>
 
 #include "core/result.h"
+#include "devices/device_spec.h"
 #include "devices/pointer_map.h"
 #include "devices/sample_log.h"
 #include "haptics/haptic_loop.h"
@@ -31,7 +32,8 @@ struct LogDeviceSpec {
   std::unique_ptr<Device> device;
   PointerLogDevice* pointer = nullptr;  // == device.get() for pointer:FILE: set_view() it
 };
-Result<LogDeviceSpec> open_device_log(const std::string& spec);
+Result<LogDeviceSpec> open_device_log(const DeviceSpec& spec);
+Result<LogDeviceSpec> open_device_log(const std::string& spec);  // parsed by parse_device_spec
 
 // The surface model a session starts from: the pointer's plane, so that distance and contact
 // are known before the first contact (later frames keep or replace it, update_surface_model).
