@@ -1,6 +1,7 @@
 #include "maze/maze_session.h"
 
 #include <chrono>
+#include <filesystem>
 #include <limits>
 #include <thread>
 
@@ -140,6 +141,22 @@ DriverHooks hooks_of(HeadlessTicks& t) {
 }
 
 }  // namespace
+
+Result<SessionOptions> practice_options(const SessionOptions& o) {
+  SessionOptions po = o;
+  const std::filesystem::path dir = std::filesystem::path(o.log_path).parent_path() / "practice";
+  std::error_code ec;
+  std::filesystem::create_directories(dir, ec);
+  if (ec) return make_error(dir.string() + ": cannot create the practice folder: " + ec.message());
+  po.log_path = (dir / "session.jsonl").string();
+  po.record_path = (dir / "device.log").string();
+  po.info.seed = o.info.seed ^ kPracticeSeedMix;
+  po.route = draw_route(po.info.seed);
+  po.desc.max_passes = po.info.max_passes = 1;
+  po.resume.reset();
+  po.haptics.start_time_s = 0.0;
+  return po;
+}
 
 Result<SessionResult> run_session(Device& device, const SessionOptions& o, const FrameFn& on_frame,
                                   const ScoreFn& on_score) {

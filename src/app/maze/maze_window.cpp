@@ -27,9 +27,6 @@ constexpr double kScoreSeconds = 5.0;  // how long a pass's score screen stays u
 // loses ticks, and says so); ~3 MiB.
 constexpr std::size_t kTrackFeedTicks = std::size_t{1} << 14;
 constexpr double kMmPerCount = 0.15;   // captured mouse: mm on the floor per raw count
-// The practice pass's seed: the session's, mixed, so its route (correct exits, room order) is
-// another one and practice teaches the task, not the answers.
-constexpr std::uint64_t kPracticeSeedMix = 0x9e3779b97f4a7c15ull;
 constexpr const char* kPracticeOver =
     "That was the practice.\n\nThe real session starts now: a new maze, whose right exits\n"
     "you will learn as you go.\n\nPress Space to start.";
@@ -268,29 +265,11 @@ Result<bool> show_instructions(const maze::SessionOptions& o, Window& w) {
   return go;
 }
 
-// The session's options for its practice pass: the same maze and condition, another route, one
-// pass, its own log and device stream in DIR/practice/.
-Result<maze::SessionOptions> practice_options(const maze::SessionOptions& o) {
-  maze::SessionOptions po = o;
-  const std::filesystem::path dir = std::filesystem::path(o.log_path).parent_path() / "practice";
-  std::error_code ec;
-  std::filesystem::create_directories(dir, ec);
-  if (ec) return make_error(dir.string() + ": cannot create the practice folder: " + ec.message());
-  po.log_path = (dir / "session.jsonl").string();
-  po.record_path = (dir / "device.log").string();
-  po.info.seed = o.info.seed ^ kPracticeSeedMix;
-  po.route = maze::draw_route(po.info.seed);
-  po.desc.max_passes = po.info.max_passes = 1;
-  po.resume.reset();
-  po.haptics.start_time_s = 0.0;
-  return po;
-}
-
 // The practice pass (docs/maze.md, "Practice"), then its closing screen; the window's renderer
 // is the scored session's again after it. False: the participant quit during it.
 Result<bool> run_practice(const maze::SessionOptions& o, const MazeWindowParams& p, Window& w,
                           const cli::LiveLoopArgs& live_args, const maze::SessionCore& scored) {
-  auto po = practice_options(o);
+  auto po = maze::practice_options(o);
   if (!po) return po.error();
   auto opened = maze::SessionCore::open(po.value());
   if (!opened) return opened.error();
