@@ -1,7 +1,8 @@
 // A maze session driven by a device log, deterministically: the haptic loop on a fake clock,
 // every tick's proxy fed to the tracker (branches at 1 ms resolution), the log written as
 // things happen, the scene of the next pass handed to the loop when a pass ends. The caller
-// renders (or not) in on_frame, at a fixed frame rate of session time, exactly like `replay`.
+// renders (or not) in on_frame, at a fixed frame rate of session time, on the schedule of `replay`
+// (haptics/session_driver.h).
 // No GL here.
 #pragma once
 
