@@ -76,7 +76,8 @@ render_all() {
 }
 
 # What carries the machine rather than the program: times in the stats (every "*_ms" member and
-# the timing tables) and the output directory's own path (in logs and messages). How many pixels
+# the timing tables), the wall-clock time a maze session started (session_start's started_at) and
+# the output directory's own path (in logs and messages). How many pixels
 # a frame drew (drawn_pixels, incremental) says how, not what: incremental frames draw the same
 # bytes.
 normalise() {
@@ -89,6 +90,7 @@ def keep(v):
         return {k: keep(x) for k, x in v.items() if not (k.endswith("_ms") or k.endswith("timings_lag") or k in ("drawn_pixels", "incremental"))}
     return [keep(x) for x in v] if isinstance(v, list) else v
 print(json.dumps(keep(json.load(open(sys.argv[1]))), indent=1, sort_keys=True))' "${file}" ;;
+    *.jsonl) sed "s|${dir}|DIR|g; s|\"started_at\":\"[^\"]*\"|\"started_at\":\"TIME\"|g" "${file}" ;;
     *) sed "s|${dir}|DIR|g" "${file}" ;;
   esac
 }

@@ -169,13 +169,17 @@ DeviceSample LogDevice::read(double now_s) {
 }
 
 Result<std::unique_ptr<LogDevice>> open_log_device(const std::string& spec) {
-  const size_t colon = spec.find(':');
-  const std::string kind = spec.substr(0, colon);
-  if (colon == std::string::npos || colon + 1 == spec.size() || (kind != "trajectory" && kind != "playback"))
-    return make_error("device '" + spec + "': expected trajectory:FILE or playback:FILE");
-  auto samples = load_sample_log(spec.substr(colon + 1));
+  auto parsed = parse_device_spec(spec, {DeviceKind::kTrajectory, DeviceKind::kPlayback});
+  if (!parsed) return parsed.error();
+  return open_log_device(parsed.value());
+}
+
+Result<std::unique_ptr<LogDevice>> open_log_device(const DeviceSpec& spec) {
+  if (spec.kind != DeviceKind::kTrajectory && spec.kind != DeviceKind::kPlayback)
+    return device_spec_error(spec.text(), {DeviceKind::kTrajectory, DeviceKind::kPlayback});
+  auto samples = load_sample_log(spec.file);
   if (!samples) return samples.error();
-  return std::make_unique<LogDevice>(std::move(samples.value()), kind == "trajectory", spec);
+  return std::make_unique<LogDevice>(std::move(samples.value()), spec.kind == DeviceKind::kTrajectory, spec.text());
 }
 
 }  // namespace ps
@@ -201,12 +205,16 @@ DeviceSample PointerLogDevice::read(double now_s) {
 }
 
 Result<std::unique_ptr<PointerLogDevice>> open_pointer_device(const std::string& spec) {
-  const std::string prefix = "pointer:";
-  if (spec.rfind(prefix, 0) != 0 || spec.size() == prefix.size())
-    return make_error("device '" + spec + "': expected pointer:FILE");
-  auto samples = load_log(spec.substr(prefix.size()), kPointerFields);
+  auto parsed = parse_device_spec(spec, {DeviceKind::kPointer});
+  if (!parsed) return parsed.error();
+  return open_pointer_device(parsed.value());
+}
+
+Result<std::unique_ptr<PointerLogDevice>> open_pointer_device(const DeviceSpec& spec) {
+  if (spec.kind != DeviceKind::kPointer) return device_spec_error(spec.text(), {DeviceKind::kPointer});
+  auto samples = load_log(spec.file, kPointerFields);
   if (!samples) return samples.error();
-  return std::make_unique<PointerLogDevice>(std::move(samples.value()), spec);
+  return std::make_unique<PointerLogDevice>(std::move(samples.value()), spec.text());
 }
 
 }  // namespace ps

@@ -16,6 +16,7 @@
 #include "core/result.h"
 #include "core/snapshot.h"
 #include "devices/device.h"
+#include "devices/device_spec.h"
 #include "devices/pointer_map.h"
 
 namespace ps {
@@ -75,6 +76,8 @@ class LogDevice final : public Device {
 
 // "trajectory:FILE" or "playback:FILE" -> LogDevice (errors name the file and line).
 Result<std::unique_ptr<LogDevice>> open_log_device(const std::string& spec);
+// The same, parsed (devices/device_spec.h): its kind trajectory or playback.
+Result<std::unique_ptr<LogDevice>> open_log_device(const DeviceSpec& spec);
 
 }  // namespace ps
 
@@ -106,5 +109,7 @@ class PointerLogDevice final : public Device {
 
 // "pointer:FILE" -> PointerLogDevice (errors name the file and line).
 Result<std::unique_ptr<PointerLogDevice>> open_pointer_device(const std::string& spec);
+// The same, parsed (devices/device_spec.h): its kind pointer.
+Result<std::unique_ptr<PointerLogDevice>> open_pointer_device(const DeviceSpec& spec);
 
 }  // namespace ps

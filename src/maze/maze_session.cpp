@@ -1,10 +1,11 @@
 #include "maze/maze_session.h"
 
 #include <chrono>
-#include <cmath>
+#include <filesystem>
+#include <limits>
 #include <thread>
 
-#include "devices/sample_log.h"
+#include "haptics/session_driver.h"
 
 namespace ps::maze {
 
@@ -107,66 +108,73 @@ Result<SessionResult> SessionCore::finish(double time_s, EndReason reason_if_ope
 
 namespace {
 
-// The headless session's tick loop beside the session's own step: the frames, the recorder, the pace.
-struct TickDriver {
+// The headless session around the driver's ticks: each tick's state to the session, the frames
+// (FrameView), the pace.
+struct HeadlessTicks {
   const SessionOptions& o;
   SessionCore& core;
-  SampleRecorder& recorder;
   const FrameFn& on_frame;
+  const ScoreFn& on_score;
+  HapticLoop* loop = nullptr;
+  HapticState st{};
+  bool stopped = false;
   std::chrono::steady_clock::time_point wall_start = std::chrono::steady_clock::now();
-  int frame = 0;
 
-  // After tick k (state st): the frame due (frame i shows the state after the tick at or before
-  // i / fps, as in `replay`), the recorder's flush once per second of session time, the pace.
-  Status after(std::uint64_t k, const HapticState& st) {
-    const double rate = o.haptics.rate_hz;
-    if (on_frame && o.fps > 0.0 && k == static_cast<std::uint64_t>(std::floor(frame / o.fps * rate + 1e-9))) {
-      const FrameView view{frame, st, core.scene(), core.take_scene_changed(), core.label()};
-      if (Status s = on_frame(view); !s) return s;
-      ++frame;
-    }
-    if (!o.record_path.empty() && (k + 1) % static_cast<std::uint64_t>(rate) == 0)
-      if (Status s = recorder.flush(); !s) return s;
+  // Before each tick: the session is over, or a stop was asked.
+  bool stop() { return core.finished() || (stopped = o.stop && o.stop()); }
+  Status after_tick(std::uint64_t k, const HapticState& state) {
+    st = state;
+    if (Status s = core.step(st, *loop, on_score); !s) return s;
     if (o.pace > 0.0 && k % 10 == 0)
       std::this_thread::sleep_until(wall_start + std::chrono::duration<double>((st.time_s - o.haptics.start_time_s) / o.pace));
     return ok_status();
   }
+  Status frame(int i) { return on_frame(FrameView{i, st, core.scene(), core.take_scene_changed(), core.label()}); }
 };
 
+DriverHooks hooks_of(HeadlessTicks& t) {
+  DriverHooks h;
+  h.stop = [&t] { return t.stop(); };
+  h.after_tick = [&t](std::uint64_t k, const HapticState& st) { return t.after_tick(k, st); };
+  if (t.on_frame) h.on_frame = [&t](int i) { return t.frame(i); };
+  return h;
+}
+
 }  // namespace
+
+Result<SessionOptions> practice_options(const SessionOptions& o) {
+  SessionOptions po = o;
+  const std::filesystem::path dir = std::filesystem::path(o.log_path).parent_path() / "practice";
+  std::error_code ec;
+  std::filesystem::create_directories(dir, ec);
+  if (ec) return make_error(dir.string() + ": cannot create the practice folder: " + ec.message());
+  po.log_path = (dir / "session.jsonl").string();
+  po.record_path = (dir / "device.log").string();
+  po.info.seed = o.info.seed ^ kPracticeSeedMix;
+  po.route = draw_route(po.info.seed);
+  po.desc.max_passes = po.info.max_passes = 1;
+  po.resume.reset();
+  po.haptics.start_time_s = 0.0;
+  return po;
+}
 
 Result<SessionResult> run_session(Device& device, const SessionOptions& o, const FrameFn& on_frame,
                                   const ScoreFn& on_score) {
   auto opened = SessionCore::open(o);
   if (!opened) return opened.error();
   SessionCore& core = *opened.value();
-  FakeClock clock;
-  HapticLoop loop(device, clock, o.haptics, core.haptic().get());
-  SampleRecorder recorder(o.record_path);
-  if (!o.record_path.empty()) loop.set_recorder(&recorder);
+  HeadlessTicks ticks{o, core, on_frame, on_score};
   // The loop's clock starts at start_time_s (a resumed session: where it stopped).
-  const double start_s = o.haptics.start_time_s;
-  const auto ticks =
-      static_cast<std::uint64_t>(std::floor(std::max(0.0, device.duration_s() - start_s) * o.haptics.rate_hz + 1e-9)) + 1;
-  TickDriver driver{o, core, recorder, on_frame};
-  HapticState st;
-  st.time_s = start_s;
-  std::uint64_t done = 0;
-  bool stopped = false;
-  for (std::uint64_t k = 0; k < ticks && !core.finished(); ++k) {
-    // Between ticks: the log has every line of the ticks before, the recorder their samples.
-    if ((stopped = o.stop && o.stop())) break;
-    loop.run_ticks(1);
-    st = loop.state().read();
-    if (Status s = core.step(st, loop, on_score); !s) return s.error();
-    done = k + 1;
-    if (Status s = driver.after(k, st); !s) return s.error();
-  }
-  auto result = core.finish(st.time_s, stopped ? EndReason::kTerminated : EndReason::kDeviceEnded);
+  ticks.st.time_s = o.haptics.start_time_s;
+  const FrameSchedule schedule{o.fps, o.haptics.rate_hz};
+  SessionDriver driver(device, o.haptics, core.haptic().get(), o.record_path, schedule, hooks_of(ticks));
+  ticks.loop = &driver.loop();
+  auto run = driver.run(schedule.ticks_in(device.duration_s() - o.haptics.start_time_s), std::numeric_limits<int>::max());
+  if (!run) return run.error();
+  auto result = core.finish(ticks.st.time_s, ticks.stopped ? EndReason::kTerminated : EndReason::kDeviceEnded);
   if (!result) return result.error();
-  result->ticks = done;
-  if (!o.record_path.empty())
-    if (Status s = recorder.close(); !s) return s.error();
+  result->ticks = run->ticks;
+  if (Status s = driver.finish(); !s) return s.error();
   return result;
 }
 

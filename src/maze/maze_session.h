@@ -1,7 +1,8 @@
 // A maze session driven by a device log, deterministically: the haptic loop on a fake clock,
 // every tick's proxy fed to the tracker (branches at 1 ms resolution), the log written as
 // things happen, the scene of the next pass handed to the loop when a pass ends. The caller
-// renders (or not) in on_frame, at a fixed frame rate of session time, exactly like `replay`.
+// renders (or not) in on_frame, at a fixed frame rate of session time, on the schedule of `replay`
+// (haptics/session_driver.h).
 // No GL here.
 #pragma once
 
@@ -114,6 +115,14 @@ class SessionCore {
 
 Result<SessionResult> run_session(Device& device, const SessionOptions& options, const FrameFn& on_frame,
                                   const ScoreFn& on_score);
+
+// The practice pass's seed: the session's, mixed, so its route (correct exits, room order) is
+// another one and practice teaches the task, not the answers.
+inline constexpr std::uint64_t kPracticeSeedMix = 0x9e3779b97f4a7c15ull;
+// The session's options for its practice pass (`maze --practice`, docs/maze.md "Practice"): the
+// same maze and condition, another route, one pass, its own log and device stream in
+// DIR/practice/ (created), never resumed, its clock from 0.
+Result<SessionOptions> practice_options(const SessionOptions& o);
 
 // The surface kind the loop touches in `state` (-1: none), for the tracker.
 int contact_kind(const MazeScene& scene, const HapticState& state);

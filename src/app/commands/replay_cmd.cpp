@@ -12,8 +12,10 @@
 #include "app/session/replay_events.h"
 #include "app/session/session.h"
 #include "core/output_set.h"
+#include "devices/device_spec.h"
 #include "devices/sample_log.h"
 #include "gl/context.h"
+#include "haptics/session_driver.h"
 #include "image/text.h"
 #include "prepare/prepare.h"
 #include "scene/scene_io.h"
@@ -162,12 +164,14 @@ ReplayEventsDesc events_desc(const ReplayArgs& a, double duration_s) {
   return d;
 }
 
-// No KIND: a .traj file is a scripted trajectory (interpolated; read as a recording its
-// keyframes would jump and be rejected), anything else a recording.
-std::string device_spec(const std::string& log) {
-  return log.find(':') != std::string::npos ? log
-         : log.ends_with(".traj")           ? "trajectory:" + log
-                                            : "playback:" + log;
+// --log [KIND:]FILE. No KIND: a .traj file is a scripted trajectory (interpolated; read as a
+// recording its keyframes would jump and be rejected), anything else a recording.
+Result<LogDeviceSpec> open_log(const std::string& log) {
+  if (log.find(':') == std::string::npos)
+    return open_device_log(DeviceSpec{log.ends_with(".traj") ? DeviceKind::kTrajectory : DeviceKind::kPlayback, log});
+  auto spec = parse_device_spec(log, kLogDeviceKinds);
+  if (!spec) return spec.error();
+  return open_device_log(spec.value());
 }
 
 // Every --every-th frame staged as DIR/frame_NNNNN.png and, with --contact-sheet, its labelled
@@ -245,12 +249,12 @@ int replay(const cli::Command& cmd, const ReplayArgs& a) {
   auto fail = [&cmd](const Error& e) { return cmd.fail(e); };
   OutputSet outputs;
   if (Status s = add_outputs(a, outputs); !s) return fail(s.error());
-  auto device = open_device_log(device_spec(a.log));
+  auto device = open_log(a.log);
   if (!device) return fail(device.error());
   auto scene = cli::load_scene_or_default(a.scene);
   if (!scene) return cmd.fail(scene.error(), cli::scene_exit_code(scene.error()));
   // The frames the session will give (replay_session: one per 1/fps of the log, plus the first).
-  const int frames = static_cast<int>(std::floor(std::max(0.0, device->device->duration_s()) * a.fps + 1e-9)) + 1;
+  const int frames = FrameSchedule{.fps = a.fps}.frames_in(device->device->duration_s());
   auto gl_state = open_renderer(a, scene.value(), frames);
   if (!gl_state) return fail(gl_state.error());
   auto haptic_scene = world::HapticScene::build(scene.value());  // what the proxy collides with

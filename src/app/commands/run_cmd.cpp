@@ -16,6 +16,7 @@
 #include "app/commands/run_live.h"
 #include "app/window/run_keys.h"
 #include "core/file_io.h"
+#include "devices/device_spec.h"
 #include "render/present.h"
 
 namespace ps {
@@ -51,10 +52,7 @@ constexpr const char* kDescription =
     "runs at 1 kHz on its own thread. Works under Xvfb (xvfb-run -a pseudoshadow run ...).";
 
 void check_device(const std::string& d) {
-  const bool log_device = d.rfind("trajectory:", 0) == 0 || d.rfind("playback:", 0) == 0 || d.rfind("pointer:", 0) == 0;
-  if (d != "mouse" && d != "gamepad" && !log_device)
-    throw cli::UsageError("--device: unknown device '" + d +
-                          "' (mouse, gamepad, trajectory:FILE, playback:FILE, pointer:FILE)");
+  if (auto parsed = parse_device_spec(d); !parsed) throw cli::UsageError("--device: " + parsed.error().message);
 }
 
 // What `run` writes besides the window (and its sounds, which go with the event log).

@@ -19,14 +19,16 @@ namespace ps::run_live {
 namespace {
 
 Status open_device(const RunArgs& a, Session& s) {
-  if (a.device == "mouse" || a.device == "gamepad") {
-    auto kind = a.device == "mouse" ? GlfwInputDevice::Kind::kMouse : GlfwInputDevice::Kind::kGamepad;
+  auto spec = parse_device_spec(a.device);  // checked by --device's parser
+  if (!spec) return make_error("--device: " + spec.error().message);
+  if (!spec->is_log()) {
+    auto kind = spec->kind == DeviceKind::kMouse ? GlfwInputDevice::Kind::kMouse : GlfwInputDevice::Kind::kGamepad;
     auto d = std::make_unique<GlfwInputDevice>(kind, s.ctx->window(), GlfwInputParams{});
     s.glfw_device = d.get();
     s.device = std::move(d);
     return ok_status();
   }
-  auto d = open_device_log(a.device);
+  auto d = open_device_log(spec.value());
   if (!d) return make_error("--device: " + d.error().message);
   s.device = std::move(d->device);
   s.pointer_device = d->pointer;

@@ -7,6 +7,7 @@
 // without one it opens the window (app/maze/maze_window.cpp).
 #include <cstdio>
 #include <filesystem>
+#include <optional>
 
 #include "app/cli/cli.h"
 #include "app/cli/cli_groups.h"
@@ -43,8 +44,19 @@ constexpr const char* kDescription =
 
 std::string default_maze() { return default_scene_base_dir() + "/maze/maze.toml"; }
 
+// The devices a maze session takes.
+constexpr std::initializer_list<DeviceKind> kMazeDevices = {DeviceKind::kMouse, DeviceKind::kGamepad,
+                                                            DeviceKind::kTrajectory, DeviceKind::kPlayback};
+
+DeviceSpec parsed_device(const std::string& text) {
+  auto d = parse_device_spec(text, kMazeDevices);
+  if (!d) throw cli::UsageError("--device: " + d.error().message);
+  return d.value();
+}
+
 struct MazeArgs {
-  std::string maze = default_maze(), participant, cues, device, out_dir, write_scene, resume, plan;
+  std::string maze = default_maze(), participant, cues, out_dir, write_scene, resume, plan;
+  std::optional<DeviceSpec> device;  // none: --device not given (mouse, or a resumed session's)
   long long seed = -1, every = 0, session = 1;
   double fps = 30.0, pace = 0.0;
   cli::GlArgs gl_opts;
@@ -87,10 +99,9 @@ void declare(cli::Command& cmd, MazeArgs& a) {
                "Sepulveda-Cervantes et al. §VII)");
   cli::add_choice(app, "--cues", "on|off", a.cues, {"on", "off"}, "on",
                   "on: haptic cues, labels hidden; off: no cues, rooms labelled on screen (required)");
-  cli::add_choice(app, "--device", "DEVICE", a.device, {"mouse", "gamepad", "trajectory:FILE", "playback:FILE"},
-                  "trajectory:p01.traj",
-                  "trajectory:FILE or playback:FILE runs headless (a scripted or recorded participant); mouse (the "
-                  "default) or gamepad opens the window");
+  app.add_option_function<std::string>("--device", [&a](const std::string& v) { a.device = parsed_device(v); },
+                                       "trajectory:FILE or playback:FILE runs headless (a scripted or recorded "
+                                       "participant); mouse (the default) or gamepad opens the window")->type_name("DEVICE");
   cli::add_output(app, "--out", a.out_dir, "DIR",
                   "where the log, device stream and scores go (default maze-ID); it must exist, or only its last "
                   "component may be missing (it is created). The log is written as the session goes, whole lines, "
@@ -139,7 +150,7 @@ Status open_frames(const MazeArgs& a, const maze::MazeDesc& desc, HeadlessFrames
 }
 
 int run_headless(const cli::Command& cmd, const MazeArgs& a, const maze::SessionOptions& base, maze::EndReason& ended) {
-  auto device = open_device_log(a.device);
+  auto device = open_device_log(*a.device);
   if (!device) return cmd.fail(make_error("--device: " + device.error().message));
   maze::SessionOptions o = base;
   o.pace = a.pace;
@@ -155,7 +166,7 @@ int run_headless(const cli::Command& cmd, const MazeArgs& a, const maze::Session
   ended = r->reason;
   if (r->reason == maze::EndReason::kDeviceEnded && r->branches == 0)
     std::fprintf(stderr, "pseudoshadow maze: warning: %s ended before the first branch: is it this session's (seed %llu)?\n",
-                 a.device.c_str(), static_cast<unsigned long long>(o.route.seed));
+                 a.device->text().c_str(), static_cast<unsigned long long>(o.route.seed));
   if (!a.quiet)
     std::printf("maze: %s after %d pass%s (%s), %.2f s of session; log %s\n", a.participant.c_str(), r->passes,
                 r->passes == 1 ? "" : "es", maze::end_reason_name(r->reason), r->time_s, o.log_path.c_str());
@@ -174,7 +185,7 @@ int write_scene(const cli::Command& cmd, const MazeArgs& a, const maze::MazeDesc
 }
 
 bool opens_window(const MazeArgs& a) {
-  return a.window || a.device.empty() || a.device == "mouse" || a.device == "gamepad";
+  return a.window || !a.device || !a.device->is_log();
 }
 
 // After a signal (app/cli/stop_signal.h): where the log is and how to go on; 128 + the signal.
@@ -188,7 +199,7 @@ int report_stop(const cli::StopSignals& stop, const maze::SessionOptions& o, maz
 }
 
 int run_session_of(const cli::Command& cmd, const MazeArgs& a, const maze::SessionOptions& options) {
-  const bool live = a.device.empty() || a.device == "mouse" || a.device == "gamepad";
+  const bool live = !a.device || !a.device->is_log();
   if (a.practice && !live)
     return cmd.usage_error(make_error("--practice: a practice pass is for a participant at the window; give "
                                       "--device mouse or gamepad (or none), not a log"));
@@ -202,7 +213,7 @@ int run_session_of(const cli::Command& cmd, const MazeArgs& a, const maze::Sessi
   int rc = cli::kExitOk;
   if (opens_window(a)) {
     const MazeWindowParams wp{a.no_clutch ? 0.0 : a.clutch_mm, !a.hide_hand, a.practice};
-    rc = run_maze_window(cmd, o, a.device, a.live, wp, &ended);
+    rc = run_maze_window(cmd, o, a.device.value_or(DeviceSpec{}), a.live, wp, &ended);
   } else {
     rc = run_headless(cmd, a, o, ended);
   }
@@ -221,13 +232,17 @@ int resume_main(const cli::Command& cmd, const MazeArgs& a) {
   MazeArgs args = a;
   args.out_dir = a.resume;
   args.participant = r->info.participant;
-  if (args.device.empty() && r->info.device != "mouse") args.device = r->info.device;
+  if (!args.device) {  // the device the session ran with: a log plays on, mouse and gamepad open the window
+    auto logged = parse_device_spec(r->info.device, kMazeDevices);
+    if (!logged) return cmd.fail(make_error(log + ": " + logged.error().message));
+    if (logged->kind != DeviceKind::kMouse) args.device = logged.value();
+  }
   maze::SessionOptions o;
   o.desc = desc.value();
   o.route = maze::draw_route(r->info.seed);
   o.route.planned = r->planned;
   o.info = r->info;
-  o.info.device = args.device.empty() ? "mouse" : args.device;
+  o.info.device = args.device.value_or(DeviceSpec{}).text();
   o.info.device_log = "device_resumed_" + std::to_string(r->resumes + 1) + ".log";
   o.log_path = log;
   o.record_path = a.resume + "/" + o.info.device_log;
@@ -262,13 +277,13 @@ int maze_main(const cli::Command& cmd, const MazeArgs& a) {
   if (!a.force)
     if (Status s = check_study_folder(args.out_dir, args.participant, static_cast<int>(a.session), seed); !s)
       return cmd.fail(s.error());
-  warn_device_seed(a.device, seed);
+  if (a.device) warn_device_seed(*a.device, seed);
   if (Status s = prepare_output_dir(args.out_dir + "/session.jsonl"); !s) return cmd.fail(s.error());
   maze::SessionOptions o;
   o.desc = desc.value();
   o.route = maze::draw_route(seed);
   o.route.planned = planned;
-  o.info = {a.participant, args.cues == "on", o.route.seed, a.maze, a.device.empty() ? "mouse" : a.device, "device.log",
+  o.info = {a.participant, args.cues == "on", o.route.seed, a.maze, a.device.value_or(DeviceSpec{}).text(), "device.log",
             o.desc.max_passes, static_cast<int>(a.session)};
   o.log_path = args.out_dir + "/session.jsonl";
   o.record_path = args.out_dir + "/device.log";

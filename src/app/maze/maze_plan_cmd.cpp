@@ -102,9 +102,9 @@ Status check_study_folder(const std::string& out_dir, const std::string& partici
   return ok_status();
 }
 
-void warn_device_seed(const std::string& device, std::uint64_t seed) {
-  if (device.rfind("trajectory:", 0) != 0) return;
-  std::ifstream in(device.substr(11));
+void warn_device_seed(const DeviceSpec& device, std::uint64_t seed) {
+  if (device.kind != DeviceKind::kTrajectory) return;
+  std::ifstream in(device.file);
   std::string line;
   for (int n = 0; n < 3 && std::getline(in, line) && !line.empty() && line[0] == '#'; ++n) {
     const std::size_t at = line.find("--seed ");
@@ -114,7 +114,7 @@ void warn_device_seed(const std::string& device, std::uint64_t seed) {
       std::fprintf(stderr,
                    "pseudoshadow maze: warning: %s was written for --seed %s, this session has --seed %llu: it walks "
                    "another route (and may end as device_ended)\n",
-                   device.c_str(), theirs.c_str(), static_cast<unsigned long long>(seed));
+                   device.text().c_str(), theirs.c_str(), static_cast<unsigned long long>(seed));
     return;
   }
 }

@@ -8,6 +8,7 @@
 #include <string>
 
 #include "core/result.h"
+#include "devices/device_spec.h"
 
 namespace ps {
 
@@ -21,6 +22,6 @@ Status check_study_folder(const std::string& out_dir, const std::string& partici
 
 // A trajectory written by `maze script` says its seed in its header: a warning on stderr when it
 // is not the session's (that device would walk another route and end as device_ended).
-void warn_device_seed(const std::string& device, std::uint64_t seed);
+void warn_device_seed(const DeviceSpec& device, std::uint64_t seed);
 
 }  // namespace ps

@@ -27,9 +27,6 @@ constexpr double kScoreSeconds = 5.0;  // how long a pass's score screen stays u
 // loses ticks, and says so); ~3 MiB.
 constexpr std::size_t kTrackFeedTicks = std::size_t{1} << 14;
 constexpr double kMmPerCount = 0.15;   // captured mouse: mm on the floor per raw count
-// The practice pass's seed: the session's, mixed, so its route (correct exits, room order) is
-// another one and practice teaches the task, not the answers.
-constexpr std::uint64_t kPracticeSeedMix = 0x9e3779b97f4a7c15ull;
 constexpr const char* kPracticeOver =
     "That was the practice.\n\nThe real session starts now: a new maze, whose right exits\n"
     "you will learn as you go.\n\nPress Space to start.";
@@ -63,11 +60,11 @@ Status use_scene(Window& w, const Scene& scene) {
   return ok_status();
 }
 
-Status open_device(const std::string& device, const maze::SessionOptions& o, Window& w) {
-  if (device.empty() || device == "mouse" || device == "gamepad") {
+Status open_device(const DeviceSpec& device, const maze::SessionOptions& o, Window& w) {
+  if (!device.is_log()) {
     GlfwInputParams params;
     params.mm_per_count = kMmPerCount;
-    const bool mouse = device != "gamepad";
+    const bool mouse = device.kind == DeviceKind::kMouse;
     auto m = std::make_unique<GlfwInputDevice>(mouse ? GlfwInputDevice::Kind::kMouse : GlfwInputDevice::Kind::kGamepad,
                                                w.ctx->window(), params);
     // The hand starts where the probe starts: its point on the floor under the probe's start.
@@ -84,7 +81,7 @@ Status open_device(const std::string& device, const maze::SessionOptions& o, Win
   return ok_status();
 }
 
-Status open_window(const maze::SessionOptions& o, const std::string& device, const maze::SessionCore& core, Window& w) {
+Status open_window(const maze::SessionOptions& o, const DeviceSpec& device, const maze::SessionCore& core, Window& w) {
   gl::ContextDesc desc;
   desc.backend = gl::Backend::kGlfw;
   desc.window_width = desc.window_height = o.desc.image_size;
@@ -264,33 +261,15 @@ Result<bool> show_instructions(const maze::SessionOptions& o, Window& w) {
   Result<bool> go = wait_for_start(o, w, o.desc.instructions);
   // The mouse relative (captured): the camera follows the probe, so an absolute pointer would
   // chase it. The gamepad's stick is relative already. The grab is a new relative origin.
-  if (go && go.value() && w.input && w.input->name() == "mouse") w.input->toggle_capture();
+  if (go && go.value() && w.input && w.input->kind() == GlfwInputDevice::Kind::kMouse) w.input->toggle_capture();
   return go;
-}
-
-// The session's options for its practice pass: the same maze and condition, another route, one
-// pass, its own log and device stream in DIR/practice/.
-Result<maze::SessionOptions> practice_options(const maze::SessionOptions& o) {
-  maze::SessionOptions po = o;
-  const std::filesystem::path dir = std::filesystem::path(o.log_path).parent_path() / "practice";
-  std::error_code ec;
-  std::filesystem::create_directories(dir, ec);
-  if (ec) return make_error(dir.string() + ": cannot create the practice folder: " + ec.message());
-  po.log_path = (dir / "session.jsonl").string();
-  po.record_path = (dir / "device.log").string();
-  po.info.seed = o.info.seed ^ kPracticeSeedMix;
-  po.route = maze::draw_route(po.info.seed);
-  po.desc.max_passes = po.info.max_passes = 1;
-  po.resume.reset();
-  po.haptics.start_time_s = 0.0;
-  return po;
 }
 
 // The practice pass (docs/maze.md, "Practice"), then its closing screen; the window's renderer
 // is the scored session's again after it. False: the participant quit during it.
 Result<bool> run_practice(const maze::SessionOptions& o, const MazeWindowParams& p, Window& w,
                           const cli::LiveLoopArgs& live_args, const maze::SessionCore& scored) {
-  auto po = practice_options(o);
+  auto po = maze::practice_options(o);
   if (!po) return po.error();
   auto opened = maze::SessionCore::open(po.value());
   if (!opened) return opened.error();
@@ -311,7 +290,7 @@ Result<bool> run_practice(const maze::SessionOptions& o, const MazeWindowParams&
 
 }  // namespace
 
-int run_maze_window(const cli::Command& cmd, const maze::SessionOptions& o, const std::string& device,
+int run_maze_window(const cli::Command& cmd, const maze::SessionOptions& o, const DeviceSpec& device,
                     const cli::LiveLoopArgs& live_args, const MazeWindowParams& params, maze::EndReason* ended) {
   auto live = cli::apply_live_loop(live_args);  // before the context and the haptic thread
   if (!live) return cmd.usage_error(live.error());

@@ -8,6 +8,7 @@
 
 #include "app/cli/cli.h"
 #include "app/cli/cli_groups.h"
+#include "devices/device_spec.h"
 #include "maze/maze_session.h"
 
 namespace ps {
@@ -24,11 +25,11 @@ struct MazeWindowParams {
   bool practice = false;
 };
 
-// `device`: "mouse" (or empty), or a trajectory:/playback: log played in real time. `live`: how the
+// `device`: mouse or gamepad, or a trajectory:/playback: log played in real time. `live`: how the
 // renderer and the haptic thread share the cores (--render-threads, --spare-cpu).
 // `ended` (optional): why the session ended, for the caller's message after a signal
 // (options.stop ends the session as terminated).
-int run_maze_window(const cli::Command& cmd, const maze::SessionOptions& options, const std::string& device,
+int run_maze_window(const cli::Command& cmd, const maze::SessionOptions& options, const DeviceSpec& device,
                     const cli::LiveLoopArgs& live, const MazeWindowParams& params = {}, maze::EndReason* ended = nullptr);
 
 }  // namespace ps

@@ -3,8 +3,10 @@
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
+#include <utility>
 
 #include "frame/haptic_frame.h"
+#include "haptics/session_driver.h"
 
 namespace ps {
 
@@ -47,22 +49,26 @@ PointerView pointer_view(const Renderer& renderer, const PlaneAxes& plane, glm::
   return v;
 }
 
-Result<LogDeviceSpec> open_device_log(const std::string& spec) {
-  const std::string kind = spec.substr(0, spec.find(':'));
-  if (kind != "trajectory" && kind != "playback" && kind != "pointer")
-    return make_error("device '" + spec + "': expected trajectory:FILE, playback:FILE or pointer:FILE");
+Result<LogDeviceSpec> open_device_log(const DeviceSpec& spec) {
   LogDeviceSpec out;
-  if (kind == "pointer") {
+  if (spec.kind == DeviceKind::kPointer) {
     auto d = open_pointer_device(spec);
     if (!d) return d.error();
     out.pointer = d.value().get();
     out.device = std::move(d.value());
     return out;
   }
+  if (!spec.is_log()) return device_spec_error(spec.text(), kLogDeviceKinds);
   auto d = open_log_device(spec);
   if (!d) return d.error();
   out.device = std::move(d.value());
   return out;
+}
+
+Result<LogDeviceSpec> open_device_log(const std::string& spec) {
+  auto parsed = parse_device_spec(spec, kLogDeviceKinds);
+  if (!parsed) return parsed.error();
+  return open_device_log(parsed.value());
 }
 
 SurfaceModel initial_surface_model(const PlaneAxes& plane, double probe_radius_mm) {
@@ -83,71 +89,61 @@ std::string scene_action_of(const Scene& scene, const HapticEvent& e) {
 
 namespace {
 
-// Runs the ticks up to `last_tick` included, in blocks of at most half the feed, draining the
-// feed after each block.
-void run_ticks_to(HapticLoop& loop, std::uint64_t last_tick, std::uint64_t& ticks_done, TickFeed& feed,
-                  const ReplayOptions& options) {
-  while (ticks_done < last_tick + 1) {
-    const std::uint64_t n = std::min<std::uint64_t>(last_tick + 1 - ticks_done, kReplayTickFeedCapacity / 2);
-    loop.run_ticks(n);
-    ticks_done += n;
-    if (options.on_tick) feed.drain(options.on_tick);
-  }
-}
-
-// The haptic events since the last frame, passed on; the first button that leads to a scene
-// switches the renderer and the haptic scene to it.
-Status take_events(HapticLoop& loop, Renderer*& renderer, const ReplayOptions& options) {
+// The haptic events before a frame, passed on; the first button that leads to a scene
+// switches the renderer and the haptic scene to it before the frame is drawn.
+struct ReplayFrames {
+  const ReplayOptions& options;
+  const FrameSink& sink;
+  SessionDriver* driver = nullptr;
+  Renderer* renderer;
   std::string switch_to;
-  loop.events().drain([&](const HapticEvent& e) {
+  ReplayResult result;
+  int frames = 0;
+
+  void event(const HapticEvent& e) {
     if (options.on_event) options.on_event(e);
     if (switch_to.empty()) switch_to = scene_action_of(renderer->scene(), e);
-  });
-  if (!switch_to.empty() && options.switch_scene) {
-    auto next = options.switch_scene(switch_to);
+  }
+  Status switch_scene() {
+    const std::string path = std::exchange(switch_to, {});
+    if (path.empty() || !options.switch_scene) return ok_status();
+    auto next = options.switch_scene(path);
     if (!next) return next.error();
     renderer = next->renderer;
-    loop.replace_scene(next->haptic, std::filesystem::path(switch_to).filename().string());
+    driver->loop().replace_scene(next->haptic, std::filesystem::path(path).filename().string());
+    return ok_status();
   }
-  return ok_status();
-}
+  Status frame(int i) {
+    if (Status s = switch_scene(); !s) return s;
+    HapticState state;
+    if (Status s = drive_frame(*renderer, driver->loop(), static_cast<std::uint64_t>(i), state); !s) return s;
+    if (Status s = sink(i, state.time_s, state, *renderer); !s) return s;
+    if (options.progress) std::fprintf(stderr, "\rframe %d/%d  t=%.3f s", i + 1, frames, state.time_s);
+    result.rejected = state.rejected;
+    result.frames = i + 1;
+    return ok_status();
+  }
+};
 
 }  // namespace
 
 Result<ReplayResult> replay_session(Renderer& first_renderer, Device& device, const ReplayOptions& options,
                                     const FrameSink& sink) {
-  Renderer* renderer = &first_renderer;
   if (!(options.fps > 0.0)) return make_error("replay: fps must be > 0");
-  const double duration = std::max(0.0, device.duration_s());
-  const int frames = static_cast<int>(std::floor(duration * options.fps + 1e-9)) + 1;
-  FakeClock clock;
-  HapticLoop loop(device, clock, options.haptics, options.haptic_scene);
-  SampleRecorder recorder(options.record_path);
-  if (!options.record_path.empty()) loop.set_recorder(&recorder);
-  // Every tick's record for on_tick (the vibration track), drained after each block of ticks:
-  // blocks of at most half the feed, so a slow frame rate never drops one.
-  TickFeed feed(kReplayTickFeedCapacity);
-  if (options.on_tick) loop.add_tick_feed(&feed);
-  std::uint64_t ticks_done = 0;
-  ReplayResult result;
-  for (int i = 0; i < frames; ++i) {
-    // Tick k runs at k / rate; frame i shows the state after the tick at (or before) i / fps.
-    const auto last_tick = static_cast<std::uint64_t>(std::floor(i / options.fps * options.haptics.rate_hz + 1e-9));
-    run_ticks_to(loop, last_tick, ticks_done, feed, options);
-    if (Status s = take_events(loop, renderer, options); !s) return s.error();
-    HapticState state;
-    if (Status s = drive_frame(*renderer, loop, static_cast<std::uint64_t>(i), state); !s) return s.error();
-    if (Status s = sink(i, state.time_s, state, *renderer); !s) return s.error();
-    if (!options.record_path.empty() && (i + 1) % std::max(1, static_cast<int>(options.fps)) == 0)
-      if (Status s = recorder.flush(); !s) return s.error();  // once per second of session time
-    if (options.progress) std::fprintf(stderr, "\rframe %d/%d  t=%.3f s", i + 1, frames, state.time_s);
-    result.rejected = state.rejected;
-    result.frames = i + 1;
-  }
+  const FrameSchedule schedule{options.fps, options.haptics.rate_hz};
+  ReplayFrames frames{options, sink, nullptr, &first_renderer, {}, {}, schedule.frames_in(device.duration_s())};
+  DriverHooks hooks;
+  hooks.on_tick = options.on_tick;
+  hooks.on_event = [&frames](const HapticEvent& e) { frames.event(e); };
+  hooks.on_frame = [&frames](int i) { return frames.frame(i); };
+  SessionDriver driver(device, options.haptics, options.haptic_scene, options.record_path, schedule, std::move(hooks));
+  frames.driver = &driver;
+  // The ticks up to the last frame's: no tick after it is run (or recorded).
+  auto run = driver.run(schedule.tick_of_frame(frames.frames - 1) + 1, frames.frames);
+  if (!run) return run.error();
   if (options.progress) std::fputc('\n', stderr);
-  if (!options.record_path.empty())
-    if (Status s = recorder.close(); !s) return s.error();
-  return result;
+  if (Status s = driver.finish(); !s) return s.error();
+  return frames.result;
 }
 
 }  // namespace ps

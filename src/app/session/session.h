@@ -7,6 +7,7 @@
 #include <string>
 
 #include "core/result.h"
+#include "devices/device_spec.h"
 #include "devices/pointer_map.h"
 #include "devices/sample_log.h"
 #include "haptics/haptic_loop.h"
@@ -31,7 +32,8 @@ struct LogDeviceSpec {
   std::unique_ptr<Device> device;
   PointerLogDevice* pointer = nullptr;  // == device.get() for pointer:FILE: set_view() it
 };
-Result<LogDeviceSpec> open_device_log(const std::string& spec);
+Result<LogDeviceSpec> open_device_log(const DeviceSpec& spec);
+Result<LogDeviceSpec> open_device_log(const std::string& spec);  // parsed by parse_device_spec
 
 // The surface model a session starts from: the pointer's plane, so that distance and contact
 // are known before the first contact (later frames keep or replace it, update_surface_model).
@@ -67,7 +69,6 @@ struct ReplayOptions {
   // vibration track of `replay --vibration`). Null: the loop keeps no tick feed.
   std::function<void(const TickSample&)> on_tick;
 };
-inline constexpr std::size_t kReplayTickFeedCapacity = 4096;
 
 struct ReplayResult {
   int frames = 0;
@@ -78,8 +79,9 @@ struct ReplayResult {
 using FrameSink = std::function<Status(int index, double time_s, const HapticState&, const Renderer&)>;
 
 // Deterministic: a FakeClock drives the loop on this thread (no haptic thread), frames at
-// exactly i / fps. Same scene + same log => the same images, byte for byte. A pointer device
-// must have its view set (pointer_view) before.
+// exactly i / fps (haptics/session_driver.h: the schedule, the events, the recording). Same
+// scene + same log => the same images, byte for byte. A pointer device must have its view set
+// (pointer_view) before.
 Result<ReplayResult> replay_session(Renderer& renderer, Device& device, const ReplayOptions& options,
                                     const FrameSink& sink);
 

@@ -1,0 +1,73 @@
+#include "haptics/session_driver.h"
+
+#include <algorithm>
+#include <cmath>
+#include <utility>
+
+namespace ps {
+
+std::uint64_t FrameSchedule::tick_of_frame(int i) const {
+  return static_cast<std::uint64_t>(std::floor(i / fps * rate_hz + 1e-9));
+}
+
+std::uint64_t FrameSchedule::ticks_in(double duration_s) const {
+  return static_cast<std::uint64_t>(std::floor(std::max(0.0, duration_s) * rate_hz + 1e-9)) + 1;
+}
+
+int FrameSchedule::frames_in(double duration_s) const {
+  return static_cast<int>(std::floor(std::max(0.0, duration_s) * fps + 1e-9)) + 1;
+}
+
+SessionDriver::SessionDriver(Device& device, const HapticLoopParams& params, const world::HapticScene* scene,
+                             const std::string& record_path, FrameSchedule schedule, DriverHooks hooks)
+    : schedule_(schedule),
+      hooks_(std::move(hooks)),
+      recording_(!record_path.empty()),
+      recorder_(record_path),
+      feed_(hooks_.on_tick ? std::make_unique<TickFeed>() : nullptr),
+      loop_(device, clock_, params, scene) {
+  if (recording_) loop_.set_recorder(&recorder_);
+  if (feed_) loop_.add_tick_feed(feed_.get());
+}
+
+Result<DriveResult> SessionDriver::run(std::uint64_t ticks, int max_frames) {
+  DriveResult out;
+  if (!hooks_.on_frame || !(schedule_.fps > 0.0)) max_frames = 0;
+  for (std::uint64_t k = 0; k < ticks; ++k) {
+    // Between ticks: every tick before has been handed on, drawn and recorded.
+    if (hooks_.stop && hooks_.stop()) {
+      out.stopped = true;
+      break;
+    }
+    if (Status s = tick(k); !s) return s.error();
+    out.ticks = k + 1;
+    if (Status s = frames_due(k, max_frames, out.frames); !s) return s.error();
+    if (recording_ && (k + 1) % static_cast<std::uint64_t>(schedule_.rate_hz) == 0)
+      if (Status s = recorder_.flush(); !s) return s.error();  // once per second of session time
+  }
+  return out;
+}
+
+Status SessionDriver::tick(std::uint64_t k) {
+  loop_.run_ticks(1);
+  if (feed_) feed_->drain(hooks_.on_tick);
+  if (hooks_.after_tick) return hooks_.after_tick(k, loop_.state().read());
+  return ok_status();
+}
+
+// Every frame due after tick k: its events drained first, then on_frame.
+Status SessionDriver::frames_due(std::uint64_t k, int max_frames, int& frame) {
+  while (frame < max_frames && schedule_.tick_of_frame(frame) <= k) {
+    if (hooks_.on_event) loop_.events().drain(hooks_.on_event);
+    if (Status s = hooks_.on_frame(frame); !s) return s;
+    ++frame;
+  }
+  return ok_status();
+}
+
+Status SessionDriver::finish() {
+  if (!recording_) return ok_status();
+  return recorder_.close();
+}
+
+}  // namespace ps

@@ -1,0 +1,87 @@
+// A deterministic session's schedule, shared by `replay` (app/session/session.h, replay_session)
+// and the maze's headless sessions (maze/maze_session.h, run_session): the haptic loop on a fake
+// clock on the caller's thread, tick by tick, and around its ticks
+//   - the frames: tick k runs at session time start + k / rate; frame i shows the state after
+//     the tick at (or before) i / fps, so frame i is drawn right after tick tick_of_frame(i);
+//   - the haptic events (the event log, the sounds, a button's scene switch), drained before
+//     each frame, in push (= time) order;
+//   - every tick's record (haptics/tick_feed.h) handed on in order, right after its tick;
+//   - the device stream's recording, flushed once per second of session time (after each tick
+//     k with (k + 1) % rate == 0) and closed by finish(), however the session ended.
+// No GL: drawing is the caller's on_frame.
+#pragma once
+
+#include <cstdint>
+#include <functional>
+#include <memory>
+#include <string>
+
+#include "core/result.h"
+#include "devices/device.h"
+#include "devices/sample_log.h"
+#include "haptics/clock.h"
+#include "haptics/haptic_loop.h"
+
+namespace ps {
+
+// Ticks and frames of a session at `fps` frames per second of session time.
+struct FrameSchedule {
+  double fps = 30.0;
+  double rate_hz = 1000.0;
+  // The tick after which frame i is drawn: floor(i / fps * rate), to within 1e-9 of a tick.
+  std::uint64_t tick_of_frame(int i) const;
+  // The ticks that cover `duration_s` of session time: floor(duration * rate) + 1 (none less than 1).
+  std::uint64_t ticks_in(double duration_s) const;
+  // The frames that cover `duration_s`: one per 1 / fps, plus the first (none less than 1).
+  int frames_in(double duration_s) const;
+};
+
+struct DriverHooks {
+  // Asked before each tick: true ends the session there (a request to stop, or a session that
+  // is over). Empty: never.
+  std::function<bool()> stop;
+  // After each tick k, with the state it published (HapticLoop::state()). Empty: the state is
+  // not read per tick.
+  std::function<Status(std::uint64_t k, const HapticState&)> after_tick;
+  // Each tick's record, in order, right after its tick. Empty: the loop keeps no tick feed.
+  std::function<void(const TickSample&)> on_tick;
+  // Each haptic event, drained before each frame. Empty: the events are not drained.
+  std::function<void(const HapticEvent&)> on_event;
+  // Frame i (from 0), after tick schedule.tick_of_frame(i). Empty: no frames.
+  std::function<Status(int i)> on_frame;
+};
+
+struct DriveResult {
+  std::uint64_t ticks = 0;  // ticks run
+  int frames = 0;           // frames drawn
+  bool stopped = false;     // hooks.stop ended it
+};
+
+class SessionDriver {
+ public:
+  // `record_path` non-empty: the device stream the loop reads is recorded there. The loop
+  // collides with `scene` (null: the render thread's plane); the hooks are fixed here because
+  // a tick feed must be added before the first tick.
+  SessionDriver(Device& device, const HapticLoopParams& params, const world::HapticScene* scene,
+                const std::string& record_path, FrameSchedule schedule, DriverHooks hooks);
+  HapticLoop& loop() { return loop_; }
+  const FrameSchedule& schedule() const { return schedule_; }
+  // Runs ticks 0 .. ticks - 1 (fewer when hooks.stop says so), drawing at most max_frames frames.
+  Result<DriveResult> run(std::uint64_t ticks, int max_frames);
+  // Closes the recording (its last samples flushed, the file published): at the end, on stop too.
+  Status finish();
+
+ private:
+  Status tick(std::uint64_t k);
+  Status frames_due(std::uint64_t k, int max_frames, int& frame);
+
+  FrameSchedule schedule_;
+  DriverHooks hooks_;
+  bool recording_;
+  FakeClock clock_;
+  SampleRecorder recorder_;
+  std::unique_ptr<TickFeed> feed_;  // with hooks.on_tick
+  HapticLoop loop_;                 // last: it holds the clock, the recorder and the feed
+};
+
+}  // namespace ps
