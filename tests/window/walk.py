@@ -23,7 +23,7 @@ import time
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 import window_proc  # noqa: E402  (the window's process: started, followed, why it ended)
-from walk_checks import check_panel, check_saves, check_step  # noqa: E402
+from walk_checks import check_fired, check_panel, check_saves, check_step, read_events  # noqa: E402
 
 SKIP = 77
 # Frames drawn this soon after a step starts still show the step before it (the window handles
@@ -46,7 +46,7 @@ def parse_walk(path):
                 continue
             op, args = words[0], words[1:]
             checks = {"free": False, "unburied": False, "sheets": False, "still": False, "expect": None,
-                      "scene": None, "switches": None, "home": False,
+                      "scene": None, "switches": None, "fired": None, "home": False,
                       "dent_min": None, "dent_max": None, "near": None, "panel_still": False, "valid": False, "edited": None}
             plain = []
             for w in args:
@@ -62,6 +62,8 @@ def parse_walk(path):
                     checks["near"] = float(w[len("near="):])
                 elif w.startswith("switches="):
                     checks["switches"] = int(w[len("switches="):])
+                elif w.startswith("fired="):
+                    checks["fired"] = int(w[len("fired="):])
                 elif w.startswith("expect="):
                     want = set(w[len("expect="):].split("|"))
                     if not want <= STATES:
@@ -174,9 +176,9 @@ def step_span(win, step, t0, t1):
     return span
 
 
-def walk_steps(win, steps, shots, report, failures, panel_steps, save_steps):
-    """Runs the steps with their checks: adds to the failures, and to the panel_still and checked
-    save steps, judged after the window closed (what a step that raised left is kept)."""
+def walk_steps(win, steps, shots, report, failures, panel_steps, save_steps, fired_steps):
+    """Runs the steps with their checks: adds to the failures, and to the panel_still, checked
+    save and fired= steps, judged after the window closed (what a step that raised left is kept)."""
     saved = 0
     for step in steps:
         t0 = win.now_t()
@@ -184,6 +186,8 @@ def walk_steps(win, steps, shots, report, failures, panel_steps, save_steps):
         t1 = win.now_t()
         win.wait_frames_after(t1)
         failures.extend(check_step(step, step_span(win, step, t0, t1), report))
+        if step["fired"] is not None:
+            fired_steps.append((step, t0, t1))
         if step["panel_still"]:  # every frame from the step's start (a flick's are few) to the one after it
             during = [f for f in win.frames() if t0 <= f["t_s"] <= t1] + [f for f in win.frames() if f["t_s"] > t1][:1]
             panel_steps.append((step, [f["frame"] for f in during]))
@@ -207,13 +211,14 @@ def close_window(win):
 
 
 def drive(args, win, cmd, steps, report):
-    """Opens the window, walks, closes it; returns (failures, panel steps, save steps, taps counted)."""
-    failures, panel_steps, save_steps = [], [], []
+    """Opens the window, walks, closes it; returns (failures, panel steps, save steps, fired= steps,
+    taps counted)."""
+    failures, panel_steps, save_steps, fired_steps = [], [], [], []
     shots = os.environ.get("WINDOW_SHOTS", "")
     try:
         window_proc.open_window(win, lambda: window_proc.start_process(cmd, args.out, win.console_path),
                                 args.start_timeout)
-        walk_steps(win, steps, shots, report, failures, panel_steps, save_steps)
+        walk_steps(win, steps, shots, report, failures, panel_steps, save_steps, fired_steps)
         win.wait_frames_after(win.now_t())  # every key sent handled before the count
         keys_counted = sum(f["keys"] for f in win.frames())
         failures.extend(close_window(win))
@@ -227,7 +232,7 @@ def drive(args, win, cmd, steps, report):
         if win.proc is not None and win.proc.poll() is None:
             win.proc.kill()
             win.proc.wait()
-    return failures, panel_steps, save_steps, keys_counted
+    return failures, panel_steps, save_steps, fired_steps, keys_counted
 
 
 def copy_shots(args, shots):
@@ -271,9 +276,11 @@ def walk(args):
     win.stem = walk_name if walk_name not in ("default", win_scene_stem(args)) else win_scene_stem(args)
     report = {"max_rest_penetration_mm": 0.0, "max_sweep_penetration_mm": 0.0, "max_hover_pressed_mm": 0.0,
               "max_hover_buried_mm": 0.0, "max_rest_drift_mm": 0.0}
-    failures, panel_steps, save_steps, keys_counted = drive(args, win, cmd, steps, report)
+    failures, panel_steps, save_steps, fired_steps, keys_counted = drive(args, win, cmd, steps, report)
     if win.proc is not None and win.proc.returncode == 0:
         failures += check_panel(args.out, panel_steps, report) + check_saves(args.out, save_steps)
+        events = read_events(args.out)
+        failures += check_fired(events, fired_steps, report)
     if keys_counted != win.keys_sent:
         failures.append(f"taps counted {keys_counted} of {win.keys_sent} sent")
     if os.environ.get("WINDOW_SHOTS", ""):

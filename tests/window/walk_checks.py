@@ -103,6 +103,27 @@ def check_step(step, frames, report):
     return out
 
 
+def read_events(out_dir):
+    """The window's --events log (one JSON object a line), [] when it wrote none."""
+    path = os.path.join(out_dir, "events.jsonl")
+    if not os.path.exists(path):
+        return []
+    with open(path, encoding="utf-8") as f:
+        return [json.loads(line) for line in f if line.strip()]
+
+
+def check_fired(events, fired_steps, report):
+    """After the window closed: each `fired=N` step saw exactly N button_fired events from its start
+    to 1 s after its end (a press the step's last key made fires within a few frames)."""
+    out = []
+    for step, t0, t1 in fired_steps:
+        n = sum(1 for e in events if e["event"] == "button_fired" and t0 <= e["t"] <= t1 + 1.0)
+        report.setdefault("buttons_fired", []).append(n)
+        if n != step["fired"]:
+            out.append(f"walk line {step['line']} ({step['op']}): {n} button_fired events, expected {step['fired']}")
+    return out
+
+
 def check_panel(out_dir, still_steps, report):
     """After the window closed: the panel's rectangle (--ui-report, by frame) on every frame of
     each panel_still step is shown and the same - it does not jump away from the pointer."""
