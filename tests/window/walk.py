@@ -23,7 +23,7 @@ import time
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 import window_proc  # noqa: E402  (the window's process: started, followed, why it ended)
-from walk_checks import check_fired, check_panel, check_saves, check_step, read_events  # noqa: E402
+from walk_checks import check_fired, check_panel, check_saves, check_step, check_switch_frames, read_events  # noqa: E402
 
 SKIP = 77
 # Frames drawn this soon after a step starts still show the step before it (the window handles
@@ -169,7 +169,11 @@ def step_span(win, step, t0, t1):
     if step["switches"] is not None:  # a switch the step causes may come before SETTLE_S, or after it
         span = [f for f in win.frames() if f["t_s"] < t0][-1:] + [f for f in win.frames() if t0 <= f["t_s"] <= t1]
         win.wait_frames_after(t1 + 1.0)
-        span += [f for f in win.frames() if t1 < f["t_s"] <= t1 + 1.0]
+        after = [f for f in win.frames() if f["t_s"] > t1]
+        within = [f for f in after if f["t_s"] <= t1 + 1.0]
+        # and the frame begun within that second: a switch's frame loads the new world (1-3 s under
+        # load) and draws the state of the tick that adopted it, so its time is the load's end.
+        span += within + after[len(within):len(within) + 1]
     if (step["expect"] or step["scene"] or step["home"] or step["dent_max"] is not None or step["near"] is not None
             or not span):  # the state the step ended in
         span += [f for f in win.frames() if f["t_s"] > t1][:1]
@@ -280,7 +284,7 @@ def walk(args):
     if win.proc is not None and win.proc.returncode == 0:
         failures += check_panel(args.out, panel_steps, report) + check_saves(args.out, save_steps)
         events = read_events(args.out)
-        failures += check_fired(events, fired_steps, report)
+        failures += check_fired(events, fired_steps, report) + check_switch_frames(win.frames(), events, report)
     if keys_counted != win.keys_sent:
         failures.append(f"taps counted {keys_counted} of {win.keys_sent} sent")
     if os.environ.get("WINDOW_SHOTS", ""):

@@ -96,20 +96,21 @@ void run_ticks_to(HapticLoop& loop, std::uint64_t last_tick, std::uint64_t& tick
 }
 
 // The haptic events since the last frame, passed on; the first button that leads to a scene
-// switches the renderer and the haptic scene to it.
-Status take_events(HapticLoop& loop, Renderer*& renderer, const ReplayOptions& options) {
+// hands the loop its haptic scene and returns the renderer that draws it (null: none). That
+// renderer draws from the next frame on: this frame's state is from before the loop's next tick,
+// which adopts the scene, so drawn by it the new world would show the old world's probe (in
+// Weight, the panel's press 2-3 mm into the old button's pocket).
+Result<Renderer*> take_events(HapticLoop& loop, const Renderer& renderer, const ReplayOptions& options) {
   std::string switch_to;
   loop.events().drain([&](const HapticEvent& e) {
     if (options.on_event) options.on_event(e);
-    if (switch_to.empty()) switch_to = scene_action_of(renderer->scene(), e);
+    if (switch_to.empty()) switch_to = scene_action_of(renderer.scene(), e);
   });
-  if (!switch_to.empty() && options.switch_scene) {
-    auto next = options.switch_scene(switch_to);
-    if (!next) return next.error();
-    renderer = next->renderer;
-    loop.replace_scene(next->haptic, std::filesystem::path(switch_to).filename().string());
-  }
-  return ok_status();
+  if (switch_to.empty() || !options.switch_scene) return static_cast<Renderer*>(nullptr);
+  auto next = options.switch_scene(switch_to);
+  if (!next) return next.error();
+  loop.replace_scene(next->haptic, std::filesystem::path(switch_to).filename().string());
+  return next->renderer;
 }
 
 }  // namespace
@@ -134,10 +135,12 @@ Result<ReplayResult> replay_session(Renderer& first_renderer, Device& device, co
     // Tick k runs at k / rate; frame i shows the state after the tick at (or before) i / fps.
     const auto last_tick = static_cast<std::uint64_t>(std::floor(i / options.fps * options.haptics.rate_hz + 1e-9));
     run_ticks_to(loop, last_tick, ticks_done, feed, options);
-    if (Status s = take_events(loop, renderer, options); !s) return s.error();
+    auto next = take_events(loop, *renderer, options);
+    if (!next) return next.error();
     HapticState state;
     if (Status s = drive_frame(*renderer, loop, static_cast<std::uint64_t>(i), state); !s) return s.error();
     if (Status s = sink(i, state.time_s, state, *renderer); !s) return s.error();
+    if (next.value() != nullptr) renderer = next.value();
     if (!options.record_path.empty() && (i + 1) % std::max(1, static_cast<int>(options.fps)) == 0)
       if (Status s = recorder.flush(); !s) return s.error();  // once per second of session time
     if (options.progress) std::fprintf(stderr, "\rframe %d/%d  t=%.3f s", i + 1, frames, state.time_s);
