@@ -113,7 +113,9 @@ bool ButtonSet::hold(std::size_t i, double hand_depth, const glm::dvec3& hand_mm
   const ButtonShape& b = shapes_[i];
   double& from = held_from_mm_[i];
   from = std::min(from, hand_depth);
-  if (hand_depth >= from + kHeldPushMm) {  // pushed on from the hold: a press from here
+  // After a switch the hand never pushes on: PageDowns sent on from the old world (a person still
+  // pressing for the button that switched) would press whatever the new one has under the pointer.
+  if (phase_[i] == ButtonPhase::kIdle && hand_depth >= from + kHeldPushMm) {  // pushed on: a press from here
     from = kNotHeld;
     return false;
   }

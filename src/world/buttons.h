@@ -61,7 +61,7 @@ struct ButtonStepResult {
 // the hand pressed in) or was already there when the scene began (a switch or the start with
 // the probe sunk): such a button is held flush instead, and is ready for a press once the probe
 // has left it, sideways or lifted clear of its face, or once the hand pushes on from where it is
-// held (kHeldPushMm: PageDown on a probe resting flush on it).
+// held (kHeldPushMm: PageDown on a probe resting flush on it; not after a switch, kLeaveFirst).
 enum class ButtonPhase : std::uint8_t {
   kIdle,      // not ready: the probe is away, or came in without approaching the face
   kReady,     // the probe is over the face and clear of it: the next push is a press
@@ -104,7 +104,8 @@ class ButtonSet {
   // fires (in fired[]), its force stops, and it is ready again once the depth is back to <= 0
   // or the probe has left it. A button the probe is in without having approached it is held
   // flush (ButtonPhase) until the hand pushes kHeldPushMm deeper than the shallowest it has been
-  // while held: that push is a press from there, which fires once at the travel.
+  // while held: that push is a press from there, which fires once at the travel. After a switch
+  // (kLeaveFirst) it is held until the hand has left it sideways, however deep it goes.
   ButtonStepResult step(const glm::dvec3& proxy_mm, const glm::dvec3& hand_mm);
   ButtonStepResult step(const glm::dvec3& proxy_mm) { return step(proxy_mm, proxy_mm); }
   std::size_t size() const { return shapes_.size(); }
@@ -116,7 +117,8 @@ class ButtonSet {
   // One button's tick (step()): its phase, force and firing into r.
   void step_button(std::size_t i, const glm::dvec3& proxy_mm, const glm::dvec3& hand_mm, ButtonStepResult& r);
   // Button i holds a probe that came in without an approach flush (its force into r), until the
-  // hand goes kHeldPushMm deeper than the shallowest it has been held at: false, a press from here.
+  // hand goes kHeldPushMm deeper than the shallowest it has been held at (kIdle only): false, a
+  // press from here.
   bool hold(std::size_t i, double hand_depth, const glm::dvec3& hand_mm, ButtonStepResult& r);
 
   std::array<ButtonPhase, kMaxButtons> phase_{};  // all kIdle: nothing fires before an approach

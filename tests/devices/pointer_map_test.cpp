@@ -193,22 +193,6 @@ TEST(WindowInputTest, EachPressAndRepeatStepsTheHeightByTheStep) {
   EXPECT_EQ(in.height_steps, 6);
 }
 
-// A scene switch stops the repeats of a height key held through it (PageDown held on a button that
-// fired would go on pressing in the new world); the next press steps, and repeats, again.
-TEST(WindowInputTest, AHeightKeyHeldThroughASwitchRepeatsNoMore) {
-  WindowInput in;
-  handle_key(in, GLFW_KEY_PAGE_DOWN, GLFW_PRESS, 0);
-  handle_key(in, GLFW_KEY_PAGE_DOWN, GLFW_REPEAT, 0);
-  in.height_repeats_stopped = true;  // `run` switched scenes
-  for (int i = 0; i < 10; ++i) handle_key(in, GLFW_KEY_PAGE_DOWN, GLFW_REPEAT, 0);
-  EXPECT_EQ(in.height_steps, -2);
-  handle_key(in, GLFW_KEY_PAGE_DOWN, GLFW_RELEASE, 0);
-  handle_key(in, GLFW_KEY_PAGE_DOWN, GLFW_PRESS, 0);
-  handle_key(in, GLFW_KEY_PAGE_DOWN, GLFW_REPEAT, 0);
-  EXPECT_EQ(in.height_steps, -4);
-  EXPECT_FALSE(in.height_repeats_stopped);
-}
-
 TEST(WindowInputTest, PlainScrollMovesTheHeightShiftScrollZooms) {
   WindowInput in;
   handle_scroll(in, -3.0, false);

@@ -206,7 +206,6 @@ std::uint64_t switch_scene(const RunArgs& a, Session& s) {
   if (!tune) return stay(tune.error());
   if (back) s.came_from.pop_back();
   else s.came_from.push_back(s.tune->scene_path());
-  s.input.height_repeats_stopped = true;  // PageDown held into the new world presses nothing there
   s.tune = std::move(tune.value());
   s.haptic_edits.clear();
   s.tune->renderer().set_show_probe(a.show_probe);

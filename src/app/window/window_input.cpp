@@ -67,11 +67,9 @@ void handle_key(WindowInput& in, int key, int action, int mods) {
   if (action == GLFW_PRESS) ++in.key_presses;
   if (key == GLFW_KEY_F1 && action == GLFW_PRESS) in.toggle_panel = true;
   if (in.keys_captured) return;  // the user is typing into the parameter panel
-  // The height keys step on every press and keep stepping while held (the system's key repeat),
-  // but not on from a key held through a scene switch.
-  const bool up = key == GLFW_KEY_PAGE_UP || key == GLFW_KEY_UP, down = key == GLFW_KEY_PAGE_DOWN || key == GLFW_KEY_DOWN;
-  if ((up || down) && action == GLFW_PRESS) in.height_repeats_stopped = false;
-  if ((up || down) && !(action == GLFW_REPEAT && in.height_repeats_stopped)) in.height_steps += up ? 1 : -1;
+  // The height keys step on every press and keep stepping while held (the system's key repeat).
+  if (key == GLFW_KEY_PAGE_UP || key == GLFW_KEY_UP) ++in.height_steps;
+  if (key == GLFW_KEY_PAGE_DOWN || key == GLFW_KEY_DOWN) --in.height_steps;
   if (action != GLFW_PRESS) return;  // the other keys act once per press
   if (key == GLFW_KEY_H) in.toggle_help = true;
   if (key == GLFW_KEY_S) ++in.screenshots;

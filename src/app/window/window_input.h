@@ -20,11 +20,6 @@ struct WindowInput {
   double scroll_zoom = 0.0;     // accumulated Shift+scroll steps (camera zoom)
   double scroll_height = 0.0;   // accumulated scroll steps (probe height; up = raise)
   int height_steps = 0;         // PageUp/Up minus PageDown/Down presses, key repeats included
-  // Set by a scene switch: a height key held down into the new world repeats no more until it is
-  // pressed again. A button fires from a probe held on it and pushed on (world/buttons.h), so
-  // PageDown held through a switch would otherwise press whatever button the new world has under
-  // the pointer, and switch again.
-  bool height_repeats_stopped = false;
   int screenshots = 0;          // S presses not handled yet
   bool toggle_capture = false;  // M
   bool quit = false;            // Esc / Q
