@@ -162,15 +162,35 @@ def win_scene_stem(args):
     return os.path.splitext(os.path.basename(args.scene))[0]
 
 
+def keys_handled_at(win, step, t0, t1):
+    """When the window had handled a key step's taps (the t_s of the frame that handled its last
+    one; frames of 1-2 s under load handle several at once), at least t1; t1 for other steps."""
+    if step["op"] != "key":
+        return t1
+    taps = int(step["args"][1]) if len(step["args"]) > 1 else 1
+    end = time.monotonic() + 15.0
+    while time.monotonic() < end:
+        handled = 0
+        for f in win.frames():
+            handled += f["keys"] if f["t_s"] >= t0 else 0
+            if handled >= taps:
+                return max(t1, f["t_s"])
+        if win.proc.poll() is not None:
+            break
+        time.sleep(0.05)
+    return t1
+
+
 def step_span(win, step, t0, t1):
     """A step's frames: the states drawn from its start (plus SETTLE_S: the keys or motion before
     it are still being handled) to its end."""
     span = [f for f in win.frames() if t0 + SETTLE_S <= f["t_s"] <= t1]
     if step["switches"] is not None:  # a switch the step causes may come before SETTLE_S, or after it
         span = [f for f in win.frames() if f["t_s"] < t0][-1:] + [f for f in win.frames() if t0 <= f["t_s"] <= t1]
-        win.wait_frames_after(t1 + 1.0)
+        end = keys_handled_at(win, step, t0, t1) + 1.0
+        win.wait_frames_after(end)
         after = [f for f in win.frames() if f["t_s"] > t1]
-        within = [f for f in after if f["t_s"] <= t1 + 1.0]
+        within = [f for f in after if f["t_s"] <= end]
         # and the frame begun within that second: a switch's frame loads the new world (1-3 s under
         # load) and draws the state of the tick that adopted it, so its time is the load's end.
         span += within + after[len(within):len(within) + 1]
