@@ -99,7 +99,7 @@ void run_ticks_to(HapticLoop& loop, std::uint64_t last_tick, std::uint64_t& tick
 // hands the loop its haptic scene and returns the renderer that draws it (null: none). That
 // renderer draws from the next frame on: this frame's state is from before the loop's next tick,
 // which adopts the scene, so drawn by it the new world would show the old world's probe (in
-// Weight, the panel's press 2-3 mm into the old button's pocket).
+// tests/haptics/data/universe_to_weight.traj, the panel's press: 4.5 mm inside Weight's geometry).
 Result<Renderer*> take_events(HapticLoop& loop, const Renderer& renderer, const ReplayOptions& options) {
   std::string switch_to;
   loop.events().drain([&](const HapticEvent& e) {
