@@ -105,18 +105,17 @@ void HapticLoop::update_rate(Clock::Ns now) {
   }
 }
 
-void HapticLoop::replace_scene(std::shared_ptr<const world::HapticScene> scene, std::string_view label,
-                               std::optional<glm::dvec3> place_hand_mm) {
+std::uint64_t HapticLoop::replace_scene(std::shared_ptr<const world::HapticScene> scene, std::string_view label,
+                                        std::optional<glm::dvec3> place_hand_mm) {
   std::shared_ptr<const world::HapticScene> drop;
-  {
-    std::lock_guard<std::mutex> lock(swap_mutex_);
-    drop = std::move(retired_);  // released here, on the caller's thread
-    pending_ = std::move(scene);
-    pending_label_.assign(label);
-    pending_place_ = place_hand_mm;
-    pending_place_normal_.reset();
-    swap_pending_.store(true, std::memory_order_release);
-  }
+  std::lock_guard<std::mutex> lock(swap_mutex_);
+  drop = std::move(retired_);  // released here, on the caller's thread (after the lock: declared first)
+  pending_ = std::move(scene);
+  pending_label_.assign(label);
+  pending_place_ = place_hand_mm;
+  pending_place_normal_.reset();
+  swap_pending_.store(true, std::memory_order_release);
+  return ++scenes_requested_;
 }
 
 void HapticLoop::place_hand(const glm::dvec3& hand_mm, const glm::dvec3& normal, const glm::dvec3& surface_normal) {
@@ -201,6 +200,7 @@ void HapticLoop::adopt_pending_scene(Clock::Ns now) {
     stages_->proxy->place(proxy);
   }
   local_.flags = 0;  // flags are the scene's: a new scene starts with all of them off
+  local_.scene_serial = scenes_requested_;  // published at this tick's end, with the probe placed
   retired_ = std::move(scene_owned_);
   scene_owned_ = std::move(pending_);
   HapticEvent e = make_event(EventKind::scene_switched, local_.tick, session_time_s(now));

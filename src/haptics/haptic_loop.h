@@ -101,8 +101,10 @@ class HapticLoop {
   // `place_hand_mm`: the hand's new position (the device's, e.g. over the surface under the
   // pointer): the filter restarts there at rest and the proxy is put there instead of kept, so
   // nothing the person did not do buries it (docs/window.md, "When the hand is inside geometry").
-  void replace_scene(std::shared_ptr<const world::HapticScene> scene, std::string_view label = {},
-                     std::optional<glm::dvec3> place_hand_mm = std::nullopt);
+  // Returns the scene's number: the first state() whose scene_serial reaches it was published by
+  // the tick that adopted it (and placed the probe in it), or by a later one.
+  std::uint64_t replace_scene(std::shared_ptr<const world::HapticScene> scene, std::string_view label = {},
+                              std::optional<glm::dvec3> place_hand_mm = std::nullopt);
   // Puts the hand (and the proxy) at `hand_mm` at the next tick, in the scene in use, for a
   // hovering pointer whose surface moved along `normal` (unit) under it: the hand keeps its
   // velocity across the normal (the texture's speed) and loses the part along it and the part
@@ -189,6 +191,7 @@ class HapticLoop {
   std::mutex swap_mutex_;  // guards pending_, retired_
   std::shared_ptr<const world::HapticScene> pending_, retired_;
   std::string pending_label_;
+  std::uint64_t scenes_requested_ = 0;  // replace_scene calls so far, under swap_mutex_
   std::optional<glm::dvec3> pending_place_;  // replace_scene's place_hand_mm, under swap_mutex_
   std::optional<glm::dvec3> pending_place_normal_;  // place_hand's normal, under swap_mutex_
   glm::dvec3 pending_place_surface_{0.0};           // place_hand's surface_normal, under swap_mutex_

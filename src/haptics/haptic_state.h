@@ -53,6 +53,9 @@ struct HapticState {
   int button_pressed = -1;           // haptic scene: the button the probe presses (-1: none)
   double button_depth_mm = 0.0;      // and how far it is in
   std::uint32_t flags = 0;           // haptic scene: bit i = Scene::flags[i], toggled by buttons
+  // The number replace_scene() returned for the scene in use (0: the one given at construction):
+  // a frame that draws a switched-to world waits for it, so it never shows the old world's probe.
+  std::uint64_t scene_serial = 0;
   // haptic scene with [navigation]: how far the view has moved (the world position of the
   // workspace's origin). position_mm, device_mm and proxy_mm are world positions (the device's
   // own plus this offset); the renderer moves its camera by it.

@@ -2,10 +2,17 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 #include "scene/mesh.h"
 
 namespace ps::world {
+
+namespace {
+
+constexpr double kNotHeld = std::numeric_limits<double>::infinity();  // held_from_mm_ while not held
+
+}  // namespace
 
 ButtonShape ButtonShape::make(const Button& b, int plate_surface) {
   ButtonShape s;
@@ -57,47 +64,63 @@ ButtonSet::ButtonSet(const std::vector<ButtonShape>& shapes, double probe_radius
     : shapes_(shapes.begin(), shapes.begin() + std::min<std::size_t>(shapes.size(), kMaxButtons)),
       radius_mm_(probe_radius_mm), coupling_n_per_mm_(coupling_n_per_mm) {
   if (after_switch) phase_.fill(ButtonPhase::kLeaveFirst);
+  held_from_mm_.fill(kNotHeld);
 }
 
 ButtonStepResult ButtonSet::step(const glm::dvec3& proxy_mm, const glm::dvec3& hand_mm) {
   ButtonStepResult r;
-  for (std::size_t i = 0; i < shapes_.size(); ++i) {
-    const ButtonShape& b = shapes_[i];
-    ButtonPhase& phase = phase_[i];
-    const glm::dvec3 q = b.to_local(proxy_mm), hq = b.to_local(hand_mm);
-    // After a switch the proxy starts where the old scene left it: only the hand leaving counts.
-    if (phase == ButtonPhase::kLeaveFirst && !b.over(hq)) phase = ButtonPhase::kIdle;
-    if (!b.over(q)) {  // left sideways: ready for the next approach
-      if (phase != ButtonPhase::kLeaveFirst) phase = ButtonPhase::kIdle;
-      continue;
-    }
-    const double depth = radius_mm_ - q.z, hand_depth = radius_mm_ - hq.z;
-    const bool waiting = phase == ButtonPhase::kIdle || phase == ButtonPhase::kLeaveFirst;
-    // Clear of the face: approached. The hand too, over the button and clear, as it is when the
-    // probe comes at the button freely: a proxy put above the face by a scene switch while the
-    // hand is elsewhere or deep would otherwise count as an approach and fall into a press.
-    if (phase != ButtonPhase::kLeaveFirst && depth <= -kButtonClearMm && b.over(hq) && hand_depth <= -kButtonClearMm)
-      phase = ButtonPhase::kReady;
-    if (depth <= 0.0) {
-      if (!waiting) phase = ButtonPhase::kReady;  // out again: re-armed
-      continue;
-    }
-    if (phase == ButtonPhase::kFired) continue;
-    if (phase == ButtonPhase::kIdle || phase == ButtonPhase::kLeaveFirst) {  // in without an approach: held flush
-      r.force_n += (1.0 - kHeldShare) * coupling_n_per_mm_ * std::max(0.0, b.press_depth_mm(hand_mm, radius_mm_)) * b.normal();
-      continue;
-    }
-    phase = ButtonPhase::kPressing;
-    r.pressed = static_cast<int>(i);
-    r.depth_mm = depth;
-    if (depth >= b.travel_mm) {  // gives way: the force stops, the action fires
-      phase = ButtonPhase::kFired;
-      r.fired[static_cast<std::size_t>(r.fired_count++)] = static_cast<int>(i);
-      continue;
-    }
-    r.force_n += b.stiffness_n_per_mm * depth * b.normal();
-  }
+  for (std::size_t i = 0; i < shapes_.size(); ++i) step_button(i, proxy_mm, hand_mm, r);
   return r;
+}
+
+void ButtonSet::step_button(std::size_t i, const glm::dvec3& proxy_mm, const glm::dvec3& hand_mm, ButtonStepResult& r) {
+  const ButtonShape& b = shapes_[i];
+  ButtonPhase& phase = phase_[i];
+  double& held_from = held_from_mm_[i];
+  const glm::dvec3 q = b.to_local(proxy_mm), hq = b.to_local(hand_mm);
+  // After a switch the proxy starts where the old scene left it: only the hand leaving counts.
+  if (phase == ButtonPhase::kLeaveFirst && !b.over(hq)) phase = ButtonPhase::kIdle;
+  if (!b.over(q)) {  // left sideways: ready for the next approach
+    if (phase != ButtonPhase::kLeaveFirst) phase = ButtonPhase::kIdle;
+    held_from = kNotHeld;
+    return;
+  }
+  const double depth = radius_mm_ - q.z, hand_depth = radius_mm_ - hq.z;
+  const bool waiting = phase == ButtonPhase::kIdle || phase == ButtonPhase::kLeaveFirst;
+  // Clear of the face: approached. The hand too, over the button and clear, as it is when the
+  // probe comes at the button freely: a proxy put above the face by a scene switch while the
+  // hand is elsewhere or deep would otherwise count as an approach and fall into a press.
+  if (phase != ButtonPhase::kLeaveFirst && depth <= -kButtonClearMm && b.over(hq) && hand_depth <= -kButtonClearMm)
+    phase = ButtonPhase::kReady;
+  if (depth <= 0.0 || phase == ButtonPhase::kFired) {
+    if (depth <= 0.0 && !waiting) phase = ButtonPhase::kReady;  // out again: re-armed
+    held_from = kNotHeld;
+    return;
+  }
+  if ((phase == ButtonPhase::kIdle || phase == ButtonPhase::kLeaveFirst) && hold(i, hand_depth, hand_mm, r)) return;
+  phase = ButtonPhase::kPressing;
+  r.pressed = static_cast<int>(i);
+  r.depth_mm = depth;
+  if (depth >= b.travel_mm) {  // gives way: the force stops, the action fires
+    phase = ButtonPhase::kFired;
+    r.fired[static_cast<std::size_t>(r.fired_count++)] = static_cast<int>(i);
+    return;
+  }
+  r.force_n += b.stiffness_n_per_mm * depth * b.normal();
+}
+
+bool ButtonSet::hold(std::size_t i, double hand_depth, const glm::dvec3& hand_mm, ButtonStepResult& r) {
+  const ButtonShape& b = shapes_[i];
+  double& from = held_from_mm_[i];
+  from = std::min(from, hand_depth);
+  // After a switch the hand never pushes on: PageDowns sent on from the old world (a person still
+  // pressing for the button that switched) would press whatever the new one has under the pointer.
+  if (phase_[i] == ButtonPhase::kIdle && hand_depth >= from + kHeldPushMm) {  // pushed on: a press from here
+    from = kNotHeld;
+    return false;
+  }
+  r.force_n += (1.0 - kHeldShare) * coupling_n_per_mm_ * std::max(0.0, b.press_depth_mm(hand_mm, radius_mm_)) * b.normal();
+  return true;
 }
 
 double deepest_press_mm(const std::vector<ButtonShape>& shapes, double coupling_n_per_mm) {

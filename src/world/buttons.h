@@ -60,7 +60,8 @@ struct ButtonStepResult {
 // push), never when it arrives sideways already below the face (a slide across the wall with
 // the hand pressed in) or was already there when the scene began (a switch or the start with
 // the probe sunk): such a button is held flush instead, and is ready for a press once the probe
-// has left it, sideways or lifted clear of its face.
+// has left it, sideways or lifted clear of its face, or once the hand pushes on from where it is
+// held (kHeldPushMm: PageDown on a probe resting flush on it; not after a switch, kLeaveFirst).
 enum class ButtonPhase : std::uint8_t {
   kIdle,      // not ready: the probe is away, or came in without approaching the face
   kReady,     // the probe is over the face and clear of it: the next push is a press
@@ -77,6 +78,12 @@ enum class ButtonPhase : std::uint8_t {
 // a probe resting on the face (the god-object holds it within 1e-6 mm) has not left it, one
 // lifted by a quarter of a height step (0.5 mm) has.
 inline constexpr double kButtonClearMm = 0.25;
+// A held button is pressed when the hand goes this much deeper than the shallowest it has been
+// since the hold began (PageDown, or a push on a device): a press from where it is held, as from
+// kReady. Half a height step (0.5 mm): one PageDown counts on a face within 60 degrees of the
+// pointer's plane (the step along the face's normal is 0.5 cos a), while a hand resting or sliding
+// at one height (the mouse's hovers at the same height over a flush face) never does.
+inline constexpr double kHeldPushMm = 0.25;
 // A held button gives way by this share of the hand's depth (0.1 mm for a hand 4.5 mm in): flush
 // to the eye. Its force is taken from the hand's depth, not the proxy's, so it is stable however
 // stiff (a spring on the proxy stiffer than the coupling would oscillate).
@@ -96,7 +103,9 @@ class ButtonSet {
   // from kReady pushes back with F = k depth n while 0 < depth < travel; at depth >= travel it
   // fires (in fired[]), its force stops, and it is ready again once the depth is back to <= 0
   // or the probe has left it. A button the probe is in without having approached it is held
-  // flush (ButtonPhase) and never fires.
+  // flush (ButtonPhase) until the hand pushes kHeldPushMm deeper than the shallowest it has been
+  // while held: that push is a press from there, which fires once at the travel. After a switch
+  // (kLeaveFirst) it is held until the hand has left it sideways, however deep it goes.
   ButtonStepResult step(const glm::dvec3& proxy_mm, const glm::dvec3& hand_mm);
   ButtonStepResult step(const glm::dvec3& proxy_mm) { return step(proxy_mm, proxy_mm); }
   std::size_t size() const { return shapes_.size(); }
@@ -105,7 +114,17 @@ class ButtonSet {
 
  private:
   std::vector<ButtonShape> shapes_;
+  // One button's tick (step()): its phase, force and firing into r.
+  void step_button(std::size_t i, const glm::dvec3& proxy_mm, const glm::dvec3& hand_mm, ButtonStepResult& r);
+  // Button i holds a probe that came in without an approach flush (its force into r), until the
+  // hand goes kHeldPushMm deeper than the shallowest it has been held at (kIdle only): false, a
+  // press from here.
+  bool hold(std::size_t i, double hand_depth, const glm::dvec3& hand_mm, ButtonStepResult& r);
+
   std::array<ButtonPhase, kMaxButtons> phase_{};  // all kIdle: nothing fires before an approach
+  // While held (kIdle or kLeaveFirst with the probe in): the shallowest hand depth since the hold
+  // began; infinity while not held.
+  std::array<double, kMaxButtons> held_from_mm_{};
   double radius_mm_ = 0.0;
   double coupling_n_per_mm_ = 0.5;
 };

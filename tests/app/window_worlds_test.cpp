@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include <cstdio>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -191,6 +192,61 @@ TEST(UiLayoutTest, APointerFlickingAwayAndBackFindsThePanelWhereItWas) {
   // panel and clear of the other strip: there the panel moves only while the pointer is out.)
   for (; t < 5.0 + kPanelPointerMemoryS + kPanelFlipDwellS - 0.01; t += 0.03) ASSERT_EQ(away(t), PanelSide::kRight);
   EXPECT_EQ(away(5.0 + kPanelPointerMemoryS + kPanelFlipDwellS + 0.1), PanelSide::kLeft);
+}
+
+// A panel that must change side slides across instead of jumping (kPanelSlideS): its left edge
+// goes from one strip to the other over the slide's time, each frame a step no longer than the
+// eased slide's fastest (1.5 x the distance over kPanelSlideS, smoothstep's peak speed, for one
+// frame's time, plus a pixel of float rounding), and rests there. While it waits for its dwell,
+// and while the keep rule holds it, it does not move by a pixel.
+TEST(UiLayoutTest, APanelThatChangesSideSlidesAcross) {
+  UiLayoutInput in = shown_panel(1280.f, 800.f);
+  UiPlacement last;
+  const auto frame = [&](double t, std::optional<std::pair<float, float>> pointer, float shadow_x) {
+    in.now_s = t;
+    in.pointer = pointer;
+    in.shadow = UiRect{shadow_x - 95.f, 305.f, shadow_x + 95.f, 495.f};
+    in.last = last;
+    const UiLayout l = layout_ui(in);
+    last = l.placement;
+    return l;
+  };
+  const float right = 1280.f - panel_width_for(1280.f);
+  ASSERT_EQ(frame(0.0, std::make_pair(640.f, 400.f), 640.f).panel->x0, right);
+  // The pointer 120 px from the panel (never over it) with the shadow under the strip, 4 s: the
+  // keep rule, not a pixel of motion.
+  for (double t = 0.02; t < 4.0; t += 0.02)
+    ASSERT_EQ(frame(t, std::make_pair(800.f, 400.f), 1090.f).panel->x0, right) << "t " << t;
+  // The pointer leaves the window: the panel waits out the dwell without motion, then slides.
+  const double dt = 1.0 / 60.0, max_step = 1.5 * right * dt / kPanelSlideS + 1.0;
+  double t = 4.0;
+  for (; last.panel_side == PanelSide::kRight; t += dt) {
+    ASSERT_LT(t, 4.0 + kPanelFlipDwellS + 0.1) << "the panel never went left";
+    const UiLayout l = frame(t, std::nullopt, 1090.f);
+    if (l.placement.panel_side == PanelSide::kRight) {
+      ASSERT_EQ(l.panel->x0, right) << "t " << t;
+    }
+  }
+  const double flipped = t - dt;
+  float x = right;
+  int between = 0;
+  for (; t < flipped + kPanelSlideS + 0.5; t += dt) {
+    const UiLayout l = frame(t, std::nullopt, 1090.f);
+    ASSERT_EQ(l.placement.panel_side, PanelSide::kLeft);
+    const float now = l.panel->x0;
+    ASSERT_LE(now, x) << "t " << t << ": the slide turned back";
+    ASSERT_LE(x - now, max_step) << "t " << t << ": a jump of " << x - now << " px";
+    if (now > 0.f && now < right) ++between;
+    if (t - flipped >= kPanelSlideS) {
+      EXPECT_EQ(now, 0.f) << "t " << t << ": not arrived";
+    }
+    // The readouts went beside the left strip at the slide's start: they do not follow it.
+    ASSERT_TRUE(l.hud);
+    EXPECT_GE(l.hud->x0, panel_width_for(1280.f)) << "t " << t;
+    x = now;
+  }
+  EXPECT_GE(between, static_cast<int>(kPanelSlideS / dt) - 2) << "frames drawn on the way across";
+  EXPECT_FALSE(last.slide_since_s) << "at rest on the left";
 }
 
 // Every min/max pair the loader checks stays ordered: dragging lambda_min from 1 to 16.98 over a

@@ -23,7 +23,7 @@ import time
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 import window_proc  # noqa: E402  (the window's process: started, followed, why it ended)
-from walk_checks import check_panel, check_saves, check_step  # noqa: E402
+from walk_checks import check_fired, check_panel, check_saves, check_step, check_switch_frames, read_events  # noqa: E402
 
 SKIP = 77
 # Frames drawn this soon after a step starts still show the step before it (the window handles
@@ -66,7 +66,7 @@ def parse_walk(path, scene=""):
                 continue
             op, args = words[0], words[1:]
             checks = {"free": False, "unburied": False, "sheets": False, "still": False, "expect": None,
-                      "scene": None, "switches": None, "home": False,
+                      "scene": None, "switches": None, "fired": None, "home": False,
                       "dent_min": None, "dent_max": None, "near": None, "panel_still": False, "valid": False, "edited": None}
             plain = []
             for w in args:
@@ -82,6 +82,8 @@ def parse_walk(path, scene=""):
                     checks["near"] = float(w[len("near="):])
                 elif w.startswith("switches="):
                     checks["switches"] = int(w[len("switches="):])
+                elif w.startswith("fired="):
+                    checks["fired"] = int(w[len("fired="):])
                 elif w.startswith("expect="):
                     want = set(w[len("expect="):].split("|"))
                     if not want <= STATES:
@@ -180,23 +182,47 @@ def win_scene_stem(args):
     return os.path.splitext(os.path.basename(args.scene))[0]
 
 
+def keys_handled_at(win, step, t0, t1):
+    """When the window had handled a key step's taps (the t_s of the frame that handled its last
+    one; frames of 1-2 s under load handle several at once), at least t1; t1 for other steps."""
+    if step["op"] != "key":
+        return t1
+    taps = int(step["args"][1]) if len(step["args"]) > 1 else 1
+    end = time.monotonic() + 15.0
+    while time.monotonic() < end:
+        handled = 0
+        for f in win.frames():
+            handled += f["keys"] if f["t_s"] >= t0 else 0
+            if handled >= taps:
+                return max(t1, f["t_s"])
+        if win.proc.poll() is not None:
+            break
+        time.sleep(0.05)
+    return t1
+
+
 def step_span(win, step, t0, t1):
     """A step's frames: the states drawn from its start (plus SETTLE_S: the keys or motion before
     it are still being handled) to its end."""
     span = [f for f in win.frames() if t0 + SETTLE_S <= f["t_s"] <= t1]
     if step["switches"] is not None:  # a switch the step causes may come before SETTLE_S, or after it
         span = [f for f in win.frames() if f["t_s"] < t0][-1:] + [f for f in win.frames() if t0 <= f["t_s"] <= t1]
-        win.wait_frames_after(t1 + 1.0)
-        span += [f for f in win.frames() if t1 < f["t_s"] <= t1 + 1.0]
+        end = keys_handled_at(win, step, t0, t1) + 1.0
+        win.wait_frames_after(end)
+        after = [f for f in win.frames() if f["t_s"] > t1]
+        within = [f for f in after if f["t_s"] <= end]
+        # and the frame begun within that second: a switch's frame loads the new world (1-3 s under
+        # load) and draws the state of the tick that adopted it, so its time is the load's end.
+        span += within + after[len(within):len(within) + 1]
     if (step["expect"] or step["scene"] or step["home"] or step["dent_max"] is not None or step["near"] is not None
             or not span):  # the state the step ended in
         span += [f for f in win.frames() if f["t_s"] > t1][:1]
     return span
 
 
-def walk_steps(win, steps, shots, report, failures, panel_steps, save_steps):
-    """Runs the steps with their checks: adds to the failures, and to the panel_still and checked
-    save steps, judged after the window closed (what a step that raised left is kept)."""
+def walk_steps(win, steps, shots, report, failures, panel_steps, save_steps, fired_steps):
+    """Runs the steps with their checks: adds to the failures, and to the panel_still, checked
+    save and fired= steps, judged after the window closed (what a step that raised left is kept)."""
     saved = 0
     for step in steps:
         t0 = win.now_t()
@@ -204,6 +230,8 @@ def walk_steps(win, steps, shots, report, failures, panel_steps, save_steps):
         t1 = win.now_t()
         win.wait_frames_after(t1)
         failures.extend(check_step(step, step_span(win, step, t0, t1), report))
+        if step["fired"] is not None:
+            fired_steps.append((step, t0, t1))
         if step["panel_still"]:  # every frame from the step's start (a flick's are few) to the one after it
             during = [f for f in win.frames() if t0 <= f["t_s"] <= t1] + [f for f in win.frames() if f["t_s"] > t1][:1]
             panel_steps.append((step, [f["frame"] for f in during]))
@@ -227,13 +255,14 @@ def close_window(win):
 
 
 def drive(args, win, cmd, steps, report):
-    """Opens the window, walks, closes it; returns (failures, panel steps, save steps, taps counted)."""
-    failures, panel_steps, save_steps = [], [], []
+    """Opens the window, walks, closes it; returns (failures, panel steps, save steps, fired= steps,
+    taps counted)."""
+    failures, panel_steps, save_steps, fired_steps = [], [], [], []
     shots = os.environ.get("WINDOW_SHOTS", "")
     try:
         window_proc.open_window(win, lambda: window_proc.start_process(cmd, args.out, win.console_path),
                                 args.start_timeout)
-        walk_steps(win, steps, shots, report, failures, panel_steps, save_steps)
+        walk_steps(win, steps, shots, report, failures, panel_steps, save_steps, fired_steps)
         win.wait_frames_after(win.now_t())  # every key sent handled before the count
         keys_counted = sum(f["keys"] for f in win.frames())
         failures.extend(close_window(win))
@@ -247,7 +276,7 @@ def drive(args, win, cmd, steps, report):
         if win.proc is not None and win.proc.poll() is None:
             win.proc.kill()
             win.proc.wait()
-    return failures, panel_steps, save_steps, keys_counted
+    return failures, panel_steps, save_steps, fired_steps, keys_counted
 
 
 def copy_shots(args, shots):
@@ -291,9 +320,11 @@ def walk(args):
     win.stem = walk_name if walk_name not in ("default", win_scene_stem(args)) else win_scene_stem(args)
     report = {"max_rest_penetration_mm": 0.0, "max_sweep_penetration_mm": 0.0, "max_hover_pressed_mm": 0.0,
               "max_hover_buried_mm": 0.0, "max_rest_drift_mm": 0.0}
-    failures, panel_steps, save_steps, keys_counted = drive(args, win, cmd, steps, report)
+    failures, panel_steps, save_steps, fired_steps, keys_counted = drive(args, win, cmd, steps, report)
     if win.proc is not None and win.proc.returncode == 0:
         failures += check_panel(args.out, panel_steps, report) + check_saves(args.out, save_steps)
+        events = read_events(args.out)
+        failures += check_fired(events, fired_steps, report) + check_switch_frames(win.frames(), events, report)
     if keys_counted != win.keys_sent:
         failures.append(f"taps counted {keys_counted} of {win.keys_sent} sent")
     if os.environ.get("WINDOW_SHOTS", ""):

@@ -21,6 +21,11 @@ CONTACT_TOL_MM = 0.5
 BURIED_TOL_MM = 0.05
 
 
+# The readouts log's times have 4 decimals and the event log's all of them: 0.1 ms apart at most
+# for the same tick, a tenth of the 1 ms between two ticks, so the tick before still fails.
+LOG_TIME_TOL_S = 1e-4
+
+
 def check_near(step, frame, where, report):
     """near=PX: on the step's last frame the pseudo-shadow's centre (shadow_px, the --ui-report
     measure) is within PX window pixels of the pointer (pointer_px)."""
@@ -100,6 +105,51 @@ def check_step(step, frames, report):
         state = frames[-1]["state"].replace(" ", "_")
         if state not in step["expect"]:
             out.append(f"{where}: state {state} at frame {frames[-1]['frame']}, expected {'|'.join(sorted(step['expect']))}")
+    return out
+
+
+def read_events(out_dir):
+    """The window's --events log (one JSON object a line), [] when it wrote none."""
+    path = os.path.join(out_dir, "events.jsonl")
+    if not os.path.exists(path):
+        return []
+    with open(path, encoding="utf-8") as f:
+        return [json.loads(line) for line in f if line.strip()]
+
+
+def check_fired(events, fired_steps, report):
+    """After the window closed: each `fired=N` step saw exactly N button_fired events from its start
+    to 1 s after its end (a press the step's last key made fires within a few frames)."""
+    out = []
+    for step, t0, t1 in fired_steps:
+        n = sum(1 for e in events if e["event"] == "button_fired" and t0 <= e["t"] <= t1 + 1.0)
+        report.setdefault("buttons_fired", []).append(n)
+        if n != step["fired"]:
+            out.append(f"walk line {step['line']} ({step['op']}): {n} button_fired events, expected {step['fired']}")
+    return out
+
+
+def check_switch_frames(frames, events, report):
+    """After the window closed, on every walk: the first frame of each world switched to draws the
+    state of the tick that adopted it (its t_s at or after that scene_switched event) or a later
+    one, so it shows the probe placed in the new world: neither the proxy buried nor the drawn
+    probe penetrating (the hover tolerances), and not the old world's press."""
+    out = []
+    switched = [e for e in events if e["event"] == "scene_switched"]
+    for before, first in zip(frames, frames[1:]):
+        if os.path.basename(before["scene"]) == os.path.basename(first["scene"]):
+            continue
+        name = os.path.basename(first["scene"])
+        adopted = next((e for e in switched if e["t"] > before["t_s"] and os.path.basename(e["label"]) == name), None)
+        report["switch_frames_checked"] = report.get("switch_frames_checked", 0) + 1
+        where = f"frame {first['frame']}, the first of {name}"
+        if adopted is None:
+            out.append(f"{where}: no scene_switched event to {name} after frame {before['frame']}")
+        elif first["t_s"] < adopted["t"] - LOG_TIME_TOL_S:
+            out.append(f"{where}: drawn from the state at {first['t_s']} s, before the switch's tick at "
+                       f"{adopted['t']:.4f} s (state {first['state']}, button {first['button']})")
+        elif first["buried_mm"] > BURIED_TOL_MM or first["penetration_mm"] > PENETRATION_TOL_MM:
+            out.append(f"{where}: proxy buried {first['buried_mm']} mm, drawn penetration {first['penetration_mm']} mm")
     return out
 
 

@@ -195,7 +195,8 @@ TEST(ButtonLoopTest, ResistsThroughTheCouplingThenFiresOncePerPress) {
 // Sandia's push is along the button's normal: a probe that slides onto the button sideways with
 // the hand pressed in (over the wall beside it, the proxy resting on the face) does not press it.
 // The button holds it flush (a held button gives way by kHeldShare of the hand's depth) and never
-// fires however deep the hand goes; lifted clear of the face, the next push is a press and fires.
+// fires while the hand stays at the depth it slid in at; lifted clear of the face, the next push
+// is a press and fires. (A push on from the hold is a press too: button_held_test.cpp.)
 TEST(ButtonSetTest, ASlideAcrossTheFaceNeverFiresALiftAndPushDoes) {
   const ButtonShape shape = ButtonShape::make(flush_button(), 5);  // 30 x 20 mm around the origin
   ButtonSet set({shape}, kR, 0.5);
@@ -212,8 +213,8 @@ TEST(ButtonSetTest, ASlideAcrossTheFaceNeverFiresALiftAndPushDoes) {
       EXPECT_EQ(set.phase(0), ButtonPhase::kIdle);
     }
   }
-  // Even the proxy at the full travel, not approached: no firing.
-  for (int i = 0; i < 50; ++i) fired += set.step({0.0, 0.0, kR - 3.5}, {0.0, 0.0, kR - 9.0}).fired_count;
+  // Even the proxy at the full travel, not approached, the hand where it slid in: no firing.
+  for (int i = 0; i < 50; ++i) fired += set.step({0.0, 0.0, kR - 3.5}, {0.0, 0.0, kR - 6.0}).fired_count;
   EXPECT_EQ(fired, 0);
   // Resting on the face is not clear of it; a quarter step above it is.
   set.step({0.0, 0.0, kR}, {0.0, 0.0, kR});
@@ -251,7 +252,8 @@ TEST(ButtonSetTest, NothingFiresUntilTheProbeHasLeftTheButtonAfterAStart) {
   // After a switch even proxy and hand both clear for a while (a hand still mapped through the
   // old scene's plane, then the new one's) do not ready it, nor a proxy that starts beside it
   // (where the old scene left it) and comes over it clear while the hand is deep: only the
-  // hand leaving it sideways does.
+  // hand leaving it sideways does: not even a push on from where it holds the probe (kHeldPushMm
+  // counts only outside a switch), so PageDowns that go on after a switch press nothing there.
   ButtonSet switched({shape}, kR, 0.5, true);
   for (int i = 0; i < 50; ++i) fired += switched.step({0.0, 0.0, kR + 15.0}).fired_count;
   for (int i = 0; i <= 50; ++i) fired += switched.step({0.0, 0.0, kR + 1.0 - 0.1 * i}).fired_count;

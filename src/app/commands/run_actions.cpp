@@ -182,13 +182,15 @@ void poll_reload(Session& s) {
 }
 
 // A button's "scene:FILE" action: the window now shows that scene (its own camera and look, in
-// the window's size), the haptic thread adopts its haptic scene at its next tick; a file that
-// fails to load keeps the current scene and says why.
-void switch_scene(const RunArgs& a, Session& s) {
+// the window's size), the haptic thread adopts its haptic scene at its next tick, with the hand
+// and the probe placed in it in that tick; a file that fails to load keeps the current scene and
+// says why.
+std::uint64_t switch_scene(const RunArgs& a, Session& s) {
   const std::string path = std::exchange(s.pending_scene, std::string());
   const bool back = std::exchange(s.going_back, false);
   auto stay = [&path](const Error& e) {
     std::fprintf(stderr, "button: cannot switch to %s, staying: %s\n", path.c_str(), e.message.c_str());
+    return std::uint64_t{0};
   };
   auto scene = load_scene(path, {}, cli::switch_allow_paths(a.scene));
   if (!scene) return stay(scene.error());
@@ -212,9 +214,10 @@ void switch_scene(const RunArgs& a, Session& s) {
   fit_height_to_buttons(s, haptic.value());
   auto felt = std::make_shared<const world::HapticScene>(std::move(haptic.value()));
   const std::optional<glm::dvec3> hand = place_hand(s, felt, true);
-  s.loop->replace_scene(std::move(felt), std::filesystem::path(path).filename().string(), hand);
+  const std::uint64_t serial = s.loop->replace_scene(std::move(felt), std::filesystem::path(path).filename().string(), hand);
   s.vibration->set_scene(s.tune->renderer().scene());
   if (!a.quiet) std::printf("button: switched to %s\n", path.c_str());
+  return serial;
 }
 
 }  // namespace ps::run_live

@@ -134,6 +134,24 @@ void count_frame(Session& s, const HapticState& st, std::chrono::steady_clock::t
   if (st.have_sample) s.latency_ms.add(static_cast<double>(f1.time_since_epoch().count() - st.sample_clock_ns) * 1e-6);
 }
 
+// How long a switch's frame waits for the haptic thread to adopt the new scene, s: it does at its
+// next tick (1 ms), so only a stalled haptic thread takes longer; 0.25 s is one slow frame.
+constexpr double kSceneAdoptWaitS = 0.25;
+
+// A switch (serial: replace_scene's number; 0: it stayed) is drawn as the new world's first frame:
+// from the state of the tick that adopted it and placed the probe in it, by the new renderer (past
+// the wait, a stalled haptic thread's, from the state there is).
+// Drawn from the state read before the switch, the new world showed the old world's probe, the
+// press 2-3 mm into the old button's pocket, for a frame (and its readouts said so).
+Status draw_switched_scene(Session& s, std::uint64_t serial, std::uint64_t frame, HapticState& st) {
+  if (serial == 0) return ok_status();
+  const auto start = std::chrono::steady_clock::now();
+  while (s.loop->state().read().scene_serial < serial &&
+         std::chrono::steady_clock::now() - start < std::chrono::duration<double>(kSceneAdoptWaitS))
+    std::this_thread::sleep_for(std::chrono::microseconds(200));
+  return drive_frame(s.tune->renderer(), *s.loop, frame, st);
+}
+
 // `stop`: a signal asked to stop (app/cli/stop_signal.h): the loop ends as Esc ends it.
 Status window_loop(const RunArgs& a, Session& s, const cli::StopSignals& stop) {
   GLFWwindow* win = s.ctx->window();
@@ -154,7 +172,8 @@ Status window_loop(const RunArgs& a, Session& s, const cli::StopSignals& stop) {
     }
     if (Status r = drive_frame(s.tune->renderer(), *s.loop, frame, st); !r) return r;
     if (Status r = s.events->pump(s.loop->events()); !r) return r;
-    if (!s.pending_scene.empty()) switch_scene(a, s);
+    if (!s.pending_scene.empty())
+      if (Status r = draw_switched_scene(s, switch_scene(a, s), frame, st); !r) return r;
     int w = 0, h = 0;
     glfwGetFramebufferSize(win, &w, &h);
     present_to_default_framebuffer(s.tune->renderer(), w, h);

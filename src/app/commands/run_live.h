@@ -97,6 +97,7 @@ void print_summary(const Session& s);
 Status handle_keys(Session& s, int w, int h);
 void reload_haptic_scene(Session& s);
 void poll_reload(Session& s);
-void switch_scene(const RunArgs& a, Session& s);
+// Returns the new scene's number (HapticLoop::replace_scene); 0: it stayed (the file failed to load).
+std::uint64_t switch_scene(const RunArgs& a, Session& s);
 
 }  // namespace ps::run_live

@@ -89,8 +89,11 @@ std::string scene_action_of(const Scene& scene, const HapticEvent& e) {
 
 namespace {
 
-// The haptic events before a frame, passed on; the first button that leads to a scene
-// switches the renderer and the haptic scene to it before the frame is drawn.
+// The haptic events before a frame, passed on; the first button that leads to a scene hands the
+// loop its haptic scene, and the renderer that draws it takes over from the next frame on: this
+// frame's state is from before the loop's next tick, which adopts the scene, so drawn by it the
+// new world would show the old world's probe (in tests/haptics/data/universe_to_weight.traj, the
+// panel's press: 4.5 mm inside Weight's geometry).
 struct ReplayFrames {
   const ReplayOptions& options;
   const FrameSink& sink;
@@ -104,20 +107,22 @@ struct ReplayFrames {
     if (options.on_event) options.on_event(e);
     if (switch_to.empty()) switch_to = scene_action_of(renderer->scene(), e);
   }
-  Status switch_scene() {
+  // The renderer of the scene a button switched to (null: none).
+  Result<Renderer*> take_switch() {
     const std::string path = std::exchange(switch_to, {});
-    if (path.empty() || !options.switch_scene) return ok_status();
+    if (path.empty() || !options.switch_scene) return static_cast<Renderer*>(nullptr);
     auto next = options.switch_scene(path);
     if (!next) return next.error();
-    renderer = next->renderer;
     driver->loop().replace_scene(next->haptic, std::filesystem::path(path).filename().string());
-    return ok_status();
+    return next->renderer;
   }
   Status frame(int i) {
-    if (Status s = switch_scene(); !s) return s;
+    auto next = take_switch();
+    if (!next) return next.error();
     HapticState state;
     if (Status s = drive_frame(*renderer, driver->loop(), static_cast<std::uint64_t>(i), state); !s) return s;
     if (Status s = sink(i, state.time_s, state, *renderer); !s) return s;
+    if (next.value() != nullptr) renderer = next.value();
     if (options.progress) std::fprintf(stderr, "\rframe %d/%d  t=%.3f s", i + 1, frames, state.time_s);
     result.rejected = state.rejected;
     result.frames = i + 1;

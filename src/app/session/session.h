@@ -62,8 +62,8 @@ struct ReplayOptions {
   std::function<void(const HapticEvent&)> on_event;
   // A button's scene action, drained with the frame's events (the first one per frame): opens
   // the file; the loop adopts the new haptic scene at its next tick and the next frame is drawn
-  // by the new renderer, so a replay switches at the same tick every run. Null: actions are
-  // only logged.
+  // by the new renderer (this one still shows the old world, from the state before that tick),
+  // so a replay switches at the same tick every run. Null: actions are only logged.
   std::function<Result<SceneSwitch>(const std::string& scene_path)> switch_scene;
   // Each tick of the loop (haptics/tick_feed.h), in order, before that frame's events (the
   // vibration track of `replay --vibration`). Null: the loop keeps no tick feed.

@@ -166,7 +166,18 @@ float shadow_cost(const UiLayoutInput& in, const UiRect& avoid, const UiRect& r)
   return c;
 }
 
-// The panel's side (a flip waits kPanelFlipDwellS) and the range [x0, x1) it leaves to the boxes.
+// The panel's left edge at in.now_s as placement `p` draws it: on its side's strip, or on the way
+// there from p.slide_from_x, eased (smoothstep: no jump in place or speed at either end).
+float drawn_panel_x(const UiLayoutInput& in, const UiPlacement& p) {
+  const float to = panel_strip(in, p.panel_side).x0;
+  if (!p.slide_since_s) return to;
+  const double u = std::clamp((in.now_s - *p.slide_since_s) / kPanelSlideS, 0.0, 1.0);
+  const float eased = static_cast<float>(u * u * (3.0 - 2.0 * u));
+  return p.slide_from_x + (to - p.slide_from_x) * eased;
+}
+
+// The panel's side (a flip waits kPanelFlipDwellS, then slides) and the range [x0, x1) its side
+// leaves to the boxes.
 void place_panel(const UiLayoutInput& in, const UiRect& avoid, UiLayout& out, float& x0, float& x1) {
   const PanelSide want = panel_side(in, avoid);
   out.placement.flip_wanted_since_s.reset();
@@ -178,17 +189,25 @@ void place_panel(const UiLayoutInput& in, const UiRect& avoid, UiLayout& out, fl
     out.placement.panel_side = flip ? want : in.last.panel_side;
     if (!flip) out.placement.flip_wanted_since_s = since;
   }
-  out.panel = panel_strip(in, out.placement.panel_side);
+  if (!in.last.panel_placed) {
+    out.placement.slide_since_s.reset();
+  } else if (out.placement.panel_side != in.last.panel_side) {  // sets out from where it is drawn
+    out.placement.slide_from_x = drawn_panel_x(in, in.last);
+    out.placement.slide_since_s = in.now_s;
+  } else if (out.placement.slide_since_s && in.now_s - *out.placement.slide_since_s >= kPanelSlideS) {
+    out.placement.slide_since_s.reset();  // arrived
+  }
+  const UiRect strip = panel_strip(in, out.placement.panel_side);
+  out.panel = UiRect::at(drawn_panel_x(in, out.placement), strip.y0, strip.width(), strip.height());
   if (!in.last.panel_placed) out.placement.pointer_on_panel_s.reset();
   if (in.pointer && intersects(UiRect::at(in.pointer->first, in.pointer->second, 1.f, 1.f), *out.panel))
     out.placement.pointer_on_panel_s = in.now_s;
-  if (out.placement.panel_side == PanelSide::kRight) x1 = out.panel->x0;
-  else x0 = out.panel->x1;
+  if (out.placement.panel_side == PanelSide::kRight) x1 = strip.x0;
+  else x0 = strip.x1;
 }
 
 // The help box, wide or narrow, where it hides the least; the readouts give way to it.
-void place_help(const UiLayoutInput& in, const UiRect& avoid, float x0, float x1, UiLayout& out) {
-  const UiRect panel = out.panel.value_or(UiRect{});
+void place_help(const UiLayoutInput& in, const UiRect& avoid, const UiRect& panel, float x0, float x1, UiLayout& out) {
   const auto shadow = [&](const UiRect& r) { return shadow_cost(in, avoid, r); };
   const auto help_cost = [&](const UiRect* hud) {
     return [&, hud](const UiRect& r) {
@@ -229,13 +248,15 @@ UiLayout layout_ui(const UiLayoutInput& in) {
   out.placement.panel_placed = in.panel;
   float x0 = 0.f, x1 = in.width;  // the range the panel leaves to the boxes
   if (in.panel) place_panel(in, avoid, out, x0, x1);
-  const UiRect panel = out.panel.value_or(UiRect{});
+  // The boxes keep clear of the strip the panel goes to, not of where a slide draws it now: they
+  // move once, at the slide's start, instead of following it.
+  const UiRect panel = in.panel ? panel_strip(in, out.placement.panel_side) : UiRect{};
   const Candidate hud = best(hud_corners(in, x0, x1, avoid), [&](const UiRect& r) {
     return kShadowWeight * shadow_cost(in, avoid, r) + overlap_area(r, panel);
   });
   out.hud = hud.rect;
   out.placement.hud_corner = hud.corner;
-  if (in.help) place_help(in, avoid, x0, x1, out);
+  if (in.help) place_help(in, avoid, panel, x0, x1, out);
   return out;
 }
 

@@ -63,6 +63,10 @@ struct UiPlacement {
   std::optional<double> flip_wanted_since_s;
   // When (UiLayoutInput::now_s) the pointer was last over the panel; none: not since it opened.
   std::optional<double> pointer_on_panel_s;
+  // The panel sliding to panel_side (kPanelSlideS): since when, and the left edge it set out
+  // from (window pixels); none: it rests on its side.
+  std::optional<double> slide_since_s;
+  float slide_from_x = 0.f;
 };
 
 // The panel changes sides only while the pointer is at least this far from both strips, px:
@@ -78,6 +82,11 @@ constexpr double kPanelPointerMemoryS = 2.0;
 // though the shadow under the pointer was under the panel a frame ago. A shadow that really
 // rests under the panel sends it over within a second.
 constexpr double kPanelFlipDwellS = 0.75;
+// A panel that changes side slides across in this long, s, eased in and out (smoothstep): one
+// frame's jump across the window reads as a new window, a slide as the same panel moving; 0.3 s
+// is 3-9 frames at the window's 10-30 frames a second, short enough not to hold up a pointer
+// going for it. It starts where the panel is drawn, so a slide turned back midway stays continuous.
+constexpr double kPanelSlideS = 0.3;
 
 struct UiLayoutInput {
   float width = 0.f, height = 0.f;  // window
@@ -108,12 +117,13 @@ struct UiLayout {
 // would be under it; if both would cover it, the side that covers less than half of what the
 // other does, else the last frame's side. Once shown it keeps its side while the pointer is in
 // the window near either strip (kPanelPointerKeepPx) or was over it lately (kPanelPointerMemoryS),
-// so the mouse can always reach it, and
-// changes side only after wanting to for kPanelFlipDwellS. Readouts: the corner of the rest of the window that keeps clear of
-// the shadow and the buttons, the farthest from the shadow first. Help: bottom or top centre of
-// the rest, else a corner, clear of the shadow, the buttons and the readouts; when the two
-// cannot both stay clear, the readouts are left out while the help shows. Text never goes over
-// a button while a place clear of every button exists.
+// so the mouse can always reach it, and changes side only after wanting to for kPanelFlipDwellS,
+// sliding across (kPanelSlideS); the boxes take their places beside the side it goes to from the
+// start of the slide. Readouts: the corner of the rest of the window that keeps clear of the
+// shadow and the buttons, the farthest from the shadow first. Help: bottom or top centre of the
+// rest, else a corner, clear of the shadow, the buttons and the readouts; when the two cannot
+// both stay clear, the readouts are left out while the help shows. Text never goes over a button
+// while a place clear of every button exists.
 UiLayout layout_ui(const UiLayoutInput& in);
 
 // 30 % of the window, but at least 150 px (the longest parameter name, 19 characters of the
