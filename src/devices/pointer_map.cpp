@@ -59,7 +59,7 @@ glm::dvec2 project_to_window(const PointerView& view, const glm::dvec3& p_mm) {
   return {(ndc.x + 1.0) * 0.5 * view.window_size.x, (1.0 - ndc.y) * 0.5 * view.window_size.y};
 }
 
-std::optional<glm::dvec3> pointer_hit(const PointerView& view, const glm::dvec2& pointer, double hover_mm) {
+PointerHits pointer_hits(const PointerView& view, const glm::dvec2& pointer, double hover_mm) {
   // A surface point within this of the plane is on it: the plane's closed-form hit is used, so a
   // pointer over a flat scene maps exactly as without a floor (the surface search stops within
   // 0.01 mm of a surface, FreeHeightParams::touch_epsilon_mm).
@@ -67,13 +67,13 @@ std::optional<glm::dvec3> pointer_hit(const PointerView& view, const glm::dvec2&
   const PointerRay ray = pointer_ray(view, pointer);
   const std::optional<glm::dvec3> on_plane = intersect_plane(ray, view.plane);
   const std::optional<glm::dvec3> surface = view.floor ? view.floor->first_hit(ray) : std::nullopt;
-  if (!surface || !finite(*surface)) return on_plane;
+  if (!surface || !finite(*surface)) return {on_plane, on_plane};
   const double above = glm::dot(*surface - view.plane.origin, view.plane.n);
-  if (on_plane && std::abs(above) <= kOnPlaneMm) return on_plane;
+  if (on_plane && std::abs(above) <= kOnPlaneMm) return {on_plane, on_plane};
   const glm::dvec3 toward_eye = glm::normalize(ray.near_mm - ray.far_mm);
   const glm::dvec3 lowered = view.floor->lowering_point(*surface, view.plane.n, view.probe_radius_mm + std::max(hover_mm, 0.0), toward_eye);
   const glm::dvec3 over = finite(lowered) ? lowered : *surface;
-  return over - glm::dot(over - view.plane.origin, view.plane.n) * view.plane.n;
+  return {over - glm::dot(over - view.plane.origin, view.plane.n) * view.plane.n, on_plane};
 }
 
 void HeightControl::set(double mm) {
@@ -105,12 +105,11 @@ void PointerMap::set_hit(const glm::dvec3& hit_mm) {
 
 glm::dvec3 PointerMap::absolute(const PointerView& view, const glm::dvec2& pointer, double height_mm) {
   if (std::isfinite(pointer.x) && std::isfinite(pointer.y) && view.window_size.x > 0.0 && view.window_size.y > 0.0)
-    if (auto h = pointer_hit(view, pointer, height_mm)) {
-      const std::optional<glm::dvec3> on_plane = intersect_plane(pointer_ray(view, pointer), view.plane);
-      const glm::dvec3 parallax = on_plane ? *h - *on_plane : glm::dvec3(0.0);
+    if (const PointerHits h = pointer_hits(view, pointer, height_mm); h.hit) {
+      const glm::dvec3 parallax = h.on_plane ? *h.hit - *h.on_plane : glm::dvec3(0.0);
       parallax_jump_mm_ = have_hit_ ? glm::length(parallax - parallax_) : 0.0;
       parallax_ = parallax;
-      hit_ = *h;
+      hit_ = *h.hit;
       have_hit_ = true;
     }
   return centre(view, height_mm);

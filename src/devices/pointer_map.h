@@ -86,7 +86,14 @@ glm::dvec2 project_to_window(const PointerView& view, const glm::dvec3& p_mm);
 // surface, the plane's hit. None where neither is met.
 // `hover_mm`: the probe's height h; on a slope the point is moved downhill so that a probe
 // hovering h above the surface (a sphere of R + h lowered along -n) is nearest the pointed point.
-std::optional<glm::dvec3> pointer_hit(const PointerView& view, const glm::dvec2& pointer, double hover_mm = 0.0);
+struct PointerHits {
+  std::optional<glm::dvec3> hit;       // as above
+  std::optional<glm::dvec3> on_plane;  // the ray's own point on the plane (intersect_plane)
+};
+PointerHits pointer_hits(const PointerView& view, const glm::dvec2& pointer, double hover_mm = 0.0);
+inline std::optional<glm::dvec3> pointer_hit(const PointerView& view, const glm::dvec2& pointer, double hover_mm = 0.0) {
+  return pointer_hits(view, pointer, hover_mm).hit;
+}
 
 // The person-controlled height h of the probe's lowest point above the hit point, mm.
 struct HeightParams {

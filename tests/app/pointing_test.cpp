@@ -204,5 +204,57 @@ TEST(PointingTest, AButtonsFaceIsSolidForPointing) {
   }
 }
 
+// path_clear: a probe sphere moved straight along a segment, checked against a clearance. Over
+// the block's top at 3 mm (centre 30 + 8 + 3 above the plane): clear for a clearance of 2 mm,
+// not for 3.1 (the march stops within 0.01 mm of the clearance; a path grazing it within 0.1 mm
+// for 30 mm would take 300 steps of 0.1 mm, more than max_steps, and count as not clear); a segment through the block is never clear, and one that only starts or ends near it is
+// checked at both ends.
+TEST(PointingTest, APathIsClearOnlyWhereTheSphereKeepsTheClearance) {
+  FreeHeight floor;
+  floor.set_scene(felt(kBlockOnPlane));
+  const double z = kTop + kRadius + 3.0;
+  EXPECT_TRUE(floor.path_clear({-15.0, 0.0, z}, {15.0, 0.0, z}, kRadius, 2.0));
+  EXPECT_FALSE(floor.path_clear({-15.0, 0.0, z}, {15.0, 0.0, z}, kRadius, 3.1));
+  EXPECT_FALSE(floor.path_clear({-80.0, 0.0, 20.0}, {80.0, 0.0, 20.0}, kRadius, 0.0)) << "through the block";
+  EXPECT_FALSE(floor.path_clear({-80.0, 0.0, z}, {0.0, 0.0, z}, kRadius, 3.1)) << "ends over the block";
+  EXPECT_TRUE(floor.path_clear({0.0, 0.0, z}, {0.0, 0.0, z}, kRadius, 2.0)) << "no move";
+  EXPECT_FALSE(floor.path_clear({0.0, 0.0, z}, {0.0, 0.0, z}, kRadius, 3.1)) << "no move, too near";
+}
+
+// A sphere wider than the closest-point query (R + h = 70 mm > 64 mm) is lowered onto the block
+// as any other: the query reaches past the sphere. Closed form: over the block's centre the
+// sphere rests on its top; 0.02 mm as above.
+TEST(PointingTest, ASphereWiderThanTheQueryIsLoweredOntoTheSurface) {
+  FreeHeight floor;
+  floor.set_scene(felt(kBlockOnPlane));
+  floor.set_top_mm(200.0);
+  EXPECT_NEAR(floor.lift_mm({0.0, 0.0, 0.0}, {0.0, 0.0, 1.0}, 70.0), kTop, 0.02);
+}
+
+// One reading lowers the probe beside the pointed point (lowering_point) and the mapping then
+// asks how high it rests there (lift_mm): the second answer is the first one's lowering, and it
+// equals a fresh lowering over that place; over any other place the lift is lowered afresh.
+// Closed form on the dome (0.02 mm: each lowering stops within 0.01 mm of the surface).
+TEST(PointingTest, TheReadingsLoweringIsReusedOnlyOverItsOwnPlace) {
+  const std::string dome =
+      "[probe]\nradius_mm = 8.0\n[materials.m]\nlambda_min = 0.5\n"
+      "[[surfaces]]\ntype = \"sphere\"\ncenter = [0.0, 0.0, -10.0]\nradius_mm = 40.0\nmaterial = \"m\"\n";
+  FreeHeight floor, fresh;
+  floor.set_scene(felt(dome));
+  fresh.set_scene(felt(dome));
+  const glm::dvec3 c(0.0, 0.0, -10.0), n(0.0, 0.0, 1.0);
+  const glm::dvec3 normal = glm::normalize(glm::dvec3(1.0, 0.0, 1.0));
+  const glm::dvec3 on_slope = c + 40.0 * normal;
+  const glm::dvec3 beside = floor.lowering_point(on_slope, n, kRadius, normal);
+  EXPECT_NEAR(glm::length(beside - (on_slope + kRadius * glm::dvec3(normal.x, normal.y, 0.0))), 0.0, 0.05);
+  const glm::dvec3 on_plane(beside.x, beside.y, 0.0);
+  const double reused = floor.lift_mm(on_plane, n, kRadius);
+  EXPECT_NEAR(reused, fresh.lift_mm(on_plane, n, kRadius), 0.02);
+  EXPECT_NEAR(reused + kRadius, on_slope.z + kRadius * normal.z, 0.02) << "the probe touches the pointed point";
+  // Another place in the next reading: the dome's top, lowered afresh.
+  (void)floor.lowering_point(on_slope, n, kRadius, normal);
+  EXPECT_NEAR(floor.lift_mm({0.0, 0.0, 0.0}, n, kRadius), 30.0, 0.02);
+}
+
 }  // namespace
 }  // namespace ps

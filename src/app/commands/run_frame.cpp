@@ -194,8 +194,11 @@ void poll_device(Session& s, double now_s, bool poll_glfw, bool view_at_rest) {
   const glm::dvec3 after = s.glfw_device->read(0.0).position_mm;
   const double hover = s.glfw_device->height_mm();
   const bool rose_or_fell = std::abs(glm::dot(after - before, view.plane.n)) > 0.25;
-  const bool cuts = hover > 0.25 && !s.floor.path_clear(before, after + 0.5 * (after - before), view.probe_radius_mm, 0.5 * hover);
-  if (s.loop && hover >= 0.0 && (rose_or_fell || cuts || s.glfw_device->parallax_jump_mm() > 1.0))
+  // The cheap checks first: the path is traced only when they do not already place the hand.
+  const auto cuts = [&] {
+    return hover > 0.25 && !s.floor.path_clear(before, after + 0.5 * (after - before), view.probe_radius_mm, 0.5 * hover);
+  };
+  if (s.loop && hover >= 0.0 && (rose_or_fell || s.glfw_device->parallax_jump_mm() > 1.0 || cuts()))
     s.loop->place_hand(after, view.plane.n, s.floor.last_normal());
 }
 

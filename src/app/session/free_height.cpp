@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <utility>
 
 namespace ps {
 
@@ -35,26 +36,31 @@ double first_button_face(const world::HapticScene& scene, const glm::dvec3& from
 
 }  // namespace
 
+FreeHeight::March FreeHeight::march(const glm::dvec3& from, const glm::dvec3& dir, double length, double r,
+                                    double clearance, const MarchLimits& limits) const {
+  double t = 0.0;
+  for (int i = 0; i < limits.max_steps; ++i) {
+    const double at = std::min(t, length);
+    // The query reaches past the sphere, so a sphere bigger than the query radius still sees.
+    const world::Contact c = scene_->closest(from + at * dir, r + limits.query_mm);
+    const double gap = (c.hit ? c.distance_mm - r : limits.query_mm) - clearance;
+    if (c.hit && gap < params_.touch_epsilon_mm) return {March::End::kMet, at, c};
+    if (t >= length) return {March::End::kClear, length, {}};
+    t += std::max(gap, limits.min_step);
+  }
+  return {March::End::kLost, t, {}};
+}
+
 std::optional<FreeHeight::Lowered> FreeHeight::lower(const glm::dvec3& over, const glm::dvec3& n, double r) const {
   const double top = std::max(top_mm_, 0.0);
-  glm::dvec3 p = over + (r + top) * n;
+  const glm::dvec3 start = over + (r + top) * n;
   // A start inside an object (a camera inside a room's walls): no free side to find from here.
-  const world::Contact start = scene_->closest(p, params_.query_mm);
-  if (start.hit && (start.distance_mm < r || glm::dot(p - start.point, start.normal) < 0.0)) return std::nullopt;
-  double fallen = 0.0;
-  const double longest = top + params_.below_plane_mm;
-  for (int i = 0; i < params_.max_steps; ++i) {
-    const world::Contact c = scene_->closest(p, params_.query_mm);
-    const double gap = (c.hit ? c.distance_mm : params_.query_mm) - r;
-    if (gap < params_.touch_epsilon_mm) {
-      if (!c.hit) return std::nullopt;
-      return Lowered{p, c.point, c.normal};
-    }
-    fallen += gap;
-    if (fallen > longest) return std::nullopt;  // nothing under the pointer: the plane
-    p -= gap * n;
-  }
-  return std::nullopt;
+  const world::Contact inside = scene_->closest(start, params_.query_mm);
+  if (inside.hit && (inside.distance_mm < r || glm::dot(start - inside.point, inside.normal) < 0.0)) return std::nullopt;
+  // Down to below_plane_mm under the plane; nothing met by then: the plane.
+  const March m = march(start, -n, top + r + params_.below_plane_mm, r, 0.0, {params_.query_mm, params_.max_steps, 0.0});
+  if (m.end != March::End::kMet) return std::nullopt;
+  return Lowered{start - m.t * n, m.contact.point, m.contact.normal};
 }
 
 double FreeHeight::lift_mm(const glm::dvec3& hit_mm, const glm::dvec3& n_ws, double r) const {
@@ -62,11 +68,23 @@ double FreeHeight::lift_mm(const glm::dvec3& hit_mm, const glm::dvec3& n_ws, dou
   if (!scene_) return 0.0;
   const glm::dvec3 n = rotation_ * n_ws;
   const glm::dvec3 hit = rotation_ * hit_mm + offset_mm_;
-  const std::optional<Lowered> down = lower(hit, n, r);
+  const std::optional<Lowered> down = lowered_over(hit, n, r);
   if (!down) return 0.0;
   last_normal_ = glm::transpose(rotation_) * down->normal;
   const glm::dvec3 p = rest_on_buttons(*scene_, down->centre, n, r);
   return glm::dot(p - hit, n) - r;
+}
+
+std::optional<FreeHeight::Lowered> FreeHeight::lowered_over(const glm::dvec3& hit, const glm::dvec3& n, double r) const {
+  // Within this of the line lowering_point() lowered along (the same reading's hit, moved onto
+  // the plane and back through the pose): the same lowering.
+  constexpr double kSameLineMm = 1e-6;
+  std::optional<LastLowering> last = std::exchange(last_lowering_, std::nullopt);  // one reading's
+  if (last && last->r == r && glm::length(last->n - n) < 1e-12) {
+    const glm::dvec3 d = last->over - hit;
+    if (glm::length(d - glm::dot(d, n) * n) < kSameLineMm) return last->down;
+  }
+  return lower(hit, n, r);
 }
 
 std::optional<glm::dvec3> FreeHeight::normal_at(const glm::dvec3& p, const glm::dvec3& eye) const {
@@ -86,6 +104,10 @@ std::optional<glm::dvec3> FreeHeight::normal_at(const glm::dvec3& p, const glm::
 
 glm::dvec3 FreeHeight::lowering_point(const glm::dvec3& surface_ws, const glm::dvec3& n_ws, double r,
                                       const glm::dvec3& toward_eye_ws) const {
+  // A lowered sphere that touches within this of the pointed point touches it: the straight
+  // lowering is not tried against it.
+  constexpr double kOnPointMm = 0.05;
+  last_lowering_.reset();
   if (!scene_) return surface_ws;
   const glm::dvec3 p = rotation_ * surface_ws + offset_mm_;
   const glm::dvec3 n = rotation_ * n_ws;
@@ -99,8 +121,15 @@ glm::dvec3 FreeHeight::lowering_point(const glm::dvec3& surface_ws, const glm::d
   if (glm::length(shift) < 1e-6) return surface_ws;
   const std::optional<Lowered> shifted = lower(p + shift, n, r);
   if (!shifted) return surface_ws;
-  const std::optional<Lowered> straight = lower(p, n, r);
-  if (straight && glm::length(straight->touched - p) <= glm::length(shifted->touched - p)) return surface_ws;
+  const double off = glm::length(shifted->touched - p);
+  if (off > kOnPointMm) {
+    const std::optional<Lowered> straight = lower(p, n, r);
+    if (straight && glm::length(straight->touched - p) <= off) {
+      last_lowering_ = LastLowering{p, n, r, *straight};
+      return surface_ws;
+    }
+  }
+  last_lowering_ = LastLowering{p + shift, n, r, *shifted};
   return glm::transpose(rotation_) * (p + shift - offset_mm_);
 }
 
@@ -111,33 +140,23 @@ std::optional<glm::dvec3> FreeHeight::first_hit(const PointerRay& ray) const {
   const double length = glm::length(along);
   if (!(length > 0.0) || !std::isfinite(length)) return std::nullopt;
   const glm::dvec3 dir = along / length;
-  const auto in_workspace = [&](double t) { return glm::transpose(rotation_) * (from + t * dir - offset_mm_); };
-  double t = 0.0;
-  for (int i = 0; i < params_.ray_max_steps && t <= length; ++i) {
-    const world::Contact c = scene_->closest(from + t * dir, params_.ray_query_mm);
-    if (c.hit && c.distance_mm < params_.touch_epsilon_mm) return in_workspace(first_button_face(*scene_, from, dir, t));
-    t += c.hit ? c.distance_mm : params_.ray_query_mm;
-  }
-  return std::nullopt;  // past the far plane, or grazing a surface for every step: the plane
+  // Past the far plane, or grazing a surface for every step: none (the plane).
+  const March m = march(from, dir, length, 0.0, 0.0, {params_.ray_query_mm, params_.ray_max_steps, 0.0});
+  if (m.end != March::End::kMet) return std::nullopt;
+  const double t = first_button_face(*scene_, from, dir, m.t);
+  return glm::transpose(rotation_) * (from + t * dir - offset_mm_);
 }
 
 bool FreeHeight::path_clear(const glm::dvec3& from_mm, const glm::dvec3& to_mm, double r, double clearance_mm) const {
   constexpr double kMinStepMm = 0.05;  // a dip shorter than this between two steps is not looked for
   if (!scene_) return true;
-  const glm::dvec3 from = rotation_ * from_mm + offset_mm_;
   const glm::dvec3 along = rotation_ * (to_mm - from_mm);
   const double length = glm::length(along);
   if (!std::isfinite(length)) return false;
   const glm::dvec3 dir = length > 0.0 ? along / length : glm::dvec3(0.0);
-  double t = 0.0;
-  for (int i = 0; i < params_.max_steps; ++i) {
-    const world::Contact c = scene_->closest(from + std::min(t, length) * dir, params_.query_mm);
-    const double gap = (c.hit ? c.distance_mm : params_.query_mm) - r;
-    if (gap <= clearance_mm) return false;
-    if (t >= length) return true;
-    t += std::max(gap - clearance_mm, kMinStepMm);  // 1-Lipschitz: no nearer surface within that step
-  }
-  return false;
+  const glm::dvec3 from = rotation_ * from_mm + offset_mm_;
+  return march(from, dir, length, r, clearance_mm, {params_.query_mm, params_.max_steps, kMinStepMm}).end ==
+         March::End::kClear;
 }
 
 double buried_mm(const world::HapticScene& scene, const glm::dvec3& centre_mm) {

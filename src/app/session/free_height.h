@@ -39,7 +39,10 @@ class FreeHeight final : public SurfaceFloor {
  public:
   explicit FreeHeight(const FreeHeightParams& params = {}) : params_(params) {}
   // The geometry felt now (null: no floor, the plane).
-  void set_scene(std::shared_ptr<const world::HapticScene> scene) { scene_ = std::move(scene); }
+  void set_scene(std::shared_ptr<const world::HapticScene> scene) {
+    scene_ = std::move(scene);
+    last_lowering_.reset();
+  }
   const std::shared_ptr<const world::HapticScene>& scene() const { return scene_; }
   // Workspace -> world (a [navigation] box's offset, a rolling view's turn): the pointer moves
   // in the workspace, the geometry is in the world.
@@ -71,9 +74,29 @@ class FreeHeight final : public SurfaceFloor {
   struct Lowered {
     glm::dvec3 centre{0.0}, touched{0.0}, normal{0.0};  // world; touched: the surface point nearest the centre
   };
+  // Sphere tracing, the one loop behind first_hit (a ray: radius 0), lower and path_clear: a
+  // sphere of radius r moved from `from` along the unit `dir`, each step the gap to the nearest
+  // surface beyond `clearance` (so it cannot step through a thin shell, nor past a place that
+  // comes within `clearance`), at least `min_step`. It meets a surface where the gap is within
+  // touch_epsilon_mm of `clearance`; it is clear where it reaches `length` first (checked there
+  // too); it is lost after `max_steps` (a path grazing the clearance converges slowly).
+  struct March {
+    enum class End { kMet, kClear, kLost } end = End::kLost;
+    double t = 0.0;          // how far along dir it went
+    world::Contact contact;  // the nearest surface where it stopped (kMet)
+  };
+  struct MarchLimits {
+    double query_mm = 64.0;  // beyond the sphere: the longest step through free space
+    int max_steps = 128;
+    double min_step = 0.0;
+  };
+  March march(const glm::dvec3& from, const glm::dvec3& dir, double length, double r, double clearance,
+              const MarchLimits& limits) const;
   // A probe sphere of radius r lowered along -n (world) over `over` from the camera's height
   // (top_mm_ above it) until it touches; none where it starts inside or nothing is under it.
   std::optional<Lowered> lower(const glm::dvec3& over, const glm::dvec3& n, double r) const;
+  // lower(), or the same reading's lowering_point() result where it lowered along the same line.
+  std::optional<Lowered> lowered_over(const glm::dvec3& hit, const glm::dvec3& n, double r) const;
   // The outward surface normal at a surface point p (world), on the side facing `eye`.
   std::optional<glm::dvec3> normal_at(const glm::dvec3& p, const glm::dvec3& eye) const;
 
@@ -83,6 +106,14 @@ class FreeHeight final : public SurfaceFloor {
   glm::dvec3 offset_mm_{0.0};
   double top_mm_ = 200.0;
   mutable glm::dvec3 last_normal_{0.0, 0.0, 1.0};  // main thread only, like every call here
+  // The last lowering_point()'s place beside the point, lowered (world): lift_mm() over that same
+  // place with the same radius takes it instead of lowering the probe a third time in one reading.
+  struct LastLowering {
+    glm::dvec3 over{0.0}, n{0.0};
+    double r = -1.0;
+    Lowered down;
+  };
+  mutable std::optional<LastLowering> last_lowering_;
 };
 
 // How far a probe sphere (the scene's probe radius) centred at `centre_mm` overlaps the haptic
