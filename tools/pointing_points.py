@@ -9,8 +9,11 @@ The rule, so the points are chosen without looking at where the shadow lands:
   - a pixel qualifies where a surface is drawn (a non-zero normal) that faces the pointer's plane
     (normal . reference normal >= --min-facing, 0.5: up to 60 degrees of slope; a wall seen
     edge-on from the plane's normal cannot carry a shadow under the pointer, docs/window.md);
-  - at least --margin pixels from any pixel that does not (silhouettes, steep walls, the sky), so
-    a hand's pixel of jitter does not fall off an edge;
+  - with --max-crease-deg D: not where the normal turns by more than D degrees from one pixel to
+    the next (a crease, or where the sheets of a surface embedded in 4D cross: no one surface is
+    under the pointer there, and the shadow shows on the probe's sheet only, docs/fourd.md);
+  - at least --margin pixels from any pixel that does not (silhouettes, steep walls, the sky,
+    creases), so a hand's pixel of jitter does not fall off an edge;
   - outside the readouts box (top left) where the window draws over the image, and 64 px from
     the window's edges (a shadow cut there has its centre pulled inwards);
   - spread by farthest-point sampling from the qualifying pixel nearest the window's centre.
@@ -29,9 +32,24 @@ READOUTS_BOX = (300, 210)
 EDGE = 64
 
 
-def qualifying(normal, reference, min_facing, margin):
+def smooth(normal, max_crease_deg):
+    """Pixels whose normal turns by at most max_crease_deg to each 4-neighbour."""
+    cos_max = np.cos(np.radians(max_crease_deg))
+    ok = np.ones(normal.shape[:2], dtype=bool)
+    across = np.sum(normal[1:, :] * normal[:-1, :], axis=2) >= cos_max
+    ok[1:, :] &= across
+    ok[:-1, :] &= across
+    along = np.sum(normal[:, 1:] * normal[:, :-1], axis=2) >= cos_max
+    ok[:, 1:] &= along
+    ok[:, :-1] &= along
+    return ok
+
+
+def qualifying(normal, reference, min_facing, margin, max_crease_deg=None):
     drawn = np.linalg.norm(normal, axis=2) > 0.5
     facing = drawn & (normal @ np.asarray(reference, dtype=np.float32) >= min_facing)
+    if max_crease_deg is not None:
+        facing &= smooth(normal, max_crease_deg)
     ok = facing.copy()
     for _ in range(margin):  # erosion by one pixel, margin times (4-neighbourhood)
         shifted = ok.copy()
@@ -71,25 +89,31 @@ def main():
     ap.add_argument("--margin", type=int, default=14, help="pixels from any edge of the qualifying area")
     ap.add_argument("--min-facing", type=float, default=0.5)
     ap.add_argument("--near", type=float, default=6.0, help="the walk's tolerance, window pixels")
+    ap.add_argument("--max-crease-deg", type=float, default=None,
+                    help="leave out pixels where the normal turns by more than this to a neighbour")
+    ap.add_argument("--check", default="free", choices=["free", "sheets"],
+                    help="the walk's check while the pointer moves (sheets: a surface embedded in 4D)")
     a = ap.parse_args()
     try:
         import pseudoshadow
     except ImportError:
         sys.exit("pointing_points: the Python module is not found: run with PYTHONPATH=build/python")
     frame = pseudoshadow.Renderer(a.scene).render(aovs=["normal"])
-    ok = qualifying(frame.aovs["normal"], frame.stats["reference_normal"], a.min_facing, a.margin)
+    ok = qualifying(frame.aovs["normal"], frame.stats["reference_normal"], a.min_facing, a.margin, a.max_crease_deg)
     points = spread(ok, a.count)
     if len(points) < a.count:
         sys.exit(f"pointing_points: only {len(points)} qualifying points in {a.scene}")
+    crease = f" --max-crease-deg {a.max_crease_deg:g}" if a.max_crease_deg is not None else ""
+    check = f" --check {a.check}" if a.check != "free" else ""
     print(f"# {a.count} points over the visible surfaces (tools/pointing_points.py --margin {a.margin} "
-          f"--min-facing {a.min_facing:g})")
+          f"--min-facing {a.min_facing:g}{crease}{check})")
     # From the window's centre (where the walks rest the pointer first), point to point as a hand
     # moves a mouse, in 0.5 s: a jump across the window in one reading sends the hand's filter
     # swinging out of reach for ~2 s before it settles.
     at = (0.5, 0.5)
     for x, y in points:
-        print(f"sweep {at[0]:.3f} {at[1]:.3f} {x:.3f} {y:.3f} 0.5 free")
-        print(f"wait 1.5 free still near={a.near:g}")
+        print(f"sweep {at[0]:.3f} {at[1]:.3f} {x:.3f} {y:.3f} 0.5 {a.check}")
+        print(f"wait 1.5 {a.check} still near={a.near:g}")
         at = (x, y)
 
 
