@@ -29,6 +29,19 @@ std::string csv_header_cues(const std::string& prefix) {
   return h;
 }
 
+// A markdown table's header and separator rows: the `before` columns, one column per cue
+// (prefix + the cue's name + suffix), then the `after` columns.
+void md_header(std::ostream& md, const std::vector<std::string>& before, const std::string& prefix,
+               const std::string& suffix, const std::vector<std::string>& after) {
+  md << "|";
+  for (const std::string& b : before) md << " " << b << " |";
+  for (int c = 0; c < kCueCount; ++c) md << " " << prefix << cue_name(static_cast<Cue>(c)) << suffix << " |";
+  for (const std::string& a : after) md << " " << a << " |";
+  md << "\n|";
+  for (std::size_t i = 0; i < before.size() + static_cast<std::size_t>(kCueCount) + after.size(); ++i) md << "---|";
+  md << "\n";
+}
+
 }  // namespace
 
 namespace {
@@ -39,11 +52,9 @@ void participant_tables(const std::vector<ParticipantSummary>& people, std::ostr
   pc << "participant,session,condition,seed,passes,trials_to_criterion,ended,total_time_s" << csv_header_cues("errors_")
      << csv_header_cues("room_time_s_") << ",end_reason,resumed\n";
   tc << "participant,session,condition,pass,correct,pass_time_s\n";
-  md << "## Participants\n\n| participant | session | condition | seed | passes | trials to criterion | total time (s) |";
-  for (int c = 0; c < kCueCount; ++c) md << " errors " << cue_name(static_cast<Cue>(c)) << " |";
-  md << " end |\n|---|---|---|---|---|---|---|---|";
-  for (int c = 0; c < kCueCount; ++c) md << "---|";
-  md << "\n";
+  md << "## Participants\n\n";
+  md_header(md, {"participant", "session", "condition", "seed", "passes", "trials to criterion", "total time (s)"},
+            "errors ", "", {"end"});
   for (const ParticipantSummary& p : people) {
     const std::string ttc = p.trials_to_criterion > 0 ? std::to_string(p.trials_to_criterion) : "";
     pc << p.participant << "," << p.session << "," << p.condition << "," << p.seed << "," << p.passes << "," << ttc << ","
@@ -80,11 +91,11 @@ void group_tables(const std::vector<GroupSummary>& groups, std::ostringstream& g
   gc << "condition,session,participants,reached_criterion,mean_trials_to_criterion,mean_total_time_s"
      << csv_header_cues("mean_errors_") << csv_header_cues("mean_room_time_s_") << ",excluded,ci95_total_time_s"
      << csv_header_cues("ci95_errors_") << "\n";
-  md << "\n## Groups\n\n| condition | session | participants (excluded) | reached criterion | mean trials to criterion | mean total time (s) ± 95 % CI |";
-  for (int c = 0; c < kCueCount; ++c) md << " mean room time " << cue_name(static_cast<Cue>(c)) << " (s) |";
-  md << "\n|---|---|---|---|---|---|";
-  for (int c = 0; c < kCueCount; ++c) md << "---|";
-  md << "\n";
+  md << "\n## Groups\n\n";
+  md_header(md,
+            {"condition", "session", "participants (excluded)", "reached criterion", "mean trials to criterion",
+             "mean total time (s) ± 95 % CI"},
+            "mean room time ", " (s)", {});
   for (const GroupSummary& g : groups) {
     gc << g.condition << "," << g.session << "," << g.participants << "," << g.reached_criterion << "," << fmt(g.mean_trials_to_criterion)
        << "," << fmt(g.mean_total_time_s);
