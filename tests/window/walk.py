@@ -67,10 +67,11 @@ def parse_walk(path, scene=""):
             op, args = words[0], words[1:]
             checks = {"free": False, "unburied": False, "sheets": False, "still": False, "expect": None,
                       "scene": None, "switches": None, "fired": None, "home": False,
-                      "dent_min": None, "dent_max": None, "near": None, "panel_still": False, "valid": False, "edited": None}
+                      "dent_min": None, "dent_max": None, "near": None, "panel_still": False, "valid": False, "edited": None,
+                      "first_buttons": False}
             plain = []
             for w in args:
-                if w in ("free", "unburied", "sheets", "still", "home", "panel_still", "valid"):
+                if w in ("free", "unburied", "sheets", "still", "home", "panel_still", "valid", "first_buttons"):
                     checks[w] = True
                 elif w.startswith("scene="):
                     checks["scene"] = w[len("scene="):]
@@ -235,6 +236,8 @@ def walk_steps(win, steps, shots, report, failures, panel_steps, save_steps, fir
         if step["panel_still"]:  # every frame from the step's start (a flick's are few) to the one after it
             during = [f for f in win.frames() if t0 <= f["t_s"] <= t1] + [f for f in win.frames() if f["t_s"] > t1][:1]
             panel_steps.append((step, [f["frame"] for f in during]))
+        if step["first_buttons"]:  # the frame after the step, against the first frame
+            panel_steps.append((step, [f["frame"] for f in win.frames() if f["t_s"] > t1][:1]))
         if step["op"] == "save" or (step["op"] == "shot" and shots):
             saved += 1
             if step["op"] == "save" and (step["valid"] or step["edited"]):

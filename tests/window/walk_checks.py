@@ -153,17 +153,31 @@ def check_switch_frames(frames, events, report):
     return out
 
 
+def same_buttons(a, b, tol_px=0.5):
+    """Two frames' button rectangles (--ui-report) are the same buttons at the same places."""
+    return len(a) == len(b) and all(abs(x - y) <= tol_px for ra, rb in zip(a, b) for x, y in zip(ra, rb))
+
+
 def check_panel(out_dir, still_steps, report):
     """After the window closed: the panel's rectangle (--ui-report, by frame) on every frame of
-    each panel_still step is shown and the same - it does not jump away from the pointer."""
+    each panel_still step is shown and the same - it does not jump away from the pointer; the
+    first_buttons steps' last frame shows the buttons of the walk's first frame, at their places
+    (within 0.5 px: the rectangles are projected plates, the same camera gives the same bits)."""
     if not still_steps:
         return []
     with open(os.path.join(out_dir, "ui.json"), encoding="utf-8") as f:
         ui = {fr["frame"]: fr for fr in json.load(f)["frames"]}
     out = []
+    first = ui[min(ui)]["buttons"] if ui else []
     for step, frames in still_steps:
-        rects = [ui[n]["panel"] for n in frames if n in ui]
         where = f"walk line {step['line']} ({step['op']})"
+        if step["first_buttons"]:
+            last = [ui[n]["buttons"] for n in frames if n in ui]
+            if not last or not same_buttons(last[-1], first):
+                out.append(f"{where}: the buttons {last[-1] if last else 'of no frame'} are not the first frame's {first}")
+            if not step["panel_still"]:
+                continue
+        rects = [ui[n]["panel"] for n in frames if n in ui]
         report["panel_frames_checked"] = report.get("panel_frames_checked", 0) + len(rects)
         if not rects or any(r is None for r in rects):
             out.append(f"{where}: the panel is not shown on every frame of the step")
