@@ -35,6 +35,7 @@ import time
 HERE = os.path.dirname(os.path.abspath(__file__))
 sys.path.insert(0, os.path.join(HERE, "..", "tests", "window"))
 import walk  # noqa: E402  (the window driver the window tests use)
+import walk_checks  # noqa: E402
 import window_proc  # noqa: E402
 from soak_measures import MAX_RETRIES, drift_metrics, exit_error, judge, rss_metrics, tenth_stats  # noqa: E402
 
@@ -77,6 +78,8 @@ def rss_sampler(pid, out, stop):
 
 
 def loop_file(args, stem):
+    if args.loop:
+        return args.loop
     for name in (stem, LOOP_KIND.get(stem, ""), "default"):
         path = os.path.join(args.loop_dir, name + ".loop")
         if name and os.path.exists(path):
@@ -85,27 +88,32 @@ def loop_file(args, stem):
 
 
 def soak_one(args, scene):
-    stem = os.path.splitext(os.path.basename(scene))[0]
+    scene_stem = os.path.splitext(os.path.basename(scene))[0]
+    # A loop given by --loop names the soak (the tour's loop is a walk of the panel's scene).
+    stem = os.path.splitext(os.path.basename(args.loop))[0] if args.loop else scene_stem
     out = os.path.join(args.out, stem)
     os.makedirs(out, exist_ok=True)
     log = os.path.join(out, "readouts.jsonl")
     if os.path.exists(log):
         os.remove(log)
-    steps = walk.parse_walk(loop_file(args, stem))
+    steps = walk.parse_walk(loop_file(args, scene_stem))
     seconds = args.minutes * 60.0
     cmd = [os.path.abspath(args.exe), "run", "--scene", os.path.abspath(scene), "--readouts-log", log, "--mute",
            "--quit-after", str(seconds + 120.0), *args.run_arg]
+    if any(step["first_buttons"] for step in steps):  # the buttons' places, judged after the window closed
+        cmd += ["--ui-report", os.path.join(out, "ui.json")]
     console = os.path.join(out, "console.txt")
     open(console, "w").close()  # this soak's output only (a retry's follows the first try's)
     win, rss, stop = Follow(None, log, console), [], threading.Event()
     loops, misses, error = [], [], None
+    checks = {"count": 0, "failed": [], "buttons": []}  # the loop's return checks (run_loop)
     try:
         window_proc.open_window(win, lambda: window_proc.start_process(cmd, out, console), args.start_timeout)
         proc = win.proc
         threading.Thread(target=rss_sampler, args=(proc.pid, rss, stop), daemon=True).start()
         t_start = time.monotonic()
         while time.monotonic() - t_start < seconds:
-            run_loop(win, steps, misses, t_start)
+            run_loop(win, steps, misses, t_start, checks)
             if proc.poll() is not None:
                 break  # the window ended mid-loop: the loop did not close
             win.wait_frames_after(win.now_t())
@@ -130,7 +138,9 @@ def soak_one(args, scene):
         if win.proc is not None and win.proc.poll() is None:
             win.proc.kill()
             win.proc.wait()
-    return summarize(stem, out, win.frames(), rss, loops, error, misses)
+    if checks["buttons"] and os.path.exists(os.path.join(out, "ui.json")):
+        checks["failed"] += walk_checks.check_panel(out, checks["buttons"], {})
+    return summarize(stem, out, win.frames(), rss, loops, error, misses, checks)
 
 
 def current_scene(win):
@@ -139,7 +149,32 @@ def current_scene(win):
     return os.path.basename(frames[-1]["scene"]) if frames else None
 
 
-def run_loop(win, steps, misses, t_start):
+# The checks a soak's loop keeps from the walk format: where the loop returns (home: the view
+# at its start; near=PX: the shadow under the pointer; first_buttons: the buttons of the first
+# frame at their places, judged from --ui-report after the window closed). The others (free,
+# still, switches, ...) judge a single walk; an hour of them on a loaded machine says more about
+# the machine (scene= is the press's checkpoint, run_loop).
+RETURN_CHECKS = ("home", "near", "first_buttons")
+
+
+def check_return(win, step, t0, t1, checks, t_start):
+    """A step's return checks on its frames, into `checks`: the count, each failure with its time."""
+    if not any(step[k] for k in RETURN_CHECKS):
+        return
+    kept = {k: v for k, v in step.items()}
+    for k in ("free", "unburied", "sheets", "still", "panel_still", "valid"):
+        kept[k] = False
+    for k in ("expect", "scene", "switches", "fired", "dent_min", "dent_max", "edited"):
+        kept[k] = None
+    checks["count"] += 1
+    win.wait_frames_after(t1)  # the state the step ended in
+    when = round(time.monotonic() - t_start, 1)
+    checks["failed"] += [f"at {when} s: {m}" for m in walk_checks.check_step(kept, walk.step_span(win, kept, t0, t1), {})]
+    if step["first_buttons"]:
+        checks["buttons"].append((kept, [f["frame"] for f in win.frames() if f["t_s"] > t1][:1]))
+
+
+def run_loop(win, steps, misses, t_start, checks):
     """One pass of the loop. A step with `scene=NAME` (the wait after a button press or a
     Backspace) is a checkpoint: when the window shows another scene there, the press did not take
     (a tap lost on a loaded machine, a probe resting on a button's rim), and the loop would go on
@@ -149,7 +184,9 @@ def run_loop(win, steps, misses, t_start):
     world, and the drift is measured only between loops that ended in the loop's own scene."""
     last_key = None
     for step in steps:
+        t0 = win.now_t()
         win.run_step(step, shots=False)
+        check_return(win, step, t0, win.now_t(), checks, t_start)
         if step["op"] == "key":
             last_key = step
         if step["scene"] is None or last_key is None:
@@ -171,12 +208,15 @@ def run_loop(win, steps, misses, t_start):
             miss["recovered"] = current_scene(win) == step["scene"]
 
 
-def summarize(stem, out, frames, rss, loops, error, misses=()):
+def summarize(stem, out, frames, rss, loops, error, misses=(), checks=None):
     with open(os.path.join(out, "rss.csv"), "w", encoding="ascii") as f:
         f.write("t_s,rss_mib\n")
         for t, m in rss:
             f.write(f"{t - rss[0][0]:.1f},{m:.2f}\n")
     r = {"scene": stem, "error": error, "loops": len(loops), "frames": len(frames), "missed": list(misses)}
+    if checks is not None and checks["count"]:
+        r["return_checks"] = checks["count"] + len(checks["buttons"])
+        r["returns_failed"] = checks["failed"]
     if frames:
         t0, t1 = frames[0]["t_s"], frames[-1]["t_s"]
         tenth = (t1 - t0) / 10.0
@@ -238,10 +278,11 @@ def table(results):
     return "\n".join(rows) + "\n"
 
 
-def write_table(out, scenes):
+def write_table(out, scenes, loop=None):
     results = []
     for scene in scenes:
-        path = os.path.join(out, os.path.splitext(os.path.basename(scene))[0], "result.json")
+        stem = os.path.splitext(os.path.basename(loop or scene))[0]  # soak_one's name for it
+        path = os.path.join(out, stem, "result.json")
         if os.path.exists(path):
             with open(path, encoding="utf-8") as f:
                 r = json.load(f)
@@ -278,6 +319,7 @@ def main():
     p.add_argument("--minutes", type=float, default=60.0, help="time per world (default 60)")
     p.add_argument("--out", default="soak_out")
     p.add_argument("--loop-dir", default=os.path.join(HERE, "soak"))
+    p.add_argument("--loop", help="this loop (the walk format) for every scene, naming the soak (soak.sh --tour)")
     p.add_argument("--start-timeout", type=float, default=60.0)
     p.add_argument("--progress", action="store_true", help="a line after every loop")
     p.add_argument("--run-arg", action="append", default=[], metavar="ARG",
@@ -286,7 +328,7 @@ def main():
     p.add_argument("--inner", action="store_true", help=argparse.SUPPRESS)  # already under xvfb-run
     args = p.parse_args()
     if args.table:
-        return write_table(args.table, args.scenes)
+        return write_table(args.table, args.scenes, args.loop)
     for path in [args.exe, *args.scenes]:
         if not os.path.exists(path):
             print(f"soak.py: no such file: {path}", file=sys.stderr)

@@ -5,6 +5,13 @@
 # the first and the last tenth, and the proxy's drift between closed loops of the script.
 #
 #   tools/soak.sh [--minutes M] [--parallel N] [--out DIR] [--run-arg ARG ...] [SCENE ...]
+#   tools/soak.sh --tour [--minutes M] [--out DIR]
+#
+# --tour: the Virtual Universe toured as a person does it, for the whole time: the loop is the
+# window test's walk tests/window/walks/universe_tour.walk (panel -> each world by its button,
+# the world used -> back by its own back button pressed with the pointer), and at every return
+# it checks the panel at home, the shadow under the pointer and the panel's first buttons at
+# their places (result.json `returns_failed`; one failure fails the soak).
 #
 # Defaults: 60 minutes a world, one world at a time (parallel worlds share the CPUs, so their
 # rates say less), DIR soak_out, the worlds: the default scene, the Virtual Universe's panel (its
@@ -19,15 +26,17 @@
 set -uo pipefail
 repo_root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 bin="${PS_BIN:-${repo_root}/build/pseudoshadow}"
-minutes=60 parallel=1 out=soak_out scenes=() run_args=()
+minutes=60 parallel=1 out=soak_out scenes=() run_args=() loop_args=()
 while (($#)); do
   case "$1" in
     --minutes) minutes="$2"; shift 2 ;;
     --parallel) parallel="$2"; shift 2 ;;
     --out) out="$2"; shift 2 ;;
     --run-arg) run_args+=("--run-arg=$2"); shift 2 ;;
-    -h|--help) sed -n '2,18p' "$0" | sed 's/^# \{0,1\}//'; exit 0 ;;
-    -*) echo "soak.sh: unknown option '$1' (--minutes, --parallel, --out, --run-arg)" >&2; exit 2 ;;
+    --tour) scenes=("${repo_root}/scenes/universe/panel.toml")
+            loop_args=("--loop" "${repo_root}/tests/window/walks/universe_tour.walk"); shift ;;
+    -h|--help) sed -n '2,25p' "$0" | sed 's/^# \{0,1\}//'; exit 0 ;;
+    -*) echo "soak.sh: unknown option '$1' (--minutes, --parallel, --out, --run-arg, --tour)" >&2; exit 2 ;;
     *) scenes+=("$1"); shift ;;
   esac
 done
@@ -49,8 +58,8 @@ echo "soak: ${#scenes[@]} worlds, ${minutes} min each, ${parallel} at a time, in
 # Each line "DELAY SCENE": the i-th world of a parallel batch waits 3*i s before it starts.
 for i in "${!scenes[@]}"; do echo "$(( parallel > 1 ? (i % parallel) * 3 : 0 )) ${scenes[$i]}"; done |
   xargs -P "$parallel" -I{} bash -c 'sleep "${1%% *}"; exec python3 "${@:2}" "${1#* }"' soak {} \
-    "${repo_root}/tools/soak.py" --exe "$bin" --minutes "$minutes" --out "$out" --progress "${run_args[@]}"
+    "${repo_root}/tools/soak.py" --exe "$bin" --minutes "$minutes" --out "$out" --progress "${run_args[@]}" "${loop_args[@]}"
 rc=$?
 # One table from every world's result.json (each soak.py run wrote a table of its own world).
-python3 "${repo_root}/tools/soak.py" --table "$out" "${scenes[@]}" || true
+python3 "${repo_root}/tools/soak.py" --table "$out" "${loop_args[@]}" "${scenes[@]}" || true
 exit $(( rc == 0 ? 0 : 1 ))

@@ -85,6 +85,9 @@ def judge(r):
     if lost:
         bad.append(f"{len(lost)} press(es) did not take in {MAX_RETRIES + 1} tries (first at {lost[0]['t_s']} s, "
                    f"line {lost[0]['line']}: {lost[0]['seen']}, expected {lost[0]['expected']})")
+    failed = r.get("returns_failed", [])
+    if failed:
+        bad.append(f"{len(failed)} of {r['return_checks']} return checks failed (first: {failed[0]})")
     if "rss_growth" not in r or "first" not in r or r["loops"] < 2:
         return bad + ["too short to judge (fewer than two loops or no RSS samples)"]
     if r["rss_growth"] > RSS_GROWTH_MAX:
