@@ -3,6 +3,8 @@
 // While the frame key (render/frame_key.h: the plain variant's inputs, meshes, background, size)
 // is the last frame's, the surface pass redraws only the last and new shadow rectangles
 // (RendererOptions::incremental); overlays make the next frame a full one.
+// Draws the session's view (render/view.h: probe, camera, flags, world), never its own copy of
+// it: a rebuilt renderer is handed the view and needs nothing copied over.
 // Lives on the render thread; owns every GL object it uses. Needs a current GL context.
 #pragma once
 
@@ -33,8 +35,8 @@
 #include "render/plan.h"
 #include "render/surface_geometry.h"
 #include "render/tile_bake.h"
-#include "render/world_markers.h"
 #include "render/view.h"
+#include "render/world_markers.h"
 #include "render/world_view.h"
 #include "scene/scene.h"
 
