@@ -86,7 +86,7 @@ struct Renderer::Impl {
   ~Impl() {
     if (renderer && context) context->make_current();
   }
-  // Where the probe is now: pushed by the frames rendered so far, or as set.
+  // Where the probe is now: pushed by the frames rendered so far (the renderer's view), or as set.
   const ps::Probe& probe() const { return renderer ? renderer->probe() : scene.probe; }
 };
 
@@ -171,7 +171,10 @@ void Renderer::set_all(const std::vector<std::string>& key_equals_values) {
 
 void Renderer::set_probe(const Vec3& position, const Vec3& velocity) {
   Impl& m = impl("set_probe");
-  if (m.renderer) m.renderer->set_probe_state(to_dvec3(position), to_dvec3(velocity));
+  if (m.renderer) {
+    m.renderer->view().probe.position = to_dvec3(position);  // the view this session draws
+    m.renderer->view().probe.velocity = to_dvec3(velocity);
+  }
   m.scene.probe.position = to_dvec3(position);
   m.scene.probe.velocity = to_dvec3(velocity);
 }
@@ -208,10 +211,10 @@ Frame Renderer::render(const RenderDesc& desc) {
     ps::RendererOptions options;
     options.expected_frames = frames;
     m.renderer = value_or_throw(ps::open_renderer(m.scene, options));
-    ok_or_throw(ps::render_scene_frames(*m.renderer, frames));  // the CLI's frames, the start state first
+    ok_or_throw(ps::render_scene_frames(*m.renderer, frames));  // the CLI's frames, from the start view
   } else {
-    m.renderer->set_probe_state(position, velocity);
-    for (int i = 0; i < frames; ++i) ok_or_throw(m.renderer->render_frame());
+    const ps::FrameInput at = ps::probe_frame_input(position, velocity);
+    for (int i = 0; i < frames; ++i) (void)value_or_throw(m.renderer->render(i == 0 ? at : ps::FrameInput{}));
   }
 
   Frame frame;

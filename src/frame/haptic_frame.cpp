@@ -44,16 +44,15 @@ FrameInput haptic_frame_input(const Renderer& renderer, const HapticState& state
   in.view = ViewPose{state.view_offset_mm, state.view_rotation};
   in.sheet = ProbeSheet{state.sheet_surface, state.sheet_w4};
   in.bodies_mm.emplace(state.body_mm.begin(), state.body_mm.begin() + state.body_count);
-  // The camera this frame will draw with (the renderer's, carried to this frame's pose).
-  const Camera camera = carried_camera(in.camera.value_or(renderer.camera()), renderer.view(), *in.view);
+  // The camera this frame will draw with (the view's, carried to this frame's pose).
+  const Camera camera = carried_camera(in.camera.value_or(renderer.camera()), renderer.view().pose, *in.view);
   in.markers = markers(scene, state, shown, *in.bodies_mm, sources.charges, camera);
   return in;
 }
 
-void step_deformation(const Renderer& renderer, const FrameInput& input, double time_s) {
-  world::DeformableSurfaces* surfaces = renderer.deformables();
+void step_deformation(world::DeformableSurfaces* surfaces, const Probe& probe, const FrameInput& input, double time_s) {
   if (!surfaces || !input.probe) return;
-  Probe pressing = renderer.probe();  // the scene's probe shape, where this frame draws it
+  Probe pressing = probe;  // the scene's probe shape, where this frame draws it
   pressing.position = input.probe->position_mm;
   pressing.velocity = input.probe->velocity_mm_s;
   surfaces->advance(time_s, pressing);

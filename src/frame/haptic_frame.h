@@ -30,18 +30,18 @@ struct HapticFrameSources {
 // The frame `renderer` draws for `state`: the proxy as drawn (stretched near an Illusion object,
 // pressed into a deformable surface), the view's pose, the hand, the 4D sheet, the bodies and the
 // markers (charges, bands, the fields' force, the rolling manifold's rubber band). Without a device
-// sample the probe stays where the renderer holds it.
+// sample the probe stays where the renderer's view (Renderer::view, the session's) holds it.
 FrameInput haptic_frame_input(const Renderer& renderer, const HapticState& state, const HapticFrameSources& sources);
 
-// The session's step of the world before it draws `input`: the deformable surfaces `renderer`
-// draws (Renderer::deformables, world/deformable_surfaces.h) step on to session time `time_s`
-// (HapticState::time_s) with the scene's probe where `input` draws it, pressing them; the
-// renderer then uploads what changed. The first step only sets the clock. Nothing without a
-// deformable surface or a device sample (an input with no probe), and nothing for the maze's
-// proxy-only frames (their scenes have no deformable surface).
-void step_deformation(const Renderer& renderer, const FrameInput& input, double time_s);
+// The session's step of the world before it draws `input`: the session's deformable surfaces
+// (View::deformables, world/deformable_surfaces.h; null: none) step on to session time `time_s`
+// (HapticState::time_s) with `probe` (the scene's probe shape) where `input` draws it, pressing
+// them; the renderer then uploads what changed. The first step only sets the clock. Nothing
+// without a deformable surface or a device sample (an input with no probe), and nothing for the
+// maze's proxy-only frames (their scenes have no deformable surface).
+void step_deformation(world::DeformableSurfaces* surfaces, const Probe& probe, const FrameInput& input, double time_s);
 
-// Where that input draws the probe (the renderer's own probe when it gives none).
+// Where that input draws the probe (the view's probe when it gives none).
 glm::dvec3 drawn_probe(const Renderer& renderer, const FrameInput& input);
 
 }  // namespace ps

@@ -47,7 +47,7 @@ Status render_picture(const std::string& scene_file, const std::string& path) {
   // No pictures of its own: a panel and its worlds may lead to each other.
   auto r = open_renderer(scene.value(), options, {.button_pictures = false});
   if (!r) return r.error();
-  if (auto f = r.value()->render(start_frame_input(r.value()->scene())); !f) return f.error();
+  if (Status f = r.value()->render_frame(); !f) return f;  // the scene's start view, as `render` draws it
   return write_image(path, r.value()->read_color());
 }
 

@@ -27,6 +27,12 @@ Camera unposed_camera(const Camera& world, const ViewPose& pose) {
   return c;
 }
 
+FrameInput probe_frame_input(const glm::dvec3& position_mm, const glm::dvec3& velocity_mm_s) {
+  FrameInput in;
+  in.probe = ProbeMotion{position_mm, velocity_mm_s};
+  return in;
+}
+
 FrameInput start_frame_input(const Scene& scene) {
   FrameInput in;
   in.bodies_mm = start_positions(scene);

@@ -1,10 +1,11 @@
-// What one frame draws besides the scene: the probe, the view, the hand, the 4D sheet, the bodies
-// and the markers (Renderer::render). Built from the haptic state by frame/haptic_frame.h (run,
-// replay, the maze, bench-haptics), or by hand (render, the tests, calibrate).
+// What one frame changes of the view (render/view.h) before it is drawn: the probe, the camera and
+// pose, the hand, the 4D sheet, the bodies and the markers (Renderer::render). Built from the haptic
+// state by frame/haptic_frame.h (run, replay, the maze, bench-haptics), or by hand (the tests,
+// calibrate, bench).
 //
-// Every member left empty keeps what the renderer drew with last: a renderer holds the probe where
-// the last frame's displacement left it (the pseudo-haptic loop), the camera it was given, and the
-// world view (bodies, markers, hand) until another input replaces it.
+// Every member left empty keeps what the view holds: the probe where the last frame's displacement
+// left it (the pseudo-haptic loop), the camera it was given, and the world (bodies, markers, hand)
+// until another input replaces it.
 #pragma once
 
 #include <optional>
@@ -50,6 +51,16 @@ struct ProbeSheet {
   double w4 = 0.0;
 };
 
+// What is drawn over the pseudo-shadow besides the world (colour only: never the AOVs, the
+// reference plane or the displacement): the probe itself, the probe's path on 4D sheets, and the
+// device as a faint ghost of the probe (the gap between hand and proxy, pseudo-haptic coupling).
+struct ViewFlags {
+  bool probe = false;
+  bool path = false;
+  bool device = false;
+  bool operator==(const ViewFlags&) const = default;
+};
+
 struct FrameInput {
   std::optional<ProbeMotion> probe;     // the proxy as drawn (visual and pressed position)
   // The camera drawn under the current pose (an orbit, the maze's follower), before `view`.
@@ -59,12 +70,16 @@ struct FrameInput {
   std::optional<ProbeSheet> sheet;      // each given sheet also extends the 4D path when shown
   std::optional<std::vector<glm::dvec3>> bodies_mm;  // Scene::bodies' centres, in order
   std::optional<std::vector<WorldMarker>> markers;   // charges, bands, the force arrow
-  // (Deformable surfaces are not a frame input: the session steps them, world/deformable_surfaces.h,
-  // and the renderer draws them as they stand.)
+  std::optional<ViewFlags> show;        // the flags from this frame on (a test's switch)
+  // (Deformable surfaces are not a frame input: the session steps those of its view,
+  // frame/haptic_frame.h step_deformation, and the renderer draws them as they stand.)
 };
 
+// A frame that moves only the probe (a frame at a chosen probe state: a bench, a test, the library).
+FrameInput probe_frame_input(const glm::dvec3& position_mm, const glm::dvec3& velocity_mm_s);
+
 // The scene's bodies at their start positions and its markers (charges, bands) with the scene's
-// probe: how a scene looks before any haptic tick (`render`, button pictures, tune sweeps).
+// probe: how a scene looks before any haptic tick, what a fresh view holds (render/view.h make_view).
 FrameInput start_frame_input(const Scene& scene);
 
 }  // namespace ps

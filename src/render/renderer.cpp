@@ -24,6 +24,11 @@ bool same_camera(const Camera& a, const Camera& b) {
          a.far_mm == b.far_mm;
 }
 
+// The probe's bounds where it stands (a mesh probe's from its model-space box).
+BoundingSphere bounds_at(const Probe& p, const Aabb& mesh_box) {
+  return probe_bounds(p, mesh_box.min + p.position, mesh_box.max + p.position);
+}
+
 }  // namespace
 
 Result<std::unique_ptr<Renderer>> Renderer::create(const Scene& scene, const RendererOptions& options) {
@@ -31,9 +36,14 @@ Result<std::unique_ptr<Renderer>> Renderer::create(const Scene& scene, const Ren
   r->created_at_ = std::chrono::steady_clock::now();
   r->scene_ = scene;
   r->options_ = options;
+  r->options_.view.reset();  // held once, in view_
+  r->view_ = options.view;
+  if (!r->view_) {
+    auto view = make_view(r->scene_);
+    if (!view) return view.error();
+    r->view_ = std::move(view.value());
+  }
   r->probe_ = r->scene_.probe;
-  r->camera_ = r->scene_.camera;
-  r->light_ = r->scene_.light;
   if (r->options_.glsl_root.empty()) r->options_.glsl_root = gl::default_glsl_root();
   r->frame_ = make_plane_frame(toward_viewer(scene.camera));
   for (Status (Renderer::*step)() : {&Renderer::upload_surfaces, &Renderer::load_probe_mesh,
@@ -51,24 +61,18 @@ Result<std::unique_ptr<Renderer>> Renderer::create(const Scene& scene, const Ren
   return r;
 }
 
+// The view's deformable surfaces as they stand (a fresh view's: the scene's probe pressing in as it
+// would after a second of holding still, what `render` shows).
 Status Renderer::upload_surfaces() {
-  // Without an owner's, the deformable surfaces as `render` shows them: the scene's probe pressing
-  // in as it would after a second of holding still.
-  deformables_ = options_.deformation;
-  options_.deformation.reset();  // held once, in deformables_
-  if (!deformables_) {
-    auto settled = world::settled_deformables(scene_);
-    if (!settled) return settled.error();
-    deformables_ = std::move(settled.value());
-  }
+  const world::DeformableSurfaces* deformables = view_->deformables.get();
   uploaded_.assign(scene_.surfaces.size(), 0);
   for (std::size_t i = 0; i < scene_.surfaces.size(); ++i) {
-    auto g = make_surface_geometry(scene_.surfaces[i], static_cast<int>(i), deformables_.get());
+    auto g = make_surface_geometry(scene_.surfaces[i], static_cast<int>(i), deformables);
     if (!g) return g.error();
     geometry_.surfaces.push_back(std::move(g.value()));
   }
-  if (deformables_)
-    for (const world::DeformableSurfaces::Drawn& d : deformables_->drawn())
+  if (deformables)
+    for (const world::DeformableSurfaces::Drawn& d : deformables->drawn())
       uploaded_.at(static_cast<std::size_t>(d.surface)) = d.version;
   return ok_status();
 }
@@ -76,8 +80,8 @@ Status Renderer::upload_surfaces() {
 // The deformable meshes stepped since their last upload, to the GPU. The normal target's mean
 // holds only while the surfaces do not move.
 void Renderer::upload_deformed() {
-  if (!deformables_) return;
-  for (const world::DeformableSurfaces::Drawn& d : deformables_->drawn()) {
+  if (!view_->deformables) return;
+  for (const world::DeformableSurfaces::Drawn& d : view_->deformables->drawn()) {
     std::uint64_t& uploaded = uploaded_.at(static_cast<std::size_t>(d.surface));
     if (d.version == uploaded) continue;
     geometry_.surfaces[static_cast<std::size_t>(d.surface)].mesh.update(*d.mesh);
@@ -89,11 +93,11 @@ void Renderer::upload_deformed() {
 
 const DeformationStats& Renderer::deformation() const {
   static const DeformationStats none;
-  return deformables_ ? deformables_->stats() : none;
+  return view_->deformables ? view_->deformables->stats() : none;
 }
 
 std::vector<glm::dvec3> Renderer::deformed_vertices(int surface) const {
-  return deformables_ ? deformables_->positions(surface) : std::vector<glm::dvec3>{};
+  return view_->deformables ? view_->deformables->positions(surface) : std::vector<glm::dvec3>{};
 }
 
 Status Renderer::load_probe_mesh() {
@@ -113,8 +117,10 @@ Status Renderer::load_materials() {
   return materials_.load(scene_.materials, in);
 }
 
+// At the scene's start (its camera and probe): what a renderer weighs a bake with when created.
 double Renderer::textured_pixels_per_frame() const {
-  return textured_pixels_bound(scene_.render, camera_, probe_.position, 2.0 * current_probe_bounds().radius);
+  return textured_pixels_bound(scene_.render, scene_.camera, scene_.probe.position,
+                               2.0 * bounds_at(scene_.probe, geometry_.probe_mesh_bounds).radius);
 }
 
 Status Renderer::init_passes() {
@@ -152,51 +158,36 @@ double Renderer::ms_since_creation() const {
   return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - created_at_).count();
 }
 
+// Under the scene's camera and light, whatever view the renderer was given (the plane a renderer
+// starts from is its scene's; a kept camera re-reduces the normals at the first frame).
 Status Renderer::prime_reference_plane() {
-  FramePlan plan = make_plan(scene_, camera_, bounds_of(geometry_.surfaces), current_probe_bounds(), frame_,
+  FramePlan plan = make_plan(scene_, scene_.camera, bounds_of(geometry_.surfaces), current_probe_bounds(), frame_,
                              scene_.render.depth_map_size);
   for (SurfacePlan& sp : plan.surfaces) sp.shadow = sp.textured = false;
-  if (Status s = surface_.run(surface_draws(plan), nullptr, scene_.render.background, PixelRect{}); !s) return s;
+  View start;
+  start.probe = scene_.probe;
+  start.camera = scene_.camera;
+  start.light = scene_.light;
+  if (Status s = surface_.run(surface_draws(plan, start), nullptr, scene_.render.background, PixelRect{}); !s) return s;
   bool reduced = false;
-  update_reference_plane(mean_visible_normal(reduced));
+  update_reference_plane(mean_visible_normal(reduced, scene_.camera));
   return ok_status();
 }
 
-void Renderer::set_probe_state(const glm::dvec3& position, const glm::dvec3& velocity) {
-  probe_.position = position;
-  probe_.velocity = velocity;
-}
-
-void Renderer::set_view_pose(const ViewPose& pose) {
-  camera_ = carried_camera(camera_, view_, pose);
-  light_.direction = carried_direction(light_.direction, view_, pose);
-  view_ = pose;
-}
-
-void Renderer::apply(const FrameInput& in) {
-  if (in.probe) set_probe_state(in.probe->position_mm, in.probe->velocity_mm_s);
-  if (in.camera) camera_ = *in.camera;
-  if (in.view) set_view_pose(*in.view);
-  if (in.device_mm) world_view_.set_device(*in.device_mm);
-  if (in.sheet) {
-    sheet_ = *in.sheet;
-    add_path_point();
-  }
-  if (in.bodies_mm) world_view_.set_bodies(*in.bodies_mm, scene_.bodies.size());
-  if (in.markers) world_view_.set_markers(*in.markers);
-}
-
 Result<FrameStats> Renderer::render(const FrameInput& input) {
-  apply(input);
-  if (Status s = render_frame(); !s) return s.error();
+  apply_input(*view_, input);
+  if (input.sheet) add_path_point();
+  if (Status s = draw(); !s) return s.error();
+  view_->probe.position = probe_.position;  // the displacement, the session's from now on
   return stats_;
 }
 
-BoundingSphere Renderer::current_probe_bounds() const {
-  const Probe& p = probe_;
-  const Aabb& b = geometry_.probe_mesh_bounds;
-  return probe_bounds(p, b.min + p.position, b.max + p.position);
+Status Renderer::render_frame() {
+  if (auto s = render({}); !s) return s.error();
+  return ok_status();
 }
+
+BoundingSphere Renderer::current_probe_bounds() const { return bounds_at(probe_, geometry_.probe_mesh_bounds); }
 
 ProbeInput Renderer::probe_input() const {
   ProbeInput in;
@@ -209,10 +200,11 @@ ProbeInput Renderer::probe_input() const {
   return in;
 }
 
-std::vector<SurfaceDraw> Renderer::surface_draws(const FramePlan& plan) {
-  const SurfaceFrame fr = surface_frame(scene_.render, camera_, light_, frame_, plan, current_probe_bounds(),
+std::vector<SurfaceDraw> Renderer::surface_draws(const FramePlan& plan, const View& view) {
+  const SurfaceFrame fr = surface_frame(scene_.render, view.camera, view.light, frame_, plan, current_probe_bounds(),
                                          probe_, options_);
-  const std::vector<SphereCaster> bodies = world_view_.body_casters(scene_);
+  const std::vector<SphereCaster> bodies = body_casters(scene_, view.bodies_mm);
+  const ProbeSheet& sheet = view.sheet;
   std::vector<SurfaceDraw> draws;
   bool gain_recorded = false;
   for (size_t i = 0; i < scene_.surfaces.size(); ++i) {
@@ -231,10 +223,10 @@ std::vector<SurfaceDraw> Renderer::surface_draws(const FramePlan& plan) {
     SurfaceDraw d = material_draw(ms, filter_negligible_);
     if (!g.w4.empty()) {
       // The probe's sheet: the haptic proxy's (FrameInput::sheet), else the nearest vertex's.
-      const double w = sheet_.surface == static_cast<int>(i) ? sheet_.w4 : g.nearest_w(probe_.position, sheet_.w4);
+      const double w = sheet.surface == static_cast<int>(i) ? sheet.w4 : g.nearest_w(probe_.position, sheet.w4);
       const fourd::Spec& spec = scene_.surfaces[i].fourd;
       inputs.sheet = SheetInputs{w, g.w_max - g.w_min, spec.crossing_diagram_mm, spec.cutaway_mm,
-                                 probe_.position, &camera_};
+                                 probe_.position, &view.camera};
       d.wireframe = spec.wireframe;
     }
     d.mesh = &g.mesh;
@@ -247,9 +239,9 @@ std::vector<SurfaceDraw> Renderer::surface_draws(const FramePlan& plan) {
 }
 
 
-ReductionResult Renderer::mean_visible_normal(bool& reduced) {
-  reduced = !normal_mean_.valid || !same_camera(normal_mean_.camera, camera_);
-  if (reduced) normal_mean_ = {true, camera_, reductions_.mean_normal(surface_)};
+ReductionResult Renderer::mean_visible_normal(bool& reduced, const Camera& camera) {
+  reduced = !normal_mean_.valid || !same_camera(normal_mean_.camera, camera);
+  if (reduced) normal_mean_ = {true, camera, reductions_.mean_normal(surface_)};
   return normal_mean_.result;
 }
 
@@ -281,14 +273,18 @@ void Renderer::apply_reductions(const ReductionResult& r, const FramePlan& plan)
   stats_.probe_position = probe_.position;
 }
 
-Status Renderer::render_frame() {
+// The view as it stands, with this frame's probe (probe_) moved by the displacement.
+Status Renderer::draw() {
+  const View& view = *view_;
+  probe_.position = view.probe.position;
+  probe_.velocity = view.probe.velocity;
   stats_.timings_ms.clear();
   upload_deformed();  // what the session stepped since the last frame
   stats_.deformation = deformation();
   if (Status s = advance_bake(); !s) return s;  // before the timer: a band is not the frame's work
   PassTimer timer(options_.time_passes, stats_, options_.gpu_timers ? &gpu_timers_ : nullptr);
   const BoundingSphere probe = current_probe_bounds();
-  const FramePlan plan = make_plan(scene_, camera_, bounds_of(geometry_.surfaces), probe, frame_,
+  const FramePlan plan = make_plan(scene_, view.camera, bounds_of(geometry_.surfaces), probe, frame_,
                                    scene_.render.depth_map_size);
   stats_.skipped = plan.skipped;
   if (!plan.shadow_active || !filter_lod()) filter_negligible_ = false;  // no measure to go by
@@ -301,7 +297,7 @@ Status Renderer::render_frame() {
     run_probe_depth(plan, probe);
     timer.lap("probe_depth");
   }
-  const std::vector<SurfaceDraw> draws = surface_draws(plan);
+  const std::vector<SurfaceDraw> draws = surface_draws(plan, view);
   const PixelRect rect = shadow_rect(plan);
   if (Status s = surface_.run(draws, plan.shadow_active ? &probe_depth_.depth() : nullptr, scene_.render.background,
                               rect, redraw_rect(draws, rect));
@@ -326,7 +322,7 @@ void Renderer::reduce(const FramePlan& plan, PassTimer& timer) {
                                                    options_.footprint_rect});
     timer.lap("reductions");
     bool reduced = false;
-    const ReductionResult n = mean_visible_normal(reduced);
+    const ReductionResult n = mean_visible_normal(reduced, view_->camera);
     if (reduced) timer.lap("reference_normal");
     r.normal_sum = n.normal_sum;
     r.normal_coverage = n.normal_coverage;
@@ -368,15 +364,16 @@ void Renderer::run_probe_depth(const FramePlan& plan, const BoundingSphere& prob
 
 // The probe on its sheet, to the world view's path (a frame given a sheet).
 void Renderer::add_path_point() {
-  const auto surface = static_cast<std::size_t>(sheet_.surface);
-  const bool on_sheet = sheet_.surface >= 0 && surface < geometry_.surfaces.size() && !geometry_.surfaces[surface].w4.empty();
+  const ProbeSheet& sheet = view_->sheet;
+  const auto surface = static_cast<std::size_t>(sheet.surface);
+  const bool on_sheet = sheet.surface >= 0 && surface < geometry_.surfaces.size() && !geometry_.surfaces[surface].w4.empty();
   double fraction = 0.5;
   if (on_sheet) {
     const SurfaceGeometry& g = geometry_.surfaces[surface];
     const double range = g.w_max - g.w_min;
-    if (range > 0.0) fraction = (sheet_.w4 - g.w_min) / range;
+    if (range > 0.0) fraction = (sheet.w4 - g.w_min) / range;
   }
-  world_view_.add_path_point(on_sheet, fraction, probe_.position);
+  world_view_.add_path_point(view_->show.path && on_sheet, fraction, view_->probe.position);
 }
 
 Image Renderer::read_color() const { return read_color_image(surface_); }

@@ -3,6 +3,8 @@
 // While the frame key (render/frame_key.h: the plain variant's inputs, meshes, background, size)
 // is the last frame's, the surface pass redraws only the last and new shadow rectangles
 // (RendererOptions::incremental); overlays make the next frame a full one.
+// Draws the session's view (render/view.h: probe, camera, flags, world), never its own copy of
+// it: a rebuilt renderer is handed the view and needs nothing copied over.
 // Lives on the render thread; owns every GL object it uses. Needs a current GL context.
 #pragma once
 
@@ -33,10 +35,10 @@
 #include "render/plan.h"
 #include "render/surface_geometry.h"
 #include "render/tile_bake.h"
+#include "render/view.h"
 #include "render/world_markers.h"
 #include "render/world_view.h"
 #include "scene/scene.h"
-#include "world/deformable_surfaces.h"
 
 namespace ps {
 
@@ -90,13 +92,11 @@ struct RendererOptions {
   // the rest of the last frame; the results are the same bits (tests compare). false: every
   // frame redraws every pixel (FrameStats::drawn_pixels tells which).
   bool incremental = true;
-  // The scene's deformable surfaces (the bendable polygons of A Virtual Universe §6), as
-  // their owner steps them: a session steps them each frame before drawing it
-  // (frame/haptic_frame.h step_deformation); the renderer never steps them, it draws them and
-  // uploads each one whose version changed. They must be this scene's
-  // (world::settled_deformables). Null: create() makes them settled under the scene's probe
-  // (what `render` shows); deformables() hands them to the session.
-  std::shared_ptr<world::DeformableSurfaces> deformation;
+  // The session's view (render/view.h): what each frame draws besides the scene, owned by the
+  // session, which hands a rebuilt or switched renderer its view and copies nothing over; it must
+  // be of this scene (make_view, rebuilt_view). create() reads only its deformable surfaces.
+  // Null: create() makes a fresh view of the scene (make_view: what `render` shows).
+  std::shared_ptr<View> view;
 };
 
 // The filter's need (glsl/lib/gabor.glsl gabor_filter_need: the exponent of its attenuation of
@@ -115,10 +115,11 @@ class Renderer {
  public:
   static Result<std::unique_ptr<Renderer>> create(const Scene& scene, const RendererOptions& options);
 
-  // One frame: `input` replaces what it gives of the probe, the camera, the view and the world
-  // view (render/frame_input.h), then plan -> passes -> reductions. The scene is never modified.
+  // One frame of the view: `input` replaces what it gives of it (apply_input), then the view is
+  // drawn (plan -> passes -> reductions -> overlays) and the probe's displacement is applied to the
+  // view (the pseudo-haptic loop). The scene is never modified.
   Result<FrameStats> render(const FrameInput& input);
-  Status render_frame();  // render({}): the probe where the last frame left it, the rest held
+  Status render_frame();  // render({}): the view as it stands
   Image read_color() const;                        // RGB, top row first, image size
   Result<Image> read_aov(Aov aov) const;
   Result<Image> read_aov(const std::string& name) const;  // unknown name: error listing aov_names()
@@ -138,44 +139,28 @@ class Renderer {
   // The scene as given to create() (prepared: prepare/prepare.h): never changed by a frame.
   const Scene& scene() const { return scene_; }
   const PlaneFrame& reference() const { return frame_; }
-  // The probe now: the scene's, moved by set_probe_state, FrameInput::probe and each frame's
-  // displacement (the pseudo-haptic loop).
-  const Probe& probe() const { return probe_; }
-  void set_probe_state(const glm::dvec3& position, const glm::dvec3& velocity);
-  // The camera and light the next frame draws with: the scene's, carried along as the view's
-  // pose changes (FrameInput::view; render/frame_input.h carried_camera).
-  const Camera& camera() const { return camera_; }
-  const Light& light() const { return light_; }
-  // The camera as the device's workspace sees it (before the view's offset and turn).
-  Camera workspace_camera() const { return unposed_camera(camera_, view_); }
-  // The world camera from now on (an orbit in the window, a camera kept across a reload).
-  void set_camera(const Camera& camera) { camera_ = camera; }
-  const ViewPose& view() const { return view_; }
-  const glm::dmat3& view_rotation() const { return view_.rotation; }
-  // Draw the probe (the displayed proxy) over the image after the pseudo-shadow; off by default.
-  // Changes the colour image only, never the AOVs, the reference plane or the displacement.
-  void set_show_probe(bool show) { show_probe_ = show; }
-  bool show_probe() const { return show_probe_; }
-  // The bodies (FrameInput::bodies_mm) are drawn as spheres of their radius in their material's
-  // albedo after the pseudo-shadow (colour only, like the probe), each casting its own analytic
+  // The bodies (View::bodies_mm) are drawn as spheres of their radius in their material's albedo
+  // after the pseudo-shadow (colour only, like the probe), each casting its own analytic
   // pseudo-shadow on the surfaces within the receiving material's influence distance (colour
   // only: the AOVs, reductions and displacement stay the probe's; reference/body_shadow.h). Fewer
   // centres than bodies: the rest are neither drawn nor cast. Markers (render/world_markers.h) are
-  // drawn like the bodies. The device (FrameInput::device_mm) is drawn as a faint ghost of the
-  // probe when shown, so the gap between hand and proxy (pseudo-haptic coupling) can be seen.
-  // On a surface embedded in 4D, the probe's sheet (FrameInput::sheet) shows the pseudo-shadow on
-  // that sheet only (docs/fourd.md); with set_show_path(true) each frame given a sheet also adds
-  // the probe's position to its path, drawn after the pseudo-shadow as a tube coloured by w
-  // (fourd::depth_colour over the surface's w range; Hanson & Zhang, Fig. 5c).
-  void set_show_path(bool show) { world_view_.set_show_path(show); }
-  void set_show_device(bool show) { world_view_.set_show_device(show); }
-  bool show_device() const { return world_view_.show_device(); }
-  // The bendable polygons of A Virtual Universe §6 (world/deformable_surfaces.h,
-  // RendererOptions::deformation): each frame draws them as their owner has stepped them, uploading
-  // the meshes whose version changed. Null when the scene has none. The session steps them
-  // (frame/haptic_frame.h step_deformation); the renderer never does.
-  world::DeformableSurfaces* deformables() const { return deformables_.get(); }
-  // What the deformable surfaces' last step did (all zero without any).
+  // drawn like the bodies, the device (View::device_mm) as a faint ghost of the probe when shown.
+  // On a surface embedded in 4D, the probe's sheet (View::sheet) shows the pseudo-shadow on that
+  // sheet only (docs/fourd.md); with View::show.path each frame given a sheet also adds the probe's
+  // position to its path, drawn after the pseudo-shadow as a tube coloured by w
+  // (fourd::depth_colour over the surface's w range; Hanson & Zhang, Fig. 5c): the path is this
+  // renderer's drawing, begun afresh by a new one.
+  //
+  // The view this renderer draws (RendererOptions::view; render/view.h), and two of its parts: the
+  // probe now (the scene's, moved by the frame inputs and each frame's displacement) and the world
+  // camera the next frame draws with.
+  const View& view() const { return *view_; }
+  // The same view, for a session that holds it through the renderer drawing it (drive_frame steps
+  // its deformable surfaces): it is the session's, shared, never the renderer's own state.
+  View& view() { return *view_; }
+  const Probe& probe() const { return view_->probe; }
+  const Camera& camera() const { return view_->camera; }
+  // What the view's deformable surfaces' last step did (all zero without any).
   const DeformationStats& deformation() const;
   // The welded vertices of deformable surface `surface` now (world mm); empty if not deformable.
   std::vector<glm::dvec3> deformed_vertices(int surface) const;
@@ -209,12 +194,12 @@ class Renderer {
   ProbeInput probe_input() const;
   void run_probe_depth(const FramePlan& plan, const BoundingSphere& probe);
   PixelRect shadow_rect(const FramePlan& plan) const;  // the surface pass's (options_.footprint_rect)
-  std::vector<SurfaceDraw> surface_draws(const FramePlan& plan);
+  std::vector<SurfaceDraw> surface_draws(const FramePlan& plan, const View& view);
   void update_reference_plane(const ReductionResult& r);
-  // The mean visible normal of this frame's normal target: reduced when the camera changed
-  // since the last reduction, else that reduction's result (see normal_mean_). `reduced`: set
-  // when the reduction ran.
-  ReductionResult mean_visible_normal(bool& reduced);
+  // The mean visible normal of this frame's normal target, drawn with `camera`: reduced when the
+  // camera changed since the last reduction, else that reduction's result (see normal_mean_).
+  // `reduced`: set when the reduction ran.
+  ReductionResult mean_visible_normal(bool& reduced, const Camera& camera);
   void apply_reductions(const ReductionResult& r, const FramePlan& plan);
   void reduce(const FramePlan& plan, PassTimer& timer);
   void draw_overlays(PassTimer& timer);  // ends the incremental run (renderer_incremental.cpp)
@@ -237,9 +222,8 @@ class Renderer {
     ReductionResult result;  // normal_sum and normal_coverage
   };
   NormalMean normal_mean_;
-  // Their meshes are geometry_'s dynamic ones; uploaded_: the version each upload drew (by scene
-  // surface, 0 for the others).
-  std::shared_ptr<world::DeformableSurfaces> deformables_;
+  // The view's deformable surfaces' meshes are geometry_'s dynamic ones; uploaded_: the version
+  // each upload drew (by scene surface, 0 for the others).
   std::vector<std::uint64_t> uploaded_;
   std::uint64_t mesh_version_ = 0;         // deformed mesh uploads so far (the frame key)
   FrameHistory history_;                   // what the last frame left: incremental frames
@@ -247,21 +231,15 @@ class Renderer {
   SurfacePass surface_;
   ReductionsPass reductions_;
   ProbeViewPass probe_view_;
-  bool show_probe_ = false;
   bool filter_negligible_ = false;  // the last frame's filter need was negligible: skip it now
   bool filter_lod() const {
     return options_.filter_lod && (options_.expected_frames <= 0 || options_.expected_frames >= kFilterLodMinFrames);
   }
-  // The frame state a renderer holds between frames (FrameInput replaces it).
-  Probe probe_;
-  Camera camera_;
-  Light light_;  // the scene's light, turned with the camera
-  ViewPose view_;
-  ProbeSheet sheet_;
-  void apply(const FrameInput& input);
-  void set_view_pose(const ViewPose& pose);
-  void add_path_point();           // the probe on its sheet, to the world view's path
-  WorldView world_view_;           // bodies, markers, the 4D path and the device ghost
+  std::shared_ptr<View> view_;  // the session's (RendererOptions::view)
+  Probe probe_;                 // this frame's: the view's, then moved by the displacement
+  Status draw();                // the view as it stands (render_frame's work)
+  void add_path_point();        // the probe on its sheet, to the world view's path
+  WorldView world_view_;  // bodies, markers, the 4D path and the device ghost
 };
 
 // Stats as JSON (the CLI's --stats FILE): backend, renderer, reference_normal, displacement,

@@ -20,19 +20,20 @@ PixelRect Renderer::redraw_rect(const std::vector<SurfaceDraw>& draws, const Pix
 // Either is outside the frame key, so the frame after one redraws everything (the simple choice:
 // the window's overlays move with the probe and would widen the redrawn box to about the same).
 void Renderer::draw_overlays(PassTimer& timer) {
-  if (show_probe_) {
+  const View& view = *view_;
+  const glm::dmat4 view_proj =
+      view_projection(view.camera, static_cast<double>(scene_.render.width) / scene_.render.height);
+  if (view.show.probe) {
     ProbeViewPass::Inputs in;
-    in.view_proj = view_projection(camera_, static_cast<double>(scene_.render.width) / scene_.render.height);
-    in.light = &light_;
+    in.view_proj = view_proj;
+    in.light = &view.light;
     in.probe = probe_input();  // after this frame's displacement
     probe_view_.run(in);
     timer.lap("probe_view");
     history_.invalidate();
   }
-  if (!world_view_.empty()) {
-    world_view_.run(options_.glsl_root, surface_,
-                    {view_projection(camera_, static_cast<double>(scene_.render.width) / scene_.render.height), &light_,
-                     &scene_, probe_input(), probe_.position});
+  if (!world_view_.empty(scene_, view)) {
+    world_view_.run(options_.glsl_root, surface_, {view_proj, &scene_, &view, probe_input(), probe_.position});
     timer.lap("world_view");
     history_.invalidate();
   }

@@ -1,8 +1,8 @@
 // A scene's frames as `pseudoshadow render` draws them, for every caller that renders a scene
-// without a haptic loop (the CLI's render, the C++ API and so the Python module): the first frame
-// shows the world where the scene starts it (bodies, charges, bands: start_frame_input), the
-// rest hold it while the probe moves by each frame's displacement. One function, so the library's
-// first image is the CLI's byte for byte (tests/api).
+// without a haptic loop (the CLI's render, tune's sweeps, the C++ API and so the Python module):
+// the renderer's view as it stands, a fresh view showing the world where the scene starts it
+// (bodies, charges, bands: render/view.h make_view), held while the probe moves by each frame's
+// displacement. One function, so the library's first image is the CLI's byte for byte (tests/api).
 #pragma once
 
 #include <functional>

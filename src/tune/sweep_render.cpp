@@ -5,6 +5,7 @@
 
 #include "prepare/prepare.h"
 #include "scene/scene_io.h"
+#include "render/scene_frames.h"
 #include "tune/sweep.h"
 
 namespace ps {
@@ -70,10 +71,7 @@ Result<std::vector<SweepCell>> render_sweep(const SweepJob& job, const SweepProg
     options.expected_frames = scene->render.frames;  // as `render` does, so a cell equals its render
     auto renderer = open_renderer(scene.value(), options);
     if (!renderer) return renderer.error();
-    // As `render` does: the bodies, charges and bands where the scene starts them.
-    const FrameInput start = start_frame_input(renderer.value()->scene());
-    for (int f = 0; f < scene->render.frames; ++f)
-      if (auto s = renderer.value()->render(f == 0 ? start : FrameInput{}); !s) return s.error();
+    if (Status s = render_scene_frames(*renderer.value(), scene->render.frames); !s) return s.error();  // as `render`
     cell.image = renderer.value()->read_color();
     cell.stats = renderer.value()->stats();
     for (const auto& [name, ms] : cell.stats.timings_ms) cell.frame_ms += ms;

@@ -20,7 +20,7 @@ Result<std::unique_ptr<TuneSession>> TuneSession::open(TuneSource source, Scene 
   if (source.renderer.glsl_root.empty()) source.renderer.glsl_root = gl::default_glsl_root();
   std::unique_ptr<TuneSession> s(new TuneSession());
   s->source_ = std::move(source);
-  if (Status st = s->rebuild({}, false, false, false, std::move(scene)); !st) return st.error();
+  if (Status st = s->rebuild({}, {}, false, std::move(scene)); !st) return st.error();
   return s;
 }
 
@@ -48,37 +48,35 @@ Status TuneSession::set_curve(const std::string& key, const Lut& lut) {
   const std::map<std::string, Lut> before = curve_edits_;
   if (lut.empty()) curve_edits_.erase(key);
   else curve_edits_[key] = lut;
-  const Status s = rebuild(edits_, false, true, true, load(edits_));
+  const Status s = rebuild(edits_, ViewRestart{true, false}, true, load(edits_));
   if (!s) curve_edits_ = before;
   return s;
 }
 
-Status TuneSession::rebuild(const std::map<std::string, std::string>& edits, bool keep_probe, bool keep_tiles,
-                            bool keep_camera, Result<Scene> scene) {
+Status TuneSession::fail(const Error& e) {
+  last_error_ = e.message;
+  return e;
+}
+
+// The first view: the scene's, with the source's flags; then the session's view of the new scene
+// (rebuilt_view: the camera as the workspace sees it, since the new view starts with no pose; the
+// world camera kept was carried twice, and once the haptic loop restarted its view the picture
+// stayed moved by the old pose, Home included, docs/fourd.md).
+Status TuneSession::rebuild(const std::map<std::string, std::string>& edits, ViewRestart restart, bool keep_tiles,
+                            Result<Scene> scene) {
   // Watch the scene's files even when it fails to load, so fixing it triggers a reload.
   const Scene& watched = scene ? scene.value() : (renderer_ ? renderer_->scene() : Scene{});
   watch_.set_files(reload_dependencies(watched, source_.scene_path, source_.renderer.glsl_root));
-  if (!scene) {
-    last_error_ = scene.error().message;
-    return scene.error();
-  }
+  if (!scene) return fail(scene.error());
+  auto view = view_ ? rebuilt_view(*view_, scene.value(), restart) : make_view(scene.value(), source_.show);
+  if (!view) return fail(view.error());
   RendererOptions options = source_.renderer;
+  options.view = view.value();
   if (keep_tiles) options.reuse_tiles_from = renderer_.get();  // edits only: shaders unchanged
   auto fresh = open_renderer(scene.value(), options);
-  if (!fresh) {
-    last_error_ = fresh.error().message;
-    return fresh.error();
-  }
-  if (renderer_ && keep_probe)
-    fresh.value()->set_probe_state(renderer_->probe().position, renderer_->probe().velocity);
-  // The camera as the workspace sees it: a fresh renderer's view pose is the scene's (none), and
-  // the next frame's pose (a [navigation] offset, a rolling turn) carries it from there, as it
-  // carried the old one. The world camera kept here was carried twice, and once the haptic loop
-  // restarted its view the picture stayed moved by the old pose, Home included (docs/fourd.md).
-  if (renderer_ && keep_camera) fresh.value()->set_camera(renderer_->workspace_camera());
-  if (renderer_) fresh.value()->set_show_probe(renderer_->show_probe());
-  if (renderer_) fresh.value()->set_show_device(renderer_->show_device());
+  if (!fresh) return fail(fresh.error());
   renderer_ = std::move(fresh.value());
+  view_ = std::move(view.value());
   edits_ = edits;
   last_error_.clear();
   ++generation_;
@@ -91,10 +89,10 @@ Status TuneSession::set(const std::string& key, const std::string& value) {
   // The probe restarts from the scene's state (so `render --overrides` reproduces a console
   // session); the window's haptic loop sets it again every frame anyway.
   const bool camera_key = key.rfind("camera.", 0) == 0;
-  return rebuild(edits, false, true, !camera_key, load(edits));
+  return rebuild(edits, ViewRestart{true, camera_key}, true, load(edits));
 }
 
-Status TuneSession::reload() { return rebuild(edits_, true, false, true, load(edits_)); }
+Status TuneSession::reload() { return rebuild(edits_, {}, false, load(edits_)); }
 
 bool TuneSession::reload_if_changed() {
   if (!watch_.changed()) return false;
@@ -106,7 +104,7 @@ bool TuneSession::reload_if_changed() {
     const std::string ext = std::filesystem::path(f).extension().string();
     shader_changed |= ext == ".glsl" || ext == ".vert" || ext == ".frag" || ext == ".comp";
   }
-  (void)rebuild(edits_, true, !shader_changed, true, load(edits_));  // outcome in last_error_
+  (void)rebuild(edits_, {}, !shader_changed, load(edits_));  // outcome in last_error_
   return true;
 }
 

@@ -1,12 +1,15 @@
 // A tuning session on the render thread: the scene (file + --set overrides + the session's
-// own edits), the Renderer built from it, live reload and the override file.
+// own edits), its view (render/view.h) and the Renderer drawing it, live reload and the override
+// file.
 //
 // Reload policy: a change (file edit or `set`) builds a NEW Renderer from the re-loaded
 // scene and swaps it in only if scene parsing and every shader build succeeded; otherwise the
 // old Renderer keeps running and last_error() holds the one-line reason (file:line for shader
-// and scene errors). A file reload carries the probe's position and velocity and the camera
-// (orbit) over to the new Renderer; `set` carries the camera unless it sets a camera.* key and
-// restarts the probe from the scene. Needs a current context.
+// and scene errors). The view is the session's: the new Renderer draws the session's view of the
+// new scene (rebuilt_view), nothing is copied from the old Renderer. A file reload keeps the
+// probe's position and velocity and the camera (orbit); `set` keeps the camera unless it sets a
+// camera.* key and restarts the probe from the scene; the flags are always kept. Needs a current
+// context.
 #pragma once
 
 #include <map>
@@ -25,6 +28,7 @@ struct TuneSource {
   std::vector<std::string> overrides;   // "KEY=VALUE", in command-line order (--set, --overrides lines)
   RendererOptions renderer;
   std::vector<std::string> allow_paths;  // --allow-path (scene/path_policy.h)
+  ViewFlags show;  // what the session's first view shows (run's --show-probe, --show-device)
 };
 
 class TuneSession {
@@ -36,6 +40,10 @@ class TuneSession {
 
   Renderer& renderer() { return *renderer_; }
   const Renderer& renderer() const { return *renderer_; }
+  // The session's view, which renderer() draws (the window's keys toggle its flags and orbit its
+  // camera); after a rebuild, the new scene's view per the reload policy (a new object).
+  View& view() { return *view_; }
+  const View& view() const { return *view_; }
 
   // Edits one value (a --set KEY=VALUE) and rebuilds; on failure the edit is dropped and
   // the previous renderer stays.
@@ -65,10 +73,12 @@ class TuneSession {
  private:
   TuneSession() = default;
   Result<Scene> load(const std::map<std::string, std::string>& edits) const;
-  Status rebuild(const std::map<std::string, std::string>& edits, bool keep_probe, bool keep_tiles,
-                 bool keep_camera, Result<Scene> scene);
+  Status rebuild(const std::map<std::string, std::string>& edits, ViewRestart restart, bool keep_tiles,
+                 Result<Scene> scene);
+  Status fail(const Error& e);  // last_error() = e's message
 
   TuneSource source_;
+  std::shared_ptr<View> view_;  // what renderer_ draws (RendererOptions::view)
   std::unique_ptr<Renderer> renderer_;
   std::map<std::string, std::string> edits_;
   std::map<std::string, Lut> curve_edits_;  // applied to the loaded scene in load()

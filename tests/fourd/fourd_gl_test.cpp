@@ -45,8 +45,8 @@ TEST_P(FourdGLTest, PseudoShadowStaysOnTheProbesSheet) {
 
 // The probe's path coloured by w (Hanson & Zhang, Fig. 5c): with the surface hidden, a path laid at
 // the surface's smallest w is drawn bluish (blue > red in its pixels), one at its largest w
-// reddish, and without set_show_path nothing is drawn. The camera looks at the path from the side,
-// so its tube (0.6 mm) covers a few pixels of each of its 128^2.
+// reddish, and without the path shown (ViewFlags::path) nothing is drawn. The camera looks at the
+// path from the side, so its tube (0.6 mm) covers a few pixels of each of its 128^2.
 TEST_P(FourdGLTest, ProbePathIsColouredByDepth) {
   auto scene = load_scene(std::string(PS_SOURCE_DIR) + "/scenes/fourd/roman.toml",
                           {"render.size=[128,128]", "surfaces.0.visible=false", "camera.position=[0,-60,0]",
@@ -56,10 +56,10 @@ TEST_P(FourdGLTest, ProbePathIsColouredByDepth) {
   auto path_colour = [&](bool show, double w, int& pixels) {
     auto r = Renderer::create(scene.value(), {});
     EXPECT_TRUE(r) << r.error().message;
-    r.value()->set_show_path(show);
     // One frame per point: each frame given a sheet adds the probe's position to the path.
     for (int i = 0; i <= 20; ++i) {
       FrameInput in;
+      in.show = ViewFlags{false, show, false};
       in.probe = ProbeMotion{glm::dvec3(-10.0 + i, 0.0, 0.0), glm::dvec3(0.0)};
       in.sheet = ProbeSheet{0, w};
       EXPECT_TRUE(r.value()->render(in));

@@ -83,11 +83,13 @@ std::vector<Frame> replay_frames(const Walk& w, bool incremental) {
   RendererOptions options;
   options.expected_frames = 60;  // as a replay of this length: the same tile choice both ways
   options.incremental = incremental;
+  auto view = make_view(scene, ViewFlags{w.overlays, false, w.overlays});
+  EXPECT_TRUE(view.ok()) << w.name;
+  if (!view.ok()) return {};
+  options.view = view.value();
   auto renderer = Renderer::create(scene, options);
   EXPECT_TRUE(renderer.ok()) << w.name << ": " << (renderer.ok() ? "" : renderer.error().message);
   if (!renderer.ok()) return {};
-  renderer.value()->set_show_probe(w.overlays);
-  renderer.value()->set_show_device(w.overlays);
   auto device = open_log_device("trajectory:" + std::string(PS_SOURCE_DIR) + "/" + w.trajectory);
   auto haptic = world::HapticScene::build(scene);
   EXPECT_TRUE(device.ok() && haptic.ok()) << w.name;

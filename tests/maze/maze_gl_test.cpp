@@ -43,9 +43,9 @@ Image render(const Shot& s, const Scene& scene, const glm::dvec3& probe, const g
   auto r = Renderer::create(scene, RendererOptions{});
   EXPECT_TRUE(r) << r.error().message;
   if (!r) return {};
-  r.value()->set_camera(follow_camera(s.desc, probe));
-  r.value()->set_probe_state(probe, velocity);
-  EXPECT_TRUE(r.value()->render_frame());
+  FrameInput in = probe_frame_input(probe, velocity);
+  in.camera = follow_camera(s.desc, probe);
+  EXPECT_TRUE(r.value()->render(in));
   return r.value()->read_color();
 }
 

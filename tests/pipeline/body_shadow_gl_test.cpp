@@ -102,7 +102,7 @@ struct Frame {
   FrameStats stats;
 };
 
-// One frame of `s` with the bodies at `bodies` (empty: the frame input gives no bodies).
+// One frame of `s` with the bodies at `bodies` (empty: none of the scene's bodies drawn or cast).
 std::optional<Frame> render(const Scene& s, const std::vector<glm::dvec3>& bodies) {
   auto made = Renderer::create(s, {});
   if (!made.ok()) {
@@ -110,8 +110,9 @@ std::optional<Frame> render(const Scene& s, const std::vector<glm::dvec3>& bodie
     return std::nullopt;
   }
   Renderer& r = *made.value();
-  FrameInput in;
-  if (!bodies.empty()) in.bodies_mm = bodies;
+  FrameInput in;  // the bodies where given (none: the rest neither drawn nor cast), no markers
+  in.bodies_mm = bodies;
+  in.markers = std::vector<WorldMarker>{};  // not the start view's bands from the probe
   if (auto f = r.render(in); !f) {
     ADD_FAILURE() << f.error().message;
     return std::nullopt;

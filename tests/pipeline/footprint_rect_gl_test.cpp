@@ -125,8 +125,7 @@ TEST_P(FootprintRectGLTest, EveryOutputEqualsTheWholeImagesBitForBit) {
     for (size_t f = 0; f < c.probe_path.size(); ++f) {
       const std::string where = c.name + " frame " + std::to_string(f);
       for (Renderer* r : {rect.value().get(), whole.value().get()}) {
-        r->set_probe_state(c.probe_path[f], c.scene.probe.velocity);
-        ASSERT_TRUE(r->render_frame().ok()) << where;
+        ASSERT_TRUE(r->render(probe_frame_input(c.probe_path[f], c.scene.probe.velocity)).ok()) << where;
       }
       expect_same_frame(*rect.value(), *whole.value(), where);
       if (rect.value()->stats().shadow_pixels > 0) ++shadowed_frames;
@@ -144,8 +143,8 @@ TEST_P(FootprintRectGLTest, AovOutsideTheFootprintIsNoProbeAfterTheProbeMoved) {
   Renderer& r = *made.value();
   ASSERT_TRUE(r.render_frame().ok());
   const Image before = r.read_aov(Aov::kIntensity).value();
-  r.set_probe_state({-10.0, 10.0, 9.0}, {});  // 14 mm away: the 8 mm footprints do not overlap
-  ASSERT_TRUE(r.render_frame().ok());
+  // 14 mm away: the 8 mm footprints do not overlap.
+  ASSERT_TRUE(r.render(probe_frame_input({-10.0, 10.0, 9.0}, {})).ok());
   const Image inten = r.read_aov(Aov::kIntensity).value(), dist = r.read_aov(Aov::kDistance).value();
   const Image tex = r.read_aov(Aov::kTexture).value();
   int old_footprint = 0;
@@ -195,9 +194,9 @@ TEST_P(FootprintRectGLTest, ReferenceNormalFollowsTheCamera) {
   ASSERT_TRUE(a.ok() && b.ok());
   ASSERT_TRUE(a.value()->render_frame().ok());
   const glm::dvec3 n_first = a.value()->reference().n;
-  a.value()->set_camera(moved.camera);
-  a.value()->set_probe_state(s.probe.position, s.probe.velocity);
-  ASSERT_TRUE(a.value()->render_frame().ok());
+  FrameInput in = probe_frame_input(s.probe.position, s.probe.velocity);
+  in.camera = moved.camera;
+  ASSERT_TRUE(a.value()->render(in).ok());
   ASSERT_GT(a.value()->stats().shadow_pixels, 0u);  // the reductions ran
   EXPECT_GT(glm::length(n_first - b.value()->reference().n), 1e-3);  // the views differ
   EXPECT_EQ(a.value()->reference().n, b.value()->reference().n);

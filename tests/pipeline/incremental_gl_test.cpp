@@ -127,7 +127,7 @@ std::vector<Cause> causes() {
          in.view = ViewPose{glm::dvec3(2.0, 0.0, 0.0), glm::dmat3(std::cos(a), std::sin(a), 0.0, -std::sin(a),
                                                                   std::cos(a), 0.0, 0.0, 0.0, 1.0)};
        }},
-      {"overlay (the probe drawn)", "default", [](Renderer& r, FrameInput&) { r.set_show_probe(true); }},
+      {"overlay (the probe drawn)", "default", [](Renderer&, FrameInput& in) { in.show = ViewFlags{true, false, false}; }},
       {"4D sheet", "fourd/flat_torus", [](Renderer&, FrameInput& in) { in.sheet = ProbeSheet{0, 0.37}; }},
   };
 }

@@ -61,8 +61,7 @@ Frame render(const Scene& s, bool show_probe) {
   EXPECT_TRUE(made.ok()) << (made.ok() ? "" : made.error().message);
   if (!made.ok()) return {};
   Renderer& r = *made.value();
-  r.set_show_probe(show_probe);
-  EXPECT_TRUE(r.render_frame().ok());
+  EXPECT_TRUE(r.render([&] { FrameInput in; in.show = ViewFlags{show_probe, false, false}; return in; }()).ok());
   return {r.read_color(), r.read_aov("intensity").value(), r.read_aov("distance").value(),
           r.read_aov("normal").value(), r.stats()};
 }

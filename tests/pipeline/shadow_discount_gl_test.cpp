@@ -182,8 +182,7 @@ void check_rings(const Case& k) {
   auto rr = Renderer::create(s, {});
   ASSERT_TRUE(rr.ok()) << rr.error().message;
   Renderer& r = *rr.value();
-  r.set_probe_state(s.probe.position, texture_velocity(k.material));
-  ASSERT_TRUE(r.render_frame().ok());
+  ASSERT_TRUE(r.render(probe_frame_input(s.probe.position, texture_velocity(k.material))).ok());
   if (k.textured) {
     EXPECT_NEAR(r.stats().speed_gain, 1.0, 1e-9) << k.name << ": the texture must show fully";
   }
@@ -238,8 +237,7 @@ TEST_P(ShadowDiscountGLTest, CentreDarkensAsTheProbeApproaches) {
       int decreases = 0;
       for (double gap = 7.0; gap >= -0.5; gap -= 0.125) {
         const double z = 8.0 + gap;
-        r.set_probe_state({0.0, 0.0, z}, {speed, 0.0, 0.0});
-        ASSERT_TRUE(r.render_frame().ok());
+        ASSERT_TRUE(r.render(probe_frame_input({0.0, 0.0, z}, {speed, 0.0, 0.0})).ok());
         const Image c = r.read_color();
         if (lit < 0.0) lit = luma(c, 0, 0);
         const double dark = lit - luma(c, kSize / 2, kSize / 2);
@@ -264,8 +262,7 @@ TEST_P(ShadowDiscountGLTest, CompositeMatchesItsCpuTwin) {
   Renderer& r = *rr.value();
   const Material& m = s.materials[0];
   for (double gap : {1.5, 0.4, -0.3}) {  // in the onset band, near contact, at contact
-    r.set_probe_state({0.0, 0.0, 8.0 + gap}, texture_velocity(m));
-    ASSERT_TRUE(r.render_frame().ok());
+    ASSERT_TRUE(r.render(probe_frame_input({0.0, 0.0, 8.0 + gap}, texture_velocity(m))).ok());
     const Image c = r.read_color();
     const Image inten = r.read_aov("intensity").value();
     const Image dist = r.read_aov("distance").value();

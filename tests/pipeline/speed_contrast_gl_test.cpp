@@ -105,8 +105,7 @@ TEST_P(SpeedContrastGLTest, TextureContrastFollowsTheSpeedGain) {
       {{250.0, 0.0, 0.0}, at_rest},         // 500 Hz
   };
   for (const Case& k : cases) {
-    r.set_probe_state(s.probe.position, k.velocity);
-    ASSERT_TRUE(r.render_frame().ok());
+    ASSERT_TRUE(r.render(probe_frame_input(s.probe.position, k.velocity)).ok());
     const Contrast c = measured_gain(r);
     std::printf("[speed] v = (%g, %g, %g) mm/s: gain %.4f expected %.4f (stats %.4f, %d px)\n", k.velocity.x,
                 k.velocity.y, k.velocity.z, c.gain, k.gain, r.stats().speed_gain, c.pixels);
@@ -143,8 +142,7 @@ TEST_P(SpeedContrastGLTest, TextureContrastFollowsTheSpeedGainTable) {
       {{400.0, 0.0, 0.0}, 1.0},  // beyond the last row: its value
   };
   for (const Case& k : cases) {
-    r.set_probe_state(s.probe.position, k.velocity);
-    ASSERT_TRUE(r.render_frame().ok());
+    ASSERT_TRUE(r.render(probe_frame_input(s.probe.position, k.velocity)).ok());
     const Contrast c = measured_gain(r);
     std::printf("[speed lut] v = (%g, %g, %g) mm/s: gain %.4f expected %.4f (stats %.4f, %d px)\n", k.velocity.x,
                 k.velocity.y, k.velocity.z, c.gain, k.gain, r.stats().speed_gain, c.pixels);

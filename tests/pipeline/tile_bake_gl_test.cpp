@@ -39,8 +39,7 @@ Scene baked_scene(GaborParams::Filter filter = GaborParams::Filter::kNone) {
 // One frame at the scene's probe state (the previous frame's push-out undone, so every frame
 // draws the same view).
 void frame(Renderer& r, const Scene& s) {
-  r.set_probe_state(s.probe.position, s.probe.velocity);
-  ASSERT_TRUE(r.render_frame().ok());
+  ASSERT_TRUE(r.render(probe_frame_input(s.probe.position, s.probe.velocity)).ok());
 }
 
 // RMS difference of the texture AOV (sigmas) over the pixels both frames shadow.

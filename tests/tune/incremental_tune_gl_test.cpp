@@ -17,8 +17,7 @@ TEST_P(IncrementalTuneGLTest, MaterialEditRedrawsEverything) {
   TuneSession& s = *opened.value();
   auto step = [&s](double dx) {
     Renderer& r = s.renderer();
-    r.set_probe_state(r.probe().position + glm::dvec3(dx, 0.0, 0.0), r.probe().velocity);
-    EXPECT_TRUE(r.render_frame());
+    EXPECT_TRUE(r.render(probe_frame_input(r.probe().position + glm::dvec3(dx, 0.0, 0.0), r.probe().velocity)));
     return r.stats();
   };
   EXPECT_FALSE(step(0.0).incremental);

@@ -10,6 +10,8 @@
 
 #include <glm/gtc/matrix_transform.hpp>
 
+#include "prepare/prepare.h"
+#include "render/scene_frames.h"
 #include "scene/scene_io.h"
 #include "support/gl_test.h"
 #include "tune/overrides_file.h"
@@ -88,12 +90,14 @@ TEST_P(TuneGLTest, ReloadPicksUpASceneChangeAndKeepsTheProbe) {
   auto s = open_session({kBaked});
   ASSERT_TRUE(s);
   const glm::dvec3 probe{1.0, 2.0, 16.0};
-  s->renderer().set_probe_state(probe, {500.0, 0.0, 0.0});
+  s->view().probe.position = probe;
+  s->view().probe.velocity = {500.0, 0.0, 0.0};
   const Image before = frame(*s);
   replace_in_file(scene_, "albedo = [0.85, 0.85, 0.85]", "albedo = [0.2, 0.85, 0.85]");
   ASSERT_TRUE(s->reload_if_changed());
   EXPECT_EQ(s->last_error(), "");
-  EXPECT_EQ(s->renderer().probe().position, probe);
+  EXPECT_EQ(s->view().probe.position, probe);
+  EXPECT_EQ(s->renderer().probe().position, probe);  // the view it draws is the session's
   EXPECT_EQ(s->renderer().stats().bake_ms, 0.0);  // only the albedo changed: the tile is shared
   const Image after = frame(*s);
   EXPECT_NE(after.pixels, before.pixels);
@@ -254,6 +258,70 @@ TEST_P(TuneGLTest, AnEditWhileTheViewIsMovedKeepsTheCameraWithTheView) {
   back.view = ViewPose{};
   ASSERT_TRUE(s->renderer().render(back));
   expect_camera(s->renderer().camera(), home, "the view back home");
+}
+
+// The view is the session's: a rebuilt renderer draws it as it stands, with nothing copied from the
+// old renderer. A file reload keeps the flags, the orbited camera and the probe (the same image
+// again, from the new renderer's first frame as from the old one's); a `set` keeps the flags and
+// the camera and restarts the probe from the scene; a camera.* key restarts the camera too.
+TEST_P(TuneGLTest, ARebuiltRendererDrawsTheSessionsView) {
+  auto s = open_session({kBaked});
+  ASSERT_TRUE(s);
+  const glm::dvec3 start_probe = s->renderer().scene().probe.position;
+  const ViewFlags shown{true, false, true};
+  s->view().show = shown;
+  s->view().camera.position += glm::dvec3(30.0, -20.0, 0.0);  // an orbit
+  const Camera orbited = s->view().camera;
+  const glm::dvec3 hover{5.0, -4.0, 40.0};  // 15 mm above the plane, inside the onset: no push
+  s->view().probe.position = hover;
+  const Image before = frame(*s);
+  ASSERT_EQ(s->view().probe.position, hover) << "the frame pushed the probe";
+  const Renderer* old = &s->renderer();
+  ASSERT_TRUE(s->reload());
+  ASSERT_NE(&s->renderer(), old);
+  EXPECT_EQ(&s->renderer().view(), &s->view()) << "the new renderer draws the session's view";
+  EXPECT_EQ(s->view().show, shown);
+  EXPECT_EQ(s->view().camera.position, orbited.position);
+  EXPECT_EQ(s->view().probe.position, hover);
+  EXPECT_EQ(frame(*s).pixels, before.pixels) << "the same view, drawn by the new renderer";
+
+  ASSERT_TRUE(s->set("light.ambient", "0.3"));  // the scene's value: the same look
+  EXPECT_EQ(s->view().show, shown);
+  EXPECT_EQ(s->view().camera.position, orbited.position);
+  EXPECT_EQ(s->view().probe.position, start_probe) << "a set restarts the probe";
+  ASSERT_TRUE(s->set("camera.fov_y_deg", "40"));
+  EXPECT_EQ(s->view().camera.position, s->renderer().scene().camera.position) << "a camera key restarts it";
+  EXPECT_EQ(s->view().show, shown);
+}
+
+// A scene switch (a button's, in `run`: a new TuneSession of the new scene) starts from the new
+// scene's view, not the old one's: its camera, its probe, the command line's flags, and the world
+// where the scene starts it, so its first frame is the one `render` draws of it (bodies included).
+TEST_P(TuneGLTest, ASceneSwitchStartsFromTheNewScenesView) {
+  auto old = open_session({kBaked});
+  ASSERT_TRUE(old);
+  old->view().show = ViewFlags{true, true, true};
+  old->view().camera.position += glm::dvec3(30.0, -20.0, 0.0);
+  const std::vector<std::string> sets{"render.size=[96,96]"};
+  const std::string demo = PS_SOURCE_DIR "/scenes/fields_bodies_demo.toml";
+  auto switched = TuneSession::open({demo, sets, {}, {}, ViewFlags{false, false, true}});
+  ASSERT_TRUE(switched) << switched.error().message;
+  TuneSession& s = *switched.value();
+  const Scene& scene = s.renderer().scene();
+  EXPECT_EQ(s.view().camera.position, scene.camera.position);
+  EXPECT_EQ(s.view().probe.position, scene.probe.position);
+  EXPECT_EQ(s.view().show, (ViewFlags{false, false, true}));
+  ASSERT_FALSE(scene.bodies.empty());
+  EXPECT_EQ(s.view().bodies_mm, start_positions(scene));
+  EXPECT_FALSE(s.view().markers.empty()) << "the charges";
+  s.view().show = ViewFlags{};  // as `render` draws it
+  ASSERT_TRUE(s.renderer().render_frame());
+  auto loaded = load_scene(demo, sets);
+  ASSERT_TRUE(loaded) << loaded.error().message;
+  auto cli = open_renderer(loaded.value(), {});
+  ASSERT_TRUE(cli) << cli.error().message;
+  ASSERT_TRUE(render_scene_frames(*cli.value(), 1));
+  EXPECT_EQ(s.renderer().read_color().pixels, cli.value()->read_color().pixels);
 }
 
 PS_INSTANTIATE_HEADLESS_BACKENDS(TuneGLTest);

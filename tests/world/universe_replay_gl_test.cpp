@@ -152,8 +152,7 @@ TEST_P(UniverseReplayGLTest, PolyDentsUnderTheProbeAndSpringsBack) {
   // The same drawn probe over Suzanne undented.
   World rigid = open_world("poly.toml", {"render.size=[96,96]", "render.depth_map_size=64", "surfaces.0.deformable=false"});
   ASSERT_TRUE(rigid.renderer);
-  rigid.renderer->set_probe_state(deepest_drawn, glm::dvec3(0.0));
-  ASSERT_TRUE(rigid.renderer->render_frame());
+  ASSERT_TRUE(rigid.renderer->render(probe_frame_input(deepest_drawn, glm::dvec3(0.0))));
   EXPECT_GT(rigid.renderer->stats().max_penetration_mm, deepest_sink - 0.3) << "sink " << deepest_sink;
 }
 
@@ -195,9 +194,9 @@ TEST_P(UniverseReplayGLTest, PolySurvivesAViolentTrajectory) {
 TEST_P(UniverseReplayGLTest, TheRendererDrawsTheDeformationItsOwnerStepsAndNeverStepsIt) {
   auto scene = load_scene(universe("poly.toml"), {"render.size=[96,96]", "render.depth_map_size=64"});
   ASSERT_TRUE(scene) << scene.error().message;
-  auto settled = world::settled_deformables(scene.value());
-  ASSERT_TRUE(settled && settled.value()) << (settled ? "no deformable surface" : settled.error().message);
-  const std::shared_ptr<world::DeformableSurfaces> surfaces = settled.value();
+  auto view = make_view(scene.value());  // the session's: its deformable surfaces settled
+  ASSERT_TRUE(view && view.value()->deformables) << (view ? "no deformable surface" : view.error().message);
+  const std::shared_ptr<world::DeformableSurfaces> surfaces = view.value()->deformables;
   ASSERT_EQ(surfaces->drawn().size(), 1u);
   const int poly = surfaces->drawn()[0].surface;
   const std::uint64_t version = surfaces->drawn()[0].version;
@@ -211,11 +210,11 @@ TEST_P(UniverseReplayGLTest, TheRendererDrawsTheDeformationItsOwnerStepsAndNever
 
   RendererOptions ro;
   ro.expected_frames = 8;
-  ro.deformation = surfaces;
+  ro.view = view.value();
   auto made = open_renderer(scene.value(), ro, {.button_pictures = false});
   ASSERT_TRUE(made) << made.error().message;
   Renderer& r = *made.value();
-  EXPECT_EQ(r.deformables(), surfaces.get());
+  EXPECT_EQ(r.view().deformables, surfaces);
   for (const glm::dvec3& at : {pressing.position, crown + glm::dvec3(8.0, 0.0, 20.0), pressing.position}) {
     FrameInput in;
     in.probe = ProbeMotion{at, glm::dvec3(0.0)};

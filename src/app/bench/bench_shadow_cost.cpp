@@ -41,9 +41,9 @@ double process_cpu_ms() {
 // adds each pass's time to `passes`, the frame's total to `frames` and its CPU time to `cpu`.
 Status timed_frame(Renderer& r, const Scene& s, std::map<std::string, std::vector<double>>& passes,
                    std::vector<double>& frames, std::vector<double>& cpu, std::vector<double>* gpu = nullptr) {
-  r.set_probe_state(s.probe.position, s.probe.velocity);
+  const FrameInput at_scene_probe = probe_frame_input(s.probe.position, s.probe.velocity);
   const double cpu0 = process_cpu_ms();
-  if (Status st = r.render_frame(); !st) return st;
+  if (auto st = r.render(at_scene_probe); !st) return st.error();
   cpu.push_back(process_cpu_ms() - cpu0);
   double total = 0.0;
   for (const auto& [name, ms] : r.stats().timings_ms) {

@@ -117,8 +117,8 @@ Result<Measurement> measure_with(const Scene& s, const BenchOptions& o, const Te
   std::vector<double>& surface = m.surface_samples;
   std::vector<double> gpu;
   for (int i = 0; i < o.warm_frames + o.timed_frames; ++i) {
-    r.set_probe_state(s.probe.position, s.probe.velocity);  // undo last frame's push
-    if (Status st = r.render_frame(); !st) return st.error();
+    // The probe put back where the scene has it (undoes the last frame's push).
+    if (auto st = r.render(probe_frame_input(s.probe.position, s.probe.velocity)); !st) return st.error();
     if (i == 0 && errors) frame_errors(s, r, refs, m);
     if (i < o.warm_frames) continue;
     double total = 0.0, surf = 0.0;

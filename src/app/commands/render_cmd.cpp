@@ -122,11 +122,13 @@ int render(const cli::Command& cmd, const RenderArgs& a) {
   if (!scene) return cmd.fail(scene.error(), cli::scene_exit_code(scene.error()));
   auto ctx = cli::open_context(a.gl_opts, a.quiet);
   if (!ctx) return cmd.fail(ctx.error());
+  auto view = make_view(scene.value(), ViewFlags{a.show_probe, false, false});  // the scene's start view
+  if (!view) return cmd.fail(view.error());
   RendererOptions options;
   options.expected_frames = scene->render.frames;  // a short render skips a tile bake it would not repay
+  options.view = view.value();
   auto renderer = open_renderer(scene.value(), options);
   if (!renderer) return cmd.fail(renderer.error());
-  renderer.value()->set_show_probe(a.show_probe);
   const int frames = scene->render.frames;
   const bool progress = !a.quiet && frames > 1 && isatty(STDERR_FILENO);
   if (Status s = run_frames(*renderer.value(), frames, progress); !s) return cmd.fail(s.error());

@@ -97,16 +97,15 @@ struct ReplayGl {  // context first: the renderers' GL objects die before it
   std::vector<std::unique_ptr<Renderer>> switched;  // scenes a button switched to, in order
 };
 
+// A renderer of `scene` with a fresh view of it (the first scene's, or a button's switch).
 Result<std::unique_ptr<Renderer>> make_renderer(const ReplayArgs& a, const Scene& scene, int frames) {
+  auto view = make_view(scene, ViewFlags{a.show_probe, a.show_path, a.show_device});
+  if (!view) return view.error();
   RendererOptions options;
   options.expected_frames = frames;  // a short replay skips a tile bake it would not repay
   options.incremental = !a.no_incremental;
-  auto renderer = open_renderer(scene, options);
-  if (!renderer) return renderer.error();
-  renderer.value()->set_show_probe(a.show_probe);
-  renderer.value()->set_show_device(a.show_device);
-  renderer.value()->set_show_path(a.show_path);
-  return std::move(renderer.value());
+  options.view = view.value();
+  return open_renderer(scene, options);
 }
 
 Result<ReplayGl> open_renderer(const ReplayArgs& a, const Scene& scene, int frames) {

@@ -141,18 +141,15 @@ Status handle_keys(Session& s, int w, int h) {
   else if (in.key_presses > 0) s.ui->hide_help();
   in.toggle_help = false;
   s.frame_keys = std::exchange(in.key_presses, 0);
-  if (in.toggle_probe) s.tune->renderer().set_show_probe(!s.tune->renderer().show_probe());
-  in.toggle_probe = false;
-  if (in.toggle_device) s.tune->renderer().set_show_device(!s.tune->renderer().show_device());
-  in.toggle_device = false;
+  ViewFlags& show = s.tune->view().show;
+  if (std::exchange(in.toggle_probe, false)) show.probe = !show.probe;
+  if (std::exchange(in.toggle_device, false)) show.device = !show.device;
   if (in.add_charge || in.remove_charge) edit_live_charges(s, in.add_charge);
   if (std::exchange(in.back, false)) go_back(s);
   if (std::exchange(in.home, false)) view_home(s);
   in.add_charge = in.remove_charge = false;
   turn_fourd_surfaces(s, in.turn4);
-  Camera cam = s.tune->renderer().camera();
-  apply_orbit_zoom(in, cam);
-  s.tune->renderer().set_camera(cam);
+  apply_orbit_zoom(in, s.tune->view().camera);  // after the turn: its rebuild keeps the camera
   return save_screenshots(s, w, h);
 }
 
@@ -199,17 +196,13 @@ std::uint64_t switch_scene(const RunArgs& a, Session& s) {
   const Scene& current = s.tune->renderer().scene();
   scene->render.width = current.render.width;  // the window keeps its size
   scene->render.height = current.render.height;
-  RendererOptions options;
-  options.bake_slice_ms = 40.0;
-  options.incremental = !a.no_incremental;
-  auto tune = TuneSession::open({path, {}, options, cli::switch_allow_paths(a.scene)}, std::move(scene.value()));
+  // A fresh view of the new scene, with the command line's flags (window_tune_source).
+  auto tune = TuneSession::open(window_tune_source(a, path, {}, cli::switch_allow_paths(a.scene)), std::move(scene.value()));
   if (!tune) return stay(tune.error());
   if (back) s.came_from.pop_back();
   else s.came_from.push_back(s.tune->scene_path());
   s.tune = std::move(tune.value());
   s.haptic_edits.clear();
-  s.tune->renderer().set_show_probe(a.show_probe);
-  s.tune->renderer().set_show_device(a.show_device);
   s.axes = pointer_plane(s.tune->renderer());
   fit_height_to_buttons(s, haptic.value());
   auto felt = std::make_shared<const world::HapticScene>(std::move(haptic.value()));

@@ -214,19 +214,27 @@ std::optional<glm::dvec3> place_hand(Session& s, std::shared_ptr<const world::Ha
   return s.glfw_device->read(0.0).position_mm;
 }
 
+// The Gabor tile bakes between frames, a band of ~40 ms each (about one 512^2 frame with the
+// per-pixel sum on llvmpipe: frames come at half rate and the tile is ready in about twice its
+// whole bake), so the first frame comes at once; until then the per-pixel sum is drawn.
+constexpr double kWindowBakeSliceMs = 40.0;
+
+TuneSource window_tune_source(const RunArgs& a, std::string scene_path, std::vector<std::string> sets,
+                              std::vector<std::string> allow_paths) {
+  TuneSource source{std::move(scene_path), std::move(sets), {}, std::move(allow_paths), {}};
+  source.renderer.bake_slice_ms = kWindowBakeSliceMs;
+  source.renderer.incremental = !a.no_incremental;
+  source.show = ViewFlags{a.show_probe, false, a.show_device};  // probe, path, device
+  return source;
+}
+
 // The scene is loaded once, before the window: its render.size is the window's size.
 Status open_session(const RunArgs& a, Scene scene, Session& s) {
   gl::ContextDesc desc{gl::Backend::kGlfw, scene.render.width, scene.render.height, "pseudoshadow", true, {}};
   auto ctx = gl::create_context(desc);
   if (!ctx) return ctx.error();
   s.ctx = std::move(ctx.value());
-  // The Gabor tile bakes between frames, a band of ~40 ms each (about one 512^2 frame with the
-  // per-pixel sum on llvmpipe: frames come at half rate and the tile is ready in about twice
-  // its whole bake), so the first frame comes at once; until then the per-pixel sum is drawn.
-  RendererOptions options;
-  options.bake_slice_ms = 40.0;
-  options.incremental = !a.no_incremental;
-  auto tune = TuneSession::open({a.scene.path, a.scene.lines(), options, a.scene.allow_paths}, std::move(scene));
+  auto tune = TuneSession::open(window_tune_source(a, a.scene.path, a.scene.lines(), a.scene.allow_paths), std::move(scene));
   if (!tune) return tune.error();
   s.tune = std::move(tune.value());
   s.axes = pointer_plane(s.tune->renderer());  // fixed at start so the mapping stays put
@@ -251,22 +259,20 @@ Status open_session(const RunArgs& a, Scene scene, Session& s) {
   install_window_input(s.ctx->window(), s.input);
   s.ui = std::make_unique<WindowUi>(s.ctx->window());  // after: chains to our callbacks
   if (a.panel) s.ui->panel().toggle();
-  s.tune->renderer().set_show_probe(a.show_probe);
-  s.tune->renderer().set_show_device(a.show_device);
   return ok_status();
 }
 
 std::string screenshot_state(const TuneSession& tune) {
-  const Renderer& r = tune.renderer();
+  const View& v = tune.view();
   std::map<std::string, std::string> state = tune.edits();
-  state["camera.position"] = cli::override_value(r.camera().position);
-  state["camera.target"] = cli::override_value(r.camera().target);
-  state["camera.up"] = cli::override_value(r.camera().up);
+  state["camera.position"] = cli::override_value(v.camera.position);
+  state["camera.target"] = cli::override_value(v.camera.target);
+  state["camera.up"] = cli::override_value(v.camera.up);
   // A rolling view turned the light with the camera (FrameInput::view).
-  if (r.view_rotation() != glm::dmat3(1.0)) state["light.direction"] = cli::override_value(r.light().direction);
+  if (v.pose.rotation != glm::dmat3(1.0)) state["light.direction"] = cli::override_value(v.light.direction);
   // The frame was drawn before its displacement moved the probe.
-  state["probe.position"] = cli::override_value(r.probe().position - r.stats().displacement);
-  state["probe.velocity"] = cli::override_value(r.probe().velocity);
+  state["probe.position"] = cli::override_value(v.probe.position - tune.renderer().stats().displacement);
+  state["probe.velocity"] = cli::override_value(v.probe.velocity);
   return format_overrides(state, cli::scene_display_name(tune.scene_path()));
 }
 
@@ -301,7 +307,7 @@ Status draw_overlays(const RunArgs& a, Session& s, const HapticState& st, std::u
   // view), not the scene file's: each label stays on its plate while the view moves (Field's
   // label had stayed where the plate started).
   const Scene& sc = s.tune->renderer().scene();
-  const auto buttons = project_buttons(sc, s.tune->renderer().camera(),
+  const auto buttons = project_buttons(sc, s.tune->view().camera,
                                        static_cast<double>(sc.render.width) / sc.render.height,
                                        static_cast<float>(w), static_cast<float>(h));
   UiFrameReport report = s.ui->draw(s.readouts, shadow.value(), *s.tune, now_s, buttons);

@@ -80,6 +80,10 @@ struct Session {  // everything the window loop touches, grouped by owner thread
 };
 
 // run_frame.cpp: the device, the session's opening and what is drawn over each frame.
+// The window's tuning session for `scene` (from `scene_path` with the `sets`): its renderer's
+// options and its first view's flags, the same at the start and after a button's scene switch.
+TuneSource window_tune_source(const RunArgs& a, std::string scene_path, std::vector<std::string> sets,
+                              std::vector<std::string> allow_paths);
 Status open_session(const RunArgs& a, Scene scene, Session& s);
 // The hand must be able to push every button of the scene past its travel (see run_frame.cpp).
 void fit_height_to_buttons(Session& s, const world::HapticScene& scene);

@@ -159,7 +159,7 @@ int run_sweep(const cli::Command& cmd, const TuneArgs& a) {
 }
 
 int run_console_mode(const cli::Command& cmd, const TuneArgs& a, Scene scene) {
-  auto session = TuneSession::open({a.scene.path, a.scene.lines(), {}, a.scene.allow_paths}, std::move(scene));
+  auto session = TuneSession::open({a.scene.path, a.scene.lines(), {}, a.scene.allow_paths, {}}, std::move(scene));
   if (!session) return cmd.fail(session.error());
   const ConsoleResult r = run_console(*session.value(), std::cin, std::cout, std::cerr);
   return r.errors == 0 ? 0 : 1;

@@ -16,12 +16,13 @@ Status drive_frame(Renderer& renderer, HapticLoop& loop, std::uint64_t frame, Ha
   sources.coupling_n_per_mm = loop.params().forces.coupling_n_per_mm;
   sources.charges = loop.live_charges().read();
   const FrameInput input = haptic_frame_input(renderer, state, sources);
-  step_deformation(renderer, input, state.time_s);
+  View& view = renderer.view();  // the session's (RendererOptions::view)
+  step_deformation(view.deformables.get(), view.probe, input, state.time_s);
   const glm::dvec3 shown = drawn_probe(renderer, input);
   const auto drawn = renderer.render(input);
   if (!drawn) return drawn.error();
   // The camera this frame drew with, as the workspace sees it: the rolling manifold's centre.
-  loop.view_axes().publish({true, world::view_axes_of(renderer.workspace_camera())});
+  loop.view_axes().publish({true, world::view_axes_of(view.workspace_camera())});
   const FrameStats& st = drawn.value();
   // The render thread is the only writer of surface(), so reading back its own last value is safe.
   const SurfaceModel model = update_surface_model(loop.surface().read(), st.reference_normal, shown,
@@ -41,7 +42,7 @@ PointerView pointer_view(const Renderer& renderer, const PlaneAxes& plane, glm::
   PointerView v;
   // The pointer moves the hand in the device's workspace: through the camera as it was before
   // any [navigation] moved or rolling turned the view (the haptic loop maps the hand itself).
-  v.camera = renderer.workspace_camera();
+  v.camera = renderer.view().workspace_camera();
   v.aspect = static_cast<double>(sc.render.width) / sc.render.height;
   v.window_size = window_size.x > 0.0 && window_size.y > 0.0 ? window_size : glm::dvec2(sc.render.width, sc.render.height);
   v.plane = plane;
