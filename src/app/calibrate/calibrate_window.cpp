@@ -121,10 +121,12 @@ const char* question_for(calibrate::CurveKind kind) {
 }
 
 // The trial on screen, `now` seconds after it first showed: both stimuli drawn and presented.
-Status show_trial(LiveWindow& win, const calibrate::Calibration& cal, const Pair& pair, double now, const char* question) {
+Status show_trial(LiveWindow& win, const calibrate::Calibration& cal, const Pair& pair, double now,
+                  const char* question) {
   const calibrate::CurveKind kind = cal.spec().kind;
   const calibrate::Trial& t = cal.current();
-  const double left = t.comparison_left ? t.comparison : t.reference, right = t.comparison_left ? t.reference : t.comparison;
+  const double left = t.comparison_left ? t.comparison : t.reference;
+  const double right = t.comparison_left ? t.reference : t.comparison;
   if (auto f = pair.left->render(placed_probe(kind, left, now)); !f) return f.error();
   if (auto f = pair.right->render(placed_probe(kind, right, now)); !f) return f.error();
   present(win, &pair, question, progress_text(cal));

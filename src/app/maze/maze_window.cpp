@@ -66,8 +66,10 @@ Status open_device(const DeviceSpec& device, const maze::SessionOptions& o, Wind
   if (Status s = w.live->open_device(device, params); !s) return s;
   // The hand starts where the probe starts: its point on the floor under the probe's start.
   // A resumed session: where the probe waits, in the hall of the last room left.
-  if (GlfwInputDevice* m = w.input())
-    m->place(on_plane(floor_plane(*w.renderer), o.resume ? maze::resume_place(o.desc, *o.resume) : w.renderer->probe().position));
+  if (GlfwInputDevice* m = w.input()) {
+    const glm::dvec3 start = o.resume ? maze::resume_place(o.desc, *o.resume) : w.renderer->probe().position;
+    m->place(on_plane(floor_plane(*w.renderer), start));
+  }
   return ok_status();
 }
 

@@ -21,11 +21,14 @@ namespace {
 // listen() needs no GLFW call and a destroyed window's late events reach `ignore_`.
 WindowListener& listener_of(GLFWwindow* w) { return **static_cast<WindowListener**>(glfwGetWindowUserPointer(w)); }
 
-void on_key(GLFWwindow* w, int key, int /*scancode*/, int action, int mods) { listener_of(w).on_key(key, action, mods); }
+void on_key(GLFWwindow* w, int key, int /*scancode*/, int action, int mods) {
+  listener_of(w).on_key(key, action, mods);
+}
 void on_char(GLFWwindow* w, unsigned int codepoint) { listener_of(w).on_char(codepoint); }
 
 void on_scroll(GLFWwindow* w, double /*dx*/, double dy) {
-  const bool shift = glfwGetKey(w, GLFW_KEY_LEFT_SHIFT) == GLFW_PRESS || glfwGetKey(w, GLFW_KEY_RIGHT_SHIFT) == GLFW_PRESS;
+  const bool shift =
+      glfwGetKey(w, GLFW_KEY_LEFT_SHIFT) == GLFW_PRESS || glfwGetKey(w, GLFW_KEY_RIGHT_SHIFT) == GLFW_PRESS;
   listener_of(w).on_scroll(dy, shift);
 }
 
@@ -115,8 +118,8 @@ void LiveWindow::draw_frame_image(const Renderer& renderer, const UiRect& dst) {
   const float u = static_cast<float>(renderer.scene().render.width) / static_cast<float>(tw);
   const float v = static_cast<float>(renderer.scene().render.height) / static_cast<float>(th);
   // GL's first row is the bottom one: v runs from the image's top (v) down to 0.
-  ImGui::GetBackgroundDrawList()->AddImage(reinterpret_cast<ImTextureID>(static_cast<std::intptr_t>(color.id())),
-                                           ImVec2(dst.x0, dst.y0), ImVec2(dst.x1, dst.y1), ImVec2(0.f, v), ImVec2(u, 0.f));
+  const auto id = reinterpret_cast<ImTextureID>(static_cast<std::intptr_t>(color.id()));
+  ImGui::GetBackgroundDrawList()->AddImage(id, ImVec2(dst.x0, dst.y0), ImVec2(dst.x1, dst.y1), ImVec2(0.f, v), ImVec2(u, 0.f));
 }
 
 void LiveWindow::end_frame() {
