@@ -38,7 +38,7 @@ class ImGuiFrames {
   }
 };
 
-// The maze's instructions at the maze window's place and scale (maze_frame.cpp) and calibrate's
+// The maze's instructions at the maze window's place and scale (maze_overlay.cpp) and calibrate's
 // question with its progress line: inside the window with the margin, at 512 x 512 and 1280 x
 // 800. Without wrapping the instructions' longest line at scale 1.3 is ~700 px wide: the first
 // check fails then.

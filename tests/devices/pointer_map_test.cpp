@@ -201,6 +201,37 @@ TEST(WindowInputTest, PlainScrollMovesTheHeightShiftScrollZooms) {
   EXPECT_EQ(in.scroll_zoom, 2.0);
 }
 
+// The window's events as its LiveWindow delivers them (app/window/window_listener.h), no window.
+TEST(WindowInputTest, TheRightButtonDragsTheOrbitOtherButtonsDoNot) {
+  WindowInput in;
+  in.on_cursor(10.0, 10.0);
+  in.on_mouse_button(GLFW_MOUSE_BUTTON_LEFT, GLFW_PRESS, 10.0, 10.0);  // the probe's, not the camera's
+  in.on_cursor(30.0, 10.0);
+  EXPECT_EQ(in.orbit_dx, 0.0);
+  in.on_mouse_button(GLFW_MOUSE_BUTTON_RIGHT, GLFW_PRESS, 30.0, 10.0);
+  in.on_cursor(35.0, 2.0);
+  in.on_mouse_button(GLFW_MOUSE_BUTTON_RIGHT, GLFW_RELEASE, 35.0, 2.0);
+  in.on_cursor(90.0, 90.0);  // released: no more orbit
+  EXPECT_EQ(in.orbit_dx, 5.0);
+  EXPECT_EQ(in.orbit_dy, -8.0);
+}
+
+TEST(WindowInputTest, ThePointerOrFocusComingBackIsRegainedOnce) {
+  WindowInput in;
+  in.on_enter(true);  // already inside: nothing regained
+  EXPECT_FALSE(in.regained);
+  in.on_enter(false);
+  EXPECT_FALSE(in.pointer_inside);
+  in.on_enter(true);
+  EXPECT_TRUE(in.regained && in.pointer_inside);
+  in.regained = false;  // the frame took it
+  in.on_focus(false);
+  in.on_focus(true);
+  EXPECT_TRUE(in.regained && in.focused);
+  in.on_char('?');
+  EXPECT_TRUE(in.toggle_help);
+}
+
 TEST(PointerLogTest, ErrorsNameTheFileAndLineAndTheFields) {
   auto r = parse_pointer_log("# pointer\n0 10 20 1.5 0\n0.5 30 40\n", "move.ptr");
   ASSERT_FALSE(r.ok());

@@ -4,21 +4,15 @@
 #include <GLFW/glfw3.h>
 #include <imgui.h>
 
-#include <backends/imgui_impl_glfw.h>
-#include <backends/imgui_impl_opengl3.h>
-
-#include "app/window/imgui_scope.h"
-#include "app/window/text_box.h"
-
 #include <algorithm>
 #include <cmath>
-#include <cstdint>
 #include <cstdio>
 #include <memory>
 #include <string>
 
+#include "app/window/live_window.h"
 #include "core/file_io.h"
-#include "gl/context.h"
+#include "gl/gl.h"
 #include "render/renderer.h"
 
 namespace ps {
@@ -61,17 +55,21 @@ Scene stimulus_scene(const Scene& from, const Material& m) {
 }
 
 
-// The arrow presses since the last frame, from GLFW's key callback: a frame takes ~0.1 s on
+// The arrow presses since the last frame, from the window's key events: a frame takes ~0.1 s on
 // llvmpipe, longer than a quick key press, so polling the key state would miss answers.
-struct Answers {
+struct Answers final : WindowListener {
   std::vector<bool> left;  // in the order pressed
   bool quit = false;       // Esc or Q
-  static void on_key(GLFWwindow* win, int key, int /*scancode*/, int action, int /*mods*/) {
+  void on_key(int key, int action, int /*mods*/) override {
     if (action != GLFW_PRESS) return;
-    Answers& a = *static_cast<Answers*>(glfwGetWindowUserPointer(win));
-    if (key == GLFW_KEY_ESCAPE || key == GLFW_KEY_Q) a.quit = true;
-    if (key == GLFW_KEY_LEFT || key == GLFW_KEY_RIGHT) a.left.push_back(key == GLFW_KEY_LEFT);
+    if (key == GLFW_KEY_ESCAPE || key == GLFW_KEY_Q) quit = true;
+    if (key == GLFW_KEY_LEFT || key == GLFW_KEY_RIGHT) left.push_back(key == GLFW_KEY_LEFT);
   }
+};
+
+// The two stimuli's renderers, left and right: each draws one side of the window.
+struct Pair {
+  std::unique_ptr<Renderer> left, right;
 };
 
 // The probe of one stimulus `t_s` seconds into the trial: over the plane at the distance, or
@@ -89,43 +87,24 @@ FrameInput placed_probe(calibrate::CurveKind kind, double x, double t_s) {
   return in;
 }
 
-// Both stimuli into one RGBA8 image, left then right, bottom row first (GL's order).
-Status draw_pair(Renderer& left, Renderer& right, const FrameInput (&input)[2], std::vector<std::uint8_t>& rgba) {
-  rgba.assign(static_cast<std::size_t>(2 * kSide) * kSide * 4, 255);
-  for (int side = 0; side < 2; ++side) {
-    Renderer& r = side == 0 ? left : right;
-    if (auto f = r.render(input[side]); !f) return f.error();
-    const Image img = r.read_color();  // top row first
-    for (int y = 0; y < kSide; ++y)
-      for (int x = 0; x < kSide; ++x)
-        for (int c = 0; c < 3; ++c)
-          rgba[(static_cast<std::size_t>(kSide - 1 - y) * 2 * kSide + side * kSide + x) * 4 + c] =
-              static_cast<std::uint8_t>(std::lround(255.0f * img.at(x, y, c)));
-  }
-  return ok_status();
-}
-
-// One frame: the pair of stimuli across the window (the texture's first row is the bottom one,
-// so v is flipped; none: a blank between trials, or the first frame while the stimuli are
-// prepared) and the question and the progress above it.
-void present(GLFWwindow* win, const gl::Texture* pair, const char* question, const std::string& progress) {
-  int fw = 0, fh = 0;
-  glfwGetFramebufferSize(win, &fw, &fh);
+// One frame: the pair's last frames side by side, each straight from its renderer's colour
+// target (none: a blank between trials, or the first frame while the stimuli are prepared),
+// and the question and the progress above them.
+void present(LiveWindow& win, const Pair* pair, const char* question, const std::string& progress) {
+  const glm::ivec2 fb = win.framebuffer_size();
   glBindFramebuffer(GL_FRAMEBUFFER, 0);
-  glViewport(0, 0, fw, fh);
+  glViewport(0, 0, fb.x, fb.y);
   glClearColor(0.0f, 0.0f, 0.0f, 1.0f);
   glClear(GL_COLOR_BUFFER_BIT);
-  ImGui_ImplOpenGL3_NewFrame();
-  ImGui_ImplGlfw_NewFrame();
-  ImGui::NewFrame();
-  if (pair)
-    ImGui::GetBackgroundDrawList()->AddImage(reinterpret_cast<ImTextureID>(static_cast<std::intptr_t>(pair->id())),
-                                             ImVec2(0, 0), ImGui::GetIO().DisplaySize, ImVec2(0, 1), ImVec2(1, 0));
+  win.begin_frame();
+  if (pair) {
+    const ImVec2 d = ImGui::GetIO().DisplaySize;
+    win.draw_frame_image(*pair->left, UiRect{0.f, 0.f, 0.5f * d.x, d.y});
+    win.draw_frame_image(*pair->right, UiRect{0.5f * d.x, 0.f, d.x, d.y});
+  }
   draw_text_box("question", ImVec2(10, 10),
                 std::string(question) + "  Left / Right arrow.  Esc stops (every answer is kept).\n" + progress, 1.0f);
-  ImGui::Render();
-  ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
-  glfwSwapBuffers(win);
+  win.end_frame();
 }
 
 // "trial 37 of about 230; staircases done: 1 of 4".
@@ -142,36 +121,31 @@ const char* question_for(calibrate::CurveKind kind) {
 }
 
 // The trial on screen, `now` seconds after it first showed: both stimuli drawn and presented.
-Status show_trial(GLFWwindow* win, const calibrate::Calibration& cal, Renderer& left, Renderer& right, double now,
-                  gl::Texture& pair, std::vector<std::uint8_t>& rgba, const char* question) {
+Status show_trial(LiveWindow& win, const calibrate::Calibration& cal, const Pair& pair, double now,
+                  const char* question) {
   const calibrate::CurveKind kind = cal.spec().kind;
   const calibrate::Trial& t = cal.current();
-  const FrameInput input[2] = {placed_probe(kind, t.comparison_left ? t.comparison : t.reference, now),
-                               placed_probe(kind, t.comparison_left ? t.reference : t.comparison, now)};
-  if (Status st = draw_pair(left, right, input, rgba); !st) return st;
-  glTextureSubImage2D(pair.id(), 0, 0, 0, 2 * kSide, kSide, GL_RGBA, GL_UNSIGNED_BYTE, rgba.data());
+  const double left = t.comparison_left ? t.comparison : t.reference;
+  const double right = t.comparison_left ? t.reference : t.comparison;
+  if (auto f = pair.left->render(placed_probe(kind, left, now)); !f) return f.error();
+  if (auto f = pair.right->render(placed_probe(kind, right, now)); !f) return f.error();
   present(win, &pair, question, progress_text(cal));
   return ok_status();
 }
 
 // The trials, one after another with a blank between, until the staircases finish or the
 // person quits; each answer is logged at once.
-Status run_trials(GLFWwindow* win, calibrate::Calibration& cal, const CalibrateWindowParams& p, Renderer& left,
-                  Renderer& right) {
-  gl::Texture pair = gl::make_texture_2d(2 * kSide, kSide, GL_RGBA8);
+Status run_trials(LiveWindow& win, calibrate::Calibration& cal, const CalibrateWindowParams& p, const Pair& pair) {
   Answers answers;
-  glfwSetWindowUserPointer(win, &answers);
-  glfwSetKeyCallback(win, &Answers::on_key);  // before ImGui, which chains to it
-  ImGuiScope imgui(win);
-  std::vector<std::uint8_t> rgba;
+  win.listen(answers);
   const char* question = question_for(cal.spec().kind);
   // The first frame says what is coming while the first stimuli are prepared (the first tile
   // bakes: seconds on a software renderer).
   present(win, nullptr, question, progress_text(cal) + "  (preparing the stimuli...)");
   double trial_start = glfwGetTime(), blank_until = 0.0;
   std::size_t shown = static_cast<std::size_t>(-1);  // the last trial drawn (index), none yet
-  while (!cal.done() && !glfwWindowShouldClose(win)) {
-    glfwPollEvents();
+  while (!cal.done() && !win.should_close()) {
+    win.poll_events();
     if (answers.quit || (p.stop && p.stop())) break;
     if (glfwGetTime() < blank_until) {  // a blank between trials: the next one is seen to be new
       answers.left.clear();             // a press now would answer a trial not yet shown
@@ -192,7 +166,7 @@ Status run_trials(GLFWwindow* win, calibrate::Calibration& cal, const CalibrateW
       blank_until = glfwGetTime() + kBlankS;
       continue;
     }
-    if (Status st = show_trial(win, cal, left, right, glfwGetTime() - trial_start, pair, rgba, question); !st) return st;
+    if (Status st = show_trial(win, cal, pair, glfwGetTime() - trial_start, question); !st) return st;
     shown = cal.trials().size();
   }
   return ok_status();
@@ -201,19 +175,16 @@ Status run_trials(GLFWwindow* win, calibrate::Calibration& cal, const CalibrateW
 }  // namespace
 
 Status run_calibrate_window(calibrate::Calibration& cal, const CalibrateWindowParams& p) {
-  gl::ContextDesc desc;
-  desc.backend = gl::Backend::kGlfw;
-  desc.window_width = 2 * kSide;
-  desc.window_height = kSide;
-  desc.window_title = "pseudoshadow calibrate";
-  auto ctx = gl::create_context(desc);
-  if (!ctx) return ctx.error();
+  auto win = LiveWindow::open({2 * kSide, kSide, "pseudoshadow calibrate"});
+  if (!win) return win.error();
   const Scene s = stimulus_scene(p.scene, p.material);
-  auto left = Renderer::create(s, {});
-  if (!left) return left.error();
-  auto right = Renderer::create(s, {});
-  if (!right) return right.error();
-  return run_trials(ctx.value()->window(), cal, p, *left.value(), *right.value());
+  Pair pair;
+  for (std::unique_ptr<Renderer>* side : {&pair.left, &pair.right}) {
+    auto r = Renderer::create(s, {});
+    if (!r) return r.error();
+    *side = std::move(r.value());
+  }
+  return run_trials(*win.value(), cal, p, pair);
 }
 
 }  // namespace ps

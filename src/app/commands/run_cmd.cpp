@@ -2,9 +2,6 @@
 // gamepad), rendering through the same Renderer as headless, blit to the window, readouts, help
 // and parameter panel over it (app/window/hud.h), a short summary in the title. Haptic thread:
 // HapticLoop at 1 kHz. They meet only in the loop's two Snapshots.
-#define GLFW_INCLUDE_NONE
-#include <GLFW/glfw3.h>
-
 #include <chrono>
 #include <cstdio>
 #include <thread>
@@ -51,8 +48,10 @@ constexpr const char* kDescription =
     "Opens a window and lets you move the probe over the scene with a device; the haptic loop\n"
     "runs at 1 kHz on its own thread. Works under Xvfb (xvfb-run -a pseudoshadow run ...).";
 
-void check_device(const std::string& d) {
-  if (auto parsed = parse_device_spec(d); !parsed) throw cli::UsageError("--device: " + parsed.error().message);
+DeviceSpec parsed_device(const std::string& d) {
+  auto parsed = parse_device_spec(d);
+  if (!parsed) throw cli::UsageError("--device: " + parsed.error().message);
+  return parsed.value();
 }
 
 // What `run` writes besides the window (and its sounds, which go with the event log).
@@ -78,7 +77,7 @@ void declare(cli::Command& cmd, RunArgs& a) {
   cli::add_scene_options(app, a.scene);
   cli::add_probe_options(app, a.scene);
   cli::add_image_options(app, a.scene);
-  app.add_option_function<std::string>("--device", [&a](const std::string& v) { check_device(v); a.device = v; },
+  app.add_option_function<std::string>("--device", [&a](const std::string& v) { a.device = parsed_device(v); },
                                        "mouse (default) | gamepad | trajectory:FILE | playback:FILE | pointer:FILE "
                                        "(lines 'time_s x_px y_px height_mm buttons', mapped like the mouse)")
       ->type_name("D");
@@ -154,15 +153,15 @@ Status draw_switched_scene(Session& s, std::uint64_t serial, std::uint64_t frame
 
 // `stop`: a signal asked to stop (app/cli/stop_signal.h): the loop ends as Esc ends it.
 Status window_loop(const RunArgs& a, Session& s, const cli::StopSignals& stop) {
-  GLFWwindow* win = s.ctx->window();
+  LiveWindow& win = *s.window;
   const auto t0 = std::chrono::steady_clock::now();
   double last_flush = 0.0, last_watch = 0.0;
   for (std::uint64_t frame = 0;; ++frame) {
     const auto f0 = std::chrono::steady_clock::now();
     const double now_s = std::chrono::duration<double>(f0 - t0).count();
     s.now_s = now_s;
-    glfwPollEvents();
-    if (glfwWindowShouldClose(win) || s.input.quit || stop.requested()) break;
+    win.poll_events();
+    if (win.should_close() || s.input.quit || stop.requested()) break;
     if ((a.frames > 0 && static_cast<long long>(frame) >= a.frames) || (a.quit_after_s > 0 && now_s >= a.quit_after_s)) break;
     poll_device(s, s.loop->state().read().time_s, !s.ui->panel().wants_input());
     HapticState st;
@@ -174,17 +173,17 @@ Status window_loop(const RunArgs& a, Session& s, const cli::StopSignals& stop) {
     if (Status r = s.events->pump(s.loop->events()); !r) return r;
     if (!s.pending_scene.empty())
       if (Status r = draw_switched_scene(s, switch_scene(a, s), frame, st); !r) return r;
-    int w = 0, h = 0;
-    glfwGetFramebufferSize(win, &w, &h);
-    present_to_default_framebuffer(s.tune->renderer(), w, h);
-    if (Status r = handle_keys(s, w, h); !r) return r;  // screenshots read GL_BACK before the swap
+    const glm::ivec2 fb = win.framebuffer_size();
+    present_to_default_framebuffer(s.tune->renderer(), fb.x, fb.y);
+    if (Status r = handle_keys(s, fb.x, fb.y); !r) return r;  // screenshots read GL_BACK before the swap
+    win.begin_frame();
     if (Status r = draw_overlays(a, s, st, frame, now_s); !r) return r;  // after the screenshots
     if (s.tune->edits() != s.haptic_edits) {  // a panel edit may change the feel (a body's time scale)
       s.haptic_edits = s.tune->edits();
       reload_haptic_scene(s);
     }
     s.input.keys_captured = s.ui->panel().wants_keys();
-    glfwSwapBuffers(win);
+    win.end_frame();
     count_frame(s, st, f0);
     if (s.recorder && now_s - last_flush >= 1.0) {  // a crash loses at most the last second
       if (Status r = s.recorder->flush(); !r) return r;
@@ -198,14 +197,14 @@ Status window_loop(const RunArgs& a, Session& s, const cli::StopSignals& stop) {
 Status write_reports(const RunArgs& a, const Session& s) {
   if (!a.stats_path.empty()) {
     const Renderer& r = s.tune->renderer();
-    const std::string json = stats_json(r.stats(), gl::backend_name(s.ctx->backend()), s.ctx->egl_device(), s.ctx->renderer(),
+    const gl::Context& ctx = s.window->context();
+    const std::string json = stats_json(r.stats(), gl::backend_name(ctx.backend()), ctx.egl_device(), ctx.renderer(),
                                         static_cast<int>(s.frame_ms.count()));
     if (Status st = write_file_atomic(a.stats_path, json); !st) return st;
   }
   if (!a.ui_report.empty()) {
-    int w = 0, h = 0;
-    glfwGetWindowSize(s.ctx->window(), &w, &h);
-    if (Status st = write_file_atomic(a.ui_report, ui_report_json(w, h, s.ui_frames)); !st) return st;
+    const glm::ivec2 size = s.window->window_size();
+    if (Status st = write_file_atomic(a.ui_report, ui_report_json(size.x, size.y, s.ui_frames)); !st) return st;
   }
   return ok_status();
 }

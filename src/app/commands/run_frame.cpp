@@ -19,19 +19,9 @@ namespace ps::run_live {
 namespace {
 
 Status open_device(const RunArgs& a, Session& s) {
-  auto spec = parse_device_spec(a.device);  // checked by --device's parser
-  if (!spec) return make_error("--device: " + spec.error().message);
-  if (!spec->is_log()) {
-    auto kind = spec->kind == DeviceKind::kMouse ? GlfwInputDevice::Kind::kMouse : GlfwInputDevice::Kind::kGamepad;
-    auto d = std::make_unique<GlfwInputDevice>(kind, s.ctx->window(), GlfwInputParams{});
-    s.glfw_device = d.get();
-    s.device = std::move(d);
-    return ok_status();
-  }
-  auto d = open_device_log(spec.value());
-  if (!d) return make_error("--device: " + d.error().message);
-  s.device = std::move(d->device);
-  s.pointer_device = d->pointer;
+  if (Status st = s.window->open_device(a.device); !st) return st;
+  s.glfw_device = s.window->input();
+  s.pointer_device = s.window->pointer();
   return ok_status();
 }
 
@@ -136,8 +126,8 @@ Status log_readouts(Session& s, const HapticState& st, const ShadowMeasure& shad
   if (const DeformationStats& d = s.tune->renderer().deformation(); d.surfaces > 0) f.dent_mm = d.max_displacement_mm;
   int w = 0, h = 0;
   double x = 0.0, y = 0.0;
-  glfwGetWindowSize(s.ctx->window(), &w, &h);
-  glfwGetCursorPos(s.ctx->window(), &x, &y);
+  glfwGetWindowSize(s.window->glfw(), &w, &h);
+  glfwGetCursorPos(s.window->glfw(), &x, &y);
   if (x >= 0.0 && y >= 0.0 && x < w && y < h) f.pointer_px = glm::dvec2(x, y);
   if (shadow.core) f.shadow_px = glm::dvec2(shadow.core->first, shadow.core->second);
   return s.readouts_log.write(f);
@@ -169,7 +159,7 @@ void fit_height_to_buttons(Session& s, const world::HapticScene& scene) {
 // `view_at_rest`: the workspace is the world (a new haptic scene's view starts there).
 void poll_device(Session& s, double now_s, bool poll_glfw, bool view_at_rest) {
   int w = 0, h = 0;
-  glfwGetWindowSize(s.ctx->window(), &w, &h);
+  glfwGetWindowSize(s.window->glfw(), &w, &h);
   PointerView view = pointer_view(s.tune->renderer(), s.axes, {static_cast<double>(w), static_cast<double>(h)});
   if (s.pointer_device) s.pointer_device->set_view(view);
   if (!s.glfw_device || !poll_glfw) return;
@@ -230,10 +220,9 @@ TuneSource window_tune_source(const RunArgs& a, std::string scene_path, std::vec
 
 // The scene is loaded once, before the window: its render.size is the window's size.
 Status open_session(const RunArgs& a, Scene scene, Session& s) {
-  gl::ContextDesc desc{gl::Backend::kGlfw, scene.render.width, scene.render.height, "pseudoshadow", true, {}};
-  auto ctx = gl::create_context(desc);
-  if (!ctx) return ctx.error();
-  s.ctx = std::move(ctx.value());
+  auto window = LiveWindow::open({scene.render.width, scene.render.height, "pseudoshadow"});
+  if (!window) return window.error();
+  s.window = std::move(window.value());
   auto tune = TuneSession::open(window_tune_source(a, a.scene.path, a.scene.lines(), a.scene.allow_paths), std::move(scene));
   if (!tune) return tune.error();
   s.tune = std::move(tune.value());
@@ -245,7 +234,7 @@ Status open_session(const RunArgs& a, Scene scene, Session& s) {
   if (!haptic_scene) return haptic_scene.error();
   s.haptic_scene = std::make_shared<const world::HapticScene>(std::move(haptic_scene.value()));
   s.floor.set_scene(s.haptic_scene);  // the first sample already hovers over what is under the pointer
-  s.loop = std::make_unique<HapticLoop>(*s.device, s.clock, params, s.haptic_scene.get());
+  s.loop = std::make_unique<HapticLoop>(s.window->device(), s.clock, params, s.haptic_scene.get());
   fit_height_to_buttons(s, *s.haptic_scene);
   s.vibration = cli::open_live_vibration(a.live, s.tune->renderer().scene(), *s.loop);
   if (s.glfw_device || s.pointer_device) {  // they move over the plane: distance known from the start
@@ -256,8 +245,9 @@ Status open_session(const RunArgs& a, Scene scene, Session& s) {
     s.recorder = std::make_unique<SampleRecorder>(a.record);
     s.loop->set_recorder(s.recorder.get());
   }
-  install_window_input(s.ctx->window(), s.input);
-  s.ui = std::make_unique<WindowUi>(s.ctx->window());  // after: chains to our callbacks
+  s.window->listen(s.input);
+  s.input.pointer_inside = s.window->hovered();
+  s.ui = std::make_unique<WindowUi>();
   if (a.panel) s.ui->panel().toggle();
   return ok_status();
 }
@@ -290,7 +280,7 @@ void print_summary(const Session& s) {
 Status draw_overlays(const RunArgs& a, Session& s, const HapticState& st, std::uint64_t frame, double now_s) {
   const bool refresh = now_s - s.readouts_s >= kReadoutPeriodS;
   int w = 0, h = 0;  // ImGui's units: window coordinates, not framebuffer pixels
-  glfwGetWindowSize(s.ctx->window(), &w, &h);
+  glfwGetWindowSize(s.window->glfw(), &w, &h);
   auto shadow = measure_frame_shadow(s.tune->renderer(), w, h, refresh || s.readouts_log.is_open(), s.aov_buffers);
   if (!shadow) return shadow.error();
   // Built once a frame when it is logged, else only at a refresh (4 times a second).
@@ -300,7 +290,7 @@ Status draw_overlays(const RunArgs& a, Session& s, const HapticState& st, std::u
     if (Status r = log_readouts(s, st, shadow.value(), *now, frame); !r) return r;
   if (refresh) {
     s.readouts = std::move(*now);
-    glfwSetWindowTitle(s.ctx->window(), title_summary(s.readouts).c_str());
+    glfwSetWindowTitle(s.window->glfw(), title_summary(s.readouts).c_str());
     s.readouts_s = now_s;
   }
   // Through the camera this frame drew with (orbited, zoomed, moved by [navigation] or a rolling

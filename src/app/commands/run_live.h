@@ -15,10 +15,11 @@
 #include "app/session/run_events.h"
 #include "app/session/session.h"
 #include "app/window/hud.h"
+#include "app/window/live_window.h"
 #include "app/window/readouts_log.h"
 #include "app/window/window_input.h"
+#include "devices/device_spec.h"
 #include "devices/glfw_input.h"
-#include "gl/context.h"
 #include "haptics/loop_stats.h"
 #include "image/image.h"
 #include "tune/tune_session.h"
@@ -27,7 +28,8 @@ namespace ps::run_live {
 
 struct RunArgs {
   cli::SceneArgs scene;
-  std::string device = "mouse", record, stats_path, ui_report, readouts_log;
+  DeviceSpec device;  // --device, parsed once (default: the mouse)
+  std::string record, stats_path, ui_report, readouts_log;
   long long frames = 0, realtime = 0;
   cli::LiveLoopArgs live;  // --render-threads, --spare-cpu
   double quit_after_s = 0.0;
@@ -43,7 +45,7 @@ struct AovBuffers {
 };
 
 struct Session {  // everything the window loop touches, grouped by owner thread
-  std::unique_ptr<gl::Context> ctx;
+  std::unique_ptr<LiveWindow> window;  // context, ImGui, input callbacks, the device
   std::unique_ptr<TuneSession> tune;  // owns the Renderer; swaps in a new one on reload
   std::unique_ptr<WindowUi> ui;       // readouts, help, parameter panel (one ImGui frame)
   HudReadouts readouts;               // shown until the next refresh
@@ -51,9 +53,8 @@ struct Session {  // everything the window loop touches, grouped by owner thread
   std::vector<UiFrameReport> ui_frames;  // --ui-report
   std::string shown_error;            // last reload error printed to the console
   std::uint32_t last_charge_id = 0;   // live charges: ids are never reused
-  std::unique_ptr<Device> device;
-  GlfwInputDevice* glfw_device = nullptr;  // == device.get() for mouse/gamepad
-  PointerLogDevice* pointer_device = nullptr;  // == device.get() for pointer:FILE
+  GlfwInputDevice* glfw_device = nullptr;  // == window->input(): mouse/gamepad
+  PointerLogDevice* pointer_device = nullptr;  // == window->pointer(): pointer:FILE
   SteadyClock clock;
   std::shared_ptr<const world::HapticScene> haptic_scene;  // before the loop: it must outlive the haptic thread
   FreeHeight floor;                   // the surface under the pointer: the mouse's height counts from it

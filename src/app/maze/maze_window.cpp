@@ -3,9 +3,8 @@
 #include <cstdio>
 #include <filesystem>
 
-#include "app/maze/maze_frame.h"
+#include "app/maze/maze_overlay.h"
 #include "app/session/session.h"
-#include "app/window/imgui_scope.h"
 #include "devices/sample_log.h"
 #include "maze/maze_screen.h"
 #include "prepare/prepare.h"
@@ -44,7 +43,7 @@ struct LivePass {
   // Why the pass ended (session_end's reason unless the tracker ended it: criterion, max_passes).
   maze::EndReason reason = maze::EndReason::kQuit;
   LivePass(Window& w, const maze::SessionOptions& o, const maze::SessionCore& core, const cli::LiveLoopArgs& live)
-      : loop(*w.device, clock, o.haptics, core.haptic().get()),
+      : loop(w.live->device(), clock, o.haptics, core.haptic().get()),
         vib(cli::open_live_vibration(live, core.scene().scene, loop)),
         recorder(o.record_path) {
     loop.set_recorder(&recorder);
@@ -60,36 +59,25 @@ Status use_scene(Window& w, const Scene& scene) {
   return ok_status();
 }
 
+// The mouse (relative, once captured) or gamepad at the window, or a log played in it.
 Status open_device(const DeviceSpec& device, const maze::SessionOptions& o, Window& w) {
-  if (!device.is_log()) {
-    GlfwInputParams params;
-    params.mm_per_count = kMmPerCount;
-    const bool mouse = device.kind == DeviceKind::kMouse;
-    auto m = std::make_unique<GlfwInputDevice>(mouse ? GlfwInputDevice::Kind::kMouse : GlfwInputDevice::Kind::kGamepad,
-                                               w.ctx->window(), params);
-    // The hand starts where the probe starts: its point on the floor under the probe's start.
-    const PlaneAxes plane = floor_plane(*w.renderer);
-    // A resumed session: where the probe waits, in the hall of the last room left.
-    m->place(on_plane(plane, o.resume ? maze::resume_place(o.desc, *o.resume) : w.renderer->probe().position));
-    w.input = m.get();
-    w.device = std::move(m);
-    return ok_status();
+  GlfwInputParams params;
+  params.mm_per_count = kMmPerCount;
+  if (Status s = w.live->open_device(device, params); !s) return s;
+  // The hand starts where the probe starts: its point on the floor under the probe's start.
+  // A resumed session: where the probe waits, in the hall of the last room left.
+  if (GlfwInputDevice* m = w.input()) {
+    const glm::dvec3 start = o.resume ? maze::resume_place(o.desc, *o.resume) : w.renderer->probe().position;
+    m->place(on_plane(floor_plane(*w.renderer), start));
   }
-  auto d = open_device_log(device);
-  if (!d) return make_error("--device: " + d.error().message);
-  w.device = std::move(d->device);
   return ok_status();
 }
 
 Status open_window(const maze::SessionOptions& o, const DeviceSpec& device, const maze::SessionCore& core, Window& w) {
-  gl::ContextDesc desc;
-  desc.backend = gl::Backend::kGlfw;
-  desc.window_width = desc.window_height = o.desc.image_size;
-  desc.window_title = "pseudoshadow maze - " + o.info.participant;
-  auto ctx = gl::create_context(desc);
-  if (!ctx) return ctx.error();
-  w.ctx = std::move(ctx.value());
-  w.events.install(w.ctx->window());  // before ImGui (it chains to them) and before the grab
+  auto live = LiveWindow::open({o.desc.image_size, o.desc.image_size, "pseudoshadow maze - " + o.info.participant});
+  if (!live) return live.error();
+  w.live = std::move(live.value());
+  w.live->listen(w.events);
   if (Status s = use_scene(w, core.scene().scene); !s) return s;
   w.out_dir = std::filesystem::path(o.log_path).parent_path().string();
   return open_device(device, o, w);
@@ -105,7 +93,7 @@ Status open_window(const maze::SessionOptions& o, const DeviceSpec& device, cons
 Status apply_clutch(const MazeWindowParams& p, Window& w, maze::SessionCore& core, const HapticState& st,
                     double& quiet_until_s, bool& clutched) {
   clutched = false;
-  if (!w.input || p.clutch_mm <= 0.0 || !st.have_sample || st.time_s < quiet_until_s) return ok_status();
+  if (!w.input() || p.clutch_mm <= 0.0 || !st.have_sample || st.time_s < quiet_until_s) return ok_status();
   const PlaneAxes plane = floor_plane(*w.renderer);
   const glm::dvec3 hand = on_plane(plane, st.device_mm), probe = on_plane(plane, st.proxy_mm);
   const double overshoot = glm::length(hand - probe);
@@ -115,7 +103,7 @@ Status apply_clutch(const MazeWindowParams& p, Window& w, maze::SessionCore& cor
   // filtered hand, by a wall, is an overshoot to undo.
   const double held = glm::length(on_plane(plane, st.position_mm) - probe);
   if (overshoot <= p.clutch_mm || held <= p.clutch_mm) return ok_status();
-  w.input->place(probe);
+  w.input()->place(probe);
   clutched = true;
   // The haptic thread reads the placed hand within a tick; 50 ms keeps a frame drawn from a
   // state older than that from clutching twice.
@@ -127,11 +115,11 @@ Status apply_clutch(const MazeWindowParams& p, Window& w, maze::SessionCore& cor
 // relative origin; then the device's poll.
 bool take_input(Window& w, const HapticState& st) {
   Events& e = w.events;
-  if (e.quit || glfwWindowShouldClose(w.ctx->window())) return false;
-  if (w.input) {
-    if (std::exchange(e.rebase, false)) w.input->rebase();
-    w.input->add_height_steps(std::exchange(e.height_steps, 0));
-    w.input->poll(st.time_s, pointer_view(*w.renderer, floor_plane(*w.renderer)));
+  if (e.quit || w.live->should_close()) return false;
+  if (w.input()) {
+    if (std::exchange(e.rebase, false)) w.input()->rebase();
+    w.input()->add_height_steps(std::exchange(e.height_steps, 0));
+    w.input()->poll(st.time_s, pointer_view(*w.renderer, floor_plane(*w.renderer)));
   }
   return true;
 }
@@ -168,7 +156,7 @@ bool pass_over(const maze::SessionOptions& o, const Window& w, const HapticState
     return true;
   }
   if (end_at >= 0.0) return st.time_s > end_at;
-  if (w.device->duration_s() < 0.0 || st.time_s <= w.device->duration_s()) return false;
+  if (w.live->device().duration_s() < 0.0 || st.time_s <= w.live->device().duration_s()) return false;
   reason = maze::EndReason::kDeviceEnded;
   return true;
 }
@@ -184,7 +172,7 @@ Status window_loop(const maze::SessionOptions& o, const MazeWindowParams& p, maz
     return ok_status();
   };
   for (;;) {
-    glfwPollEvents();
+    w.live->poll_events();
     st = pass.loop.state().read();
     bool clutched = false;
     if (Status s = apply_clutch(p, w, core, st, clutch_quiet_until, clutched); !s) return s;
@@ -202,7 +190,7 @@ Status window_loop(const maze::SessionOptions& o, const MazeWindowParams& p, maz
     if (pass_over(o, w, st, end_at, pass.reason)) return ok_status();
     if (Status s = follow_scene(core, w, pass); !s) return s;
     ov.label = core.label();
-    ov.show_hand = p.show_hand && w.input;
+    ov.show_hand = p.show_hand && w.input();
     if (Status s = draw(w, o.desc, st, ov, std::exchange(w.events.screenshot, false)); !s) return s;
     if (st.time_s - last_flush >= 1.0) {  // the device stream, about once a second
       last_flush = st.time_s;
@@ -245,8 +233,8 @@ Result<bool> wait_for_start(const maze::SessionOptions& o, Window& w, const std:
   ov.instructions = text;
   const HapticState still;  // no sample: the scene's own camera and probe at the start
   for (;;) {
-    glfwWaitEventsTimeout(0.05);  // nothing moves: redraw at 20 Hz, not as fast as it can
-    if (w.events.quit || glfwWindowShouldClose(w.ctx->window()) || stop_asked(o)) return false;
+    w.live->wait_events(0.05);  // nothing moves: redraw at 20 Hz, not as fast as it can
+    if (w.events.quit || w.live->should_close() || stop_asked(o)) return false;
     if (std::exchange(w.events.start, false)) break;
     if (Status s = draw(w, o.desc, still, ov, false); !s) return s.error();
   }
@@ -261,7 +249,7 @@ Result<bool> show_instructions(const maze::SessionOptions& o, Window& w) {
   Result<bool> go = wait_for_start(o, w, o.desc.instructions);
   // The mouse relative (captured): the camera follows the probe, so an absolute pointer would
   // chase it. The gamepad's stick is relative already. The grab is a new relative origin.
-  if (go && go.value() && w.input && w.input->kind() == GlfwInputDevice::Kind::kMouse) w.input->toggle_capture();
+  if (go && go.value() && w.input() && w.input()->kind() == GlfwInputDevice::Kind::kMouse) w.input()->toggle_capture();
   return go;
 }
 
@@ -282,9 +270,9 @@ Result<bool> run_practice(const maze::SessionOptions& o, const MazeWindowParams&
   // Its one pass done (max_passes) or ended early with Space goes on; Esc or a signal stops.
   if (result->reason == maze::EndReason::kQuit || result->reason == maze::EndReason::kTerminated) return false;
   if (Status s = use_scene(w, scored.scene().scene); !s) return s.error();
-  w.input->place(on_plane(floor_plane(*w.renderer), w.renderer->scene().probe.position));
+  w.input()->place(on_plane(floor_plane(*w.renderer), w.renderer->scene().probe.position));
   Result<bool> go = wait_for_start(o, w, kPracticeOver);
-  w.input->rebase();  // the mouse moved while the screen waited: a new relative origin
+  w.input()->rebase();  // the mouse moved while the screen waited: a new relative origin
   return go;
 }
 
@@ -301,19 +289,16 @@ int run_maze_window(const cli::Command& cmd, const maze::SessionOptions& o, cons
   if (Status s = open_window(o, device, core, w); !s) return cmd.fail(s.error());
   LivePass pass(w, o, core, live_args);
   Status looped = ok_status();
-  {
-    ImGuiScope imgui(w.ctx->window());
-    // A participant's session starts from the instructions; a log device played in the window
-    // has no one to read them.
-    auto go = w.input ? show_instructions(o, w) : Result<bool>(true);
-    if (go && go.value() && w.input && params.practice) go = run_practice(o, params, w, live_args, core);
-    if (!go) looped = go.error();
-    if (go && go.value()) {
-      if (w.input) w.input->poll(o.haptics.start_time_s, pointer_view(*w.renderer, floor_plane(*w.renderer)));
-      looped = run_pass(o, params, core, w, pass, false);
-    } else if (stop_asked(o)) {
-      pass.reason = maze::EndReason::kTerminated;  // before the start, or in the practice
-    }
+  // A participant's session starts from the instructions; a log device played in the window
+  // has no one to read them.
+  auto go = w.input() ? show_instructions(o, w) : Result<bool>(true);
+  if (go && go.value() && w.input() && params.practice) go = run_practice(o, params, w, live_args, core);
+  if (!go) looped = go.error();
+  if (go && go.value()) {
+    if (w.input()) w.input()->poll(o.haptics.start_time_s, pointer_view(*w.renderer, floor_plane(*w.renderer)));
+    looped = run_pass(o, params, core, w, pass, false);
+  } else if (stop_asked(o)) {
+    pass.reason = maze::EndReason::kTerminated;  // before the start, or in the practice
   }
   auto result = end_pass(o, core, pass, looped, false);
   if (!result) return cmd.fail(result.error());

@@ -1,10 +1,6 @@
 #include "app/window/hud.h"
 
-#define GLFW_INCLUDE_NONE
-#include <GLFW/glfw3.h>
 #include <imgui.h>
-#include <backends/imgui_impl_glfw.h>
-#include <backends/imgui_impl_opengl3.h>
 
 #include <algorithm>
 #include <cmath>
@@ -13,7 +9,6 @@
 
 #include "app/window/run_keys.h"
 #include "fourd/fourd_mesh.h"
-#include "gl/gl.h"
 
 namespace ps {
 
@@ -171,21 +166,6 @@ std::string title_summary(const HudReadouts& r) {
   return head + probe_distance_text(r.probe);
 }
 
-WindowUi::WindowUi(GLFWwindow* window) {
-  IMGUI_CHECKVERSION();
-  ImGui::CreateContext();
-  ImGui::GetIO().IniFilename = nullptr;  // no imgui.ini next to the user's files
-  ImGui::StyleColorsDark();
-  ImGui_ImplGlfw_InitForOpenGL(window, true);
-  ImGui_ImplOpenGL3_Init("#version 450 core");
-}
-
-WindowUi::~WindowUi() {
-  ImGui_ImplOpenGL3_Shutdown();
-  ImGui_ImplGlfw_Shutdown();
-  ImGui::DestroyContext();
-}
-
 UiLayoutInput WindowUi::layout_input(const ShadowMeasure& shadow, const std::vector<ButtonOverlay>& buttons,
                                      const std::string& hud_text, const std::string& help,
                                      const std::string& help_narrow) const {
@@ -217,9 +197,6 @@ UiLayoutInput WindowUi::layout_input(const ShadowMeasure& shadow, const std::vec
 UiFrameReport WindowUi::draw(const HudReadouts& readouts, const ShadowMeasure& shadow, TuneSession& session,
                              double now_s, const std::vector<ButtonOverlay>& buttons) {
   if (help_timeout_ && now_s >= kHelpSeconds) hide_help();
-  ImGui_ImplOpenGL3_NewFrame();
-  ImGui_ImplGlfw_NewFrame();
-  ImGui::NewFrame();
   std::string hud_text;
   for (const std::string& l : hud_lines(readouts)) hud_text += l + "\n";
   hud_text.pop_back();
@@ -243,9 +220,6 @@ UiFrameReport WindowUi::draw(const HudReadouts& readouts, const ShadowMeasure& s
     draw_depth_legend(*report.hud, hud_text);
   }
   if (layout.help) report.help = text_box("##help", *layout.help, layout.help_narrow ? help_narrow : help, 0.8f);
-  ImGui::Render();
-  glBindFramebuffer(GL_FRAMEBUFFER, 0);
-  ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
   return report;
 }
 

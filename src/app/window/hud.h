@@ -7,11 +7,9 @@
 // Where each goes is decided by app/window/ui_layout.h from the shadow's bounding box measured on the
 // frame's own pixels. The readouts and help take no input (clicks go through to the probe).
 //
-// WindowUi owns the ImGui context. ImGui backends: Debian's imgui_impl_glfw.cpp and
-// imgui_impl_opengl3.cpp, the latter built with IMGUI_IMPL_OPENGL_LOADER_CUSTOM on our GL
-// pointer table (gl/gl.h) instead of its own dlopen("libGL") loader: one loader for the whole
-// process. It saves and restores the GL state it touches, so the renderer's passes are
-// unaffected. Drawn after screenshots (S) are read back, so they never appear in them.
+// WindowUi draws inside the window's ImGui frame (LiveWindow::begin_frame .. end_frame,
+// app/window/live_window.h, which owns the ImGui context and backends). Drawn after screenshots
+// (S) are read back, so they never appear in them.
 #pragma once
 
 #include <array>
@@ -25,8 +23,6 @@
 #include "app/window/readout_state.h"
 #include "app/window/tune_panel.h"
 #include "app/window/ui_layout.h"
-
-struct GLFWwindow;
 
 namespace ps {
 
@@ -65,13 +61,6 @@ constexpr double kHelpSeconds = 15.0;
 
 class WindowUi {
  public:
-  // Creates the ImGui context and installs ImGui's GLFW callbacks, chained to the ones
-  // already installed (window input): call after install_window_input().
-  explicit WindowUi(GLFWwindow* window);
-  ~WindowUi();
-  WindowUi(const WindowUi&) = delete;
-  WindowUi& operator=(const WindowUi&) = delete;
-
   TunePanel& panel() { return panel_; }
   const TunePanel& panel() const { return panel_; }
   // Either one means the person has taken over: the start's timeout no longer applies.
@@ -79,8 +68,8 @@ class WindowUi {
   void hide_help() { help_ = false; help_timeout_ = false; }
   bool help_shown() const { return help_; }
 
-  // One ImGui frame over the default framebuffer's back buffer: lays the boxes out around
-  // `shadow`, draws them and applies panel edits to `session`. `now_s`: session time, for the
+  // Inside the window's ImGui frame (LiveWindow::begin_frame .. end_frame): lays the boxes out
+  // around `shadow`, draws them and applies panel edits to `session`. `now_s`: session time, for the
   // help's timeout. Returns the rectangles drawn (window pixels).
   // `buttons`: the scene's buttons on screen (app/window/button_overlay.h): each gets its label, and
   // the readouts and help keep off them.

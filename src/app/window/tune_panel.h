@@ -10,8 +10,8 @@
 // above its slider, wrapped if the strip is narrow, so no name is ever cut; units are in the
 // slider's value text ("0.5 mm") and in the curves' tooltips (the axis value under the mouse).
 //
-// The ImGui context and frame belong to WindowUi (app/window/hud.h), which draws the panel in the
-// same frame as the readouts and the help.
+// The ImGui context and frame belong to the LiveWindow (app/window/live_window.h); WindowUi
+// (app/window/hud.h) draws the panel in that frame with the readouts and the help.
 #pragma once
 
 #include <map>

@@ -12,55 +12,39 @@
 
 namespace ps {
 
-namespace {
+void WindowInput::on_key(int key, int action, int mods) { handle_key(*this, key, action, mods); }
 
-WindowInput& input_of(GLFWwindow* w) { return *static_cast<WindowInput*>(glfwGetWindowUserPointer(w)); }
-
-void on_key(GLFWwindow* w, int key, int, int action, int mods) { handle_key(input_of(w), key, action, mods); }
-
-// '?' by the character it types, whatever the keyboard layout puts it on.
-void on_char(GLFWwindow* w, unsigned int codepoint) {
-  WindowInput& in = input_of(w);
-  if (codepoint == '?' && !in.keys_captured) in.toggle_help = true;
+void WindowInput::on_char(unsigned int codepoint) {
+  if (codepoint == '?' && !keys_captured) toggle_help = true;
 }
 
-void on_scroll(GLFWwindow* w, double, double dy) {
-  const bool shift = glfwGetKey(w, GLFW_KEY_LEFT_SHIFT) == GLFW_PRESS ||
-                     glfwGetKey(w, GLFW_KEY_RIGHT_SHIFT) == GLFW_PRESS;
-  handle_scroll(input_of(w), dy, shift);
-}
+void WindowInput::on_scroll(double dy, bool shift) { handle_scroll(*this, dy, shift); }
 
-void on_button(GLFWwindow* w, int button, int action, int) {
+void WindowInput::on_mouse_button(int button, int action, double x, double y) {
   if (button != GLFW_MOUSE_BUTTON_RIGHT) return;
-  WindowInput& in = input_of(w);
-  in.dragging = action == GLFW_PRESS;
-  glfwGetCursorPos(w, &in.last_x, &in.last_y);
+  dragging = action == GLFW_PRESS;
+  last_x = x;
+  last_y = y;
 }
 
-void on_cursor(GLFWwindow* w, double x, double y) {
-  WindowInput& in = input_of(w);
-  if (in.dragging) {
-    in.orbit_dx += x - in.last_x;
-    in.orbit_dy += y - in.last_y;
+void WindowInput::on_cursor(double x, double y) {
+  if (dragging) {
+    orbit_dx += x - last_x;
+    orbit_dy += y - last_y;
   }
-  in.last_x = x;
-  in.last_y = y;
+  last_x = x;
+  last_y = y;
 }
 
-// Left or unfocused: a mouse parked past a [navigation] wall must not move the view on.
-void on_enter(GLFWwindow* w, int entered) {
-  WindowInput& in = input_of(w);
-  in.regained = in.regained || (entered && !in.pointer_inside);
-  in.pointer_inside = entered != 0;
+void WindowInput::on_enter(bool entered) {
+  regained = regained || (entered && !pointer_inside);
+  pointer_inside = entered;
 }
 
-void on_focus(GLFWwindow* w, int focused) {
-  WindowInput& in = input_of(w);
-  in.regained = in.regained || (focused && !in.focused);
-  in.focused = focused != 0;
+void WindowInput::on_focus(bool now_focused) {
+  regained = regained || (now_focused && !focused);
+  focused = now_focused;
 }
-
-}  // namespace
 
 void handle_key(WindowInput& in, int key, int action, int mods) {
   if (action != GLFW_PRESS && action != GLFW_REPEAT) return;
@@ -105,18 +89,6 @@ void handle_scroll(WindowInput& in, double dy, bool shift) {
   // Plain scroll is the height: pressing the probe into the surface is what a newcomer reaches
   // for under the hand; zoom is set once and left, so it takes the modifier.
   (shift ? in.scroll_zoom : in.scroll_height) += dy;
-}
-
-void install_window_input(GLFWwindow* window, WindowInput& input) {
-  glfwSetWindowUserPointer(window, &input);
-  glfwSetKeyCallback(window, on_key);
-  glfwSetCharCallback(window, on_char);
-  glfwSetScrollCallback(window, on_scroll);
-  glfwSetMouseButtonCallback(window, on_button);
-  glfwSetCursorPosCallback(window, on_cursor);
-  glfwSetCursorEnterCallback(window, on_enter);  // before WindowUi: ImGui chains to these
-  glfwSetWindowFocusCallback(window, on_focus);
-  input.pointer_inside = glfwGetWindowAttrib(window, GLFW_HOVERED) == GLFW_TRUE;
 }
 
 void apply_orbit_zoom(WindowInput& in, Camera& camera) {

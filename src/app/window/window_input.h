@@ -1,22 +1,21 @@
 // Window-side input of `run`: camera orbit/zoom, the probe's height steps and the app keys,
-// collected by GLFW callbacks on the main thread (the probe itself is moved by the
-// mouse/gamepad Device). handle_key / handle_scroll are the callbacks' bodies without a window,
-// so the key handling is testable headless.
+// collected from its LiveWindow's events on the main thread (app/window/live_window.h; the probe
+// itself is moved by the mouse/gamepad Device). handle_key / handle_scroll are the events'
+// bodies as free functions, so the key handling is testable headless.
 #pragma once
 
 #include <string>
 #include <utility>
 #include <vector>
 
+#include "app/window/window_listener.h"
 #include "scene/scene.h"
-
-struct GLFWwindow;
 
 namespace ps {
 
 struct Scene;
 
-struct WindowInput {
+struct WindowInput final : WindowListener {
   double scroll_zoom = 0.0;     // accumulated Shift+scroll steps (camera zoom)
   double scroll_height = 0.0;   // accumulated scroll steps (probe height; up = raise)
   int height_steps = 0;         // PageUp/Up minus PageDown/Down presses, key repeats included
@@ -42,6 +41,16 @@ struct WindowInput {
   // 1 ... 6 (Shift: the other way): steps of a 4D turn of the scene's fourd surfaces in the xy,
   // xz, xw, yz, yw, zw plane (docs/fourd.md), not handled yet
   int turn4[6] = {0, 0, 0, 0, 0, 0};
+
+  // What `run`'s window hears (app/window/window_listener.h).
+  void on_key(int key, int action, int mods) override;
+  void on_char(unsigned int codepoint) override;  // '?' by the character, whatever the layout
+  void on_scroll(double dy, bool shift) override;
+  void on_mouse_button(int button, int action, double x, double y) override;  // the right one drags
+  void on_cursor(double x, double y) override;
+  // Left or unfocused: a mouse parked past a [navigation] wall must not move the view on.
+  void on_enter(bool entered) override;
+  void on_focus(bool now_focused) override;
 };
 
 // The scene edits (--set KEY, VALUE) that turn every fourd surface of `scene` by
@@ -55,9 +64,6 @@ std::vector<std::pair<std::string, std::string>> fourd_turn_edits(const Scene& s
 void handle_key(WindowInput& input, int key, int action, int mods);
 // A scroll event: plain scroll moves the probe's height, Shift+scroll zooms the camera.
 void handle_scroll(WindowInput& input, double dy, bool shift);
-
-// Installs the callbacks; `input` must outlive the window.
-void install_window_input(GLFWwindow* window, WindowInput& input);
 
 // Applies and clears the accumulated orbit (0.005 rad per pixel) and zoom (10 % per step)
 // around camera.target, with +Z up.

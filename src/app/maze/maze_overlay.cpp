@@ -1,14 +1,12 @@
-#include "app/maze/maze_frame.h"
+#include "app/maze/maze_overlay.h"
 
+#define GLFW_INCLUDE_NONE
+#include <GLFW/glfw3.h>
 #include <imgui.h>
-
-#include <backends/imgui_impl_glfw.h>
-#include <backends/imgui_impl_opengl3.h>
 
 #include <cstdio>
 
 #include "app/session/session.h"
-#include "app/window/text_box.h"
 #include "frame/haptic_frame.h"
 #include "maze/maze_screen.h"
 #include "render/present.h"
@@ -23,9 +21,7 @@ void draw_hand(const Window& w, const HapticState& st) {
   const PlaneAxes plane = floor_plane(*w.renderer);
   const glm::dvec3 hand = on_plane(plane, st.device_mm);
   if (glm::length(hand - on_plane(plane, st.proxy_mm)) < 0.5) return;  // under the probe: nothing to show
-  int ww = 0, wh = 0;
-  glfwGetWindowSize(w.ctx->window(), &ww, &wh);
-  const PointerView view = pointer_view(*w.renderer, plane, glm::dvec2(ww, wh));
+  const PointerView view = pointer_view(*w.renderer, plane, glm::dvec2(w.live->window_size()));
   const glm::dvec2 c = project_to_window(view, hand);
   const double r = glm::length(project_to_window(view, hand + view.probe_radius_mm * plane.t) - c);
   ImGui::GetBackgroundDrawList()->AddCircle(ImVec2(static_cast<float>(c.x), static_cast<float>(c.y)),
@@ -33,6 +29,16 @@ void draw_hand(const Window& w, const HapticState& st) {
 }
 
 }  // namespace
+
+void Events::on_key(int key, int action, int /*mods*/) {
+  if (action == GLFW_RELEASE) return;
+  if (key == GLFW_KEY_PAGE_UP || key == GLFW_KEY_UP) ++height_steps;
+  if (key == GLFW_KEY_PAGE_DOWN || key == GLFW_KEY_DOWN) --height_steps;
+  if (action != GLFW_PRESS) return;  // a held S or Esc acts once
+  if (key == GLFW_KEY_S) screenshot = true;
+  if (key == GLFW_KEY_ESCAPE || key == GLFW_KEY_Q) quit = true;
+  if (key == GLFW_KEY_SPACE || key == GLFW_KEY_ENTER || key == GLFW_KEY_KP_ENTER) start = true;
+}
 
 // The floor under the camera target: the plane the captured mouse moves the probe over.
 PlaneAxes floor_plane(const Renderer& r) {
@@ -62,20 +68,15 @@ Status draw(Window& w, const maze::MazeDesc& desc, const HapticState& st, const 
     std::snprintf(name, sizeof name, "/screenshot_%04d.png", w.screenshots++);
     if (Status s = write_image(w.out_dir + name, im); !s) return s;
   }
-  int fw = 0, fh = 0;
-  glfwGetFramebufferSize(w.ctx->window(), &fw, &fh);
-  present_to_default_framebuffer(*w.renderer, fw, fh);
-  ImGui_ImplOpenGL3_NewFrame();
-  ImGui_ImplGlfw_NewFrame();
-  ImGui::NewFrame();
+  const glm::ivec2 fb = w.live->framebuffer_size();
+  present_to_default_framebuffer(*w.renderer, fb.x, fb.y);
+  w.live->begin_frame();
   if (ov.show_hand && st.have_sample) draw_hand(w, st);
   if (!ov.instructions.empty()) draw_text_box("##instructions", ImVec2(30, 60), ov.instructions, 1.3f);
   if (!ov.label.empty()) draw_text_box("##label", ImVec2(10, 10), ov.label, 2.0f);
   if (st.time_s < ov.score_until) draw_text_box("##score", ImVec2(40, 80), ov.score, 1.6f);
-  if (ov.done) draw_text_box("##done", ImVec2(40, fh - 60.0f), "The session is over.", 1.6f);
-  ImGui::Render();
-  ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
-  glfwSwapBuffers(w.ctx->window());
+  if (ov.done) draw_text_box("##done", ImVec2(40, static_cast<float>(fb.y) - 60.0f), "The session is over.", 1.6f);
+  w.live->end_frame();
   return ok_status();
 }
 
