@@ -177,6 +177,7 @@ ForceResult compute_proxy_force(const HapticsParams& p, world::GodObject& god, c
   const world::ProxyStep step = god.move(goal);
   out.proxy_mm = step.proxy_mm;
   out.facets_visited = step.facets_visited;
+  out.catching_up = step.short_of_goal;
   f += medium_drag_n(god.scene(), step.proxy_mm, v_mm_s, out.medium);
   const double r = glm::length(step.proxy_mm - x_mm);
   if (step.in_contact && r > 0.0) {

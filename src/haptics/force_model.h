@@ -62,6 +62,7 @@ struct ForceResult {
   double penetration_mm = 0.0;
   bool in_contact = false;
   bool sticking = false;
+  bool catching_up = false;         // the proxy free but short of the goal (world::ProxyStep::short_of_goal)
   int surface = -1;                 // haptic scene: the surface touched (Scene::surfaces index)
   glm::dvec3 contact_normal{0.0, 0.0, 1.0};  // in contact: unit, out of the surface (contact point -> proxy)
   int medium = -1;                  // haptic scene: the penetrable volume holding the proxy centre

@@ -294,6 +294,7 @@ void HapticLoop::take_proxy_step(const ForceResult& f, double t) {
   local_.force_n = f.force_n;
   local_.penetration_mm = f.penetration_mm;
   local_.in_contact = f.in_contact;
+  local_.proxy_catching_up = f.catching_up;
   if (!stages_->proxy->sheet(local_.sheet_surface, local_.sheet_w4)) local_.sheet_surface = -1;
 }
 

@@ -69,6 +69,9 @@ struct HapticState {
   int sheet_surface = -1;
   double sheet_w4 = 0.0;
   bool have_sample = false, in_contact = false;
+  // The proxy touches nothing but has not reached the hand yet (a jump larger than one tick's
+  // approach, ForceResult::catching_up): its distance from the hand is no surface's hold.
+  bool proxy_catching_up = false;
   double rate_hz = 0.0;              // over the last second
   double jitter_p99_us = 0.0;        // |period - nominal|, p99 over the last second
   SanitizerCounts rejected;

@@ -182,6 +182,7 @@ ProxyStep GodObject::move(const glm::dvec3& goal_mm) {
   proxy_ = p;
   out.proxy_mm = p;
   out.planes = count;
+  out.short_of_goal = !touched.hit && glm::length(goal_mm - p) > 1e-6;
   settle(out, goal_mm, p, touched);
   return out;
 }

@@ -39,6 +39,11 @@ struct ProxyStep {
   glm::dvec3 contact_normal{0.0, 0.0, 1.0};  // unit, contact point -> proxy centre
   glm::dvec3 shaded_normal{0.0, 0.0, 1.0};   // force-shading normal there, on the proxy's side
   int planes = 0;                    // constraint planes used (0..3)
+  // Touching nothing, yet short of the goal: the hand moved farther in one tick than the
+  // approach's steps reach (each step is the gap to the nearest surface, so a sphere gliding 1 mm
+  // over a floor covers ~max_iterations mm a tick; a mouse read after a stalled frame can jump
+  // 100 mm). The proxy catches up over the next ticks; nothing holds it.
+  bool short_of_goal = false;
   std::uint32_t facets_visited = 0;  // mesh triangles examined over the whole update
 };
 

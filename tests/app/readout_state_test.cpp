@@ -46,6 +46,14 @@ TEST(ProbeReadoutTest, AProxyHeldAwayFromTheHandIsTouching) {
   in.hand_mm = {0.0, 0.0, -2.0};
   in.field_offset_mm = {0.0, 0.0, 2.0};
   EXPECT_EQ(probe_readout(in).state, ProbeState::kHovering);
+  // A proxy catching up with a hand that jumped 14 mm in one tick (world::ProxyStep::
+  // short_of_goal) is held by nothing: hovering, not "touching, pressed 14 mm" with no force.
+  in.field_offset_mm = {0.0, 0.0, 0.0};
+  in.hand_mm = {14.0, 0.0, 0.0};
+  in.catching_up = true;
+  EXPECT_EQ(probe_readout(in).state, ProbeState::kHovering);
+  in.catching_up = false;
+  EXPECT_EQ(probe_readout(in).state, ProbeState::kTouching);
 }
 
 // Contact decides first: never "out of reach" with contact (flat_torus's front sheet, issue 27),

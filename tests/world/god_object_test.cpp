@@ -90,6 +90,36 @@ TEST(GodObjectTest, NeverPassesThroughABoxAndRestsOnItsFace) {
   EXPECT_NEAR(st.contact_normal.z, 1.0, 1e-6);
 }
 
+// A hand that jumps 200 mm along a floor in one tick (a mouse read after a stalled frame) while
+// the proxy glides 1 mm over it: each approach step is the 1 mm gap to the floor, so one move
+// covers about max_iterations mm (24). The proxy touches nothing, stops short of the goal and
+// says so (short_of_goal: what the readouts need to tell a lagging proxy from a held one); later
+// moves catch up and then it is at the goal, touching nothing, with nothing short.
+TEST(GodObjectTest, AJumpLongerThanOneMoveIsCaughtUpWithoutContact) {
+  Surface s = test::analytic(SurfaceType::kBox, {0.0, 0.0, -20.0});
+  s.box_size_mm = {1000.0, 1000.0, 40.0};
+  auto scene = HapticScene::build(test::scene_with(8.0, {s}));
+  ASSERT_TRUE(scene);
+  GodObject god(*scene);
+  god.reset({0.0, 0.0, 9.0});
+  const glm::dvec3 goal{200.0, 0.0, 9.0};
+  ProxyStep st = god.move(goal);
+  EXPECT_FALSE(st.in_contact);
+  EXPECT_TRUE(st.short_of_goal);
+  EXPECT_GT(glm::length(goal - st.proxy_mm), 100.0) << "more than one move's reach at a 1 mm gap";
+  EXPECT_NEAR(st.proxy_mm.z, 9.0, 1e-9) << "gliding, never lower";
+  int moves = 1;
+  while (st.short_of_goal && moves < 50) st = god.move(goal), ++moves;
+  EXPECT_FALSE(st.short_of_goal);
+  EXPECT_FALSE(st.in_contact);
+  EXPECT_NEAR(glm::length(goal - st.proxy_mm), 0.0, 1e-9);
+  EXPECT_LT(moves, 20);
+  // Pressed into the floor it is held, not short: in contact.
+  st = god.move({200.0, 0.0, 6.0});
+  EXPECT_TRUE(st.in_contact);
+  EXPECT_FALSE(st.short_of_goal);
+}
+
 // Brute-force clearance of a mesh surface (every triangle), independent of the BVH.
 std::function<double(const glm::dvec3&)> mesh_clearance(const HapticScene& scene) {
   return [&scene](const glm::dvec3& p) { return scene.meshes().closest_brute_force(p).distance_mm; };

@@ -85,7 +85,7 @@ HudReadouts readouts(const Session& s, const HapticState& st, const ShadowMeasur
   const bool on_button = st.button_pressed >= 0 && st.button_depth_mm > 0.0;
   const double coupling = s.loop->params().forces.coupling_n_per_mm;
   r.probe = probe_readout({shadow.min_distance_mm, st.in_contact || on_button, st.position_mm, st.proxy_mm,
-                           st.field_force_n / std::max(coupling, 1e-9)});
+                           st.field_force_n / std::max(coupling, 1e-9), st.proxy_catching_up});
   r.speed_mm_s = glm::length(st.velocity_mm_s);
   r.penetration_mm = s.tune->renderer().stats().max_penetration_mm;
   r.force_n = glm::length(st.force_n);

@@ -11,7 +11,8 @@ ProbeReadout probe_readout(const ProbeReadoutInput& in) {
   // default 0.5 N/mm coupling, below any force a person feels, above the filter's rounding.
   constexpr double kHeldMm = 0.05;
   ProbeReadout r;
-  if (in.in_contact || glm::length(in.hand_mm + in.field_offset_mm - in.proxy_mm) > kHeldMm) {
+  const bool held = !in.catching_up && glm::length(in.hand_mm + in.field_offset_mm - in.proxy_mm) > kHeldMm;
+  if (in.in_contact || held) {
     r.state = ProbeState::kTouching;
     r.pressed_mm = glm::length(in.hand_mm - in.proxy_mm);
   } else if (in.distance_mm) {

@@ -26,6 +26,9 @@ struct ProbeReadoutInput {
   // Where fields, bodies and walls alone put the proxy from the hand (their force through the
   // coupling: HapticState::field_force_n / k): that offset is no surface's hold.
   glm::dvec3 field_offset_mm{0.0};
+  // The proxy is catching up with a hand that jumped (HapticState::proxy_catching_up): held by
+  // nothing, so its distance from the hand is no touch.
+  bool catching_up = false;
 };
 
 struct ProbeReadout {
