@@ -46,6 +46,6 @@ log "TSan build of the snapshot-exchange tests (${tsan})"
 configure "${tsan}" -DPS_SANITIZE=thread
 cmake --build "${tsan}" -j"${jobs}" --target snapshot_test haptics_test
 # Run the binaries directly: ctest would try to discover tests in the targets not built here.
-TSAN_OPTIONS=halt_on_error=1 "${tsan}/tests/haptics/snapshot_test"
+TSAN_OPTIONS=halt_on_error=1 "${tsan}/tests/core/snapshot_test"
 TSAN_OPTIONS=halt_on_error=1 "${tsan}/tests/haptics/haptics_test"
 log "all sanitizer runs clean"

@@ -1,7 +1,7 @@
 // How far the Gabor texture a renderer draws is from what the eye would average over each pixel
 // (docs/architecture.md, "Texture filtering"): the texture AOV of a small image against the same
 // view rendered kSuper x kSuper larger and box-filtered down. Shared by the GL test
-// (tests/pipeline/gabor_filter_gl_test.cpp) and `pseudoshadow bench --texture-filter`.
+// (tests/measure/gabor_filter_gl_test.cpp) and `pseudoshadow bench --texture-filter`.
 //
 // The texture AOV (the Gabor value in sigmas) is compared, not the colour: inside the shadow the
 // luminance is linear in it (pseudo_shadow_darkening: D = I + A s), and the AOV is that term

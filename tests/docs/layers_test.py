@@ -1,5 +1,6 @@
 #!/usr/bin/env python3
-"""docs.layers: the layer table of docs/architecture.md is the include graph of src/.
+"""docs.layers: the layer table of docs/architecture.md is the include graph of src/, and tests/
+mirrors src/ as docs/testing.md says.
 
     layers_test.py REPO_ROOT
 
@@ -49,6 +50,24 @@ def include_arrows(src, room):
                         yield os.path.relpath(path, os.path.dirname(src)), n, m.group(1)
 
 
+def mirror_problems(root, rooms):
+    """Every room of src/ has tests/ROOM or is named in docs/testing.md's "Where a room's tests
+    are." paragraph; every folder of tests/ is a room or named there."""
+    with open(os.path.join(root, "docs", "testing.md"), encoding="utf-8") as f:
+        text = f.read()
+    start = text.find("**Where a room's tests are.**")
+    if start < 0:
+        return ["docs/testing.md has no \"Where a room's tests are.\" paragraph"]
+    named = set(re.findall(r"`([a-z0-9_]+)`", text[start:text.find("\n\n", start)]))
+    tests = os.path.join(root, "tests")
+    folders = {d for d in os.listdir(tests) if os.path.isdir(os.path.join(tests, d))}
+    out = [f"src/{r}/ has no tests/{r}/ and docs/testing.md does not say where its tests are"
+           for r in rooms if r not in folders and r not in named]
+    out += [f"tests/{d}/ is no room of src/ and docs/testing.md does not name it"
+            for d in sorted(folders) if d not in rooms and d not in named]
+    return out
+
+
 def main():
     root = sys.argv[1]
     src = os.path.join(root, "src")
@@ -67,6 +86,7 @@ def main():
                 problems.append(f"{path}:{line}: includes {target}/, which the layer table does not list")
             elif rank[target] > rank[room]:
                 problems.append(f"{path}:{line}: {room} includes {target}/, a room below it in the layer table")
+    problems += mirror_problems(root, rooms)
     for p in problems:
         print(p)
     print(f"docs.layers: {len(rooms)} rooms, {arrows} includes checked, {len(problems)} problems")

@@ -3,7 +3,7 @@
 #include <limits>
 #include <numbers>
 
-#include "pipeline/scenes.h"
+#include "support/scenes.h"
 
 namespace ps::test {
 

@@ -18,7 +18,7 @@
 
 #include <gtest/gtest.h>
 
-#include "pipeline/scenes.h"
+#include "support/scenes.h"
 #include "reference/body_shadow.h"
 #include "reference/modulation.h"
 #include "scene/camera.h"

@@ -4,7 +4,7 @@
 
 #include <gtest/gtest.h>
 
-#include "pipeline/scenes.h"
+#include "support/scenes.h"
 #include "scene/camera.h"
 #include "render/plan.h"
 

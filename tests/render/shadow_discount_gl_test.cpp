@@ -16,7 +16,7 @@
 
 #include <gtest/gtest.h>
 
-#include "pipeline/scenes.h"
+#include "support/scenes.h"
 #include "reference/modulation.h"
 #include "render/renderer.h"
 #include "scene/scene_io.h"

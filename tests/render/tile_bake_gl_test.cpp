@@ -9,7 +9,7 @@
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
-#include "pipeline/scenes.h"
+#include "support/scenes.h"
 #include "render/renderer.h"
 #include "support/gl_test.h"
 

@@ -8,7 +8,7 @@
 
 #include <gtest/gtest.h>
 
-#include "pipeline/scenes.h"
+#include "support/scenes.h"
 #include "reference/gabor.h"
 #include "render/renderer.h"
 #include "support/gl_test.h"

@@ -5,7 +5,7 @@
 
 #include <gtest/gtest.h>
 
-#include "pipeline/scenes.h"
+#include "support/scenes.h"
 #include "reference/modulation.h"
 #include "reference/probe_geometry.h"
 #include "render/renderer.h"

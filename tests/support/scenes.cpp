@@ -1,4 +1,4 @@
-#include "pipeline/scenes.h"
+#include "support/scenes.h"
 
 #include <gtest/gtest.h>
 

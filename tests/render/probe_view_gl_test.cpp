@@ -10,7 +10,7 @@
 #include <gtest/gtest.h>
 
 #include "passes/probe_view.h"
-#include "pipeline/scenes.h"
+#include "support/scenes.h"
 #include "render/renderer.h"
 #include "support/gl_test.h"
 

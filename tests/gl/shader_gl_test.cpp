@@ -14,7 +14,7 @@ namespace {
 
 using ps::gl::Backend;
 
-const std::string kData = PS_SOURCE_DIR "/tests/gl_layer/data";
+const std::string kData = PS_SOURCE_DIR "/tests/gl/data";
 
 class ShaderGLTest : public ps::test::GlTest {};
 

@@ -20,7 +20,7 @@ class ShaderPreprocessTest : public ::testing::Test {
   void SetUp() override {
     const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
     dir_ = fs::temp_directory_path() /
-           ("ps_gl_layer_" + std::to_string(getpid()) + "_" + info->name());
+           ("ps_gl_" + std::to_string(getpid()) + "_" + info->name());
     fs::remove_all(dir_);
     fs::create_directories(dir_ / "lib");
   }
@@ -172,7 +172,7 @@ TEST(MapShaderLogTest, MesaAndGlslangLinesMapToFiles) {
   // Unknown source-string numbers stay numeric rather than naming a wrong file.
   EXPECT_EQ(ps::gl::map_shader_log("5:2(1): error: x\n", files), "5:2: error: x\n");
   // Mesa 22.3 reports source 0 for an error inside an included expression; the strided line
-  // number still names the include (real log of tests/gl_layer/data/broken_include.frag).
+  // number still names the include (real log of tests/gl/data/broken_include.frag).
   EXPECT_EQ(ps::gl::map_shader_log("0:100005(10): error: `undefined_thing' undeclared\n", files),
             "lib/noise.glsl:5: error: `undefined_thing' undeclared\n");
   EXPECT_EQ(ps::gl::map_shader_log("ERROR: 1:100005: 'undefined_thing' : undeclared identifier\n",

@@ -3,7 +3,7 @@
 // while the visible surface covers pixels (so the comparison can fail).
 #include <gtest/gtest.h>
 
-#include "pipeline/scenes.h"
+#include "support/scenes.h"
 #include "render/renderer.h"
 #include "support/gl_test.h"
 

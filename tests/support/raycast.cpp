@@ -1,4 +1,4 @@
-#include "pipeline/raycast.h"
+#include "support/raycast.h"
 
 #include <cmath>
 

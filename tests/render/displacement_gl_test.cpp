@@ -4,7 +4,7 @@
 
 #include <gtest/gtest.h>
 
-#include "pipeline/scenes.h"
+#include "support/scenes.h"
 #include "render/renderer.h"
 #include "support/gl_test.h"
 

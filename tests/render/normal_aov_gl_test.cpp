@@ -4,15 +4,15 @@
 //   - unit length: the reference-plane mean and the displacement assume it;
 //   - facing the viewer (n . view >= 0): a back face's normal is flipped toward the camera, so a
 //     surface seen from below pushes the probe toward the viewer, not through the surface.
-// Covered pixels come from the CPU ray-cast of the same triangles (tests/pipeline/raycast.h),
+// Covered pixels come from the CPU ray-cast of the same triangles (tests/support/raycast.h),
 // not from the AOV itself, so a pass that writes nothing fails too.
 #include <cmath>
 #include <cstdio>
 
 #include <gtest/gtest.h>
 
-#include "pipeline/raycast.h"
-#include "pipeline/scenes.h"
+#include "support/raycast.h"
+#include "support/scenes.h"
 #include "render/renderer.h"
 #include "support/gl_test.h"
 

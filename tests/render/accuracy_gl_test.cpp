@@ -1,7 +1,7 @@
 // GPU passes against the double-precision CPU reference, pixel by pixel, on four scenes: a flat
 // plane, a tilted plane, the cap of a tessellated sphere and a loaded mesh (Suzanne; a torus
 // where Debian's assimp-testmodels is absent). Ground truth per pixel comes from a CPU ray-cast
-// of the orthographic camera against the very triangles the GPU rasterises (tests/pipeline/
+// of the orthographic camera against the very triangles the GPU rasterises (tests/support/
 // raycast.h), so tessellation is shared and only float32 arithmetic separates the two.
 #include <cmath>
 #include <cstdio>
@@ -9,8 +9,8 @@
 
 #include <gtest/gtest.h>
 
-#include "pipeline/raycast.h"
-#include "pipeline/scenes.h"
+#include "support/raycast.h"
+#include "support/scenes.h"
 #include "reference/gabor.h"
 #include "reference/modulation.h"
 #include "reference/probe_geometry.h"

@@ -7,8 +7,8 @@
 
 #include <cmath>
 
-#include "pipeline/raycast.h"
-#include "pipeline/scenes.h"
+#include "support/raycast.h"
+#include "support/scenes.h"
 #include "support/gl_test.h"
 
 namespace ps {

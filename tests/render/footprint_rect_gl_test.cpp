@@ -15,7 +15,7 @@
 
 #include <gtest/gtest.h>
 
-#include "pipeline/scenes.h"
+#include "support/scenes.h"
 #include "scene/camera.h"
 #include "render/renderer.h"
 #include "scene/scene_io.h"

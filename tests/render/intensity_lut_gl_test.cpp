@@ -11,7 +11,7 @@
 
 #include <gtest/gtest.h>
 
-#include "pipeline/scenes.h"
+#include "support/scenes.h"
 #include "reference/modulation.h"
 #include "support/gl_test.h"
 
