@@ -67,13 +67,15 @@ PointerHits pointer_hits(const PointerView& view, const glm::dvec2& pointer, dou
   const PointerRay ray = pointer_ray(view, pointer);
   const std::optional<glm::dvec3> on_plane = intersect_plane(ray, view.plane);
   const std::optional<glm::dvec3> surface = view.floor ? view.floor->first_hit(ray) : std::nullopt;
-  if (!surface || !finite(*surface)) return {on_plane, on_plane};
+  if (!surface || !finite(*surface)) return {on_plane, on_plane, std::nullopt};
   const double above = glm::dot(*surface - view.plane.origin, view.plane.n);
-  if (on_plane && std::abs(above) <= kOnPlaneMm) return {on_plane, on_plane};
+  if (on_plane && std::abs(above) <= kOnPlaneMm) return {on_plane, on_plane, std::nullopt};
   const glm::dvec3 toward_eye = glm::normalize(ray.near_mm - ray.far_mm);
-  const glm::dvec3 lowered = view.floor->lowering_point(*surface, view.plane.n, view.probe_radius_mm + std::max(hover_mm, 0.0), toward_eye);
-  const glm::dvec3 over = finite(lowered) ? lowered : *surface;
-  return {over - glm::dot(over - view.plane.origin, view.plane.n) * view.plane.n, on_plane};
+  const FloorLowering lowered = view.floor->lowering_point(*surface, view.plane.n, view.probe_radius_mm + std::max(hover_mm, 0.0), toward_eye);
+  const bool moved = finite(lowered.point);
+  const glm::dvec3 over = moved ? lowered.point : *surface;
+  const std::optional<glm::dvec3> rest = moved && lowered.centre && finite(*lowered.centre) ? lowered.centre : std::nullopt;
+  return {over - glm::dot(over - view.plane.origin, view.plane.n) * view.plane.n, on_plane, rest};
 }
 
 void HeightControl::set(double mm) {
@@ -92,20 +94,30 @@ glm::dvec3 PointerMap::centre(const PointerView& view, double height_mm) const {
   // Hovering, the probe keeps h from every surface: lowered as a sphere of R + h, it rests h
   // above what it would touch (on a slope along the slope's normal, as lowering_point places it).
   // Pressing in (h < 0) goes on along n from the touching place.
+  // This reading's lowering (absolute()) is taken where it was of the same sphere.
   const double hover = std::max(height_mm, 0.0);
-  const double lift = view.floor ? view.floor->lift_mm(at, view.plane.n, view.probe_radius_mm + hover) : 0.0;
+  const double r = view.probe_radius_mm + hover;
+  double lift = 0.0;
+  if (rest_centre_ && rest_radius_mm_ == r)
+    lift = glm::dot(*rest_centre_ - at, view.plane.n) - r;
+  else if (view.floor)
+    lift = view.floor->lift_mm(at, view.plane.n, r);
   return at + (view.probe_radius_mm + (std::isfinite(lift) ? lift : 0.0) + height_mm) * view.plane.n;
 }
 
 void PointerMap::set_hit(const glm::dvec3& hit_mm) {
   if (!finite(hit_mm)) return;
+  rest_centre_.reset();
   hit_ = hit_mm;
   have_hit_ = true;
 }
 
 glm::dvec3 PointerMap::absolute(const PointerView& view, const glm::dvec2& pointer, double height_mm) {
+  rest_centre_.reset();
   if (std::isfinite(pointer.x) && std::isfinite(pointer.y) && view.window_size.x > 0.0 && view.window_size.y > 0.0)
     if (const PointerHits h = pointer_hits(view, pointer, height_mm); h.hit) {
+      rest_centre_ = h.rest_centre;
+      rest_radius_mm_ = view.probe_radius_mm + std::max(height_mm, 0.0);
       const glm::dvec3 parallax = h.on_plane ? *h.hit - *h.on_plane : glm::dvec3(0.0);
       parallax_jump_mm_ = have_hit_ ? glm::length(parallax - parallax_) : 0.0;
       parallax_ = parallax;
@@ -120,6 +132,7 @@ glm::dvec3 PointerMap::relative(const PointerView& view, const glm::dvec2& count
   glm::dvec3 right, up;
   screen_axes_on_plane(view, right, up);
   const glm::dvec3 moved = hit(view) + mm_per_count * (counts.x * right - counts.y * up);  // y down on screen
+  rest_centre_.reset();
   if (finite(moved)) {
     hit_ = moved;
     have_hit_ = true;

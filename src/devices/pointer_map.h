@@ -45,6 +45,15 @@ struct PointerRay {
 // -n over `hit_mm` (a point on the plane), first touches a surface, minus R; 0 where nothing is
 // under it. The hover height h is then counted from that surface, not from the plane, so a
 // probe hovering at h > 0 is never inside geometry (world/free_height.h).
+// SurfaceFloor::lowering_point's answer: the point to lower the probe over and, where the floor
+// lowered a sphere there to decide, where it came to rest, so one reading lowers once.
+struct FloorLowering {
+  glm::dvec3 point{0.0};  // workspace: the pointed surface point, or the place beside it
+  // Workspace: the centre of the sphere of that radius lowered over `point` until it touches (a
+  // button's pocket counts as its face, as lift_mm's); none where the floor did not lower one.
+  std::optional<glm::dvec3> centre;
+};
+
 class SurfaceFloor {
  public:
   virtual ~SurfaceFloor() = default;
@@ -56,9 +65,9 @@ class SurfaceFloor {
   // lowered along -n so that the surface point nearest to it - where its shadow's dark core lies -
   // is `surface_mm` itself: on a slope that is R sin(slope) downhill of it. The same height over
   // the plane as `surface_mm`. The default: `surface_mm` (lowered straight over it).
-  virtual glm::dvec3 lowering_point(const glm::dvec3& surface_mm, const glm::dvec3& /*n*/, double /*probe_radius_mm*/,
-                                    const glm::dvec3& /*toward_eye*/) const {
-    return surface_mm;
+  virtual FloorLowering lowering_point(const glm::dvec3& surface_mm, const glm::dvec3& /*n*/,
+                                       double /*probe_radius_mm*/, const glm::dvec3& /*toward_eye*/) const {
+    return {surface_mm, std::nullopt};
   }
 };
 
@@ -89,6 +98,9 @@ glm::dvec2 project_to_window(const PointerView& view, const glm::dvec3& p_mm);
 struct PointerHits {
   std::optional<glm::dvec3> hit;       // as above
   std::optional<glm::dvec3> on_plane;  // the ray's own point on the plane (intersect_plane)
+  // Over a surface off the plane: the probe's centre (a sphere of R + max(h, 0)) lowered over
+  // `hit` already (FloorLowering::centre); none where it is still to be lowered (lift_mm).
+  std::optional<glm::dvec3> rest_centre;
 };
 PointerHits pointer_hits(const PointerView& view, const glm::dvec2& pointer, double hover_mm = 0.0);
 inline std::optional<glm::dvec3> pointer_hit(const PointerView& view, const glm::dvec2& pointer, double hover_mm = 0.0) {
@@ -148,6 +160,11 @@ class PointerMap {
  private:
   glm::dvec3 centre(const PointerView& view, double height_mm) const;
   glm::dvec3 hit_{0.0};
+  // The last absolute() reading's lowered centre over hit_ (PointerHits::rest_centre) and the
+  // sphere's radius it was lowered with; centre() takes it for that radius instead of lowering
+  // the probe again. Any other way of moving hit_ drops it.
+  std::optional<glm::dvec3> rest_centre_;
+  double rest_radius_mm_ = 0.0;
   glm::dvec3 parallax_{0.0};  // hit_ minus the plane's own hit (0 on the plane)
   double parallax_jump_mm_ = 0.0;
   bool have_hit_ = false;

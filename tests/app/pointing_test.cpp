@@ -231,11 +231,31 @@ TEST(PointingTest, ASphereWiderThanTheQueryIsLoweredOntoTheSurface) {
   EXPECT_NEAR(floor.lift_mm({0.0, 0.0, 0.0}, {0.0, 0.0, 1.0}, 70.0), kTop, 0.02);
 }
 
-// One reading lowers the probe beside the pointed point (lowering_point) and the mapping then
-// asks how high it rests there (lift_mm): the second answer is the first one's lowering, and it
-// equals a fresh lowering over that place; over any other place the lift is lowered afresh.
-// Closed form on the dome (0.02 mm: each lowering stops within 0.01 mm of the surface).
-TEST(PointingTest, TheReadingsLoweringIsReusedOnlyOverItsOwnPlace) {
+// A floor that counts how often the mapping asks it to lower the probe (lift_mm), passing
+// every question on to a real FreeHeight.
+class CountingFloor final : public SurfaceFloor {
+ public:
+  explicit CountingFloor(const FreeHeight& floor) : floor_(floor) {}
+  double lift_mm(const glm::dvec3& hit, const glm::dvec3& n, double r) const override {
+    ++lifts;
+    return floor_.lift_mm(hit, n, r);
+  }
+  std::optional<glm::dvec3> first_hit(const PointerRay& ray) const override { return floor_.first_hit(ray); }
+  FloorLowering lowering_point(const glm::dvec3& s, const glm::dvec3& n, double r, const glm::dvec3& eye) const override {
+    return floor_.lowering_point(s, n, r, eye);
+  }
+  mutable int lifts = 0;
+
+ private:
+  const FreeHeight& floor_;
+};
+
+// One reading lowers the probe beside the pointed point (lowering_point) and hands over where
+// it came to rest: the mapping takes that rest (no second lowering, lift_mm) and it equals a
+// fresh lowering over that place; a relative move lowers afresh. Closed form on the dome
+// (0.02 mm: each lowering stops within 0.01 mm of the surface; 0.05 mm for the centre, whose
+// normal is also read 0.5 mm in front of the surface).
+TEST(PointingTest, TheReadingsLoweringComesWithItsRest) {
   const std::string dome =
       "[probe]\nradius_mm = 8.0\n[materials.m]\nlambda_min = 0.5\n"
       "[[surfaces]]\ntype = \"sphere\"\ncenter = [0.0, 0.0, -10.0]\nradius_mm = 40.0\nmaterial = \"m\"\n";
@@ -245,15 +265,28 @@ TEST(PointingTest, TheReadingsLoweringIsReusedOnlyOverItsOwnPlace) {
   const glm::dvec3 c(0.0, 0.0, -10.0), n(0.0, 0.0, 1.0);
   const glm::dvec3 normal = glm::normalize(glm::dvec3(1.0, 0.0, 1.0));
   const glm::dvec3 on_slope = c + 40.0 * normal;
-  const glm::dvec3 beside = floor.lowering_point(on_slope, n, kRadius, normal);
-  EXPECT_NEAR(glm::length(beside - (on_slope + kRadius * glm::dvec3(normal.x, normal.y, 0.0))), 0.0, 0.05);
-  const glm::dvec3 on_plane(beside.x, beside.y, 0.0);
-  const double reused = floor.lift_mm(on_plane, n, kRadius);
-  EXPECT_NEAR(reused, fresh.lift_mm(on_plane, n, kRadius), 0.02);
-  EXPECT_NEAR(reused + kRadius, on_slope.z + kRadius * normal.z, 0.02) << "the probe touches the pointed point";
-  // Another place in the next reading: the dome's top, lowered afresh.
-  (void)floor.lowering_point(on_slope, n, kRadius, normal);
-  EXPECT_NEAR(floor.lift_mm({0.0, 0.0, 0.0}, n, kRadius), 30.0, 0.02);
+  const FloorLowering beside = floor.lowering_point(on_slope, n, kRadius, normal);
+  EXPECT_NEAR(glm::length(beside.point - (on_slope + kRadius * glm::dvec3(normal.x, normal.y, 0.0))), 0.0, 0.05);
+  ASSERT_TRUE(beside.centre.has_value()) << "lowered to decide: its rest comes with it";
+  EXPECT_NEAR(glm::length(*beside.centre - (on_slope + kRadius * normal)), 0.0, 0.05) << "touches the pointed point";
+  const glm::dvec3 on_plane(beside.point.x, beside.point.y, 0.0);
+  EXPECT_NEAR(beside.centre->z - kRadius, fresh.lift_mm(on_plane, n, kRadius), 0.02);
+  EXPECT_NEAR(glm::length(floor.last_normal() - normal), 0.0, 0.01) << "the hand coasts along the dome";
+
+  // Through the mapping: the dome seen from above, pointed at its slope.
+  floor.set_top_mm(200.0);
+  CountingFloor counting(floor);
+  PointerView view = perspective_view(nullptr);
+  view.floor = &counting;
+  view.camera.position = {0.0, 0.0, 300.0};
+  view.camera.up = {0.0, 1.0, 0.0};
+  PointerMap map;
+  const glm::dvec3 centre = map.absolute(view, project_to_window(view, on_slope), 0.0);
+  EXPECT_EQ(counting.lifts, 0) << "the reading's own lowering is taken";
+  EXPECT_NEAR(glm::length(centre - (on_slope + kRadius * normal)), 0.0, 0.05);
+  const glm::dvec3 moved = map.relative(view, {0.0, 0.0}, 0.1, 0.0);
+  EXPECT_EQ(counting.lifts, 1) << "a relative move lowers afresh";
+  EXPECT_NEAR(glm::length(moved - centre), 0.0, 0.02) << "the same place, lowered again, rests the same";
 }
 
 }  // namespace

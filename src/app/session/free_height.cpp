@@ -2,7 +2,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <utility>
 
 namespace ps {
 
@@ -68,23 +67,17 @@ double FreeHeight::lift_mm(const glm::dvec3& hit_mm, const glm::dvec3& n_ws, dou
   if (!scene_) return 0.0;
   const glm::dvec3 n = rotation_ * n_ws;
   const glm::dvec3 hit = rotation_ * hit_mm + offset_mm_;
-  const std::optional<Lowered> down = lowered_over(hit, n, r);
+  const std::optional<Lowered> down = lower(hit, n, r);
   if (!down) return 0.0;
   last_normal_ = glm::transpose(rotation_) * down->normal;
   const glm::dvec3 p = rest_on_buttons(*scene_, down->centre, n, r);
   return glm::dot(p - hit, n) - r;
 }
 
-std::optional<FreeHeight::Lowered> FreeHeight::lowered_over(const glm::dvec3& hit, const glm::dvec3& n, double r) const {
-  // Within this of the line lowering_point() lowered along (the same reading's hit, moved onto
-  // the plane and back through the pose): the same lowering.
-  constexpr double kSameLineMm = 1e-6;
-  std::optional<LastLowering> last = std::exchange(last_lowering_, std::nullopt);  // one reading's
-  if (last && last->r == r && glm::length(last->n - n) < 1e-12) {
-    const glm::dvec3 d = last->over - hit;
-    if (glm::length(d - glm::dot(d, n) * n) < kSameLineMm) return last->down;
-  }
-  return lower(hit, n, r);
+FloorLowering FreeHeight::rested(const glm::dvec3& over_ws, const Lowered& down, const glm::dvec3& n, double r) const {
+  last_normal_ = glm::transpose(rotation_) * down.normal;
+  const glm::dvec3 p = rest_on_buttons(*scene_, down.centre, n, r);  // as lift_mm() rests it
+  return {over_ws, glm::transpose(rotation_) * (p - offset_mm_)};
 }
 
 std::optional<glm::dvec3> FreeHeight::normal_at(const glm::dvec3& p, const glm::dvec3& eye) const {
@@ -102,35 +95,31 @@ std::optional<glm::dvec3> FreeHeight::normal_at(const glm::dvec3& p, const glm::
   return m;
 }
 
-glm::dvec3 FreeHeight::lowering_point(const glm::dvec3& surface_ws, const glm::dvec3& n_ws, double r,
-                                      const glm::dvec3& toward_eye_ws) const {
+FloorLowering FreeHeight::lowering_point(const glm::dvec3& surface_ws, const glm::dvec3& n_ws, double r,
+                                         const glm::dvec3& toward_eye_ws) const {
   // A lowered sphere that touches within this of the pointed point touches it: the straight
   // lowering is not tried against it.
   constexpr double kOnPointMm = 0.05;
-  last_lowering_.reset();
-  if (!scene_) return surface_ws;
+  const FloorLowering straight_over{surface_ws, std::nullopt};  // lowered by lift_mm() if at all
+  if (!scene_) return straight_over;
   const glm::dvec3 p = rotation_ * surface_ws + offset_mm_;
   const glm::dvec3 n = rotation_ * n_ws;
   for (const world::ButtonShape& b : scene_->button_shapes())
-    if (b.over(b.to_local(p))) return surface_ws;  // pressed along the plane's normal (lift_mm)
+    if (b.over(b.to_local(p))) return straight_over;  // pressed along the plane's normal (lift_mm)
   const std::optional<glm::dvec3> m = normal_at(p, rotation_ * toward_eye_ws);
-  if (!m) return surface_ws;
+  if (!m) return straight_over;
   // A sphere touching p from outside has its centre at p + R m: lowered along -n over the point
   // below that centre, it first touches p (on a surface whose curvature radius exceeds R).
   const glm::dvec3 shift = r * (*m - glm::dot(*m, n) * n);
-  if (glm::length(shift) < 1e-6) return surface_ws;
+  if (glm::length(shift) < 1e-6) return straight_over;
   const std::optional<Lowered> shifted = lower(p + shift, n, r);
-  if (!shifted) return surface_ws;
+  if (!shifted) return straight_over;
   const double off = glm::length(shifted->touched - p);
   if (off > kOnPointMm) {
     const std::optional<Lowered> straight = lower(p, n, r);
-    if (straight && glm::length(straight->touched - p) <= off) {
-      last_lowering_ = LastLowering{p, n, r, *straight};
-      return surface_ws;
-    }
+    if (straight && glm::length(straight->touched - p) <= off) return rested(surface_ws, *straight, n, r);
   }
-  last_lowering_ = LastLowering{p + shift, n, r, *shifted};
-  return glm::transpose(rotation_) * (p + shift - offset_mm_);
+  return rested(glm::transpose(rotation_) * (p + shift - offset_mm_), *shifted, n, r);
 }
 
 std::optional<glm::dvec3> FreeHeight::first_hit(const PointerRay& ray) const {

@@ -39,10 +39,7 @@ class FreeHeight final : public SurfaceFloor {
  public:
   explicit FreeHeight(const FreeHeightParams& params = {}) : params_(params) {}
   // The geometry felt now (null: no floor, the plane).
-  void set_scene(std::shared_ptr<const world::HapticScene> scene) {
-    scene_ = std::move(scene);
-    last_lowering_.reset();
-  }
+  void set_scene(std::shared_ptr<const world::HapticScene> scene) { scene_ = std::move(scene); }
   const std::shared_ptr<const world::HapticScene>& scene() const { return scene_; }
   // Workspace -> world (a [navigation] box's offset, a rolling view's turn): the pointer moves
   // in the workspace, the geometry is in the world.
@@ -60,14 +57,17 @@ class FreeHeight final : public SurfaceFloor {
   // lowered so that the surface point nearest to it is `surface_mm`: the shadow's dark core under
   // the pointer. The straight lowering is kept where it comes nearer (hollows narrower than the
   // probe, an overhang over the shifted point) and over buttons (they are pressed along n).
-  glm::dvec3 lowering_point(const glm::dvec3& surface_mm, const glm::dvec3& n, double probe_radius_mm,
-                            const glm::dvec3& toward_eye) const override;
+  // Where it lowered a sphere to decide, that sphere's rest comes with the point (the mapping
+  // then needs no lift_mm() for this reading).
+  FloorLowering lowering_point(const glm::dvec3& surface_mm, const glm::dvec3& n, double probe_radius_mm,
+                               const glm::dvec3& toward_eye) const override;
   // Whether a probe sphere of radius r moved straight from `from_mm` to `to_mm` (workspace) stays
   // more than `clearance_mm` from every surface (sphere tracing along the segment; a segment
   // grazing that clearance for more than `max_steps` steps counts as not clear).
   bool path_clear(const glm::dvec3& from_mm, const glm::dvec3& to_mm, double r, double clearance_mm) const;
-  // The outward normal of the surface the last lift_mm() found, in the workspace (the plane's
-  // normal where nothing was under the pointer): the hand placed over it coasts along it.
+  // The outward normal of the surface the last lift_mm() or lowering_point() lowering found, in
+  // the workspace (the plane's normal where nothing was under the pointer): the hand placed over
+  // it coasts along it.
   const glm::dvec3& last_normal() const { return last_normal_; }
 
  private:
@@ -95,8 +95,9 @@ class FreeHeight final : public SurfaceFloor {
   // A probe sphere of radius r lowered along -n (world) over `over` from the camera's height
   // (top_mm_ above it) until it touches; none where it starts inside or nothing is under it.
   std::optional<Lowered> lower(const glm::dvec3& over, const glm::dvec3& n, double r) const;
-  // lower(), or the same reading's lowering_point() result where it lowered along the same line.
-  std::optional<Lowered> lowered_over(const glm::dvec3& hit, const glm::dvec3& n, double r) const;
+  // A lowering_point() answer over `over_ws` (workspace) from the sphere lowered there (world),
+  // rested on buttons as lift_mm() rests it; its surface normal becomes last_normal().
+  FloorLowering rested(const glm::dvec3& over_ws, const Lowered& down, const glm::dvec3& n, double r) const;
   // The outward surface normal at a surface point p (world), on the side facing `eye`.
   std::optional<glm::dvec3> normal_at(const glm::dvec3& p, const glm::dvec3& eye) const;
 
@@ -106,14 +107,6 @@ class FreeHeight final : public SurfaceFloor {
   glm::dvec3 offset_mm_{0.0};
   double top_mm_ = 200.0;
   mutable glm::dvec3 last_normal_{0.0, 0.0, 1.0};  // main thread only, like every call here
-  // The last lowering_point()'s place beside the point, lowered (world): lift_mm() over that same
-  // place with the same radius takes it instead of lowering the probe a third time in one reading.
-  struct LastLowering {
-    glm::dvec3 over{0.0}, n{0.0};
-    double r = -1.0;
-    Lowered down;
-  };
-  mutable std::optional<LastLowering> last_lowering_;
 };
 
 // How far a probe sphere (the scene's probe radius) centred at `centre_mm` overlaps the haptic
