@@ -4,6 +4,7 @@
 #include <limits>
 #include <string>
 
+#include "fourd/fourd_mesh.h"
 #include "scene/mesh.h"
 
 namespace ps {
@@ -15,13 +16,17 @@ Aabb mesh_bounds(const Mesh& m) { return {m.bounds_min, m.bounds_max}; }
 }  // namespace
 
 double SurfaceGeometry::nearest_w(const glm::dvec3& probe_mm, double fallback) const {
-  double w = fallback;
-  float best = std::numeric_limits<float>::infinity();
-  const glm::vec3 probe(probe_mm);
-  for (std::size_t v = 0; v < sheet_positions.size(); ++v) {
-    const glm::vec3 dv = sheet_positions[v] - probe;
-    const float d2 = glm::dot(dv, dv);
-    if (d2 < best) best = d2, w = w4[v];
+  // The nearest point of the triangles, not the nearest vertex: where two sheets cross in the
+  // picture, a probe hovering over one can be nearer a vertex of the other (Roman's crossing,
+  // 4 mm over the one seen) and the shadow would then be drawn on the hidden sheet.
+  double w = fallback, best = std::numeric_limits<double>::infinity();
+  for (std::size_t t = 0; t + 2 < sheet_indices.size(); t += 3) {
+    const std::uint32_t i = sheet_indices[t], j = sheet_indices[t + 1], k = sheet_indices[t + 2];
+    glm::dvec3 bary(0.0);
+    const glm::dvec3 q = fourd::closest_on_triangle(probe_mm, sheet_positions[i], sheet_positions[j], sheet_positions[k], bary);
+    const glm::dvec3 d = q - probe_mm;
+    const double d2 = glm::dot(d, d);
+    if (d2 < best) best = d2, w = bary.x * w4[i] + bary.y * w4[j] + bary.z * w4[k];
   }
   return w;
 }
@@ -40,6 +45,7 @@ Result<SurfaceGeometry> make_surface_geometry(const Surface& s, int index, const
   g.bounds = mesh_bounds(mesh.value());
   if (!mesh->w4.empty()) {
     g.sheet_positions = mesh->positions;
+    g.sheet_indices = mesh->indices;
     g.w4 = mesh->w4;
     g.w_min = *std::min_element(g.w4.begin(), g.w4.end());
     g.w_max = *std::max_element(g.w4.begin(), g.w4.end());

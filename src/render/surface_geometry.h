@@ -4,6 +4,7 @@
 // world::DeformableSurfaces holds (stepped by the session, not here), uploaded dynamic.
 #pragma once
 
+#include <cstdint>
 #include <span>
 #include <vector>
 
@@ -20,10 +21,13 @@ namespace ps {
 struct SurfaceGeometry {
   GpuMesh mesh;
   Aabb bounds;  // world mm
-  std::vector<glm::vec3> sheet_positions;  // a surface embedded in 4D: its vertices, and their w
-  std::vector<float> w4;                   // (both empty for other surfaces)
+  std::vector<glm::vec3> sheet_positions;     // a surface embedded in 4D: its vertices, triangles
+  std::vector<std::uint32_t> sheet_indices;   // and the vertices' w
+  std::vector<float> w4;                      // (all empty for other surfaces)
   float w_min = 0.0f, w_max = 0.0f;
-  // The w of the vertex nearest `probe_mm` (`fallback` when none is nearer than infinity: a NaN probe).
+  // The w of the surface point nearest `probe_mm` (interpolated over its triangle): the sheet a
+  // probe the haptic side holds on none (hovering, or `render`) casts its shadow on. `fallback`
+  // when there is none (no triangles, a NaN probe).
   double nearest_w(const glm::dvec3& probe_mm, double fallback) const;
 };
 
