@@ -59,7 +59,7 @@ std::string score_text(const maze::PassScore& s, bool cues) {
 // Renders the state, stamps a screenshot if asked (the frame plus the label, as headless
 // frames have it), blits, draws the overlay.
 Status draw(Window& w, const maze::MazeDesc& desc, const HapticState& st, const Overlay& ov, bool screenshot) {
-  const HapticFrameSources maze{.proxy_only = true, .camera = maze::follow_camera(desc, st.proxy_mm)};
+  const HapticFrameSources maze{.camera = maze::follow_camera(desc, st.proxy_mm)};
   if (auto f = w.renderer->render(haptic_frame_input(*w.renderer, st, maze)); !f) return f.error();
   if (screenshot) {
     Image im = w.renderer->read_color();
