@@ -26,10 +26,6 @@ std::vector<WorldMarker> markers(const Scene& scene, const HapticState& state, c
 FrameInput haptic_frame_input(const Renderer& renderer, const HapticState& state, const HapticFrameSources& sources) {
   FrameInput in;
   if (state.have_sample && sources.camera) in.camera = sources.camera;
-  if (sources.proxy_only) {
-    if (state.have_sample) in.probe = ProbeMotion{state.proxy_mm, state.velocity_mm_s};
-    return in;
-  }
   const Scene& scene = renderer.scene();
   // The proxy as drawn: stretched near an Illusion object (visual_position; identity elsewhere),
   // pressed into a deformable surface by the coupling's share of the hand's depth

@@ -18,12 +18,6 @@ struct HapticFrameSources {
   // into a deformable surface (world::pressed_position).
   double coupling_n_per_mm = 0.0;
   LiveCharges charges{};  // run's live charges (count 0: none)
-  // The maze's frames (docs/maze.md) draw the proxy itself where the loop holds it, under a
-  // camera that follows it, and none of the world view: no pressed or stretched position, view
-  // pose, hand, sheet, bodies or markers. Its scenes have none of those surfaces, bodies or
-  // charges, but its external-force cue pushes with a field whose arrow the world view would
-  // draw; a maze's frames stay what its sessions recorded.
-  bool proxy_only = false;
   std::optional<Camera> camera;  // with a sample: the camera to draw with (the maze's follower)
 };
 
@@ -31,14 +25,20 @@ struct HapticFrameSources {
 // pressed into a deformable surface), the view's pose, the hand, the 4D sheet, the bodies and the
 // markers (charges, bands, the fields' force, the rolling manifold's rubber band). Without a device
 // sample the probe stays where the renderer's view (Renderer::view, the session's) holds it.
+// Each piece is what the scene declares, so a scene without it draws none: no Illusion stretch or
+// deformable surface, the proxy as felt; no [navigation] or rolling surface, the pose the view
+// starts with; no 4D surface, no sheet or path; no bodies or charges, no bands or markers (the
+// fields' force arrow is a charge scene's, render/world_markers.h); the hand only under the view's
+// device flag. So the maze's frames (its cues a uniform or a viscous field over a room, felt and
+// not drawn) draw the proxy where the loop holds it under the follow camera, and nothing more
+// (tests/maze/maze_gl_test.cpp).
 FrameInput haptic_frame_input(const Renderer& renderer, const HapticState& state, const HapticFrameSources& sources);
 
 // The session's step of the world before it draws `input`: the session's deformable surfaces
 // (View::deformables, world/deformable_surfaces.h; null: none) step on to session time `time_s`
 // (HapticState::time_s) with `probe` (the scene's probe shape) where `input` draws it, pressing
 // them; the renderer then uploads what changed. The first step only sets the clock. Nothing
-// without a deformable surface or a device sample (an input with no probe), and nothing for the
-// maze's proxy-only frames (their scenes have no deformable surface).
+// without a deformable surface or a device sample (an input with no probe).
 void step_deformation(world::DeformableSurfaces* surfaces, const Probe& probe, const FrameInput& input, double time_s);
 
 // Where that input draws the probe (the view's probe when it gives none).

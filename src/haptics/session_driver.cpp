@@ -18,17 +18,39 @@ int FrameSchedule::frames_in(double duration_s) const {
   return static_cast<int>(std::floor(std::max(0.0, duration_s) * fps + 1e-9)) + 1;
 }
 
+namespace {
+
+// The driver's feed is drained after every tick: any room does (TickFeed's default).
+constexpr std::size_t kDriverFeedTicks = 4096;
+
+}  // namespace
+
+RecordedLoop::RecordedLoop(Device& device, Clock& clock, const HapticLoopParams& params,
+                           const world::HapticScene* scene, const std::string& record_path, std::size_t feed_ticks)
+    : recording_(!record_path.empty()),
+      recorder_(record_path),
+      feed_(feed_ticks > 0 ? std::make_unique<TickFeed>(feed_ticks) : nullptr),
+      loop_(device, clock, params, scene) {
+  if (recording_) loop_.set_recorder(&recorder_);
+  if (feed_) loop_.add_tick_feed(feed_.get());
+}
+
+Status RecordedLoop::flush_due(double time_s) {
+  if (!recording_ || time_s - flushed_s_ < 1.0) return ok_status();
+  flushed_s_ = time_s;
+  return recorder_.flush();
+}
+
+Status RecordedLoop::finish() {
+  if (!recording_) return ok_status();
+  return recorder_.close();
+}
+
 SessionDriver::SessionDriver(Device& device, const HapticLoopParams& params, const world::HapticScene* scene,
                              const std::string& record_path, FrameSchedule schedule, DriverHooks hooks)
     : schedule_(schedule),
       hooks_(std::move(hooks)),
-      recording_(!record_path.empty()),
-      recorder_(record_path),
-      feed_(hooks_.on_tick ? std::make_unique<TickFeed>() : nullptr),
-      loop_(device, clock_, params, scene) {
-  if (recording_) loop_.set_recorder(&recorder_);
-  if (feed_) loop_.add_tick_feed(feed_.get());
-}
+      recorded_(device, clock_, params, scene, record_path, hooks_.on_tick ? kDriverFeedTicks : 0) {}
 
 Result<DriveResult> SessionDriver::run(std::uint64_t ticks, int max_frames) {
   DriveResult out;
@@ -42,32 +64,28 @@ Result<DriveResult> SessionDriver::run(std::uint64_t ticks, int max_frames) {
     if (Status s = tick(k); !s) return s.error();
     out.ticks = k + 1;
     if (Status s = frames_due(k, max_frames, out.frames); !s) return s.error();
-    if (recording_ && (k + 1) % static_cast<std::uint64_t>(schedule_.rate_hz) == 0)
-      if (Status s = recorder_.flush(); !s) return s.error();  // once per second of session time
+    // Once per second of session time: (k + 1) / rate is exact at each whole second.
+    if (Status s = recorded_.flush_due(static_cast<double>(k + 1) / schedule_.rate_hz); !s) return s.error();
   }
   return out;
 }
 
 Status SessionDriver::tick(std::uint64_t k) {
-  loop_.run_ticks(1);
-  if (feed_) feed_->drain(hooks_.on_tick);
-  if (hooks_.after_tick) return hooks_.after_tick(k, loop_.state().read());
+  HapticLoop& loop = recorded_.loop();
+  loop.run_ticks(1);
+  if (TickFeed* feed = recorded_.feed()) feed->drain(hooks_.on_tick);
+  if (hooks_.after_tick) return hooks_.after_tick(k, loop.state().read());
   return ok_status();
 }
 
 // Every frame due after tick k: its events drained first, then on_frame.
 Status SessionDriver::frames_due(std::uint64_t k, int max_frames, int& frame) {
   while (frame < max_frames && schedule_.tick_of_frame(frame) <= k) {
-    if (hooks_.on_event) loop_.events().drain(hooks_.on_event);
+    if (hooks_.on_event) recorded_.loop().events().drain(hooks_.on_event);
     if (Status s = hooks_.on_frame(frame); !s) return s;
     ++frame;
   }
   return ok_status();
-}
-
-Status SessionDriver::finish() {
-  if (!recording_) return ok_status();
-  return recorder_.close();
 }
 
 }  // namespace ps

@@ -7,7 +7,11 @@
 //     each frame, in push (= time) order;
 //   - every tick's record (haptics/tick_feed.h) handed on in order, right after its tick;
 //   - the device stream's recording, flushed once per second of session time (after each tick
-//     k with (k + 1) % rate == 0) and closed by finish(), however the session ended.
+//     k with (k + 1) / rate a whole second past the last flush: RecordedLoop::flush_due) and
+//     closed by finish(), however the session ended.
+// The loop with its recording and tick feed (RecordedLoop) is also the maze window's, whose loop
+// runs live on its own thread; `bench-haptics` measures that thread and records nothing, so it
+// drives frames itself (app/session/session.h drive_frame).
 // No GL: drawing is the caller's on_frame.
 #pragma once
 
@@ -21,6 +25,7 @@
 #include "devices/sample_log.h"
 #include "haptics/clock.h"
 #include "haptics/haptic_loop.h"
+#include "haptics/tick_feed.h"
 
 namespace ps {
 
@@ -57,6 +62,32 @@ struct DriveResult {
   bool stopped = false;     // hooks.stop ended it
 };
 
+// A session's haptic loop with the device stream's recording and the loop's tick feed, whoever
+// ticks it: SessionDriver below (a fake clock, on the caller's thread) or a live window's haptic
+// thread (the steady clock; app/maze/maze_window.cpp).
+class RecordedLoop {
+ public:
+  // `record_path` non-empty: the device stream the loop reads is recorded there. `feed_ticks` > 0:
+  // every tick's record goes to a tick feed of that many ticks (feed()), for one consumer to drain.
+  RecordedLoop(Device& device, Clock& clock, const HapticLoopParams& params, const world::HapticScene* scene,
+               const std::string& record_path, std::size_t feed_ticks);
+  HapticLoop& loop() { return loop_; }
+  TickFeed* feed() { return feed_.get(); }  // null without one
+  // The recording's pending samples to "<path>.partial" when `time_s` (the session's clock, in
+  // s) is a second or more past the last flush (the first: past 0): a crash loses at most about
+  // the last second, and a caller may ask after every tick or every frame.
+  Status flush_due(double time_s);
+  // Closes the recording (its last samples flushed, the file published): at the end, on stop too.
+  Status finish();
+
+ private:
+  bool recording_;
+  double flushed_s_ = 0.0;  // the session time of the last flush
+  SampleRecorder recorder_;
+  std::unique_ptr<TickFeed> feed_;
+  HapticLoop loop_;  // last: it holds the recorder and the feed (and is stopped first)
+};
+
 class SessionDriver {
  public:
   // `record_path` non-empty: the device stream the loop reads is recorded there. The loop
@@ -64,12 +95,12 @@ class SessionDriver {
   // a tick feed must be added before the first tick.
   SessionDriver(Device& device, const HapticLoopParams& params, const world::HapticScene* scene,
                 const std::string& record_path, FrameSchedule schedule, DriverHooks hooks);
-  HapticLoop& loop() { return loop_; }
+  HapticLoop& loop() { return recorded_.loop(); }
   const FrameSchedule& schedule() const { return schedule_; }
   // Runs ticks 0 .. ticks - 1 (fewer when hooks.stop says so), drawing at most max_frames frames.
   Result<DriveResult> run(std::uint64_t ticks, int max_frames);
   // Closes the recording (its last samples flushed, the file published): at the end, on stop too.
-  Status finish();
+  Status finish() { return recorded_.finish(); }
 
  private:
   Status tick(std::uint64_t k);
@@ -77,11 +108,8 @@ class SessionDriver {
 
   FrameSchedule schedule_;
   DriverHooks hooks_;
-  bool recording_;
   FakeClock clock_;
-  SampleRecorder recorder_;
-  std::unique_ptr<TickFeed> feed_;  // with hooks.on_tick
-  HapticLoop loop_;                 // last: it holds the clock, the recorder and the feed
+  RecordedLoop recorded_;  // after the clock it reads
 };
 
 }  // namespace ps

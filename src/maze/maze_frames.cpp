@@ -19,7 +19,7 @@ Status FrameWriter::on_frame(const FrameView& v) {
     renderer_ = std::move(r.value());
     stale_ = false;
   }
-  const HapticFrameSources maze{.proxy_only = true, .camera = follow_camera(desc_, v.state.proxy_mm)};
+  const HapticFrameSources maze{.camera = follow_camera(desc_, v.state.proxy_mm)};
   if (auto f = renderer_->render(haptic_frame_input(*renderer_, v.state, maze)); !f) return f.error();
   Image im = renderer_->read_color();
   stamp_label(im, v.label);

@@ -31,7 +31,9 @@ inline constexpr double kChargeMarkerRadiusMm = 3.0;
 inline constexpr double kBandRadiusMm = 0.6;
 
 // `extra_charges`: charges beyond the scene's own (run's live ones). `force_n`: the fields' force
-// on the probe (no arrow below 0.01 N, and none in a scene without charges).
+// on the probe (no arrow below 0.01 N, and none in a scene without charges: the arrow shows what
+// charges do to the probe; a uniform or viscous field alone, as over a maze's cue room, is felt
+// and not drawn, tests/maze/maze_gl_test.cpp).
 std::vector<WorldMarker> world_markers(const Scene& scene, const glm::dvec3& probe_mm,
                                        std::span<const glm::dvec3> bodies_mm,
                                        std::span<const ChargeMarker> extra_charges = {},

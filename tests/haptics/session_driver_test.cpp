@@ -1,6 +1,7 @@
 // The deterministic session's schedule (haptics/session_driver.h): which tick each frame is
 // drawn after, every tick's record in order, the recording flushed once per second of session
-// time and published at the end, a stop between ticks. No GL.
+// time and published at the end, a stop between ticks; the loop with its recording and tick feed
+// as a live window ticks it (RecordedLoop). No GL.
 #include <gtest/gtest.h>
 
 #include <unistd.h>
@@ -134,6 +135,44 @@ TEST(SessionDriverTest, RecordingIsFlushedEachSecondAndPublishedAtTheEnd) {
   ASSERT_TRUE(driver.finish().ok());
   EXPECT_EQ(line_count(log), 1002);  // the header and every tick's sample
   EXPECT_FALSE(fs::exists(log.string() + ".partial"));
+  fs::remove_all(dir);
+}
+
+// The live window's use (app/maze/maze_window.cpp): its own thread ticks the loop, and each frame
+// asks flush_due with the session time it drew; the flush comes once a whole second has passed
+// since the last (a resumed session's first frame, past 0 already, flushes at once), and the tick
+// feed holds every tick for the tracker to drain.
+TEST(RecordedLoopTest, FlushesAtFramesOnceASecondOfSessionTime) {
+  const fs::path dir = fresh_dir("recorded_loop_flush");
+  const std::string log = (dir / "device.log").string();
+  LogDevice device(line_samples(), true, "line");
+  FakeClock clock;
+  RecordedLoop r(device, clock, HapticLoopParams{}, nullptr, log, 2048);
+  r.loop().run_ticks(1000);
+  ASSERT_TRUE(r.flush_due(0.999).ok());
+  EXPECT_EQ(line_count(log + ".partial"), -1);
+  ASSERT_TRUE(r.flush_due(1.0).ok());
+  EXPECT_EQ(line_count(log + ".partial"), 1001);  // the header and ticks 0..999
+  r.loop().run_ticks(500);
+  ASSERT_TRUE(r.flush_due(1.99).ok());
+  EXPECT_EQ(line_count(log + ".partial"), 1001);
+  ASSERT_TRUE(r.flush_due(2.0).ok());
+  EXPECT_EQ(line_count(log + ".partial"), 1501);
+  int fed = 0;
+  r.feed()->drain([&fed](const TickSample&) { ++fed; });
+  EXPECT_EQ(fed, 1500);
+  ASSERT_TRUE(r.finish().ok());
+  EXPECT_EQ(line_count(log), 1501);
+  EXPECT_FALSE(fs::exists(log + ".partial"));
+
+  LogDevice again(line_samples(), true, "line");
+  FakeClock resumed_clock;
+  RecordedLoop resumed(again, resumed_clock, HapticLoopParams{}, nullptr, (dir / "resumed.log").string(), 0);
+  EXPECT_EQ(resumed.feed(), nullptr);
+  resumed.loop().run_ticks(10);
+  ASSERT_TRUE(resumed.flush_due(120.0).ok());  // a session resumed at 120 s: at its first frame
+  EXPECT_EQ(line_count((dir / "resumed.log.partial").string()), 11);
+  ASSERT_TRUE(resumed.finish().ok());
   fs::remove_all(dir);
 }
 

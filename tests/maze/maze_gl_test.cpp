@@ -1,14 +1,19 @@
 // The maze's pictures (needs GL; EGL and OSMesa): the room label shows only with cues off; the
 // hidden sphere draws no pixel; the texture room's pseudo-shadow is textured where the dummy
-// room's is plain, and with cues off the two rooms look alike. Frames as `maze --every` draws
-// them: the generated scene, the camera following the probe.
+// room's is plain, and with cues off the two rooms look alike; a session's frames through run's
+// frame path (haptic_frame_input) are the probe's and the follow camera's alone. Frames as
+// `maze --every` draws them: the generated scene, the camera following the probe.
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <fstream>
 
+#include "devices/sample_log.h"
+#include "frame/haptic_frame.h"
 #include "maze/maze.h"
 #include "maze/maze_frames.h"
 #include "maze/maze_screen.h"
+#include "maze/maze_script.h"
 #include "maze_test_util.h"
 #include "render/renderer.h"
 #include "support/gl_test.h"
@@ -152,6 +157,74 @@ TEST_P(MazeGLTest, FramesAfterAPassSwitchDrawTheNewPass) {
   ASSERT_NE(writer.renderer(), nullptr);
   EXPECT_EQ(writer.renderer()->scene().path, pass2->scene.path);
   EXPECT_EQ(writer.written(), 2);
+}
+
+// The frame the maze drew before it went through run's frame path: the proxy where the loop holds
+// it, under the follow camera, nothing else of the world view.
+FrameInput proxy_only_input(const MazeDesc& desc, const HapticState& st) {
+  FrameInput in;
+  if (!st.have_sample) return in;
+  in.camera = follow_camera(desc, st.proxy_mm);
+  in.probe = ProbeMotion{st.proxy_mm, st.velocity_mm_s};
+  return in;
+}
+
+// Two renderers of the pass's scene, fed the same states: one the old proxy-only inputs, one
+// run's haptic_frame_input with the follow camera (as maze --every and the window draw).
+struct TwoPaths {
+  MazeDesc desc;
+  std::unique_ptr<Renderer> old_path, run_path;
+  int frames = 0, pushed = 0;  // frames compared; of them, with the fields pushing the probe
+  Status on_frame(const FrameView& v) {
+    if (v.scene_changed || !run_path) {
+      auto a = Renderer::create(v.scene.scene, RendererOptions{}), b = Renderer::create(v.scene.scene, RendererOptions{});
+      if (!a) return a.error();
+      if (!b) return b.error();
+      old_path = std::move(a.value());
+      run_path = std::move(b.value());
+    }
+    const FrameInput in = haptic_frame_input(*run_path, v.state, {.camera = follow_camera(desc, v.state.proxy_mm)});
+    EXPECT_TRUE(in.markers->empty() && in.bodies_mm->empty()) << "frame " << v.index;
+    EXPECT_EQ(*in.view, ViewPose{}) << "frame " << v.index;
+    if (auto f = old_path->render(proxy_only_input(desc, v.state)); !f) return f.error();
+    if (auto f = run_path->render(in); !f) return f.error();
+    const Image a = old_path->read_color(), b = run_path->read_color();
+    EXPECT_TRUE(a.pixels == b.pixels) << "frame " << v.index << " differs";
+    ++frames;
+    pushed += glm::length(v.state.field_force_n) > 0.01 ? 1 : 0;
+    return ok_status();
+  }
+};
+
+// Through run's frame path the maze's frames stay what its sessions drew, byte for byte: a
+// scripted participant through the shipped maze, every cue's room on the way (the external-force
+// room's field pushing the probe, which a charge scene would show as an arrow).
+TEST_P(MazeGLTest, FramesThroughRunsFramePathAreTheProxyOnlyFrames) {
+  Shot s = shot(64);
+  for (const bool cues : {true, false}) {
+    const std::string dir = test::temp_dir("two_paths_" + std::string(gl::backend_name(GetParam())) + (cues ? "_on" : "_off"));
+    std::ofstream(dir + "/p.traj") << script_trajectory(s.desc, {choices_with_errors(s.route, 0, 2)}, 300.0);
+    auto dev = open_log_device("trajectory:" + dir + "/p.traj");
+    ASSERT_TRUE(dev) << dev.error().message;
+    SessionOptions o;
+    o.desc = s.desc;
+    o.route = s.route;
+    o.info.participant = "T";
+    o.info.seed = s.route.seed;
+    o.info.cues = cues;
+    o.log_path = dir + "/session.jsonl";
+    o.fps = 4.0;
+    TwoPaths two;
+    two.desc = s.desc;
+    auto r = run_session(*dev.value(), o, [&two](const FrameView& v) { return two.on_frame(v); }, nullptr);
+    ASSERT_TRUE(r) << r.error().message;
+    RecordProperty(cues ? "frames_cues_on" : "frames_cues_off", std::to_string(two.frames));
+    RecordProperty(cues ? "pushed_cues_on" : "pushed_cues_off", std::to_string(two.pushed));
+    EXPECT_GT(two.frames, 20);
+    if (cues) {
+      EXPECT_GT(two.pushed, 0);  // the external-force room was drawn with its field pushing
+    }
+  }
 }
 
 PS_INSTANTIATE_HEADLESS_BACKENDS(MazeGLTest);

@@ -57,9 +57,13 @@ std::string score_text(const maze::PassScore& s, bool cues) {
 }
 
 // Renders the state, stamps a screenshot if asked (the frame plus the label, as headless
-// frames have it), blits, draws the overlay.
+// frames have it), blits, draws the overlay. The frame input is run's (haptic_frame_input) with
+// the follow camera; not drive_frame, which reads the loop's newest state and publishes the
+// frame's plane back to it: this frame draws the state the window's input and tracker just
+// used, the waiting screens draw with no loop running, and the maze's loop collides with its
+// haptic scene, taking nothing back from a frame.
 Status draw(Window& w, const maze::MazeDesc& desc, const HapticState& st, const Overlay& ov, bool screenshot) {
-  const HapticFrameSources maze{.proxy_only = true, .camera = maze::follow_camera(desc, st.proxy_mm)};
+  const HapticFrameSources maze{.camera = maze::follow_camera(desc, st.proxy_mm)};
   if (auto f = w.renderer->render(haptic_frame_input(*w.renderer, st, maze)); !f) return f.error();
   if (screenshot) {
     Image im = w.renderer->read_color();

@@ -5,7 +5,7 @@
 
 #include "app/maze/maze_overlay.h"
 #include "app/session/session.h"
-#include "devices/sample_log.h"
+#include "haptics/session_driver.h"
 #include "maze/maze_screen.h"
 #include "prepare/prepare.h"
 
@@ -31,24 +31,21 @@ constexpr const char* kPracticeOver =
     "you will learn as you go.\n\nPress Space to start.";
 
 // One pass's live machinery (the practice pass and the scored session each have their own): the
-// haptic loop on the window's device, its vibration, the device stream's recorder and the
-// tracker's tick feed, drained by each frame. Built before the pass starts (run_pass).
+// haptic loop on the window's device with the device stream's recording and the tracker's tick
+// feed, drained by each frame (haptics/session_driver.h RecordedLoop, as headless), and its
+// vibration. Built before the pass starts (run_pass).
 struct LivePass {
   SteadyClock clock;
-  HapticLoop loop;
+  RecordedLoop haptics;
   // Destroyed before the loop that feeds it: both are stopped first (end_pass).
   std::unique_ptr<vibration::LiveVibration> vib;
-  SampleRecorder recorder;
-  TickFeed ticks{kTrackFeedTicks};
   // Why the pass ended (session_end's reason unless the tracker ended it: criterion, max_passes).
   maze::EndReason reason = maze::EndReason::kQuit;
   LivePass(Window& w, const maze::SessionOptions& o, const maze::SessionCore& core, const cli::LiveLoopArgs& live)
-      : loop(w.live->device(), clock, o.haptics, core.haptic().get()),
-        vib(cli::open_live_vibration(live, core.scene().scene, loop)),
-        recorder(o.record_path) {
-    loop.set_recorder(&recorder);
-    loop.add_tick_feed(&ticks);
-  }
+      : haptics(w.live->device(), clock, o.haptics, core.haptic().get(), o.record_path, kTrackFeedTicks),
+        vib(cli::open_live_vibration(live, core.scene().scene, haptics.loop())) {}
+  HapticLoop& loop() { return haptics.loop(); }
+  TickFeed& ticks() { return *haptics.feed(); }
 };
 
 // The window draws `scene` from now on (a new renderer).
@@ -129,8 +126,8 @@ bool take_input(Window& w, const HapticState& st) {
 // however long the frame took (a pass switch's new renderer, a loaded machine).
 Status step_session(maze::SessionCore& core, LivePass& pass, const maze::ScoreFn& on_score) {
   Status stepped = ok_status();
-  pass.ticks.drain([&](const TickSample& t) {
-    if (stepped && !core.finished()) stepped = core.step(t, pass.loop, on_score);
+  pass.ticks().drain([&](const TickSample& t) {
+    if (stepped && !core.finished()) stepped = core.step(t, pass.loop(), on_score);
   });
   return stepped;
 }
@@ -165,7 +162,7 @@ Status window_loop(const maze::SessionOptions& o, const MazeWindowParams& p, maz
                    LivePass& pass, bool practice) {
   Overlay ov;
   HapticState st;
-  double last_flush = 0.0, end_at = -1.0, clutch_quiet_until = 0.0;
+  double end_at = -1.0, clutch_quiet_until = 0.0;
   const auto on_score = [&](const maze::PassScore& s) -> Status {
     ov.score = score_text(s, o.info.cues);
     ov.score_until = st.time_s + kScoreSeconds;
@@ -173,11 +170,11 @@ Status window_loop(const maze::SessionOptions& o, const MazeWindowParams& p, maz
   };
   for (;;) {
     w.live->poll_events();
-    st = pass.loop.state().read();
+    st = pass.loop().state().read();
     bool clutched = false;
     if (Status s = apply_clutch(p, w, core, st, clutch_quiet_until, clutched); !s) return s;
     if (!take_input(w, st)) return ok_status();
-    if (clutched) pass.loop.restart_filter();  // after the poll that published the new place
+    if (clutched) pass.loop().restart_filter();  // after the poll that published the new place
     if (practice && std::exchange(w.events.start, false)) {
       pass.reason = maze::EndReason::kPracticeEnded;
       return ok_status();
@@ -192,10 +189,7 @@ Status window_loop(const maze::SessionOptions& o, const MazeWindowParams& p, maz
     ov.label = core.label();
     ov.show_hand = p.show_hand && w.input();
     if (Status s = draw(w, o.desc, st, ov, std::exchange(w.events.screenshot, false)); !s) return s;
-    if (st.time_s - last_flush >= 1.0) {  // the device stream, about once a second
-      last_flush = st.time_s;
-      if (Status s = pass.recorder.flush(); !s) return s;
-    }
+    if (Status s = pass.haptics.flush_due(st.time_s); !s) return s;  // the device stream, about once a second
   }
 }
 
@@ -204,7 +198,7 @@ Status window_loop(const maze::SessionOptions& o, const MazeWindowParams& p, maz
 // ends the pass early (reason practice_ended).
 Status run_pass(const maze::SessionOptions& o, const MazeWindowParams& p, maze::SessionCore& core, Window& w,
                 LivePass& pass, bool practice) {
-  pass.loop.start();
+  pass.loop().start();
   pass.vib->start();
   return window_loop(o, p, core, w, pass, practice);
 }
@@ -214,14 +208,14 @@ Status run_pass(const maze::SessionOptions& o, const MazeWindowParams& p, maze::
 // `practice`) warns when frames came too far apart for the tracker's feed.
 Result<maze::SessionResult> end_pass(const maze::SessionOptions& o, maze::SessionCore& core, LivePass& pass,
                                      const Status& looped, bool practice) {
-  pass.loop.stop();
+  pass.loop().stop();
   pass.vib->close();
   const bool logged = core.finished();
-  const double end_time = logged ? core.end_time_s() : std::max(o.haptics.start_time_s, pass.loop.state().read().time_s);
+  const double end_time = logged ? core.end_time_s() : std::max(o.haptics.start_time_s, pass.loop().state().read().time_s);
   auto result = core.finish(end_time, pass.reason);
-  if (Status s = pass.recorder.close(); !s) return s.error();
+  if (Status s = pass.haptics.finish(); !s) return s.error();
   if (!looped) return looped.error();
-  if (const std::uint64_t lost = pass.ticks.dropped(); lost > 0 && !practice)
+  if (const std::uint64_t lost = pass.ticks().dropped(); lost > 0 && !practice)
     std::fprintf(stderr, "warning: the maze's tracker missed %llu ticks: frames more than %.0f s apart\n",
                  static_cast<unsigned long long>(lost), static_cast<double>(kTrackFeedTicks) / o.haptics.rate_hz);
   return result;
