@@ -77,6 +77,7 @@ Status TuneSession::rebuild(const std::map<std::string, std::string>& edits, Vie
   if (!fresh) return fail(fresh.error());
   renderer_ = std::move(fresh.value());
   view_ = std::move(view.value());
+  if (edits != edits_) ++edits_generation_;  // once per rebuild, not per frame
   edits_ = edits;
   last_error_.clear();
   ++generation_;
