@@ -136,12 +136,13 @@ void print_summary(const HapticLoop& loop, const FrameReadouts& ro);
 // The window's own keys (capture, panel, help, height), the window's presence; returns the keys
 // pressed this frame.
 int window_keys(WindowIo& io, HapticLoop& loop);
-// P, D (flags), 1-6 (4D turn), orbit and zoom: the tuning's view.
-void view_keys(WindowInput& in, TuneSession& tune);
 // C, Shift+C (live charges) and Home (the view back where the scene started).
 void haptic_keys(WindowInput& in, const LiveWindow& win, const Renderer& r, LiveHaptics& h);
 // Backspace: back to the scene a button came from, or a notice saying there is none.
 void back_key(WindowInput& in, SceneTrail& trail, FrameReadouts& ro, double now_s);
+// P, D (flags), 1-6 (4D turn), orbit and zoom: the tuning's view.
+void view_keys(WindowInput& in, TuneSession& tune);
+// S: the frame and the state that made it (before the overlays are drawn).
 Status save_screenshots(WindowIo& io, const TuneSession& tune, int w, int h);
 void reload_haptic_scene(const LiveWindow& win, const TuneSession& tune, LiveHaptics& h);
 void poll_reload(const LiveWindow& win, TuneSession& tune, LiveHaptics& h, std::string& shown_error);
