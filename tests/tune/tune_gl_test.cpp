@@ -144,7 +144,8 @@ TEST_P(TuneGLTest, TheEditsGenerationMovesWithTheEdits) {
   EXPECT_EQ(s->edits_generation(), 1u);
   ASSERT_TRUE(s->set("materials.table4_1_a.lambda_min", "1.0"));
   ASSERT_TRUE(s->reload());
-  ASSERT_TRUE(s->set_curve("materials.table4_1_a.intensity_lut", Lut{LutAxis::kDistanceMm, {{0.0, 0.9}, {5.0, 0.2}}, {}}));
+  const Lut table{LutAxis::kDistanceMm, {{0.0, 0.9}, {5.0, 0.2}}, {}};
+  ASSERT_TRUE(s->set_curve("materials.table4_1_a.intensity_lut", table));
   EXPECT_EQ(s->edits_generation(), 1u);
   ASSERT_TRUE(s->set("materials.table4_1_a.lambda_min", "1.5"));
   EXPECT_EQ(s->edits_generation(), 2u);

@@ -288,7 +288,8 @@ int run(const cli::Command& cmd, const RunArgs& a) {
   if (Status st = close_haptics(h); !st) return cmd.fail(st.error());
   if (!looped) return cmd.fail(looped.error());
   if (Status st = s.readouts.log.close(); !st) return cmd.fail(st.error());
-  if (Status st = write_reports(a, s.io, s.tune->renderer(), s.readouts.frame_ms.count()); !st) return cmd.fail(st.error());
+  if (Status st = write_reports(a, s.io, s.tune->renderer(), s.readouts.frame_ms.count()); !st)
+    return cmd.fail(st.error());
   if (!a.quiet) run_live::print_summary(*h.loop, s.readouts);
   if (!a.quiet && h.vibration->active()) std::printf("%s\n", h.vibration->summary().c_str());
   return stop.requested() ? report_stop(a, stop) : cli::kExitOk;
