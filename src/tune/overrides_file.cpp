@@ -10,6 +10,7 @@
 
 #include "core/file_io.h"
 #include "scene/scene_io.h"
+#include "tune/edit_key.h"
 
 namespace ps {
 
@@ -63,8 +64,9 @@ std::string format_overrides(const std::map<std::string, std::string>& edits, co
 
 std::string curve_file_for(const std::string& overrides_path, const std::string& key) {
   // "materials.wood.intensity_lut" -> "wood.intensity"; "a.overrides.toml" -> "a"
-  std::string rest = key.substr(std::string("materials.").size());
-  rest = rest.substr(0, rest.size() - std::string("_lut").size());
+  const EditKey k = EditKey::parse(key);
+  const std::string_view field = k.field();
+  const std::string rest = std::string(k.material()) + "." + std::string(field.substr(0, field.size() - 4));  // "_lut"
   fs::path p(overrides_path);
   std::string stem = p.filename().string();
   if (const auto dot = stem.find(".overrides"); dot != std::string::npos) stem = stem.substr(0, dot);
@@ -76,7 +78,7 @@ Status save_overrides_file(const std::string& path, const std::map<std::string, 
                            const std::map<std::string, Lut>& curves, const std::string& scene_name) {
   std::map<std::string, std::string> lines = edits;
   for (const auto& [key, lut] : curves) {
-    assert(key.rfind("materials.", 0) == 0 && key.ends_with("_lut") && "save_overrides_file: not a curve key");
+    assert(EditKey::parse(key).curve() != CurveKind::kNone && "save_overrides_file: not a curve key");
     const std::string file = curve_file_for(path, key);
     if (Status s = prepare_output_dir(file); !s) return s;
     if (Status s = write_lut(file, lut, {"Edited in the tuning panel: " + key + " of " + scene_name}); !s) return s;

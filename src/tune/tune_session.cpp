@@ -6,6 +6,7 @@
 #include "core/file_io.h"
 #include "gl/shader.h"
 #include "scene/scene_io.h"
+#include "tune/edit_key.h"
 #include "tune/overrides_file.h"
 
 namespace ps {
@@ -30,16 +31,15 @@ Result<Scene> TuneSession::load(const std::map<std::string, std::string>& edits)
   auto scene = load_scene_or_default(source_.scene_path, sets, source_.allow_paths);
   if (!scene) return scene;
   // Edited curves: the tables themselves (no file until the overrides are saved).
-  for (const auto& [key, lut] : curve_edits_) {
+  for (const auto& [text, lut] : curve_edits_) {
+    const EditKey key = EditKey::parse(text);
     bool found = false;
     for (Material& m : scene->materials) {
-      const std::string prefix = "materials." + m.name + ".";
-      if (key == prefix + "intensity_lut") m.intensity_lut = lut;
-      else if (key == prefix + "speed_gain_lut") m.speed_gain_lut = lut;
-      else continue;
+      if (key.curve() == CurveKind::kNone || m.name != key.material()) continue;
+      (key.curve() == CurveKind::kIntensity ? m.intensity_lut : m.speed_gain_lut) = lut;
       found = true;
     }
-    if (!found) return make_error("curve " + key + ": no such material curve (materials.NAME.intensity_lut or speed_gain_lut)");
+    if (!found) return make_error("curve " + text + ": no such material curve (materials.NAME.intensity_lut or speed_gain_lut)");
   }
   return scene;
 }
@@ -77,6 +77,7 @@ Status TuneSession::rebuild(const std::map<std::string, std::string>& edits, Vie
   if (!fresh) return fail(fresh.error());
   renderer_ = std::move(fresh.value());
   view_ = std::move(view.value());
+  if (edits != edits_) ++edits_generation_;  // once per rebuild, not per frame
   edits_ = edits;
   last_error_.clear();
   ++generation_;
@@ -88,8 +89,7 @@ Status TuneSession::set(const std::string& key, const std::string& value) {
   edits[key] = value;
   // The probe restarts from the scene's state (so `render --overrides` reproduces a console
   // session); the window's haptic loop sets it again every frame anyway.
-  const bool camera_key = key.rfind("camera.", 0) == 0;
-  return rebuild(edits, ViewRestart{true, camera_key}, true, load(edits));
+  return rebuild(edits, ViewRestart{true, EditKey::parse(key).camera()}, true, load(edits));
 }
 
 Status TuneSession::reload() { return rebuild(edits_, {}, false, load(edits_)); }

@@ -12,6 +12,7 @@
 // context.
 #pragma once
 
+#include <cstdint>
 #include <map>
 #include <memory>
 #include <string>
@@ -58,6 +59,9 @@ class TuneSession {
   const std::map<std::string, std::string>& edits() const { return edits_; }
   const FileWatch& watch() const { return watch_; }
   int generation() const { return generation_; }  // +1 per successful (re)build
+  // +1 per successful rebuild that changed edits() (a `set`; not a reload, nor a curve edit): what
+  // a frame compares to know whether the edits moved, instead of the edits themselves.
+  std::uint64_t edits_generation() const { return edits_generation_; }
   const std::string& scene_path() const { return source_.scene_path; }
 
   // Replaces a material's curve by a lookup table and rebuilds; `key` is
@@ -85,6 +89,7 @@ class TuneSession {
   FileWatch watch_;
   std::string last_error_;
   int generation_ = 0;
+  std::uint64_t edits_generation_ = 0;
 };
 
 }  // namespace ps

@@ -131,6 +131,26 @@ TEST_P(TuneGLTest, BadSetKeepsTheRendererAndNamesTheKey) {
   EXPECT_EQ(s->edits().size(), 1u);
 }
 
+// `run` rebuilds its haptic scene when the edits moved, comparing one number a frame
+// (TuneSession::edits_generation): a set that changes an edit moves it; a failed set, the same
+// value again, a reload and a curve edit (tables are not edits()) leave it.
+TEST_P(TuneGLTest, TheEditsGenerationMovesWithTheEdits) {
+  auto s = open_session();
+  ASSERT_TRUE(s);
+  EXPECT_EQ(s->edits_generation(), 0u);
+  ASSERT_FALSE(s->set("materials.table4_1_a.lamda_min", "1.0"));
+  EXPECT_EQ(s->edits_generation(), 0u);
+  ASSERT_TRUE(s->set("materials.table4_1_a.lambda_min", "1.0"));
+  EXPECT_EQ(s->edits_generation(), 1u);
+  ASSERT_TRUE(s->set("materials.table4_1_a.lambda_min", "1.0"));
+  ASSERT_TRUE(s->reload());
+  const Lut table{LutAxis::kDistanceMm, {{0.0, 0.9}, {5.0, 0.2}}, {}};
+  ASSERT_TRUE(s->set_curve("materials.table4_1_a.intensity_lut", table));
+  EXPECT_EQ(s->edits_generation(), 1u);
+  ASSERT_TRUE(s->set("materials.table4_1_a.lambda_min", "1.5"));
+  EXPECT_EQ(s->edits_generation(), 2u);
+}
+
 // Curves edited in the panel (TuneSession::set_curve) are saved with the overrides as table files
 // next to them, and `--overrides` reads them back: the same tables, the same image, byte for byte.
 TEST_P(TuneGLTest, EditedCurvesRoundTripThroughTheOverrides) {

@@ -20,8 +20,11 @@ namespace ps {
 
 namespace {
 
+using run_live::FrameReadouts;
+using run_live::LiveHaptics;
 using run_live::RunArgs;
-using run_live::Session;
+using run_live::RunState;
+using run_live::SceneTrail;
 
 // The key list comes from app/window/run_keys.h (the help overlay shows the same table).
 constexpr const char* kRunNotes = R"(The probe follows the pointer: its shadow's centre sits under it, on any camera and zoom.
@@ -114,23 +117,24 @@ void declare(cli::Command& cmd, RunArgs& a) {
 constexpr double kWatchPeriodS = 0.2;
 
 // The event consumers, before the haptic thread starts. No audio device is one warning line.
-Status open_events(const RunArgs& a, Session& s) {
+// A button's scene action waits in the trail for the end of the frame (the tuning then draws).
+Status open_events(const RunArgs& a, LiveHaptics& h, SceneTrail& trail, const std::unique_ptr<TuneSession>& tune) {
   auto events = RunEvents::open(a.events);
   if (!events) return events.error();
-  s.events = std::move(events.value());
-  if (!s.events->warning().empty()) std::fprintf(stderr, "warning: %s\n", s.events->warning().c_str());
-  s.events->dispatcher().subscribe("buttons", [&s](const HapticEvent& e) {
-    if (s.pending_scene.empty()) s.pending_scene = scene_action_of(s.tune->renderer().scene(), e);
+  h.events = std::move(events.value());
+  if (!h.events->warning().empty()) std::fprintf(stderr, "warning: %s\n", h.events->warning().c_str());
+  h.events->dispatcher().subscribe("buttons", [&trail, &tune](const HapticEvent& e) {
+    if (trail.pending.empty()) trail.pending = scene_action_of(tune->renderer().scene(), e);
   });
   return ok_status();
 }
 
 // The frame's wall time and, with a device sample in it, the latency from sample to frame.
-void count_frame(Session& s, const HapticState& st, std::chrono::steady_clock::time_point f0) {
+void count_frame(FrameReadouts& ro, const HapticState& st, std::chrono::steady_clock::time_point f0) {
   const auto f1 = std::chrono::steady_clock::now();
-  s.last_frame_ms = std::chrono::duration<double, std::milli>(f1 - f0).count();
-  s.frame_ms.add(s.last_frame_ms);
-  if (st.have_sample) s.latency_ms.add(static_cast<double>(f1.time_since_epoch().count() - st.sample_clock_ns) * 1e-6);
+  ro.last_frame_ms = std::chrono::duration<double, std::milli>(f1 - f0).count();
+  ro.frame_ms.add(ro.last_frame_ms);
+  if (st.have_sample) ro.latency_ms.add(static_cast<double>(f1.time_since_epoch().count() - st.sample_clock_ns) * 1e-6);
 }
 
 // How long a switch's frame waits for the haptic thread to adopt the new scene, s: it does at its
@@ -142,69 +146,97 @@ constexpr double kSceneAdoptWaitS = 0.25;
 // the wait, a stalled haptic thread's, from the state there is).
 // Drawn from the state read before the switch, the new world showed the old world's probe, the
 // press 2-3 mm into the old button's pocket, for a frame (and its readouts said so).
-Status draw_switched_scene(Session& s, std::uint64_t serial, std::uint64_t frame, HapticState& st) {
+Status draw_switched_scene(Renderer& r, HapticLoop& loop, std::uint64_t serial, std::uint64_t frame, HapticState& st) {
   if (serial == 0) return ok_status();
   const auto start = std::chrono::steady_clock::now();
-  while (s.loop->state().read().scene_serial < serial &&
+  while (loop.state().read().scene_serial < serial &&
          std::chrono::steady_clock::now() - start < std::chrono::duration<double>(kSceneAdoptWaitS))
     std::this_thread::sleep_for(std::chrono::microseconds(200));
-  return drive_frame(s.tune->renderer(), *s.loop, frame, st);
+  return drive_frame(r, loop, frame, st);
+}
+
+// The frame loop's bookkeeping: when the files were last polled and the recording last flushed.
+struct LoopTimes {
+  double last_flush = 0.0, last_watch = 0.0;
+};
+
+// The keys, in the order they act: the window's own, the live charges and Home (the hand placed
+// through the camera this frame drew with), Backspace, then the view's (flags, 4D turn, orbit);
+// the screenshots read GL_BACK before the overlays are drawn.
+Status handle_keys(RunState& s, glm::ivec2 fb, double now_s) {
+  WindowInput& in = s.io.input;
+  s.readouts.frame_keys = run_live::window_keys(s.io, *s.haptics.loop);
+  run_live::haptic_keys(in, *s.io.window, s.tune->renderer(), s.haptics);
+  run_live::back_key(in, s.trail, s.readouts, now_s);
+  run_live::view_keys(in, *s.tune);
+  return run_live::save_screenshots(s.io, *s.tune, fb.x, fb.y);
+}
+
+// One frame: the device, a reload, the frame itself (and a button's switch), the keys, then the
+// overlays. A panel edit may change the feel (a body's time scale): the haptic scene is rebuilt
+// when the tuning's edits changed.
+Status live_frame(const RunArgs& a, RunState& s, std::uint64_t frame, double now_s, LoopTimes& t, HapticState& st) {
+  LiveWindow& win = *s.io.window;
+  LiveHaptics& h = s.haptics;
+  run_live::poll_device(win, s.tune->renderer(), h, h.loop->state().read().time_s, !s.io.ui->panel().wants_input());
+  if (a.watch && now_s - t.last_watch >= kWatchPeriodS) {
+    t.last_watch = now_s;
+    run_live::poll_reload(win, *s.tune, h, s.shown_error);
+  }
+  if (Status r = drive_frame(s.tune->renderer(), *h.loop, frame, st); !r) return r;
+  if (Status r = h.events->pump(h.loop->events()); !r) return r;
+  if (!s.trail.pending.empty()) {
+    const std::uint64_t serial = run_live::switch_scene(a, win, s.tune, h, s.trail);
+    if (Status r = draw_switched_scene(s.tune->renderer(), *h.loop, serial, frame, st); !r) return r;
+  }
+  const glm::ivec2 fb = win.framebuffer_size();
+  present_to_default_framebuffer(s.tune->renderer(), fb.x, fb.y);
+  if (Status r = handle_keys(s, fb, now_s); !r) return r;  // screenshots read GL_BACK before the swap
+  win.begin_frame();
+  auto shadow = run_live::update_readouts(win, *s.tune, h, s.readouts, st, frame, now_s);
+  if (!shadow) return shadow.error();
+  run_live::draw_overlays(a, s.io, *s.tune, s.readouts.shown, shadow.value(), frame, now_s);  // after the screenshots
+  if (s.tune->edits_generation() != h.edits_generation) {
+    h.edits_generation = s.tune->edits_generation();
+    run_live::reload_haptic_scene(win, *s.tune, h);
+  }
+  s.io.input.keys_captured = s.io.ui->panel().wants_keys();
+  win.end_frame();
+  return ok_status();
 }
 
 // `stop`: a signal asked to stop (app/cli/stop_signal.h): the loop ends as Esc ends it.
-Status window_loop(const RunArgs& a, Session& s, const cli::StopSignals& stop) {
-  LiveWindow& win = *s.window;
+Status window_loop(const RunArgs& a, RunState& s, const cli::StopSignals& stop) {
   const auto t0 = std::chrono::steady_clock::now();
-  double last_flush = 0.0, last_watch = 0.0;
+  LoopTimes times;
   for (std::uint64_t frame = 0;; ++frame) {
     const auto f0 = std::chrono::steady_clock::now();
     const double now_s = std::chrono::duration<double>(f0 - t0).count();
-    s.now_s = now_s;
-    win.poll_events();
-    if (win.should_close() || s.input.quit || stop.requested()) break;
+    s.io.window->poll_events();
+    if (s.io.window->should_close() || s.io.input.quit || stop.requested()) break;
     if ((a.frames > 0 && static_cast<long long>(frame) >= a.frames) || (a.quit_after_s > 0 && now_s >= a.quit_after_s)) break;
-    poll_device(s, s.loop->state().read().time_s, !s.ui->panel().wants_input());
     HapticState st;
-    if (a.watch && now_s - last_watch >= kWatchPeriodS) {
-      last_watch = now_s;
-      poll_reload(s);
-    }
-    if (Status r = drive_frame(s.tune->renderer(), *s.loop, frame, st); !r) return r;
-    if (Status r = s.events->pump(s.loop->events()); !r) return r;
-    if (!s.pending_scene.empty())
-      if (Status r = draw_switched_scene(s, switch_scene(a, s), frame, st); !r) return r;
-    const glm::ivec2 fb = win.framebuffer_size();
-    present_to_default_framebuffer(s.tune->renderer(), fb.x, fb.y);
-    if (Status r = handle_keys(s, fb.x, fb.y); !r) return r;  // screenshots read GL_BACK before the swap
-    win.begin_frame();
-    if (Status r = draw_overlays(a, s, st, frame, now_s); !r) return r;  // after the screenshots
-    if (s.tune->edits() != s.haptic_edits) {  // a panel edit may change the feel (a body's time scale)
-      s.haptic_edits = s.tune->edits();
-      reload_haptic_scene(s);
-    }
-    s.input.keys_captured = s.ui->panel().wants_keys();
-    win.end_frame();
-    count_frame(s, st, f0);
-    if (s.recorder && now_s - last_flush >= 1.0) {  // a crash loses at most the last second
-      if (Status r = s.recorder->flush(); !r) return r;
-      last_flush = now_s;
+    if (Status r = live_frame(a, s, frame, now_s, times, st); !r) return r;
+    count_frame(s.readouts, st, f0);
+    if (s.haptics.recorder && now_s - times.last_flush >= 1.0) {  // a crash loses at most the last second
+      if (Status r = s.haptics.recorder->flush(); !r) return r;
+      times.last_flush = now_s;
     }
   }
   return ok_status();
 }
 
 // At exit: --stats (the renderer's last frame) and --ui-report (every frame's rectangles).
-Status write_reports(const RunArgs& a, const Session& s) {
+Status write_reports(const RunArgs& a, const run_live::WindowIo& io, const Renderer& r, std::size_t frames) {
   if (!a.stats_path.empty()) {
-    const Renderer& r = s.tune->renderer();
-    const gl::Context& ctx = s.window->context();
+    const gl::Context& ctx = io.window->context();
     const std::string json = stats_json(r.stats(), gl::backend_name(ctx.backend()), ctx.egl_device(), ctx.renderer(),
-                                        static_cast<int>(s.frame_ms.count()));
+                                        static_cast<int>(frames));
     if (Status st = write_file_atomic(a.stats_path, json); !st) return st;
   }
   if (!a.ui_report.empty()) {
-    const glm::ivec2 size = s.window->window_size();
-    if (Status st = write_file_atomic(a.ui_report, ui_report_json(size.x, size.y, s.ui_frames)); !st) return st;
+    const glm::ivec2 size = io.window->window_size();
+    if (Status st = write_file_atomic(a.ui_report, ui_report_json(size.x, size.y, io.ui_frames)); !st) return st;
   }
   return ok_status();
 }
@@ -224,35 +256,42 @@ int report_stop(const RunArgs& a, const cli::StopSignals& stop) {
   return stop.exit_code();
 }
 
+// Joins the haptic thread before touching what it wrote, then closes what the loop wrote to.
+Status close_haptics(LiveHaptics& h) {
+  h.loop->stop();
+  h.vibration->close();
+  if (h.recorder)
+    if (Status st = h.recorder->close(); !st) return st;
+  return h.events->close(h.loop->events());
+}
+
 int run(const cli::Command& cmd, const RunArgs& a) {
   auto scene = cli::load_scene_or_default(a.scene);
   if (!scene) return cmd.fail(scene.error(), cli::scene_exit_code(scene.error()));
-  Session s;
+  RunState s;
+  LiveHaptics& h = s.haptics;
   auto live = cli::apply_live_loop(a.live);  // before the context and the haptic thread
   if (!live) return cmd.usage_error(live.error());
-  if (Status st = open_session(a, std::move(scene.value()), s); !st) return cmd.fail(st.error());
-  if (Status st = open_events(a, s); !st) return cmd.fail(st.error());
+  if (Status st = run_live::open_run(a, std::move(scene.value()), s); !st) return cmd.fail(st.error());
+  if (Status st = open_events(a, h, s.trail, s.tune); !st) return cmd.fail(st.error());
   if (!a.readouts_log.empty())
-    if (Status st = s.readouts_log.open(a.readouts_log); !st) return cmd.fail(st.error());
-  s.loop->start();
-  s.vibration->start();
+    if (Status st = s.readouts.log.open(a.readouts_log); !st) return cmd.fail(st.error());
+  h.loop->start();
+  h.vibration->start();
   // The first frame shows the device's probe, not the scene's: wait for the first tick (about
   // 1 ms; bounded, as a gamepad may have nothing to give yet).
-  for (int i = 0; i < 100 && !s.loop->state().read().have_sample; ++i)
+  for (int i = 0; i < 100 && !h.loop->state().read().have_sample; ++i)
     std::this_thread::sleep_for(std::chrono::milliseconds(1));
-  if (!a.quiet) std::printf("haptic thread: %s; %s\n", s.loop->scheduling().c_str(), live->report().c_str());
+  if (!a.quiet) std::printf("haptic thread: %s; %s\n", h.loop->scheduling().c_str(), live->report().c_str());
   const cli::StopSignals stop;  // SIGTERM, SIGINT, SIGHUP: the window closes as with Esc
   const Status looped = window_loop(a, s, stop);
-  s.loop->stop();  // join the haptic thread before touching what it wrote
-  s.vibration->close();
-  if (s.recorder)
-    if (Status st = s.recorder->close(); !st) return cmd.fail(st.error());
-  if (Status st = s.events->close(s.loop->events()); !st) return cmd.fail(st.error());
+  if (Status st = close_haptics(h); !st) return cmd.fail(st.error());
   if (!looped) return cmd.fail(looped.error());
-  if (Status st = s.readouts_log.close(); !st) return cmd.fail(st.error());
-  if (Status st = write_reports(a, s); !st) return cmd.fail(st.error());
-  if (!a.quiet) print_summary(s);
-  if (!a.quiet && s.vibration->active()) std::printf("%s\n", s.vibration->summary().c_str());
+  if (Status st = s.readouts.log.close(); !st) return cmd.fail(st.error());
+  if (Status st = write_reports(a, s.io, s.tune->renderer(), s.readouts.frame_ms.count()); !st)
+    return cmd.fail(st.error());
+  if (!a.quiet) run_live::print_summary(*h.loop, s.readouts);
+  if (!a.quiet && h.vibration->active()) std::printf("%s\n", h.vibration->summary().c_str());
   return stop.requested() ? report_stop(a, stop) : cli::kExitOk;
 }
 

@@ -1,12 +1,10 @@
-// `pseudoshadow run`: the device, the session's opening, and the readouts, help and panel over
+// `pseudoshadow run`: the device, the window's opening, and the readouts, help and panel over
 // each frame (app/commands/run_live.h).
 #include "app/commands/run_live.h"
 
-#define GLFW_INCLUDE_NONE
-#include <GLFW/glfw3.h>
-
 #include <cstdio>
 #include <filesystem>
+#include <map>
 #include <optional>
 #include <utility>
 
@@ -17,13 +15,6 @@
 namespace ps::run_live {
 
 namespace {
-
-Status open_device(const RunArgs& a, Session& s) {
-  if (Status st = s.window->open_device(a.device); !st) return st;
-  s.glfw_device = s.window->input();
-  s.pointer_device = s.window->pointer();
-  return ok_status();
-}
 
 // The readouts (and the title) change 4 times a second: legible numbers, and the distance AOV
 // is read back only then.
@@ -69,12 +60,14 @@ void scene_readouts(const Scene& sc, const HapticState& st, HudReadouts& r) {
   }
 }
 
-HudReadouts readouts(const Session& s, const HapticState& st, const ShadowMeasure& shadow) {
+// The readouts of this frame; `coupling`: the haptic loop's, N/mm.
+HudReadouts current_readouts(const TuneSession& tune, const FrameReadouts& ro, double coupling, const HapticState& st,
+                             const ShadowMeasure& shadow, double now_s) {
   HudReadouts r;
-  const std::string& path = s.tune->scene_path();
+  const std::string& path = tune.scene_path();
   r.scene = path.empty() ? cli::scene_display_name(path) : std::filesystem::path(path).filename().string();
-  r.frame_ms = s.last_frame_ms;
-  if (const auto& gpu = s.tune->renderer().stats().gpu_timings_ms; !gpu.empty()) {
+  r.frame_ms = ro.last_frame_ms;
+  if (const auto& gpu = tune.renderer().stats().gpu_timings_ms; !gpu.empty()) {
     double total = 0.0;
     for (const auto& [pass, ms] : gpu) total += ms;
     r.gpu_frame_ms = total;
@@ -83,22 +76,22 @@ HudReadouts readouts(const Session& s, const HapticState& st, const ShadowMeasur
   r.jitter_p99_us = st.jitter_p99_us;
   // A button's face pushing back is a touch too (the proxy rests on it while it travels).
   const bool on_button = st.button_pressed >= 0 && st.button_depth_mm > 0.0;
-  const double coupling = s.loop->params().forces.coupling_n_per_mm;
   r.probe = probe_readout({shadow.min_distance_mm, st.in_contact || on_button, st.position_mm, st.proxy_mm,
                            st.field_force_n / std::max(coupling, 1e-9), st.proxy_catching_up});
   r.speed_mm_s = glm::length(st.velocity_mm_s);
-  r.penetration_mm = s.tune->renderer().stats().max_penetration_mm;
+  r.penetration_mm = tune.renderer().stats().max_penetration_mm;
   r.force_n = glm::length(st.force_n);
-  r.bake_progress = s.tune->renderer().stats().bake_progress;
-  r.error = panel_message(s.tune->last_error());  // a panel edit's error speaks of the panel
-  if (s.now_s < s.notice_until_s) r.notice = s.notice;
-  scene_readouts(s.tune->renderer().scene(), st, r);
+  r.bake_progress = tune.renderer().stats().bake_progress;
+  r.error = panel_message(tune.last_error());  // a panel edit's error speaks of the panel
+  if (now_s < ro.notice_until_s) r.notice = ro.notice;
+  scene_readouts(tune.renderer().scene(), st, r);
   return r;
 }
 
-// --readouts-log: this frame's readouts, as the state machine says them, every frame.
-Status log_readouts(Session& s, const HapticState& st, const ShadowMeasure& shadow, const HudReadouts& r,
-                    std::uint64_t frame) {
+// --readouts-log: this frame's readouts, as the state machine says them, every frame (what the
+// renderer and the haptic state tell; the caller adds the rest).
+ReadoutsFrame readouts_frame(const Renderer& renderer, const HapticState& st, const ShadowMeasure& shadow,
+                             const HudReadouts& r, std::uint64_t frame) {
   ReadoutsFrame f;
   f.frame = frame;
   f.t_s = st.time_s;
@@ -106,7 +99,6 @@ Status log_readouts(Session& s, const HapticState& st, const ShadowMeasure& shad
   f.probe = r.probe;
   f.distance_mm = shadow.min_distance_mm;
   f.penetration_mm = r.penetration_mm;
-  f.buried_mm = s.floor.scene() ? buried_mm(*s.floor.scene(), st.proxy_mm) : 0.0;
   f.force_n = r.force_n;
   f.view_offset_mm = st.view_offset_mm;
   f.hand_mm = st.position_mm;
@@ -114,35 +106,38 @@ Status log_readouts(Session& s, const HapticState& st, const ShadowMeasure& shad
   f.button = r.button;
   f.button_depth_mm = r.button_depth_mm;
   f.button_travel_mm = r.button_travel_mm;
-  const Scene& sc = s.tune->renderer().scene();
+  const Scene& sc = renderer.scene();
   if (!sc.flags.empty()) {
     f.flags.emplace();
     for (std::size_t i = 0; i < sc.flags.size(); ++i)
       if ((st.flags >> i) & 1u) f.flags->push_back(sc.flags[i]);
   }
-  f.keys = s.frame_keys;
   f.haptic_hz = r.haptic_hz;
   f.jitter_p99_us = r.jitter_p99_us;
-  if (const DeformationStats& d = s.tune->renderer().deformation(); d.surfaces > 0) f.dent_mm = d.max_displacement_mm;
-  int w = 0, h = 0;
-  double x = 0.0, y = 0.0;
-  glfwGetWindowSize(s.window->glfw(), &w, &h);
-  glfwGetCursorPos(s.window->glfw(), &x, &y);
-  if (x >= 0.0 && y >= 0.0 && x < w && y < h) f.pointer_px = glm::dvec2(x, y);
+  if (const DeformationStats& d = renderer.deformation(); d.surfaces > 0) f.dent_mm = d.max_displacement_mm;
   if (shadow.core) f.shadow_px = glm::dvec2(shadow.core->first, shadow.core->second);
-  return s.readouts_log.write(f);
+  return f;
+}
+
+Status log_readouts(const LiveWindow& win, const Renderer& renderer, const LiveHaptics& h, FrameReadouts& ro,
+                    const HapticState& st, const ShadowMeasure& shadow, const HudReadouts& r, std::uint64_t frame) {
+  ReadoutsFrame f = readouts_frame(renderer, st, shadow, r, frame);
+  f.buried_mm = h.floor.scene() ? buried_mm(*h.floor.scene(), st.proxy_mm) : 0.0;
+  f.keys = ro.frame_keys;
+  f.pointer_px = win.pointer_in_window();
+  return ro.log.write(f);
 }
 
 }  // namespace
 
 // The hand must be able to push every button of the scene past its travel through the coupling
 // (world::deepest_press_mm), with one height step to spare so that PageDown lands beyond it.
-// The height is measured from the pointer's plane (s.axes), which need not pass through a
+// The height is measured from the pointer's plane (LiveHaptics::axes), which need not pass through a
 // button's face: Weight's plane is the camera target's, 20 mm above the floor its button sits
 // in, so that button needs 20 mm more.
-void fit_height_to_buttons(Session& s, const world::HapticScene& scene) {
-  if (!s.glfw_device) return;
-  const double coupling = s.loop->params().forces.coupling_n_per_mm;
+void fit_height_to_buttons(const LiveWindow& win, const LiveHaptics& h, const world::HapticScene& scene) {
+  if (!win.input()) return;
+  const double coupling = h.loop->params().forces.coupling_n_per_mm;
   double deepest = 0.0;
   // The hover height counts from the surface under the pointer (app/session/free_height.h), a button's
   // face included: the range needs the deepest press below a face, not below the plane.
@@ -150,27 +145,28 @@ void fit_height_to_buttons(Session& s, const world::HapticScene& scene) {
   // (Illusion's plane faces the camera): a button facing it at cos a needs 1 / cos a as much.
   for (const world::ButtonShape& b : scene.button_shapes())
     deepest = std::max(deepest, world::deepest_press_mm({b}, coupling) /
-                                    std::max(glm::dot(b.normal(), s.axes.n), 0.25));
-  s.glfw_device->reach_depth(deepest > 0.0 ? deepest + GlfwInputParams{}.height.step_mm : 0.0);
+                                    std::max(glm::dot(b.normal(), h.axes.n), 0.25));
+  win.input()->reach_depth(deepest > 0.0 ? deepest + GlfwInputParams{}.height.step_mm : 0.0);
 }
 
 // The pointer devices map through the camera this frame draws with (it orbits and zooms) and
 // the window's current size (the image is stretched to it).
 // `view_at_rest`: the workspace is the world (a new haptic scene's view starts there).
-void poll_device(Session& s, double now_s, bool poll_glfw, bool view_at_rest) {
-  int w = 0, h = 0;
-  glfwGetWindowSize(s.window->glfw(), &w, &h);
-  PointerView view = pointer_view(s.tune->renderer(), s.axes, {static_cast<double>(w), static_cast<double>(h)});
-  if (s.pointer_device) s.pointer_device->set_view(view);
-  if (!s.glfw_device || !poll_glfw) return;
+void poll_device(const LiveWindow& win, const Renderer& r, LiveHaptics& h, double now_s, bool poll_glfw,
+                 bool view_at_rest) {
+  const glm::ivec2 size = win.window_size();
+  PointerView view = pointer_view(r, h.axes, glm::dvec2(size));
+  if (win.pointer()) win.pointer()->set_view(view);
+  GlfwInputDevice* const device = win.input();
+  if (!device || !poll_glfw) return;
   // The mouse hovers over the surface under the pointer (app/session/free_height.h), lowered from the
   // camera's height over the plane; the workspace moves with a [navigation] box or a rolling view.
-  const HapticState st = s.loop && !view_at_rest ? s.loop->state().read() : HapticState{};
-  s.floor.set_pose(st.view_rotation, st.view_offset_mm);
-  s.floor.set_top_mm(std::max(glm::dot(view.camera.position - view.plane.origin, view.plane.n), 60.0));
-  view.floor = &s.floor;
-  const glm::dvec3 before = s.glfw_device->read(0.0).position_mm;
-  s.glfw_device->poll(now_s, view);
+  const HapticState st = h.loop && !view_at_rest ? h.loop->state().read() : HapticState{};
+  h.floor.set_pose(st.view_rotation, st.view_offset_mm);
+  h.floor.set_top_mm(std::max(glm::dot(view.camera.position - view.plane.origin, view.plane.n), 60.0));
+  view.floor = &h.floor;
+  const glm::dvec3 before = device->read(0.0).position_mm;
+  device->poll(now_s, view);
   // The surface under a hovering pointer rose or fell (a slope, a silhouette: off a box's top
   // onto the floor): the hand is put at its new height rather than pulled there, so neither the
   // filter's coasting between two readings (4-30 a second) nor the proxy's path cuts through
@@ -181,27 +177,28 @@ void poll_device(Session& s, double now_s, bool poll_glfw, bool view_at_rest) {
   // So is a hover whose straight way from the last reading to this one (and half as far again:
   // the filter coasts on between readings) comes within half the hover height of a surface: over
   // a curved surface the hovering places lie on a curve and the chord between two cuts it.
-  const glm::dvec3 after = s.glfw_device->read(0.0).position_mm;
-  const double hover = s.glfw_device->height_mm();
+  const glm::dvec3 after = device->read(0.0).position_mm;
+  const double hover = device->height_mm();
   const bool rose_or_fell = std::abs(glm::dot(after - before, view.plane.n)) > 0.25;
   // The cheap checks first: the path is traced only when they do not already place the hand.
   const auto cuts = [&] {
-    return hover > 0.25 && !s.floor.path_clear(before, after + 0.5 * (after - before), view.probe_radius_mm, 0.5 * hover);
+    return hover > 0.25 && !h.floor.path_clear(before, after + 0.5 * (after - before), view.probe_radius_mm, 0.5 * hover);
   };
-  if (s.loop && hover >= 0.0 && (rose_or_fell || s.glfw_device->parallax_jump_mm() > 1.0 || cuts()))
-    s.loop->place_hand(after, view.plane.n, s.floor.last_normal());
+  if (h.loop && hover >= 0.0 && (rose_or_fell || device->parallax_jump_mm() > 1.0 || cuts()))
+    h.loop->place_hand(after, view.plane.n, h.floor.last_normal());
 }
 
 // The geometry felt changed (a scene switch, a reload, a panel edit, a 4D turn): the hand goes
 // back to the hover height over the surface now under the pointer, and the proxy with it, so
 // nothing the person did not do leaves the proxy buried (docs/window.md). Recorded devices
 // (logs) keep their own positions.
-std::optional<glm::dvec3> place_hand(Session& s, std::shared_ptr<const world::HapticScene> felt, bool new_view) {
-  s.floor.set_scene(std::move(felt));
-  if (!s.glfw_device) return std::nullopt;
-  s.glfw_device->reset_height();
-  poll_device(s, s.loop->state().read().time_s, true, new_view);
-  return s.glfw_device->read(0.0).position_mm;
+std::optional<glm::dvec3> place_hand(const LiveWindow& win, const Renderer& r, LiveHaptics& h,
+                                     std::shared_ptr<const world::HapticScene> felt, bool new_view) {
+  h.floor.set_scene(std::move(felt));
+  if (!win.input()) return std::nullopt;
+  win.input()->reset_height();
+  poll_device(win, r, h, h.loop->state().read().time_s, true, new_view);
+  return win.input()->read(0.0).position_mm;
 }
 
 // The Gabor tile bakes between frames, a band of ~40 ms each (about one 512^2 frame with the
@@ -218,37 +215,45 @@ TuneSource window_tune_source(const RunArgs& a, std::string scene_path, std::vec
   return source;
 }
 
+// The haptic side: the haptic scene, the loop on the window's device, the vibration and the
+// recorder; the pointer devices already placed over the scene.
+Status open_haptics(const RunArgs& a, const LiveWindow& win, const Renderer& r, LiveHaptics& h) {
+  h.axes = pointer_plane(r);  // fixed at start so the mapping stays put
+  HapticLoopParams params;
+  params.realtime_priority = static_cast<int>(a.realtime);
+  auto haptic_scene = world::HapticScene::build(r.scene());
+  if (!haptic_scene) return haptic_scene.error();
+  h.scene = std::make_shared<const world::HapticScene>(std::move(haptic_scene.value()));
+  h.floor.set_scene(h.scene);  // the first sample already hovers over what is under the pointer
+  h.loop = std::make_unique<HapticLoop>(win.device(), h.clock, params, h.scene.get());
+  fit_height_to_buttons(win, h, *h.scene);
+  h.vibration = cli::open_live_vibration(a.live, r.scene(), *h.loop);
+  if (win.input() || win.pointer()) {  // they move over the plane: distance known from the start
+    h.loop->surface().publish(initial_surface_model(h.axes, r.scene().probe.radius_mm));
+    poll_device(win, r, h, 0.0, true);  // the first tick already has a sample
+  }
+  if (!a.record.empty()) {
+    h.recorder = std::make_unique<SampleRecorder>(a.record);
+    h.loop->set_recorder(h.recorder.get());
+  }
+  return ok_status();
+}
+
 // The scene is loaded once, before the window: its render.size is the window's size.
-Status open_session(const RunArgs& a, Scene scene, Session& s) {
+Status open_run(const RunArgs& a, Scene scene, RunState& s) {
   auto window = LiveWindow::open({scene.render.width, scene.render.height, "pseudoshadow"});
   if (!window) return window.error();
-  s.window = std::move(window.value());
+  WindowIo& io = s.io;
+  io.window = std::move(window.value());
   auto tune = TuneSession::open(window_tune_source(a, a.scene.path, a.scene.lines(), a.scene.allow_paths), std::move(scene));
   if (!tune) return tune.error();
   s.tune = std::move(tune.value());
-  s.axes = pointer_plane(s.tune->renderer());  // fixed at start so the mapping stays put
-  if (Status st = open_device(a, s); !st) return st;
-  HapticLoopParams params;
-  params.realtime_priority = static_cast<int>(a.realtime);
-  auto haptic_scene = world::HapticScene::build(s.tune->renderer().scene());
-  if (!haptic_scene) return haptic_scene.error();
-  s.haptic_scene = std::make_shared<const world::HapticScene>(std::move(haptic_scene.value()));
-  s.floor.set_scene(s.haptic_scene);  // the first sample already hovers over what is under the pointer
-  s.loop = std::make_unique<HapticLoop>(s.window->device(), s.clock, params, s.haptic_scene.get());
-  fit_height_to_buttons(s, *s.haptic_scene);
-  s.vibration = cli::open_live_vibration(a.live, s.tune->renderer().scene(), *s.loop);
-  if (s.glfw_device || s.pointer_device) {  // they move over the plane: distance known from the start
-    s.loop->surface().publish(initial_surface_model(s.axes, s.tune->renderer().scene().probe.radius_mm));
-    poll_device(s, 0.0, true);  // the first tick already has a sample
-  }
-  if (!a.record.empty()) {
-    s.recorder = std::make_unique<SampleRecorder>(a.record);
-    s.loop->set_recorder(s.recorder.get());
-  }
-  s.window->listen(s.input);
-  s.input.pointer_inside = s.window->hovered();
-  s.ui = std::make_unique<WindowUi>();
-  if (a.panel) s.ui->panel().toggle();
+  if (Status st = io.window->open_device(a.device); !st) return st;
+  if (Status st = open_haptics(a, *io.window, s.tune->renderer(), s.haptics); !st) return st;
+  io.window->listen(io.input);
+  io.input.pointer_inside = io.window->hovered();
+  io.ui = std::make_unique<WindowUi>();
+  if (a.panel) io.ui->panel().toggle();
   return ok_status();
 }
 
@@ -266,44 +271,51 @@ std::string screenshot_state(const TuneSession& tune) {
   return format_overrides(state, cli::scene_display_name(tune.scene_path()));
 }
 
-void print_summary(const Session& s) {
-  const Percentiles p = s.loop->period_stats(), lat = s.latency_ms.percentiles(), fr = s.frame_ms.percentiles();
+void print_summary(const HapticLoop& loop, const FrameReadouts& ro) {
+  const Percentiles p = loop.period_stats(), lat = ro.latency_ms.percentiles(), fr = ro.frame_ms.percentiles();
   std::printf("frames %zu (median %.1f ms); haptic ticks %zu, period p50 %.0f us p99 %.0f us p99.9 %.0f us "
               "max %.0f us; ", fr.count, fr.p50, p.count + 1, p.p50, p.p99, p.p999, p.max);
   if (lat.count == 0) std::printf("no device samples (latency not measured)\n");
   else std::printf("latency sample->frame p50 %.1f ms p99 %.1f ms\n", lat.p50, lat.p99);
 }
 
-// Readouts, help and panel over the frame, placed around its shadow; drawn after the
-// screenshots are read back, so they are never in them. With --readouts-log the distance is
-// read back every frame (one more AOV read-back a frame), else 4 times a second.
-Status draw_overlays(const RunArgs& a, Session& s, const HapticState& st, std::uint64_t frame, double now_s) {
-  const bool refresh = now_s - s.readouts_s >= kReadoutPeriodS;
-  int w = 0, h = 0;  // ImGui's units: window coordinates, not framebuffer pixels
-  glfwGetWindowSize(s.window->glfw(), &w, &h);
-  auto shadow = measure_frame_shadow(s.tune->renderer(), w, h, refresh || s.readouts_log.is_open(), s.aov_buffers);
+// The frame's shadow is measured every frame (where the overlays must not go); the readouts are
+// refreshed from it 4 times a second, with the title. With --readouts-log the distance is read
+// back every frame (one more AOV read-back a frame) and the readouts built for each.
+Result<ShadowMeasure> update_readouts(LiveWindow& win, const TuneSession& tune, const LiveHaptics& h,
+                                      FrameReadouts& ro, const HapticState& st, std::uint64_t frame, double now_s) {
+  const bool refresh = now_s - ro.refreshed_s >= kReadoutPeriodS;
+  const glm::ivec2 size = win.window_size();  // ImGui's units: window coordinates, not framebuffer pixels
+  auto shadow = measure_frame_shadow(tune.renderer(), size.x, size.y, refresh || ro.log.is_open(), ro.aov_buffers);
   if (!shadow) return shadow.error();
   // Built once a frame when it is logged, else only at a refresh (4 times a second).
   std::optional<HudReadouts> now;
-  if (s.readouts_log.is_open() || refresh) now = readouts(s, st, shadow.value());
-  if (s.readouts_log.is_open())
-    if (Status r = log_readouts(s, st, shadow.value(), *now, frame); !r) return r;
+  const double coupling = h.loop->params().forces.coupling_n_per_mm;
+  if (ro.log.is_open() || refresh) now = current_readouts(tune, ro, coupling, st, shadow.value(), now_s);
+  if (ro.log.is_open())
+    if (Status r = log_readouts(win, tune.renderer(), h, ro, st, shadow.value(), *now, frame); !r) return r.error();
   if (refresh) {
-    s.readouts = std::move(*now);
-    glfwSetWindowTitle(s.window->glfw(), title_summary(s.readouts).c_str());
-    s.readouts_s = now_s;
+    ro.shown = std::move(*now);
+    win.set_title(title_summary(ro.shown));
+    ro.refreshed_s = now_s;
   }
+  return shadow;
+}
+
+// Readouts, help and panel over the frame, placed around its shadow; drawn after the
+// screenshots are read back, so they are never in them.
+void draw_overlays(const RunArgs& a, WindowIo& io, TuneSession& tune, const HudReadouts& shown,
+                   const ShadowMeasure& shadow, std::uint64_t frame, double now_s) {
+  const glm::ivec2 size = io.window->window_size();
   // Through the camera this frame drew with (orbited, zoomed, moved by [navigation] or a rolling
   // view), not the scene file's: each label stays on its plate while the view moves (Field's
   // label had stayed where the plate started).
-  const Scene& sc = s.tune->renderer().scene();
-  const auto buttons = project_buttons(sc, s.tune->view().camera,
-                                       static_cast<double>(sc.render.width) / sc.render.height,
-                                       static_cast<float>(w), static_cast<float>(h));
-  UiFrameReport report = s.ui->draw(s.readouts, shadow.value(), *s.tune, now_s, buttons);
+  const Scene& sc = tune.renderer().scene();
+  const auto buttons = project_buttons(sc, tune.view().camera, static_cast<double>(sc.render.width) / sc.render.height,
+                                       static_cast<float>(size.x), static_cast<float>(size.y));
+  UiFrameReport report = io.ui->draw(shown, shadow, tune, now_s, buttons);
   report.frame = frame;
-  if (!a.ui_report.empty()) s.ui_frames.push_back(report);
-  return ok_status();
+  if (!a.ui_report.empty()) io.ui_frames.push_back(report);
 }
 
 }  // namespace ps::run_live

@@ -1,10 +1,12 @@
-// `pseudoshadow run`'s window session, shared by its three files: the command and its frame
-// loop (run_cmd.cpp), the device and what is drawn over each frame (run_frame.cpp), and what
-// keys, buttons and reloads do to the session (run_actions.cpp).
+// `pseudoshadow run`'s window, shared by its three files: the command and its frame loop
+// (run_cmd.cpp), the device and what is drawn over each frame (run_frame.cpp), and what keys,
+// buttons and reloads do (run_actions.cpp). Its state is in owned parts, each function taking
+// the parts it needs: the window's I/O (WindowIo), the live haptics (LiveHaptics), the readouts
+// (FrameReadouts) and the scenes a button switched through (SceneTrail). Only the frame loop
+// holds them all (RunState).
 #pragma once
 
 #include <cstdint>
-#include <map>
 #include <memory>
 #include <optional>
 #include <string>
@@ -38,71 +40,114 @@ struct RunArgs {
   RunEventsDesc events;  // --events, --mute, --audio-device (docs/sound.md)
 };
 
+// The window's I/O: the window with its context and device, its input, the ImGui frame over the
+// picture (readouts, help, panel) and what is written of it (screenshots, --ui-report).
+struct WindowIo {
+  std::unique_ptr<LiveWindow> window;  // context, ImGui, input callbacks, the device
+  std::unique_ptr<WindowUi> ui;        // readouts, help, parameter panel (one ImGui frame)
+  WindowInput input;
+  int screenshots_saved = 0;             // numbers the next screenshot_NNNN.png
+  std::vector<UiFrameReport> ui_frames;  // --ui-report
+};
+
+// The render thread's side of the haptic loop: the haptic scene it feels, the surface under the
+// pointer and the plane it moves over, the loop itself and what consumes it.
+struct LiveHaptics {
+  SteadyClock clock;
+  std::shared_ptr<const world::HapticScene> scene;  // before the loop: it must outlive the haptic thread
+  FreeHeight floor;  // the surface under the pointer: the mouse's height counts from it
+  PlaneAxes axes;    // the pointer's plane, fixed per scene so the mapping stays put
+  std::unique_ptr<vibration::LiveVibration> vibration;  // before the loop too: the loop feeds it ticks
+  std::unique_ptr<HapticLoop> loop;
+  std::unique_ptr<SampleRecorder> recorder;
+  std::unique_ptr<RunEvents> events;  // the one consumer of loop->events(): log, sound, ...
+  std::uint32_t last_charge_id = 0;   // live charges: ids are never reused
+  // The tuning's edits the haptic scene was built with (TuneSession::edits_generation).
+  std::uint64_t edits_generation = 0;
+};
+
 // The window's per-frame read-backs (run_frame.cpp, measure_frame_shadow), kept between frames.
 struct AovBuffers {
   Image intensity, distance;
   std::vector<float> raw;  // the AOV target's four channels, as GL hands them over
 };
 
-struct Session {  // everything the window loop touches, grouped by owner thread
-  std::unique_ptr<LiveWindow> window;  // context, ImGui, input callbacks, the device
-  std::unique_ptr<TuneSession> tune;  // owns the Renderer; swaps in a new one on reload
-  std::unique_ptr<WindowUi> ui;       // readouts, help, parameter panel (one ImGui frame)
-  HudReadouts readouts;               // shown until the next refresh
-  double readouts_s = -1.0;           // session time of their last refresh
-  std::vector<UiFrameReport> ui_frames;  // --ui-report
-  std::string shown_error;            // last reload error printed to the console
-  std::uint32_t last_charge_id = 0;   // live charges: ids are never reused
-  GlfwInputDevice* glfw_device = nullptr;  // == window->input(): mouse/gamepad
-  PointerLogDevice* pointer_device = nullptr;  // == window->pointer(): pointer:FILE
-  SteadyClock clock;
-  std::shared_ptr<const world::HapticScene> haptic_scene;  // before the loop: it must outlive the haptic thread
-  FreeHeight floor;                   // the surface under the pointer: the mouse's height counts from it
-  std::unique_ptr<vibration::LiveVibration> vibration;  // before the loop too: the loop feeds it ticks
-  std::unique_ptr<HapticLoop> loop;
-  std::unique_ptr<SampleRecorder> recorder;
-  std::unique_ptr<RunEvents> events;  // the one consumer of loop->events(): log, sound, ...
-  WindowInput input;
-  int screenshots_saved = 0;          // numbers the next screenshot_NNNN.png
-  PlaneAxes axes;
+// What the readouts show and log, and the frames' counts for the summary at exit.
+struct FrameReadouts {
+  HudReadouts shown;          // shown until the next refresh
+  double refreshed_s = -1.0;  // window time of their last refresh
+  std::string notice;         // a short answer shown in the readouts until notice_until_s
+  double notice_until_s = 0.0;
+  ReadoutsLog log;            // --readouts-log
+  int frame_keys = 0;         // key presses handled this frame (the readouts log's `keys`)
+  AovBuffers aov_buffers;     // the shadow measure's read-backs, reused every frame
   // Every frame's wall time and sample->frame latency, for the summary at exit: fixed memory
   // however long the window runs.
   StreamingPercentiles latency_ms, frame_ms;
   double last_frame_ms = 0.0;
-  AovBuffers aov_buffers;  // the shadow measure's read-backs, reused every frame
-  std::string pending_scene;          // a button's scene action, carried out after this frame
-  std::vector<std::string> came_from; // scenes a button switched away from (Backspace goes back)
-  bool going_back = false;            // the pending switch is a Backspace: do not remember it
-  std::string notice;                 // a short answer shown in the readouts until notice_until_s
-  double notice_until_s = 0.0, now_s = 0.0;  // now_s: this frame's window time
-  std::map<std::string, std::string> haptic_edits;  // the panel's edits the haptic scene was built with
-  ReadoutsLog readouts_log;           // --readouts-log
-  int frame_keys = 0;                 // key presses handled this frame (the readouts log's `keys`)
 };
 
-// run_frame.cpp: the device, the session's opening and what is drawn over each frame.
+// The scenes a button switched through (Backspace goes back) and the switch asked for.
+struct SceneTrail {
+  std::string pending;                 // a button's scene action, carried out after this frame
+  std::vector<std::string> came_from;  // scenes a button switched away from
+  bool going_back = false;             // the pending switch is a Backspace: do not remember it
+};
+
+// The parts, owned together by the frame loop (run_cmd.cpp). Declared in the order they must
+// outlive each other: the window (its context and device) outlives the renderer and the haptic
+// loop; the loop's event consumers hold the trail and the tuning.
+struct RunState {
+  WindowIo io;
+  std::unique_ptr<TuneSession> tune;  // owns the Renderer; swaps in a new one on reload
+  std::string shown_error;            // last reload error printed to the console
+  SceneTrail trail;
+  LiveHaptics haptics;
+  FrameReadouts readouts;
+};
+
+// run_frame.cpp: the device, the window's opening and what is drawn over each frame.
 // The window's tuning session for `scene` (from `scene_path` with the `sets`): its renderer's
 // options and its first view's flags, the same at the start and after a button's scene switch.
 TuneSource window_tune_source(const RunArgs& a, std::string scene_path, std::vector<std::string> sets,
                               std::vector<std::string> allow_paths);
-Status open_session(const RunArgs& a, Scene scene, Session& s);
+Status open_run(const RunArgs& a, Scene scene, RunState& s);
 // The hand must be able to push every button of the scene past its travel (see run_frame.cpp).
-void fit_height_to_buttons(Session& s, const world::HapticScene& scene);
+void fit_height_to_buttons(const LiveWindow& win, const LiveHaptics& h, const world::HapticScene& scene);
 // The pointer devices map through the camera this frame draws with and the window's size.
 // `view_at_rest`: the workspace is the world (a new haptic scene's view starts there).
-void poll_device(Session& s, double now_s, bool poll_glfw, bool view_at_rest = false);
+void poll_device(const LiveWindow& win, const Renderer& r, LiveHaptics& h, double now_s, bool poll_glfw,
+                 bool view_at_rest = false);
 // The geometry felt changed: the hand goes back to the hover height (see run_frame.cpp).
-std::optional<glm::dvec3> place_hand(Session& s, std::shared_ptr<const world::HapticScene> felt, bool new_view);
+std::optional<glm::dvec3> place_hand(const LiveWindow& win, const Renderer& r, LiveHaptics& h,
+                                     std::shared_ptr<const world::HapticScene> felt, bool new_view);
 // The panel's edits, camera and probe of this frame as an override file (screenshots).
 std::string screenshot_state(const TuneSession& tune);
-Status draw_overlays(const RunArgs& a, Session& s, const HapticState& st, std::uint64_t frame, double now_s);
-void print_summary(const Session& s);
+// Refreshes and logs the readouts; returns the frame's shadow (where the overlays must not go).
+Result<ShadowMeasure> update_readouts(LiveWindow& win, const TuneSession& tune, const LiveHaptics& h,
+                                      FrameReadouts& ro, const HapticState& st, std::uint64_t frame, double now_s);
+// Readouts, help and panel over the frame, around `shadow` (after the screenshots).
+void draw_overlays(const RunArgs& a, WindowIo& io, TuneSession& tune, const HudReadouts& shown,
+                   const ShadowMeasure& shadow, std::uint64_t frame, double now_s);
+void print_summary(const HapticLoop& loop, const FrameReadouts& ro);
 
-// run_actions.cpp: keys, live charges, reloads and a button's scene switch.
-Status handle_keys(Session& s, int w, int h);
-void reload_haptic_scene(Session& s);
-void poll_reload(Session& s);
+// run_actions.cpp: keys, live charges, reloads and a button's scene switch, in the order the
+// frame loop calls them (handle_keys there).
+// The window's own keys (capture, panel, help, height), the window's presence; returns the keys
+// pressed this frame.
+int window_keys(WindowIo& io, HapticLoop& loop);
+// C, Shift+C (live charges) and Home (the view back where the scene started).
+void haptic_keys(WindowInput& in, const LiveWindow& win, const Renderer& r, LiveHaptics& h);
+// Backspace: back to the scene a button came from, or a notice saying there is none.
+void back_key(WindowInput& in, SceneTrail& trail, FrameReadouts& ro, double now_s);
+// P, D (flags), 1-6 (4D turn), orbit and zoom: the tuning's view.
+void view_keys(WindowInput& in, TuneSession& tune);
+// S: the frame and the state that made it (before the overlays are drawn).
+Status save_screenshots(WindowIo& io, const TuneSession& tune, int w, int h);
+void reload_haptic_scene(const LiveWindow& win, const TuneSession& tune, LiveHaptics& h);
+void poll_reload(const LiveWindow& win, TuneSession& tune, LiveHaptics& h, std::string& shown_error);
 // Returns the new scene's number (HapticLoop::replace_scene); 0: it stayed (the file failed to load).
-std::uint64_t switch_scene(const RunArgs& a, Session& s);
+std::uint64_t switch_scene(const RunArgs& a, const LiveWindow& win, std::unique_ptr<TuneSession>& tune,
+                           LiveHaptics& h, SceneTrail& trail);
 
 }  // namespace ps::run_live

@@ -101,6 +101,14 @@ glm::ivec2 LiveWindow::framebuffer_size() const {
   return s;
 }
 
+std::optional<glm::dvec2> LiveWindow::pointer_in_window() const {
+  const glm::ivec2 size = window_size();
+  glm::dvec2 p(0.0);
+  glfwGetCursorPos(window_, &p.x, &p.y);
+  if (p.x >= 0.0 && p.y >= 0.0 && p.x < size.x && p.y < size.y) return p;
+  return std::nullopt;
+}
+
 void LiveWindow::set_title(const std::string& title) { glfwSetWindowTitle(window_, title.c_str()); }
 
 void LiveWindow::begin_frame() {

@@ -18,6 +18,7 @@
 #pragma once
 
 #include <memory>
+#include <optional>
 #include <string>
 
 #include <glm/glm.hpp>
@@ -61,6 +62,7 @@ class LiveWindow {
   bool hovered() const;                // the pointer is over the window now
   glm::ivec2 window_size() const;      // screen coordinates (ImGui's units)
   glm::ivec2 framebuffer_size() const; // pixels
+  std::optional<glm::dvec2> pointer_in_window() const;  // screen coordinates; none: outside
   void set_title(const std::string& title);
 
   // The frame over the picture the program put on the back buffer (a blit, draw_frame_image).

@@ -10,6 +10,7 @@
 
 #include "app/window/panel_links.h"
 #include "reference/modulation.h"
+#include "tune/edit_key.h"
 #include "tune/overrides_file.h"
 
 namespace ps {
@@ -201,7 +202,7 @@ void TunePanel::world_section(TuneSession& session) {
 // as a table file). Until edited, a button turns the curve into kEditRows rows sampled from it.
 void TunePanel::curve_editor(TuneSession& session, const Material& m, bool intensity, double x_max) {
   constexpr int kMaxSliders = 24;
-  const std::string key = "materials." + m.name + (intensity ? ".intensity_lut" : ".speed_gain_lut");
+  const std::string key = EditKey::curve(m.name, intensity ? CurveKind::kIntensity : CurveKind::kSpeedGain).text();
   const Lut& scene_lut = intensity ? m.intensity_lut : m.speed_gain_lut;
   const auto edited = session.curve_edits().find(key);
   const Lut* cur = edited != session.curve_edits().end() ? &edited->second : scene_lut.empty() ? nullptr : &scene_lut;
