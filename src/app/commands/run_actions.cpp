@@ -41,8 +41,8 @@ constexpr double kLiveChargeNmm2 = -60.0;
 // Shift+C removes the one nearest the proxy. The haptic thread adopts the set at its next tick
 // and raises charge_added / charge_removed (the event log and the sounds follow).
 void edit_live_charges(LiveHaptics& h, bool add) {
-  LiveCharges c = h.loop->live_charges().read();  // the render thread is its only writer
-  const glm::dvec3 at = h.loop->state().read().proxy_mm;
+  LiveCharges c = h.loop()->live_charges().read();  // the render thread is its only writer
+  const glm::dvec3 at = h.loop()->state().read().proxy_mm;
   if (add) {
     if (c.count == LiveCharges::kMax) {
       std::fprintf(stderr, "live charges: at most %d; remove one first (Shift+C)\n", LiveCharges::kMax);
@@ -64,7 +64,7 @@ void edit_live_charges(LiveHaptics& h, bool add) {
     }
     --c.count;
   }
-  h.loop->live_charges().publish(c);
+  h.loop()->live_charges().publish(c);
 }
 
 // Keys 1-6 (Shift: back): the fourd surfaces turn 5 degrees in a 4D plane; the renderer is
@@ -142,7 +142,7 @@ int window_keys(WindowIo& io, HapticLoop& loop) {
 void haptic_keys(WindowInput& in, const LiveWindow& win, const Renderer& r, LiveHaptics& h) {
   if (in.add_charge || in.remove_charge) edit_live_charges(h, in.add_charge);
   in.add_charge = in.remove_charge = false;
-  if (std::exchange(in.home, false)) h.loop->request_view_home(place_hand(win, r, h, h.floor.scene(), true));
+  if (std::exchange(in.home, false)) h.loop()->request_view_home(place_hand(win, r, h, h.floor.scene(), true));
 }
 
 void back_key(WindowInput& in, SceneTrail& trail, FrameReadouts& ro, double now_s) {
@@ -169,7 +169,7 @@ void reload_haptic_scene(const LiveWindow& win, const TuneSession& tune, LiveHap
   auto felt = std::make_shared<const world::HapticScene>(std::move(built.value()));
   // The loop starts the scene's view afresh.
   const std::optional<glm::dvec3> hand = place_hand(win, tune.renderer(), h, felt, true);
-  h.loop->replace_scene(std::move(felt), tune.scene_path(), hand);
+  h.loop()->replace_scene(std::move(felt), tune.scene_path(), hand);
   h.vibration->set_scene(tune.renderer().scene());  // the edited materials' vibration too
 }
 
@@ -213,7 +213,7 @@ std::uint64_t switch_scene(const RunArgs& a, const LiveWindow& win, std::unique_
   fit_height_to_buttons(win, h, haptic.value());
   auto felt = std::make_shared<const world::HapticScene>(std::move(haptic.value()));
   const std::optional<glm::dvec3> hand = place_hand(win, tune->renderer(), h, felt, true);
-  const std::uint64_t serial = h.loop->replace_scene(std::move(felt), std::filesystem::path(path).filename().string(), hand);
+  const std::uint64_t serial = h.loop()->replace_scene(std::move(felt), std::filesystem::path(path).filename().string(), hand);
   h.vibration->set_scene(tune->renderer().scene());
   if (!a.quiet) std::printf("button: switched to %s\n", path.c_str());
   return serial;

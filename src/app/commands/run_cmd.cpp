@@ -155,9 +155,10 @@ Status draw_switched_scene(Renderer& r, HapticLoop& loop, std::uint64_t serial, 
   return drive_frame(r, loop, frame, st);
 }
 
-// The frame loop's bookkeeping: when the files were last polled and the recording last flushed.
+// The frame loop's bookkeeping: when the files were last polled (the recording's flush is
+// RecordedLoop's).
 struct LoopTimes {
-  double last_flush = 0.0, last_watch = 0.0;
+  double last_watch = 0.0;
 };
 
 // The keys, in the order they act: the window's own, the live charges and Home (the hand placed
@@ -165,7 +166,7 @@ struct LoopTimes {
 // the screenshots read GL_BACK before the overlays are drawn.
 Status handle_keys(RunState& s, glm::ivec2 fb, double now_s) {
   WindowInput& in = s.io.input;
-  s.readouts.frame_keys = run_live::window_keys(s.io, *s.haptics.loop);
+  s.readouts.frame_keys = run_live::window_keys(s.io, *s.haptics.loop());
   run_live::haptic_keys(in, *s.io.window, s.tune->renderer(), s.haptics);
   run_live::back_key(in, s.trail, s.readouts, now_s);
   run_live::view_keys(in, *s.tune);
@@ -178,16 +179,16 @@ Status handle_keys(RunState& s, glm::ivec2 fb, double now_s) {
 Status live_frame(const RunArgs& a, RunState& s, std::uint64_t frame, double now_s, LoopTimes& t, HapticState& st) {
   LiveWindow& win = *s.io.window;
   LiveHaptics& h = s.haptics;
-  run_live::poll_device(win, s.tune->renderer(), h, h.loop->state().read().time_s, !s.io.ui->panel().wants_input());
+  run_live::poll_device(win, s.tune->renderer(), h, h.loop()->state().read().time_s, !s.io.ui->panel().wants_input());
   if (a.watch && now_s - t.last_watch >= kWatchPeriodS) {
     t.last_watch = now_s;
     run_live::poll_reload(win, *s.tune, h, s.shown_error);
   }
-  if (Status r = drive_frame(s.tune->renderer(), *h.loop, frame, st); !r) return r;
-  if (Status r = h.events->pump(h.loop->events()); !r) return r;
+  if (Status r = drive_frame(s.tune->renderer(), *h.loop(), frame, st); !r) return r;
+  if (Status r = h.events->pump(h.loop()->events()); !r) return r;
   if (!s.trail.pending.empty()) {
     const std::uint64_t serial = run_live::switch_scene(a, win, s.tune, h, s.trail);
-    if (Status r = draw_switched_scene(s.tune->renderer(), *h.loop, serial, frame, st); !r) return r;
+    if (Status r = draw_switched_scene(s.tune->renderer(), *h.loop(), serial, frame, st); !r) return r;
   }
   const glm::ivec2 fb = win.framebuffer_size();
   present_to_default_framebuffer(s.tune->renderer(), fb.x, fb.y);
@@ -218,10 +219,8 @@ Status window_loop(const RunArgs& a, RunState& s, const cli::StopSignals& stop) 
     HapticState st;
     if (Status r = live_frame(a, s, frame, now_s, times, st); !r) return r;
     count_frame(s.readouts, st, f0);
-    if (s.haptics.recorder && now_s - times.last_flush >= 1.0) {  // a crash loses at most the last second
-      if (Status r = s.haptics.recorder->flush(); !r) return r;
-      times.last_flush = now_s;
-    }
+    // The recording, about once a second: a crash loses at most the last second.
+    if (Status r = s.haptics.recorded->flush_due(st.time_s); !r) return r;
   }
   return ok_status();
 }
@@ -258,11 +257,10 @@ int report_stop(const RunArgs& a, const cli::StopSignals& stop) {
 
 // Joins the haptic thread before touching what it wrote, then closes what the loop wrote to.
 Status close_haptics(LiveHaptics& h) {
-  h.loop->stop();
+  h.loop()->stop();
   h.vibration->close();
-  if (h.recorder)
-    if (Status st = h.recorder->close(); !st) return st;
-  return h.events->close(h.loop->events());
+  if (Status st = h.recorded->finish(); !st) return st;
+  return h.events->close(h.loop()->events());
 }
 
 int run(const cli::Command& cmd, const RunArgs& a) {
@@ -276,13 +274,13 @@ int run(const cli::Command& cmd, const RunArgs& a) {
   if (Status st = open_events(a, h, s.trail, s.tune); !st) return cmd.fail(st.error());
   if (!a.readouts_log.empty())
     if (Status st = s.readouts.log.open(a.readouts_log); !st) return cmd.fail(st.error());
-  h.loop->start();
+  h.loop()->start();
   h.vibration->start();
   // The first frame shows the device's probe, not the scene's: wait for the first tick (about
   // 1 ms; bounded, as a gamepad may have nothing to give yet).
-  for (int i = 0; i < 100 && !h.loop->state().read().have_sample; ++i)
+  for (int i = 0; i < 100 && !h.loop()->state().read().have_sample; ++i)
     std::this_thread::sleep_for(std::chrono::milliseconds(1));
-  if (!a.quiet) std::printf("haptic thread: %s; %s\n", h.loop->scheduling().c_str(), live->report().c_str());
+  if (!a.quiet) std::printf("haptic thread: %s; %s\n", h.loop()->scheduling().c_str(), live->report().c_str());
   const cli::StopSignals stop;  // SIGTERM, SIGINT, SIGHUP: the window closes as with Esc
   const Status looped = window_loop(a, s, stop);
   if (Status st = close_haptics(h); !st) return cmd.fail(st.error());
@@ -290,7 +288,7 @@ int run(const cli::Command& cmd, const RunArgs& a) {
   if (Status st = s.readouts.log.close(); !st) return cmd.fail(st.error());
   if (Status st = write_reports(a, s.io, s.tune->renderer(), s.readouts.frame_ms.count()); !st)
     return cmd.fail(st.error());
-  if (!a.quiet) run_live::print_summary(*h.loop, s.readouts);
+  if (!a.quiet) run_live::print_summary(*h.loop(), s.readouts);
   if (!a.quiet && h.vibration->active()) std::printf("%s\n", h.vibration->summary().c_str());
   return stop.requested() ? report_stop(a, stop) : cli::kExitOk;
 }

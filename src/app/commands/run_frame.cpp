@@ -137,7 +137,7 @@ Status log_readouts(const LiveWindow& win, const Renderer& renderer, const LiveH
 // in, so that button needs 20 mm more.
 void fit_height_to_buttons(const LiveWindow& win, const LiveHaptics& h, const world::HapticScene& scene) {
   if (!win.input()) return;
-  const double coupling = h.loop->params().forces.coupling_n_per_mm;
+  const double coupling = h.loop()->params().forces.coupling_n_per_mm;
   double deepest = 0.0;
   // The hover height counts from the surface under the pointer (app/session/free_height.h), a button's
   // face included: the range needs the deepest press below a face, not below the plane.
@@ -161,7 +161,7 @@ void poll_device(const LiveWindow& win, const Renderer& r, LiveHaptics& h, doubl
   if (!device || !poll_glfw) return;
   // The mouse hovers over the surface under the pointer (app/session/free_height.h), lowered from the
   // camera's height over the plane; the workspace moves with a [navigation] box or a rolling view.
-  const HapticState st = h.loop && !view_at_rest ? h.loop->state().read() : HapticState{};
+  const HapticState st = h.loop() && !view_at_rest ? h.loop()->state().read() : HapticState{};
   h.floor.set_pose(st.view_rotation, st.view_offset_mm);
   h.floor.set_top_mm(std::max(glm::dot(view.camera.position - view.plane.origin, view.plane.n), 60.0));
   view.floor = &h.floor;
@@ -184,8 +184,8 @@ void poll_device(const LiveWindow& win, const Renderer& r, LiveHaptics& h, doubl
   const auto cuts = [&] {
     return hover > 0.25 && !h.floor.path_clear(before, after + 0.5 * (after - before), view.probe_radius_mm, 0.5 * hover);
   };
-  if (h.loop && hover >= 0.0 && (rose_or_fell || device->parallax_jump_mm() > 1.0 || cuts()))
-    h.loop->place_hand(after, view.plane.n, h.floor.last_normal());
+  if (h.loop() && hover >= 0.0 && (rose_or_fell || device->parallax_jump_mm() > 1.0 || cuts()))
+    h.loop()->place_hand(after, view.plane.n, h.floor.last_normal());
 }
 
 // The geometry felt changed (a scene switch, a reload, a panel edit, a 4D turn): the hand goes
@@ -197,7 +197,7 @@ std::optional<glm::dvec3> place_hand(const LiveWindow& win, const Renderer& r, L
   h.floor.set_scene(std::move(felt));
   if (!win.input()) return std::nullopt;
   win.input()->reset_height();
-  poll_device(win, r, h, h.loop->state().read().time_s, true, new_view);
+  poll_device(win, r, h, h.loop()->state().read().time_s, true, new_view);
   return win.input()->read(0.0).position_mm;
 }
 
@@ -215,8 +215,8 @@ TuneSource window_tune_source(const RunArgs& a, std::string scene_path, std::vec
   return source;
 }
 
-// The haptic side: the haptic scene, the loop on the window's device, the vibration and the
-// recorder; the pointer devices already placed over the scene.
+// The haptic side: the haptic scene, the loop on the window's device with its recording, the
+// vibration; the pointer devices already placed over the scene.
 Status open_haptics(const RunArgs& a, const LiveWindow& win, const Renderer& r, LiveHaptics& h) {
   h.axes = pointer_plane(r);  // fixed at start so the mapping stays put
   HapticLoopParams params;
@@ -225,16 +225,13 @@ Status open_haptics(const RunArgs& a, const LiveWindow& win, const Renderer& r, 
   if (!haptic_scene) return haptic_scene.error();
   h.scene = std::make_shared<const world::HapticScene>(std::move(haptic_scene.value()));
   h.floor.set_scene(h.scene);  // the first sample already hovers over what is under the pointer
-  h.loop = std::make_unique<HapticLoop>(win.device(), h.clock, params, h.scene.get());
+  // The loop with the device stream's recording (--record; flushed about once a second).
+  h.recorded = std::make_unique<RecordedLoop>(win.device(), h.clock, params, h.scene.get(), a.record, 0);
   fit_height_to_buttons(win, h, *h.scene);
-  h.vibration = cli::open_live_vibration(a.live, r.scene(), *h.loop);
+  h.vibration = cli::open_live_vibration(a.live, r.scene(), *h.loop());
   if (win.input() || win.pointer()) {  // they move over the plane: distance known from the start
-    h.loop->surface().publish(initial_surface_model(h.axes, r.scene().probe.radius_mm));
+    h.loop()->surface().publish(initial_surface_model(h.axes, r.scene().probe.radius_mm));
     poll_device(win, r, h, 0.0, true);  // the first tick already has a sample
-  }
-  if (!a.record.empty()) {
-    h.recorder = std::make_unique<SampleRecorder>(a.record);
-    h.loop->set_recorder(h.recorder.get());
   }
   return ok_status();
 }
@@ -290,7 +287,7 @@ Result<ShadowMeasure> update_readouts(LiveWindow& win, const TuneSession& tune, 
   if (!shadow) return shadow.error();
   // Built once a frame when it is logged, else only at a refresh (4 times a second).
   std::optional<HudReadouts> now;
-  const double coupling = h.loop->params().forces.coupling_n_per_mm;
+  const double coupling = h.loop()->params().forces.coupling_n_per_mm;
   if (ro.log.is_open() || refresh) now = current_readouts(tune, ro, coupling, st, shadow.value(), now_s);
   if (ro.log.is_open())
     if (Status r = log_readouts(win, tune.renderer(), h, ro, st, shadow.value(), *now, frame); !r) return r.error();

@@ -23,6 +23,7 @@
 #include "devices/device_spec.h"
 #include "devices/glfw_input.h"
 #include "haptics/loop_stats.h"
+#include "haptics/session_driver.h"
 #include "image/image.h"
 #include "tune/tune_session.h"
 
@@ -58,8 +59,10 @@ struct LiveHaptics {
   FreeHeight floor;  // the surface under the pointer: the mouse's height counts from it
   PlaneAxes axes;    // the pointer's plane, fixed per scene so the mapping stays put
   std::unique_ptr<vibration::LiveVibration> vibration;  // before the loop too: the loop feeds it ticks
-  std::unique_ptr<HapticLoop> loop;
-  std::unique_ptr<SampleRecorder> recorder;
+  // The loop on the window's device with the device stream's recording (--record), flushed
+  // about once a second (haptics/session_driver.h, as replay's and the maze's).
+  std::unique_ptr<RecordedLoop> recorded;
+  HapticLoop* loop() const { return recorded ? &recorded->loop() : nullptr; }
   std::unique_ptr<RunEvents> events;  // the one consumer of loop->events(): log, sound, ...
   std::uint32_t last_charge_id = 0;   // live charges: ids are never reused
   // The tuning's edits the haptic scene was built with (TuneSession::edits_generation).
