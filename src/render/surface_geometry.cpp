@@ -18,7 +18,11 @@ Aabb mesh_bounds(const Mesh& m) { return {m.bounds_min, m.bounds_max}; }
 double SurfaceGeometry::nearest_w(const glm::dvec3& probe_mm, double fallback) const {
   // The nearest point of the triangles, not the nearest vertex: where two sheets cross in the
   // picture, a probe hovering over one can be nearer a vertex of the other (Roman's crossing,
-  // 4 mm over the one seen) and the shadow would then be drawn on the hidden sheet.
+  // 4 mm over the one seen) and the shadow would then be drawn on the hidden sheet. The w is that
+  // triangle's corner nearest the point (its largest barycentric weight), not interpolated: it
+  // stays put while the probe moves within the corner's part of the sheet, as the sheet's w is
+  // part of the frame key (a changed w redraws every pixel), and the band around it (15 % of the
+  // surface's w range) is far wider than a triangle's own change of w.
   double w = fallback, best = std::numeric_limits<double>::infinity();
   for (std::size_t t = 0; t + 2 < sheet_indices.size(); t += 3) {
     const std::uint32_t i = sheet_indices[t], j = sheet_indices[t + 1], k = sheet_indices[t + 2];
@@ -26,7 +30,9 @@ double SurfaceGeometry::nearest_w(const glm::dvec3& probe_mm, double fallback) c
     const glm::dvec3 q = fourd::closest_on_triangle(probe_mm, sheet_positions[i], sheet_positions[j], sheet_positions[k], bary);
     const glm::dvec3 d = q - probe_mm;
     const double d2 = glm::dot(d, d);
-    if (d2 < best) best = d2, w = bary.x * w4[i] + bary.y * w4[j] + bary.z * w4[k];
+    if (!(d2 < best)) continue;
+    best = d2;
+    w = w4[bary.x >= bary.y && bary.x >= bary.z ? i : bary.y >= bary.z ? j : k];
   }
   return w;
 }

@@ -25,7 +25,7 @@ struct SurfaceGeometry {
   std::vector<std::uint32_t> sheet_indices;   // and the vertices' w
   std::vector<float> w4;                      // (all empty for other surfaces)
   float w_min = 0.0f, w_max = 0.0f;
-  // The w of the surface point nearest `probe_mm` (interpolated over its triangle): the sheet a
+  // The w of the surface point nearest `probe_mm` (its triangle's nearest corner's): the sheet a
   // probe the haptic side holds on none (hovering, or `render`) casts its shadow on. `fallback`
   // when there is none (no triangles, a NaN probe).
   double nearest_w(const glm::dvec3& probe_mm, double fallback) const;

@@ -26,14 +26,16 @@ TEST(SurfaceGeometryTest, AHoveringProbesSheetIsTheNearestSurfacePointsNotTheNea
   EXPECT_DOUBLE_EQ(g.nearest_w({3.0, 0.0, 9.0}, 0.0), -1.0);
 }
 
-// Within a triangle the w is interpolated (the band the shadow is drawn in is centred on the
-// sheet's w where the probe is, not at a corner): closed form, barycentric (1/4, 1/4, 1/2).
-TEST(SurfaceGeometryTest, TheWIsInterpolatedOverTheNearestTriangle) {
+// Within the nearest triangle the w is its nearest corner's (a w that changed with every move of
+// the probe would redraw every pixel of every frame: the sheet's w is part of the frame key).
+TEST(SurfaceGeometryTest, TheWIsTheNearestTrianglesNearestCorners) {
   SurfaceGeometry g;
   g.sheet_positions = {{0.0f, 0.0f, 0.0f}, {40.0f, 0.0f, 0.0f}, {0.0f, 40.0f, 0.0f}};
   g.sheet_indices = {0, 1, 2};
   g.w4 = {0.0f, 2.0f, 4.0f};
-  EXPECT_NEAR(g.nearest_w({10.0, 20.0, 3.0}, -9.0), 0.25 * 0.0 + 0.25 * 2.0 + 0.5 * 4.0, 1e-6);
+  EXPECT_EQ(g.nearest_w({10.0, 20.0, 3.0}, -9.0), 4.0) << "barycentric (1/4, 1/4, 1/2)";
+  EXPECT_EQ(g.nearest_w({11.0, 20.0, 3.0}, -9.0), 4.0) << "a mm along: the same w";
+  EXPECT_EQ(g.nearest_w({30.0, 2.0, 3.0}, -9.0), 2.0);
   EXPECT_EQ(g.nearest_w({std::nan(""), 0.0, 0.0}, -9.0), -9.0) << "a NaN probe keeps the fallback";
   EXPECT_EQ(SurfaceGeometry{}.nearest_w({1.0, 2.0, 3.0}, -9.0), -9.0) << "no triangles: the fallback";
 }
