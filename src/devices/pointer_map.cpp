@@ -89,17 +89,17 @@ void HeightControl::reach_depth(double depth_mm) {
   set(mm_);
 }
 
-glm::dvec3 PointerMap::centre(const PointerView& view, double height_mm) const {
+glm::dvec3 PointerMap::centre(const PointerView& view, double height_mm, const std::optional<glm::dvec3>& rest) const {
   const glm::dvec3 at = hit(view);
   // Hovering, the probe keeps h from every surface: lowered as a sphere of R + h, it rests h
   // above what it would touch (on a slope along the slope's normal, as lowering_point places it).
   // Pressing in (h < 0) goes on along n from the touching place.
-  // This reading's lowering (absolute()) is taken where it was of the same sphere.
+  // `rest`: this reading's sphere of R + h, lowered over `at` already (PointerHits::rest_centre).
   const double hover = std::max(height_mm, 0.0);
   const double r = view.probe_radius_mm + hover;
   double lift = 0.0;
-  if (rest_centre_ && rest_radius_mm_ == r)
-    lift = glm::dot(*rest_centre_ - at, view.plane.n) - r;
+  if (rest)
+    lift = glm::dot(*rest - at, view.plane.n) - r;
   else if (view.floor)
     lift = view.floor->lift_mm(at, view.plane.n, r);
   return at + (view.probe_radius_mm + (std::isfinite(lift) ? lift : 0.0) + height_mm) * view.plane.n;
@@ -107,24 +107,22 @@ glm::dvec3 PointerMap::centre(const PointerView& view, double height_mm) const {
 
 void PointerMap::set_hit(const glm::dvec3& hit_mm) {
   if (!finite(hit_mm)) return;
-  rest_centre_.reset();
   hit_ = hit_mm;
   have_hit_ = true;
 }
 
 glm::dvec3 PointerMap::absolute(const PointerView& view, const glm::dvec2& pointer, double height_mm) {
-  rest_centre_.reset();
+  std::optional<glm::dvec3> rest;  // lowered already by this reading, over the new hit
   if (std::isfinite(pointer.x) && std::isfinite(pointer.y) && view.window_size.x > 0.0 && view.window_size.y > 0.0)
     if (const PointerHits h = pointer_hits(view, pointer, height_mm); h.hit) {
-      rest_centre_ = h.rest_centre;
-      rest_radius_mm_ = view.probe_radius_mm + std::max(height_mm, 0.0);
+      rest = h.rest_centre;
       const glm::dvec3 parallax = h.on_plane ? *h.hit - *h.on_plane : glm::dvec3(0.0);
       parallax_jump_mm_ = have_hit_ ? glm::length(parallax - parallax_) : 0.0;
       parallax_ = parallax;
       hit_ = *h.hit;
       have_hit_ = true;
     }
-  return centre(view, height_mm);
+  return centre(view, height_mm, rest);
 }
 
 glm::dvec3 PointerMap::relative(const PointerView& view, const glm::dvec2& counts, double mm_per_count,
@@ -132,7 +130,6 @@ glm::dvec3 PointerMap::relative(const PointerView& view, const glm::dvec2& count
   glm::dvec3 right, up;
   screen_axes_on_plane(view, right, up);
   const glm::dvec3 moved = hit(view) + mm_per_count * (counts.x * right - counts.y * up);  // y down on screen
-  rest_centre_.reset();
   if (finite(moved)) {
     hit_ = moved;
     have_hit_ = true;

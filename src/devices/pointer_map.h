@@ -158,13 +158,10 @@ class PointerMap {
   double parallax_jump_mm() const { return parallax_jump_mm_; }
 
  private:
-  glm::dvec3 centre(const PointerView& view, double height_mm) const;
+  // The probe's centre over the hit point at height_mm; `rest`: the sphere of R + max(h, 0) this
+  // reading lowered over it already (absolute()), so it is not lowered again.
+  glm::dvec3 centre(const PointerView& view, double height_mm, const std::optional<glm::dvec3>& rest = std::nullopt) const;
   glm::dvec3 hit_{0.0};
-  // The last absolute() reading's lowered centre over hit_ (PointerHits::rest_centre) and the
-  // sphere's radius it was lowered with; centre() takes it for that radius instead of lowering
-  // the probe again. Any other way of moving hit_ drops it.
-  std::optional<glm::dvec3> rest_centre_;
-  double rest_radius_mm_ = 0.0;
   glm::dvec3 parallax_{0.0};  // hit_ minus the plane's own hit (0 on the plane)
   double parallax_jump_mm_ = 0.0;
   bool have_hit_ = false;
