@@ -16,12 +16,19 @@ The rule, so the points are chosen without looking at where the shadow lands:
     creases), so a hand's pixel of jitter does not fall off an edge;
   - outside the readouts box (top left) where the window draws over the image, and 64 px from
     the window's edges (a shadow cut there has its centre pulled inwards);
+  - with --inside-navigation-box: where the ray through the pixel meets the scene's floor
+    (--floor-z, the floor's top) with the probe's centre inside the [navigation] box's walls, less
+    the probe's radius and --box-margin-mm (beyond a wall the pointer flies the view, by design);
+  - with --outside-visual-stretch: where the ray through the pixel passes no surface drawn with a
+    visual_stretch within the reach of its stretch (the drawn probe is moved off the hand there,
+    by design: Illusion);
   - spread by farthest-point sampling from the qualifying pixel nearest the window's centre.
 The points are the walk's inputs, not its expected outputs: the check (near=PX) measures the
 shadow the window draws there.
 """
 import argparse
 import sys
+import tomllib
 
 import numpy as np
 
@@ -66,6 +73,81 @@ def qualifying(normal, reference, min_facing, margin, max_crease_deg=None):
     return ok
 
 
+def pixel_rays(camera, shape):
+    """The eye and the ray through each pixel centre (perspective camera, world mm)."""
+    h, w = shape
+    eye = np.asarray(camera["position"], dtype=np.float64)
+    forward = np.asarray(camera["target"], dtype=np.float64) - eye
+    forward /= np.linalg.norm(forward)
+    right = np.cross(forward, np.asarray(camera["up"], dtype=np.float64))
+    right /= np.linalg.norm(right)
+    up = np.cross(right, forward)
+    if camera.get("projection", "perspective") != "perspective":
+        sys.exit("pointing_points: --inside-navigation-box needs a perspective camera")
+    tan_half = np.tan(np.radians(camera["fov_y_deg"]) / 2)
+    ys, xs = np.mgrid[0:h, 0:w]
+    u = ((xs + 0.5) / w * 2 - 1) * tan_half * w / h
+    v = (1 - (ys + 0.5) / h * 2) * tan_half
+    rays = forward + u[..., None] * right + v[..., None] * up
+    return eye, rays / np.linalg.norm(rays, axis=2, keepdims=True)
+
+
+def floor_points(camera, shape, floor_z):
+    """Where the ray through each pixel centre meets the plane z = floor_z (NaN: it does not)."""
+    eye, rays = pixel_rays(camera, shape)
+    with np.errstate(divide="ignore", invalid="ignore"):
+        t = (floor_z - eye[2]) / rays[..., 2]
+    t[~(t > 0)] = np.nan
+    return eye + t[..., None] * rays
+
+
+def load(scene):
+    with open(scene, "rb") as f:
+        return tomllib.load(f)
+
+
+def inside_box(scene, shape, floor_z, margin_mm):
+    """Pixels whose floor point puts the probe's centre inside the navigation box's walls."""
+    doc = load(scene)
+    nav = doc.get("navigation")
+    if nav is None:
+        sys.exit(f"pointing_points: {scene} has no [navigation] box")
+    centre = np.asarray(nav["box_center"], dtype=np.float64)
+    half = np.asarray(nav["box_size_mm"], dtype=np.float64) / 2
+    inset = doc["probe"]["radius_mm"] + margin_mm
+    p = floor_points(doc["camera"], shape, floor_z)
+    with np.errstate(invalid="ignore"):
+        return (np.abs(p[..., 0] - centre[0]) <= half[0] - inset) & (np.abs(p[..., 1] - centre[1]) <= half[1] - inset)
+
+
+def outside_stretch(scene, shape, floor_z):
+    """Pixels whose probe hovers nowhere near a surface drawn with a visual_stretch: within its felt
+    radius + the probe's radius + 10 mm (and a 20 mm fade) of its centre the drawn probe is
+    stretched away from the hand, by design (src/render/world_markers.h, visual_position). Left out:
+    rays that meet the drawn (stretched) sphere, and floor points whose hovering probe lies within
+    that reach."""
+    doc = load(scene)
+    eye, rays = pixel_rays(doc["camera"], shape)
+    radius = doc["probe"]["radius_mm"]
+    centres = floor_points(doc["camera"], shape, floor_z + radius)
+    ok = np.ones(shape, dtype=bool)
+    for s in doc.get("surfaces", []):
+        stretch = s.get("visual_stretch", [1.0, 1.0, 1.0])
+        if list(stretch) == [1.0, 1.0, 1.0]:
+            continue
+        if s["type"] != "sphere":
+            sys.exit("pointing_points: --outside-visual-stretch knows a stretched sphere only")
+        centre = np.asarray(s["center"], dtype=np.float64)
+        to_centre = centre - eye
+        along = rays @ to_centre
+        miss = np.linalg.norm(to_centre - along[..., None] * rays, axis=2)
+        reach = s["radius_mm"] + radius + 10.0 + 20.0
+        with np.errstate(invalid="ignore"):
+            far = np.linalg.norm(centres - centre, axis=2) > reach
+        ok &= (miss > s["radius_mm"] * max(stretch)) & far
+    return ok
+
+
 def spread(ok, count):
     ys, xs = np.nonzero(ok)
     if len(xs) == 0:
@@ -93,6 +175,15 @@ def main():
                     help="leave out pixels where the normal turns by more than this to a neighbour")
     ap.add_argument("--check", default="free", choices=["free", "sheets"],
                     help="the walk's check while the pointer moves (sheets: a surface embedded in 4D)")
+    ap.add_argument("--inside-navigation-box", action="store_true",
+                    help="only where the hovering probe stays inside the scene's [navigation] box")
+    ap.add_argument("--floor-z", type=float, default=0.0, help="the floor's top, mm (--inside-navigation-box, --outside-visual-stretch)")
+    ap.add_argument("--box-margin-mm", type=float, default=5.0,
+                    help="mm inside the box's walls beyond the probe's radius (--inside-navigation-box)")
+    ap.add_argument("--outside-visual-stretch", action="store_true",
+                    help="only where the ray passes no surface drawn with a visual_stretch (Illusion)")
+    ap.add_argument("--settle", type=float, default=0.0,
+                    help="seconds to wait at each point before the rest check (a rolling view settles)")
     a = ap.parse_args()
     try:
         import pseudoshadow
@@ -100,11 +191,21 @@ def main():
         sys.exit("pointing_points: the Python module is not found: run with PYTHONPATH=build/python")
     frame = pseudoshadow.Renderer(a.scene).render(aovs=["normal"])
     ok = qualifying(frame.aovs["normal"], frame.stats["reference_normal"], a.min_facing, a.margin, a.max_crease_deg)
+    if a.inside_navigation_box:
+        ok &= inside_box(a.scene, ok.shape, a.floor_z, a.box_margin_mm)
+    if a.outside_visual_stretch:
+        ok &= outside_stretch(a.scene, ok.shape, a.floor_z)
     points = spread(ok, a.count)
     if len(points) < a.count:
         sys.exit(f"pointing_points: only {len(points)} qualifying points in {a.scene}")
     crease = f" --max-crease-deg {a.max_crease_deg:g}" if a.max_crease_deg is not None else ""
     check = f" --check {a.check}" if a.check != "free" else ""
+    if a.settle > 0:
+        crease += f" --settle {a.settle:g}"
+    if a.outside_visual_stretch:
+        crease += f" --outside-visual-stretch --floor-z {a.floor_z:g}"
+    if a.inside_navigation_box:
+        crease += f" --inside-navigation-box --floor-z {a.floor_z:g} --box-margin-mm {a.box_margin_mm:g}"
     print(f"# {a.count} points over the visible surfaces (tools/pointing_points.py --margin {a.margin} "
           f"--min-facing {a.min_facing:g}{crease}{check})")
     # From the window's centre (where the walks rest the pointer first), point to point as a hand
@@ -113,6 +214,8 @@ def main():
     at = (0.5, 0.5)
     for x, y in points:
         print(f"sweep {at[0]:.3f} {at[1]:.3f} {x:.3f} {y:.3f} 0.5 {a.check}")
+        if a.settle > 0:
+            print(f"wait {a.settle:g} {a.check}")
         print(f"wait 1.5 {a.check} still near={a.near:g}")
         at = (x, y)
 

@@ -204,6 +204,34 @@ TEST(PointingTest, AButtonsFaceIsSolidForPointing) {
   }
 }
 
+// A pointer plane facing the camera (Illusion's: its normal 45 degrees between the floor's and the
+// view's) over a button in the floor: the probe hovers along the button's own normal from the
+// pointed point, so its shadow (the nearest point, straight below) is under the pointer; lowered
+// along the plane's normal instead it came to rest (R + h) tan 45 degrees = 9 mm off, 26 px in
+// the Illusion window. Expected: the closed-form ray/face point plus (R + h) along +z; 0.05 mm as
+// above (the lowering stops within 0.01 mm of the plate).
+TEST(PointingTest, OverAButtonUnderATiltedPlaneTheProbeHoversAlongTheFacesNormal) {
+  FreeHeight floor;
+  floor.set_scene(felt(
+      "[probe]\nradius_mm = 8.0\n[materials.m]\nlambda_min = 0.5\n"
+      "[[surfaces]]\ntype = \"box\"\ncenter = [0.0, 0.0, -5.0]\nsize_mm = [160.0, 100.0, 10.0]\nmaterial = \"m\"\n"
+      "[[buttons]]\ncenter = [-25.0, 0.0, 0.0]\nsize_mm = [30.0, 30.0]\nstiffness_n_per_mm = 0.2\ntravel_mm = 3.0\n"
+      "action = \"flag:light\"\n"));
+  floor.set_top_mm(200.0);
+  PointerView view = perspective_view(&floor);
+  const glm::dvec3 n = glm::normalize(glm::dvec3(0.0, -1.0, 1.0));
+  // Through the camera target 20 mm above the floor, as Illusion's (a face on the plane itself maps
+  // by the plane's own hit: AFlatSceneMapsExactlyAsWithoutAFloor).
+  view.plane = {glm::dvec3(0.0, 0.0, 20.0), glm::dvec3(1.0, 0.0, 0.0), glm::cross(n, glm::dvec3(1.0, 0.0, 0.0)), n};
+  constexpr double h = 1.0;
+  for (const glm::dvec3 at : {glm::dvec3(-25.0, 0.0, 0.0), glm::dvec3(-32.0, 6.0, 0.0), glm::dvec3(-18.0, -8.0, 0.0)}) {
+    SCOPED_TRACE(testing::Message() << "at " << at.x << "," << at.y);
+    PointerMap map;
+    const glm::dvec3 centre = map.absolute(view, project_to_window(view, at), h);
+    EXPECT_NEAR(glm::length(centre - (at + glm::dvec3(0.0, 0.0, kRadius + h))), 0.0, 0.05);
+  }
+}
+
 // path_clear: a probe sphere moved straight along a segment, checked against a clearance. Over
 // the block's top at 3 mm (centre 30 + 8 + 3 above the plane): clear for a clearance of 2 mm,
 // not for 3.1 (the march stops within 0.01 mm of the clearance; a path grazing it within 0.1 mm

@@ -105,7 +105,7 @@ FloorLowering FreeHeight::lowering_point(const glm::dvec3& surface_ws, const glm
   const glm::dvec3 p = rotation_ * surface_ws + offset_mm_;
   const glm::dvec3 n = rotation_ * n_ws;
   for (const world::ButtonShape& b : scene_->button_shapes())
-    if (b.over(b.to_local(p))) return straight_over;  // pressed along the plane's normal (lift_mm)
+    if (b.over(b.to_local(p))) return over_button(surface_ws, p, b.normal(), n, r);
   const std::optional<glm::dvec3> m = normal_at(p, rotation_ * toward_eye_ws);
   if (!m) return straight_over;
   // A sphere touching p from outside has its centre at p + R m: lowered along -n over the point
@@ -120,6 +120,20 @@ FloorLowering FreeHeight::lowering_point(const glm::dvec3& surface_ws, const glm
     if (straight && glm::length(straight->touched - p) <= off) return rested(surface_ws, *straight, n, r);
   }
   return rested(glm::transpose(rotation_) * (p + shift - offset_mm_), *shifted, n, r);
+}
+
+FloorLowering FreeHeight::over_button(const glm::dvec3& surface_ws, const glm::dvec3& p, const glm::dvec3& face,
+                                      const glm::dvec3& n, double r) const {
+  // The face is flat and solid (a hole in the geometry, closed by the button's plate): no
+  // hollow to compare with, and lower() would fall into the pocket, so the plate's own normal
+  // places the sphere and rest_on_buttons() sets it on the plate, as lift_mm() does.
+  const FloorLowering straight_over{surface_ws, std::nullopt};
+  const double facing = glm::dot(face, n);
+  const glm::dvec3 shift = r * (face - facing * n);
+  if (facing < 0.5 || glm::length(shift) < 1e-6) return straight_over;  // a face along n: as before
+  const std::optional<Lowered> down = lower(p + shift, n, r);
+  if (!down) return straight_over;
+  return rested(glm::transpose(rotation_) * (p + shift - offset_mm_), *down, n, r);
 }
 
 std::optional<glm::dvec3> FreeHeight::first_hit(const PointerRay& ray) const {

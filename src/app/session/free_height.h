@@ -56,7 +56,9 @@ class FreeHeight final : public SurfaceFloor {
   // Over a slope, the point beside `surface_mm` (downhill, by R sin(slope)) where the probe is
   // lowered so that the surface point nearest to it is `surface_mm`: the shadow's dark core under
   // the pointer. The straight lowering is kept where it comes nearer (hollows narrower than the
-  // probe, an overhang over the shifted point) and over buttons (they are pressed along n).
+  // probe, an overhang over the shifted point). Over a button's face whose normal is not n (a
+  // pointer plane facing the camera, as Illusion's) the probe is placed beside the point alike,
+  // along the face's normal, and pressed from there along n.
   // Where it lowered a sphere to decide, that sphere's rest comes with the point (the mapping
   // then needs no lift_mm() for this reading).
   FloorLowering lowering_point(const glm::dvec3& surface_mm, const glm::dvec3& n, double probe_radius_mm,
@@ -98,6 +100,9 @@ class FreeHeight final : public SurfaceFloor {
   // A lowering_point() answer over `over_ws` (workspace) from the sphere lowered there (world),
   // rested on buttons as lift_mm() rests it; its surface normal becomes last_normal().
   FloorLowering rested(const glm::dvec3& over_ws, const Lowered& down, const glm::dvec3& n, double r) const;
+  // lowering_point() over a button's face (normal `face`, world) at p (world).
+  FloorLowering over_button(const glm::dvec3& surface_ws, const glm::dvec3& p, const glm::dvec3& face,
+                            const glm::dvec3& n, double r) const;
   // The outward surface normal at a surface point p (world), on the side facing `eye`.
   std::optional<glm::dvec3> normal_at(const glm::dvec3& p, const glm::dvec3& eye) const;
 
