@@ -8,12 +8,14 @@
 #include <csignal>
 #include <fstream>
 #include <random>
+#include <sstream>
 #include <sys/wait.h>
 #include <thread>
 #include <unistd.h>
 
 #include <nlohmann/json.hpp>
 
+#include "maze/maze_resume.h"
 #include "maze/maze_script.h"
 #include "maze/maze_summary.h"
 #include "maze_test_util.h"
@@ -117,6 +119,81 @@ TEST(MazeResumeTest, AFinishedSessionHasNothingToResume) {
   const auto before = test::read_lines(dir + "/s/session.jsonl");
   EXPECT_EQ(run_child(maze_args({"--resume", dir + "/s"})), 1);
   EXPECT_EQ(test::read_lines(dir + "/s/session.jsonl"), before) << "a refused resume writes nothing";
+}
+
+// Where a resumed window session puts the live hand (resume_place): where the participant's own
+// path goes next. The session is cut after each room left (its log up to that `branch` line, as a
+// kill leaves it); the expected place is read from the scripted path itself, not from the maze's
+// geometry: the path passes within 0.5 mm of it between the room left and the next room entered
+// (it walks through the hall's door, (0, hall, R + 1), on its way). A place one hall further
+// lies 224 mm (a room's pitch) past any point of that stretch, one hall back 140 mm behind it.
+// 0.5 mm: the path's points are written with 4 decimals; the stretch is the path's straight
+// segments between its way points.
+struct PathPoint {
+  double t, x, y, z;
+};
+
+std::vector<PathPoint> read_path(const std::string& text) {
+  std::vector<PathPoint> out;
+  std::istringstream in(text);
+  for (std::string line; std::getline(in, line);) {
+    if (line.empty() || line[0] == '#') continue;
+    PathPoint p{};
+    std::istringstream(line) >> p.t >> p.x >> p.y >> p.z;
+    out.push_back(p);
+  }
+  return out;
+}
+
+// The nearest the path comes to `q` between t0 and t1 (its segments, clipped to that time).
+double nearest_on_path(const std::vector<PathPoint>& path, const glm::dvec3& q, double t0, double t1) {
+  double best = 1e300;
+  for (std::size_t i = 1; i < path.size(); ++i) {
+    const PathPoint& a = path[i - 1];
+    const PathPoint& b = path[i];
+    if (b.t < t0 || a.t > t1 || !(b.t > a.t)) continue;
+    for (int k = 0; k <= 1000; ++k) {
+      const double t = std::clamp(a.t + (b.t - a.t) * k / 1000.0, t0, t1);
+      const double u = (t - a.t) / (b.t - a.t);
+      const glm::dvec3 p(a.x + u * (b.x - a.x), a.y + u * (b.y - a.y), a.z + u * (b.z - a.z));
+      best = std::min(best, glm::length(p - q));
+    }
+  }
+  return best;
+}
+
+TEST(MazeResumeTest, TheLiveHandResumesWhereTheParticipantsPathGoesNext) {
+  const std::string dir = test::temp_dir("resume_place");
+  auto d = load_maze_desc(test::maze_file());
+  ASSERT_TRUE(d) << d.error().message;
+  const Route route = draw_route(9);
+  const std::string text = script_trajectory(d.value(), {choices_with_errors(route, 0, 2), correct_choices(route, 1)}, 100.0);
+  std::ofstream(dir + "/p.traj") << text;
+  ASSERT_EQ(run_child(maze_args({"--maze", test::maze_file(), "--participant", "P", "--seed", "9", "--cues", "on",
+                                 "--device", "trajectory:" + dir + "/p.traj", "--out", dir + "/full"})),
+            0);
+  const std::vector<PathPoint> path = read_path(text);
+  const auto lines = test::read_lines(dir + "/full/session.jsonl");
+  // The rooms entered, in order: where each stretch ends.
+  std::vector<double> entered;
+  for (const std::string& l : lines)
+    if (const auto j = nlohmann::json::parse(l); j["type"] == "branch") entered.push_back(j["enter_s"].get<double>());
+  ASSERT_EQ(entered.size(), 12u);
+  int checked = 0;
+  for (std::size_t k = 0, rooms = 0; k < lines.size(); ++k) {
+    if (nlohmann::json::parse(lines[k])["type"] != "branch" || ++rooms == entered.size()) continue;
+    std::filesystem::create_directories(dir + "/cut");
+    std::ofstream cut(dir + "/cut/session.jsonl", std::ios::trunc);
+    for (std::size_t i = 0; i <= k; ++i) cut << lines[i] << "\n";
+    cut.close();
+    auto r = read_resume_point(dir + "/cut/session.jsonl");
+    ASSERT_TRUE(r) << r.error().message;
+    const glm::dvec3 place = resume_place(d.value(), r.value());
+    SCOPED_TRACE(testing::Message() << "cut after room " << rooms << " (left at " << r->time_s << " s)");
+    EXPECT_LT(nearest_on_path(path, place, r->time_s, entered[rooms]), 0.5);
+    ++checked;
+  }
+  EXPECT_EQ(checked, 11);
 }
 
 }  // namespace
