@@ -15,6 +15,11 @@ struct DeviceSample {
   glm::dvec3 position_mm{0.0};
   std::uint32_t buttons = 0;       // bit i = button i held
   bool valid = false;              // false: the device has nothing (yet)
+  // How many times the device has put its hand somewhere new itself, no motion of the person's
+  // (the maze window's clutch puts the mouse's hand back under the probe): the haptic loop
+  // restarts its filter at the first sample with a new count, so the jump is not taken for a
+  // motion and carried on past the new place (HapticLoop::read_device).
+  std::uint32_t placements = 0;
 };
 
 class Device {

@@ -24,6 +24,7 @@ void GlfwInputDevice::toggle_capture() {
 void GlfwInputDevice::poll(double now_s, const PointerView& view) {
   DeviceSample s;
   s.time_s = now_s;
+  s.placements = placements_;
   if (kind_ == Kind::kMouse) {
     s.position_mm = poll_mouse(view);
     for (int b = 0; b < 3; ++b)

@@ -14,6 +14,7 @@
 //            connected joystick with a gamepad mapping).
 #pragma once
 
+#include <cstdint>
 #include <memory>
 #include <string>
 
@@ -62,7 +63,11 @@ class GlfwInputDevice final : public Device {
   void rebase() { have_cursor_ = false; }
   // Main thread: the probe's point on the plane (its shadow's centre) is `hit_mm` from the next
   // poll on: where the hand starts, or where a clutch puts it back under the proxy.
-  void place(const glm::dvec3& hit_mm) { map_.set_hit(hit_mm); }
+  // Counted in the samples from that poll on (DeviceSample::placements).
+  void place(const glm::dvec3& hit_mm) {
+    map_.set_hit(hit_mm);
+    ++placements_;
+  }
   // The last poll's jump of the point under the pointer across a silhouette (PointerMap).
   double parallax_jump_mm() const { return map_.parallax_jump_mm(); }
 
@@ -78,6 +83,7 @@ class GlfwInputDevice final : public Device {
   double last_poll_s_ = 0.0;
   glm::dvec2 first_cursor_{0.0}, last_cursor_{0.0};
   bool have_cursor_ = false, cursor_moved_ = false, captured_ = false;
+  std::uint32_t placements_ = 0;
   Snapshot<DeviceSample> latest_;
 };
 

@@ -162,12 +162,6 @@ void HapticLoop::restart_filter_now() {
   sanitizer_.restart();
 }
 
-void HapticLoop::restart_filter() {
-  std::lock_guard<std::mutex> lock(swap_mutex_);
-  pending_restart_ = true;
-  swap_pending_.store(true, std::memory_order_release);
-}
-
 const world::HapticScene* HapticLoop::scene() const {
   const world::GodObject* god = stages_->god_object();
   return god != nullptr ? &god->scene() : nullptr;
@@ -180,7 +174,6 @@ void HapticLoop::adopt_pending_scene(Clock::Ns now) {
   if (!lock.owns_lock()) return;
   swap_pending_.store(false, std::memory_order_relaxed);
   if (std::exchange(pending_home_, false)) stages_->workspace.home();
-  if (std::exchange(pending_restart_, false)) restart_filter_now();
   if (!pending_) {  // a placement alone (place_hand, request_view_home)
     if (pending_place_) place(*pending_place_, pending_place_normal_);
     pending_place_.reset();
@@ -253,6 +246,12 @@ double HapticLoop::tick_period_s(Clock::Ns now) const {
 void HapticLoop::read_device(double t, double dt, Clock::Ns now) {
   const DeviceSample raw = device_.read(t);
   if (recorder_ != nullptr) recorder_->append(raw);
+  // The device put its hand somewhere new itself (a clutch): no motion of the person's, so the
+  // filter starts afresh at this sample instead of taking the jump for a velocity.
+  if (raw.valid && raw.placements != placements_seen_) {
+    placements_seen_ = raw.placements;
+    restart_filter_now();
+  }
   if (auto s = sanitizer_.filter(raw)) {
     // A device polled slower than 1 kHz (the mouse: once per rendered frame) repeats its last
     // sample until the next poll. A repeat is no new measurement: feeding it would pull the

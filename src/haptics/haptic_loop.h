@@ -111,12 +111,6 @@ class HapticLoop {
   // into the surface now under it (`surface_normal`, outward), so neither the filter's coasting
   // between two mouse readings nor the proxy's path cuts through the surface (any thread).
   void place_hand(const glm::dvec3& hand_mm, const glm::dvec3& normal, const glm::dvec3& surface_normal);
-  // Any thread: the hand's filter starts afresh at the next tick, at rest at the device's next
-  // sample; the proxy stays where it is. For a device that has just put its hand somewhere new
-  // that is no motion of the person's (the maze window's clutch, docs/maze.md): fed that jump,
-  // the filter would carry the hand, and the proxy after it, on past the new place. Call it
-  // after the device has published the new place.
-  void restart_filter();
   const world::HapticScene* scene() const;  // the one in use (haptic thread / between ticks)
   // Any thread: the view goes back where the scene started ([navigation]'s offset and a rolling
   // surface's turn reset) at the next tick: run's Home key. With `place_hand_mm` (the hand over
@@ -186,6 +180,7 @@ class HapticLoop {
   Kalman3 kalman_;
   DeviceSample last_fed_;  // the last sample given to the filter (repeats are predicted over)
   bool have_fed_ = false;
+  std::uint32_t placements_seen_ = 0;  // DeviceSample::placements at the last sample read
   std::unique_ptr<Stages> stages_;
   std::shared_ptr<const world::HapticScene> scene_owned_;  // after replace_scene()
   std::mutex swap_mutex_;  // guards pending_, retired_
@@ -199,7 +194,6 @@ class HapticLoop {
   std::atomic<bool> home_pending_{false};
   std::atomic<bool> navigation_held_{false};  // hold_navigation
   bool pending_home_ = false;  // request_view_home with a placement: both in one tick, under swap_mutex_
-  bool pending_restart_ = false;  // restart_filter, under swap_mutex_
   HapticState local_;        // haptic thread's working copy
   SampleRecorder* recorder_ = nullptr;
   std::array<TickFeed*, kMaxTickFeeds> tick_feeds_{};  // the first tick_feed_count_ are set

@@ -83,13 +83,12 @@ Status open_window(const maze::SessionOptions& o, const DeviceSpec& device, cons
 // The clutch (docs/maze.md, "A hand a wall has stopped"): a mouse has no force to hold the hand
 // at a wall, so the hand runs on while the wall holds the probe. Once it has overshot by more
 // than clutch_mm along the floor, the hand is put back under the probe and that is logged.
-// `clutched`: the device's next poll publishes the new place; the caller then restarts the
-// haptic loop's filter (HapticLoop::restart_filter), else the filter, fed the jump back as if it
-// were a motion, would carry the proxy on past the wall's place, away from the wall (seen: 7.5 mm,
-// and a second clutch there).
+// The device's next poll publishes the new place as a placement of its own
+// (DeviceSample::placements), and the haptic loop restarts its filter there: fed the jump back
+// as if it were a motion, the filter would carry the proxy on past the wall's place, away from
+// the wall (seen: 7.5 mm, and a second clutch there).
 Status apply_clutch(const MazeWindowParams& p, Window& w, maze::SessionCore& core, const HapticState& st,
-                    double& quiet_until_s, bool& clutched) {
-  clutched = false;
+                    double& quiet_until_s) {
   if (!w.input() || p.clutch_mm <= 0.0 || !st.have_sample || st.time_s < quiet_until_s) return ok_status();
   const PlaneAxes plane = floor_plane(*w.renderer);
   const glm::dvec3 hand = on_plane(plane, st.device_mm), probe = on_plane(plane, st.proxy_mm);
@@ -101,7 +100,6 @@ Status apply_clutch(const MazeWindowParams& p, Window& w, maze::SessionCore& cor
   const double held = glm::length(on_plane(plane, st.position_mm) - probe);
   if (overshoot <= p.clutch_mm || held <= p.clutch_mm) return ok_status();
   w.input()->place(probe);
-  clutched = true;
   // The haptic thread reads the placed hand within a tick; 50 ms keeps a frame drawn from a
   // state older than that from clutching twice.
   quiet_until_s = st.time_s + 0.05;
@@ -171,10 +169,8 @@ Status window_loop(const maze::SessionOptions& o, const MazeWindowParams& p, maz
   for (;;) {
     w.live->poll_events();
     st = pass.loop().state().read();
-    bool clutched = false;
-    if (Status s = apply_clutch(p, w, core, st, clutch_quiet_until, clutched); !s) return s;
+    if (Status s = apply_clutch(p, w, core, st, clutch_quiet_until); !s) return s;
     if (!take_input(w, st)) return ok_status();
-    if (clutched) pass.loop().restart_filter();  // after the poll that published the new place
     if (practice && std::exchange(w.events.start, false)) {
       pass.reason = maze::EndReason::kPracticeEnded;
       return ok_status();
