@@ -51,17 +51,21 @@ struct Coordinates {
   }
 };
 
-PsychometricFit polish(std::span<const LevelCounts> data, const Coordinates& c, std::vector<double> start) {
+// rounds = 2 with tight tolerances for a fit; the bootstrap's refits take one looser round.
+PsychometricFit polish(std::span<const LevelCounts> data, const Coordinates& c, std::vector<double> start,
+                       int rounds = 2, double x_tolerance = 1e-9) {
   const Objective neg_ll = [&](const std::vector<double>& v) {
     return c.inside(v) ? -log_likelihood(c.options.shape, c.params(v), data) : INFINITY;
   };
   NelderMeadParams nm;
   nm.step = {(c.a_hi - c.a_lo) / 40.0, 0.3};
   if (c.options.fit_lapse) nm.step.push_back(0.3);
+  nm.x_tolerance = x_tolerance;
+  nm.f_tolerance = x_tolerance * 0.1;
   PsychometricFit fit;
   // A second start from the first result: Nelder-Mead can stall on a simplex that collapsed
   // along a ridge; restarting rebuilds it (a common remedy, Lagarias et al. 1998 discuss it).
-  for (int round = 0; round < 2; ++round) {
+  for (int round = 0; round < rounds; ++round) {
     const NelderMeadResult r = nelder_mead(neg_ll, start, nm);
     fit.evaluations += r.evaluations;
     fit.converged = r.converged;
@@ -70,6 +74,15 @@ PsychometricFit polish(std::span<const LevelCounts> data, const Coordinates& c, 
   fit.params = c.params(start);
   fit.log_likelihood = log_likelihood(c.options.shape, fit.params, data);
   return fit;
+}
+
+PsychometricFit refit(std::span<const LevelCounts> data, const FitOptions& options, const PsychometricParams& start,
+                      int rounds, double x_tolerance) {
+  const Coordinates c(data, options);
+  std::vector<double> v = c.coords(start);
+  v[0] = std::clamp(v[0], c.a_lo, c.a_hi);
+  v[1] = std::clamp(v[1], c.b_lo, c.b_hi);
+  return polish(data, c, v, rounds, x_tolerance);
 }
 
 }  // namespace
@@ -117,11 +130,7 @@ PsychometricFit fit_psychometric(std::span<const LevelCounts> data, const FitOpt
 
 PsychometricFit fit_psychometric_from(std::span<const LevelCounts> data, const FitOptions& options,
                                       const PsychometricParams& start) {
-  const Coordinates c(data, options);
-  std::vector<double> v = c.coords(start);
-  v[0] = std::clamp(v[0], c.a_lo, c.a_hi);
-  v[1] = std::clamp(v[1], c.b_lo, c.b_hi);
-  return polish(data, c, v);
+  return refit(data, options, start, 2, 1e-9);
 }
 
 double uniform01(std::mt19937_64& rng) { return static_cast<double>(rng() >> 11) * 0x1.0p-53; }
@@ -154,13 +163,16 @@ BootstrapResult bootstrap(std::span<const LevelCounts> data, const FitOptions& o
       s.correct = 0;
       for (int t = 0; t < s.trials; ++t) s.correct += uniform01(rng) < p ? 1 : 0;
     }
-    const PsychometricFit refit = fit_psychometric_from(sample, options, fit.params);
-    const double th = threshold_at(options.shape, refit.params, boot.criterion);
+    // One Nelder-Mead round to 1e-6 in the coordinates (a relative 1e-6 of alpha and beta): a
+    // resample's maximum lies near the fit it was drawn from, and the interval's ends, whose own
+    // sampling error is a few percent, do not move for more.
+    const PsychometricFit again = refit(sample, options, fit.params, 1, 1e-6);
+    const double th = threshold_at(options.shape, again.params, boot.criterion);
     if (!std::isfinite(th)) { ++out.failed; continue; }
     thresholds.push_back(th);
-    slopes.push_back(slope_at(options.shape, refit.params, th));
-    alphas.push_back(refit.params.threshold);
-    betas.push_back(refit.params.slope);
+    slopes.push_back(slope_at(options.shape, again.params, th));
+    alphas.push_back(again.params.threshold);
+    betas.push_back(again.params.slope);
   }
   out.resamples = static_cast<int>(thresholds.size());
   if (thresholds.empty()) return out;

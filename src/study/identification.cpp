@@ -32,7 +32,7 @@ ConfusionMatrix::ConfusionMatrix(int stimuli, int responses)
 }
 
 ConfusionMatrix::ConfusionMatrix(std::vector<std::vector<int>> counts) : counts_(std::move(counts)) {
-  for (const auto& row : counts_)
+  for ([[maybe_unused]] const auto& row : counts_)
     assert(row.size() == counts_[0].size() && "ConfusionMatrix: every row needs the same number of columns");
 }
 

@@ -93,15 +93,22 @@ double PsiMethod::next_level() {
 }
 
 void PsiMethod::update(double level, bool correct) {
+  std::vector<double> next(posterior_.size());
   double total = 0.0;
   for (std::size_t k = 0; k < posterior_.size(); ++k) {
     const double p = psi(grid_.shape, params_at(k), level);
-    posterior_[k] *= correct ? p : 1.0 - p;
-    total += posterior_[k];
+    next[k] = posterior_[k] * (correct ? p : 1.0 - p);
+    total += next[k];
   }
-  assert(total > 0.0 && "PsiMethod::update: an answer no grid point allows (guess or lapse of 0 at an extreme level?)");
-  for (double& w : posterior_) w /= total;
   ++trials_;
+  // An answer no grid point allows (a wrong one where every function of a lapse-free grid is
+  // 1, a person's lapse): Bayes' rule would divide by 0. The posterior stays as it was, and the
+  // trial is counted so the caller can report it.
+  if (!(total > 0.0)) {
+    ++impossible_;
+    return;
+  }
+  for (std::size_t k = 0; k < next.size(); ++k) posterior_[k] = next[k] / total;
 }
 
 PsiEstimate PsiMethod::estimate() const {

@@ -44,6 +44,9 @@ class PsiMethod {
 
   double next_level();                 // the level of least expected entropy (cached per trial)
   void update(double level, bool correct);  // any level, not only the grid's
+  // Trials whose answer every grid point gave probability 0 (left out of the posterior; a grid
+  // without lapse meets them when a person lapses). Non-zero: widen the grid or add a lapse.
+  int impossible_answers() const { return impossible_; }
   PsiEstimate estimate() const;
   // The posterior mean of psi^-1(criterion): the criterion level (e.g. 1/sqrt 2) marginalised
   // over every parameter, for comparison with procedures that target that level.
@@ -61,6 +64,7 @@ class PsiMethod {
   std::vector<double> posterior_;  // flat: (threshold, slope, lapse), lapse fastest
   std::vector<double> table_;      // psi at levels[i] for grid point k: table_[i * K + k]
   int trials_ = 0;
+  int impossible_ = 0;
   int cached_for_ = -1;
   double cached_level_ = 0.0;
 };

@@ -48,6 +48,26 @@ TEST(PsiMethodTest, PicksTheLevelThatSeparatesTheCandidates) {
   EXPECT_NEAR(psi.estimate().threshold, 1.0, 1e-8);
 }
 
+// A lapse-free grid whose every function is 1 at level 50 (logistic, thresholds 1 and 2, beta
+// 20: 1 / (1 + e^-960) is 1 in double): a wrong answer there has probability 0 under every
+// candidate. The posterior stays as it was and the trial is counted as impossible.
+TEST(PsiMethodTest, AnAnswerNoCandidateAllowsLeavesThePosterior) {
+  PsiGrid g;
+  g.shape = Shape::kLogistic;
+  g.guess = 0.5;
+  g.levels = {1.5};
+  g.thresholds = {1.0, 2.0};
+  g.slopes = {20.0};
+  PsiMethod psi(g);
+  psi.update(50.0, false);
+  EXPECT_EQ(psi.impossible_answers(), 1);
+  EXPECT_EQ(psi.trials(), 1);
+  EXPECT_DOUBLE_EQ(psi.estimate().threshold, 1.5);
+  psi.update(1.5, true);  // and it goes on learning
+  EXPECT_LT(psi.estimate().threshold, 1.5);
+  EXPECT_EQ(psi.impossible_answers(), 1);
+}
+
 PsiGrid weibull_grid(double lapse) {
   PsiGrid g;
   g.shape = Shape::kWeibull;
