@@ -49,13 +49,50 @@ std::vector<double> centroid_of_best(const Simplex& s) {
   return c;
 }
 
+// One move of the worst vertex: reflect through the others' centroid, expand if that is the new
+// best, contract if it is no better than the second worst, shrink all towards the best if even
+// the contraction fails.
+template <class Eval>
+void step(Simplex& s, const Eval& eval) {
+  const std::size_t n = s.x.size() - 1;
+  const std::vector<double> c = centroid_of_best(s);
+  const auto reflected = along(c, s.x[n], 1.0);
+  const double fr = eval(reflected);
+  if (fr < s.f[0]) {
+    const auto expanded = along(c, s.x[n], 2.0);
+    const double fe = eval(expanded);
+    s.x[n] = fe < fr ? expanded : reflected;
+    s.f[n] = std::min(fe, fr);
+  } else if (fr < s.f[n - 1]) {
+    s.x[n] = reflected;
+    s.f[n] = fr;
+  } else {
+    const auto contracted = along(c, s.x[n], fr < s.f[n] ? 0.5 : -0.5);  // outside or inside
+    const double fc = eval(contracted);
+    if (fc < std::min(fr, s.f[n])) {
+      s.x[n] = contracted;
+      s.f[n] = fc;
+    } else {
+      for (std::size_t v = 1; v <= n; ++v) {
+        for (std::size_t i = 0; i < n; ++i) s.x[v][i] = s.x[0][i] + 0.5 * (s.x[v][i] - s.x[0][i]);
+        s.f[v] = eval(s.x[v]);
+      }
+    }
+  }
+  s.sort();
+}
+
 }  // namespace
 
 NelderMeadResult nelder_mead(const Objective& f, std::vector<double> start, const NelderMeadParams& params) {
   const std::size_t n = start.size();
   assert(params.step.size() == n && "nelder_mead: one step per parameter");
   NelderMeadResult r;
-  auto eval = [&](const std::vector<double>& x) { ++r.evaluations; const double v = f(x); return std::isnan(v) ? INFINITY : v; };
+  auto eval = [&](const std::vector<double>& x) {
+    ++r.evaluations;
+    const double v = f(x);
+    return std::isnan(v) ? INFINITY : v;
+  };
   Simplex s;
   s.x.push_back(start);
   for (std::size_t i = 0; i < n; ++i) {
@@ -64,34 +101,7 @@ NelderMeadResult nelder_mead(const Objective& f, std::vector<double> start, cons
   }
   for (const auto& x : s.x) s.f.push_back(eval(x));
   s.sort();
-  while (r.evaluations < params.max_evaluations && !(r.converged = s.small(params))) {
-    const std::vector<double> c = centroid_of_best(s);
-    const auto reflected = along(c, s.x[n], 1.0);
-    const double fr = eval(reflected);
-    if (fr < s.f[0]) {
-      const auto expanded = along(c, s.x[n], 2.0);
-      const double fe = eval(expanded);
-      s.x[n] = fe < fr ? expanded : reflected;
-      s.f[n] = std::min(fe, fr);
-    } else if (fr < s.f[n - 1]) {
-      s.x[n] = reflected;
-      s.f[n] = fr;
-    } else {
-      const bool outside = fr < s.f[n];
-      const auto contracted = along(c, s.x[n], outside ? 0.5 : -0.5);
-      const double fc = eval(contracted);
-      if (fc < std::min(fr, s.f[n])) {
-        s.x[n] = contracted;
-        s.f[n] = fc;
-      } else {  // shrink towards the best vertex
-        for (std::size_t v = 1; v <= n; ++v) {
-          for (std::size_t i = 0; i < n; ++i) s.x[v][i] = s.x[0][i] + 0.5 * (s.x[v][i] - s.x[0][i]);
-          s.f[v] = eval(s.x[v]);
-        }
-      }
-    }
-    s.sort();
-  }
+  while (r.evaluations < params.max_evaluations && !(r.converged = s.small(params))) step(s, eval);
   r.x = s.x[0];
   r.f = s.f[0];
   return r;
