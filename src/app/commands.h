@@ -17,6 +17,7 @@ int run_bench(int argc, char** argv);          // src/app/bench/bench_cmd.cpp
 int run_tune(int argc, char** argv);           // src/app/commands/tune_cmd.cpp
 int run_maze(int argc, char** argv);           // src/app/maze/maze_cmd.cpp
 int run_calibrate(int argc, char** argv);      // src/app/calibrate/calibrate_cmd.cpp
+int run_study(int argc, char** argv);          // src/app/study/study_cmd.cpp
 int run_doctor(int argc, char** argv);         // src/app/commands/doctor_cmd.cpp
 
 struct CommandInfo {
@@ -35,6 +36,7 @@ inline constexpr CommandInfo kCommands[] = {
     {"tune", "parameter sweeps into a labelled contact sheet, or a scripted console session", run_tune},
     {"maze", "the haptic cue maze of Sepulveda-Cervantes et al.: run a participant, script one, summarize the logs", run_maze},
     {"calibrate", "2AFC staircases measure JNDs along a curve; write a lookup table of equal-looking steps", run_calibrate},
+    {"study", "psychophysics: `study simulate` runs a simulated observer through Psi and the staircase, fitted with 95% CIs", run_study},
     {"doctor", "check GL backends, display, audio, gamepads, real-time scheduling and data; how to fix each", run_doctor},
 };
 

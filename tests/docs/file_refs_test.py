@@ -1,8 +1,9 @@
 """Every file the docs name exists (README.md and docs/*.md).
 
 A reference is a path that starts at the repository's top (`src/app/...`, `tests/...`,
-`scenes/...`, `glsl/...`, ...) or in a room of src/ (`measure/texture_aliasing.h` means
-src/measure/texture_aliasing.h). `{h,cpp}` expands to each file and `*` is a glob. Placeholders
+`scenes/...`, `glsl/...`, ...) or a source file in a room of src/ (`measure/texture_aliasing.h`
+means src/measure/texture_aliasing.h; `study/P01`, a command's output folder in docs/maze.md, is
+the reader's, not the `study` room's). `{h,cpp}` expands to each file and `*` is a glob. Placeholders
 in recipes (NAME, ROOM, X) and the files a command writes (listed in WRITTEN with the reason)
 are not files of the repository. Usage: file_refs_test.py REPO_ROOT
 """
@@ -44,6 +45,7 @@ def missing_refs(root):
     rooms = sorted(d for d in os.listdir(os.path.join(root, "src")) if os.path.isdir(os.path.join(root, "src", d)))
     pattern = re.compile(r"(?<![\w/.-])((?:" + "|".join(TOP + rooms) + r")/[\w./{},*+-]*[\w*}])")
     docs = [os.path.join(root, "README.md")] + sorted(glob.glob(os.path.join(root, "docs", "*.md")))
+    top = {t.replace("\\", "") for t in TOP}
     checked, missing = 0, []
     for doc in docs:
         with open(doc, encoding="utf-8") as f:
@@ -52,6 +54,8 @@ def missing_refs(root):
                     for path in expand(m.group(1)):
                         if PLACEHOLDER.search(path) or path in WRITTEN:
                             continue
+                        if path.split("/")[0] not in top and not path.endswith((".h", ".cpp")):
+                            continue  # starts with a room's name but names no source file
                         checked += 1
                         if not exists(root, rooms, path):
                             missing.append(f"{os.path.relpath(doc, root)}:{n}: {path}")
