@@ -6,6 +6,8 @@
 #include <cstdio>
 #include <cstring>
 #include <fstream>
+#include <iterator>
+#include <sstream>
 #include <fcntl.h>
 #include <unistd.h>
 #include <utility>
@@ -95,14 +97,19 @@ Result<SessionLog> SessionLog::open(const std::string& path, LogSyscalls sys) {
 Result<SessionLog> SessionLog::open_existing(const std::string& path, LogSyscalls sys) {
   const int fd = ::open(path.c_str(), O_WRONLY | O_APPEND | O_CLOEXEC);
   if (fd < 0) return make_error(path + ": cannot open the session log to resume: " + std::strerror(errno));
-  // A line cut short is impossible with one write(2) per line, but a disk that filled up can
-  // leave one: the next line must still start on a line of its own.
-  std::FILE* f = std::fopen(path.c_str(), "rb");
-  bool newline = true;
-  if (f && std::fseek(f, -1, SEEK_END) == 0) newline = std::fgetc(f) == '\n';
-  if (f) std::fclose(f);
   SessionLog log(fd, path, std::move(sys));
-  if (!newline && ::write(fd, "\n", 1) != 1) return make_error(path + ": cannot append to the session log: " + std::strerror(errno));
+  // A line cut off (SIGKILL or a power cut in its write(2), a disk that filled up): the next
+  // line must start on a line of its own, and the fragment must not stay between two whole
+  // lines. It moves to PATH.torn (kept: nothing is lost) and the log ends at its last whole line.
+  std::ifstream in(path, std::ios::binary);
+  const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  if (const std::optional<std::string> cut = torn_last_line(text)) {
+    std::ofstream(path + ".torn", std::ios::binary | std::ios::app) << *cut << '\n';
+    if (::ftruncate(fd, static_cast<off_t>(text.size() - cut->size())) != 0)
+      return make_error(path + ": cannot cut off the torn last line: " + std::strerror(errno));
+  } else if (!text.empty() && text.back() != '\n' && ::write(fd, "\n", 1) != 1) {
+    return make_error(path + ": cannot append to the session log: " + std::strerror(errno));
+  }
   return log;
 }
 
@@ -227,13 +234,26 @@ Status SessionLog::session_end(EndReason reason, int passes, int trials_to_crite
                     .dump());
 }
 
+std::optional<std::string> torn_last_line(const std::string& text) {
+  if (text.empty() || text.back() == '\n') return std::nullopt;
+  const std::size_t from = text.rfind('\n') == std::string::npos ? 0 : text.rfind('\n') + 1;
+  std::string last = text.substr(from);
+  if (json::accept(last)) return std::nullopt;  // whole, only its newline missing
+  return last;
+}
+
 Result<int> read_session_log(const std::string& path, const std::string& open_hint, const std::string& empty_hint,
-                             const std::function<void(const nlohmann::json&, const std::string& where)>& on_line) {
-  std::ifstream in(path);
+                             const std::function<void(const nlohmann::json&, const std::string& where)>& on_line,
+                             std::string* torn) {
+  std::ifstream in(path, std::ios::binary);
   if (!in) return make_error(path + ": cannot open the session log (" + open_hint + ")");
+  std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  const std::optional<std::string> cut = torn_last_line(text);
+  if (cut) text.resize(text.size() - cut->size());
+  std::istringstream lines(text);
   bool started = false;
   int n = 0;
-  for (std::string line; std::getline(in, line);) {
+  for (std::string line; std::getline(lines, line);) {
     const std::string where = path + ":" + std::to_string(++n) + ": ";
     if (line.empty()) continue;
     try {
@@ -245,6 +265,9 @@ Result<int> read_session_log(const std::string& path, const std::string& open_hi
       return make_error(where + "not a maze log line (" + e.what() + "); docs/maze.md lists the schema");
     }
   }
+  if (cut && torn)
+    *torn = path + ":" + std::to_string(n + 1) + ": the last line is cut off (" + std::to_string(cut->size()) +
+            " bytes: the process stopped while writing it): left out";
   if (!started) return make_error(path + ":1: empty log: no session_start line" + empty_hint);
   return n;
 }

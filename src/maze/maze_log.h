@@ -1,12 +1,14 @@
 // The maze session log (docs/maze.md, "The session log"): JSON lines, one object per line, each
 // with a "type". Every line is written whole by one write(2) on an O_APPEND descriptor and then
 // fsync'd, so a process killed at any moment leaves a file of complete lines up to the last one
-// written (never half a line, never a line lost once append() returned). Lines are few (one per
+// written (never a line lost once append() returned; half a line only where the write itself
+// was cut: a power cut, a full disk, which the readers leave out with a warning). Lines are few (one per
 // room entered and left, one per pass), so the fsync costs nothing the session would notice.
 #pragma once
 
 #include <cstddef>
 #include <functional>
+#include <optional>
 #include <string>
 
 #include <nlohmann/json_fwd.hpp>
@@ -33,13 +35,21 @@ bool parse_end_reason(const std::string& name, EndReason& out);
 // Ended by the study's rule (criterion, max_passes): complete, nothing to resume.
 inline bool completes_session(EndReason r) { return r == EndReason::kCriterion || r == EndReason::kMaxPasses; }
 
+// The text's last line if it was cut off while written: no newline after it and not JSON (none:
+// the text ends with a whole line).
+std::optional<std::string> torn_last_line(const std::string& text);
+
 // Reads a session log: each non-empty line parsed and handed to `on_line` with its
 // "file:line: " prefix (for its own errors: an exception it throws becomes one); the first line
 // must be the session_start line. Returns how many lines the file has. Errors name file:line;
 // `open_hint` ends the message when the file cannot be opened, `empty_hint` when it holds no
 // session_start line.
+// A last line cut off (no newline after it, and not JSON: SIGKILL or a power cut in the middle
+// of its write; one write(2) per line makes that rare, a full disk can do it too) is no error:
+// it is left out and `torn` (if given) gets a warning naming file:line.
 Result<int> read_session_log(const std::string& path, const std::string& open_hint, const std::string& empty_hint,
-                             const std::function<void(const nlohmann::json&, const std::string& where)>& on_line);
+                             const std::function<void(const nlohmann::json&, const std::string& where)>& on_line,
+                             std::string* torn = nullptr);
 
 struct SessionInfo {
   std::string participant;
@@ -66,7 +76,8 @@ class SessionLog {
  public:
   // Creates `path` (its directory must exist); an existing file is an error, never truncated.
   static Result<SessionLog> open(const std::string& path, LogSyscalls sys = {});
-  // Opens an existing log to append to (`maze --resume`): never created, never truncated.
+  // Opens an existing log to append to (`maze --resume`): never created; a torn last line
+  // (torn_last_line) moves to PATH.torn and is cut off, nothing else.
   static Result<SessionLog> open_existing(const std::string& path, LogSyscalls sys = {});
   SessionLog(SessionLog&& o) noexcept
       : fd_(o.fd_), path_(std::move(o.path_)), lines_(o.lines_), sys_(std::move(o.sys_)) {

@@ -59,12 +59,6 @@ std::size_t group_index(const std::vector<GroupSummary>& groups, const Participa
   return 0;
 }
 
-// True when some participant has a timed pass. Without one (every session quit before its first
-// pass ended) gnuplot cannot autoscale x ("x range is invalid") and fails: the axes are then fixed.
-bool any_pass_time(const std::vector<ParticipantSummary>& people) {
-  return std::any_of(people.begin(), people.end(), [](const ParticipantSummary& p) { return !p.pass_time_s.empty(); });
-}
-
 // Spreads n things around 0 by `step` (n = 3: -step, 0, +step).
 double spread(std::size_t i, std::size_t n, double step) { return step * (static_cast<double>(i) - 0.5 * (n - 1.0)); }
 

@@ -93,11 +93,17 @@ glm::dvec3 resume_place(const MazeDesc& desc, const ResumePoint& r) {
 Result<ResumePoint> read_resume_point(const std::string& log_path) {
   ResumePoint r;
   auto n = read_session_log(log_path, "give the DIR a `maze` run wrote", ", nothing to resume (start the session again)",
-                            [&](const json& j, const std::string&) { read_line(j, r); });
+                            [&](const json& j, const std::string&) { read_line(j, r); }, &r.torn);
   if (!n) return n.error();
   if (r.ended && completes_session(*r.ended))
     return make_error(log_path + ":" + std::to_string(n.value()) + ": the session ended (" + end_reason_name(*r.ended) +
                       "): nothing to resume");
+  // Its last pass met the criterion but the session_end line after it is missing (the process
+  // stopped, or that line was cut off in its write): the session ended all the same.
+  if (!r.ended && !r.done.empty() && r.done.back().correct() == kRoomsPerPass)
+    return make_error(log_path + ":" + std::to_string(n.value()) + ": the session ended (criterion: pass " +
+                      std::to_string(r.done.size()) + " had every room right; its session_end line is missing" +
+                      (r.torn.empty() ? "" : ", cut off") + "): nothing to resume");
   return r;
 }
 

@@ -24,6 +24,7 @@ struct ResumePoint {
   double time_s = 0.0;             // session time of the last room left (or pass start): where it goes on
   int resumes = 0;                 // `resumed` lines already in the log
   std::optional<EndReason> ended;  // a session_end's reason already in the log (none: open)
+  std::string torn;                // a warning: the log's last line was cut off and left out
 };
 
 // Reads DIR's session log. Errors name file:line; a session that ended by the criterion or

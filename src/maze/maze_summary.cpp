@@ -99,7 +99,7 @@ Result<ParticipantSummary> summarize_log(const std::string& path) {
   ParticipantSummary p;
   p.log = path;
   auto n = read_session_log(path, "give the session.jsonl a `maze` run wrote, or its folder", "",
-                            [&](const json& j, const std::string& where) { read_line(p, j, where); });
+                            [&](const json& j, const std::string& where) { read_line(p, j, where); }, &p.torn);
   if (!n) return n.error();
   return p;
 }

@@ -35,6 +35,7 @@ struct ParticipantSummary {
   // Which run of the participant's session this is (check_no_duplicates): session_start's
   // `started_at` (wall clock, UTC; "" in a log written before the field) and the whole line.
   std::string started_at, start_line;
+  std::string torn;              // a warning: the log's last line was cut off and left out
   bool ended = false;            // the log has its session_end line (else the session was cut short)
   EndReason end_reason = EndReason::kQuit;  // session_end's reason (when ended)
   int resumed = 0;               // `resumed` lines: the session was interrupted and went on (maze --resume)

@@ -6,6 +6,7 @@
 
 #include <chrono>
 #include <csignal>
+#include <filesystem>
 #include <fstream>
 #include <random>
 #include <sstream>
@@ -119,6 +120,83 @@ TEST(MazeResumeTest, AFinishedSessionHasNothingToResume) {
   const auto before = test::read_lines(dir + "/s/session.jsonl");
   EXPECT_EQ(run_child(maze_args({"--resume", dir + "/s"})), 1);
   EXPECT_EQ(test::read_lines(dir + "/s/session.jsonl"), before) << "a refused resume writes nothing";
+}
+
+// A log whose last line was cut off in its write (a power cut, a full disk; here cut by hand in
+// the middle of a `branch` line): `summarize` and `--resume` leave that line out with a warning
+// instead of failing on it; the resume moves the fragment to session.jsonl.torn and goes on from
+// the line before, and the finished log summarizes as the uninterrupted session. A line that is
+// not JSON anywhere else is still an error naming file:line.
+TEST(MazeResumeTest, ATornLastLineIsLeftOutWithAWarningAndTheSessionGoesOn) {
+  const std::string dir = test::temp_dir("resume_torn");
+  auto d = load_maze_desc(test::maze_file());
+  ASSERT_TRUE(d) << d.error().message;
+  const Route route = draw_route(9);
+  std::ofstream(dir + "/p.traj") << script_trajectory(d.value(), {choices_with_errors(route, 0, 2), correct_choices(route, 1)}, 100.0);
+  ASSERT_EQ(run_child(maze_args({"--maze", test::maze_file(), "--participant", "T", "--seed", "9", "--cues", "on",
+                                 "--device", "trajectory:" + dir + "/p.traj", "--out", dir + "/full"})),
+            0);
+  auto full = summarize_log(dir + "/full/session.jsonl");
+  ASSERT_TRUE(full) << full.error().message;
+  const auto lines = test::read_lines(dir + "/full/session.jsonl");
+  std::size_t k = 0;  // the fifth branch line: cut in its middle
+  for (int branches = 0; k < lines.size() && branches < 5; ++k)
+    if (nlohmann::json::parse(lines[k])["type"] == "branch") ++branches;
+  ASSERT_LT(k, lines.size());
+  const std::string cut_at = lines[k - 1].substr(0, lines[k - 1].size() / 2);
+  std::filesystem::create_directories(dir + "/cut");
+  {
+    std::ofstream cut(dir + "/cut/session.jsonl", std::ios::binary);
+    for (std::size_t i = 0; i + 1 < k; ++i) cut << lines[i] << "\n";
+    cut << cut_at;  // no newline: the write stopped here
+  }
+  std::filesystem::copy_file(dir + "/full/device.log", dir + "/cut/device.log");
+  auto torn = summarize_log(dir + "/cut/session.jsonl");
+  ASSERT_TRUE(torn) << torn.error().message;
+  EXPECT_NE(torn->torn.find("session.jsonl:" + std::to_string(k) + ": the last line is cut off"), std::string::npos) << torn->torn;
+  ASSERT_EQ(run_child(maze_args({"--resume", dir + "/cut"})), 0);
+  EXPECT_EQ(test::read_lines(dir + "/cut/session.jsonl.torn"), std::vector<std::string>{cut_at});
+  const auto resumed = test::read_lines(dir + "/cut/session.jsonl");
+  ASSERT_GT(resumed.size(), k);
+  EXPECT_EQ(nlohmann::json::parse(resumed[k - 1])["type"], "resumed") << "the session goes on from the line before the cut";
+  auto again = summarize_log(dir + "/cut/session.jsonl");
+  ASSERT_TRUE(again) << again.error().message;
+  EXPECT_TRUE(again->torn.empty());
+  expect_same_session(again.value(), full.value());
+  // Not JSON and not last: an error naming the line.
+  {
+    std::ofstream bad(dir + "/bad.jsonl", std::ios::binary);
+    bad << lines[0] << "\n" << cut_at << "\n" << lines[1] << "\n";
+  }
+  auto bad = summarize_log(dir + "/bad.jsonl");
+  ASSERT_FALSE(bad);
+  EXPECT_NE(bad.error().message.find("bad.jsonl:2: not a maze log line"), std::string::npos) << bad.error().message;
+}
+
+// A session whose perfect pass was logged but whose session_end line was not (the process
+// stopped in between): it ended by the criterion all the same, so --resume refuses it and writes
+// nothing, as for a log with that line.
+TEST(MazeResumeTest, APerfectPassWithoutItsSessionEndLineHasNothingToResume) {
+  const std::string dir = test::temp_dir("resume_no_end");
+  auto d = load_maze_desc(test::maze_file());
+  ASSERT_TRUE(d) << d.error().message;
+  std::ofstream(dir + "/ok.traj") << script_trajectory(d.value(), {correct_choices(draw_route(4), 0)}, 200.0);
+  ASSERT_EQ(run_child(maze_args({"--maze", test::maze_file(), "--participant", "E", "--seed", "4", "--cues", "off",
+                                 "--device", "trajectory:" + dir + "/ok.traj", "--out", dir + "/s"})),
+            0);
+  auto lines = test::read_lines(dir + "/s/session.jsonl");
+  ASSERT_EQ(nlohmann::json::parse(lines.back())["type"], "session_end");
+  lines.pop_back();
+  {
+    std::ofstream out(dir + "/s/session.jsonl", std::ios::trunc);
+    for (const std::string& l : lines) out << l << "\n";
+  }
+  auto r = read_resume_point(dir + "/s/session.jsonl");
+  ASSERT_FALSE(r);
+  EXPECT_NE(r.error().message.find("the session ended (criterion: pass 1 had every room right"), std::string::npos)
+      << r.error().message;
+  EXPECT_EQ(run_child(maze_args({"--resume", dir + "/s"})), 1);
+  EXPECT_EQ(test::read_lines(dir + "/s/session.jsonl"), lines) << "a refused resume writes nothing";
 }
 
 // Where a resumed window session puts the live hand (resume_place): where the participant's own

@@ -227,8 +227,14 @@ int resume_main(const cli::Command& cmd, const MazeArgs& a) {
   const std::string log = a.resume + "/session.jsonl";
   auto r = maze::read_resume_point(log);
   if (!r) return cmd.fail(r.error());
+  if (!r->torn.empty())
+    std::fprintf(stderr, "warning: %s; it goes to %s.torn and the session goes on from the line before\n", r->torn.c_str(),
+                 log.c_str());
   auto desc = maze::load_maze_desc(r->info.maze_path);
   if (!desc) return cmd.fail(desc.error());
+  if (!r->ended && static_cast<int>(r->done.size()) >= desc->max_passes)  // its session_end line missing
+    return cmd.fail(make_error(log + ": the session ended (max_passes: " + std::to_string(r->done.size()) +
+                               " passes; its session_end line is missing): nothing to resume"));
   MazeArgs args = a;
   args.out_dir = a.resume;
   args.participant = r->info.participant;

@@ -42,6 +42,7 @@ int read_people(const cli::Command& cmd, const SummarizeArgs& a, std::vector<maz
   for (const std::string& log : logs.value()) {
     auto p = maze::summarize_log(log);
     if (!p) return cmd.fail(p.error());
+    if (!p->torn.empty()) notes.push_back(p->torn);  // printed with the other notes
     people.push_back(std::move(p.value()));
   }
   if (Status s = maze::check_no_duplicates(people); !s) return cmd.usage_error(s.error());
