@@ -1,5 +1,6 @@
 // pseudoshadow: makes touch visible. Entry point: finds the command in kCommands and runs it.
 #include <algorithm>
+#include <csignal>
 #include <cstdio>
 #include <string>
 #include <string_view>
@@ -48,6 +49,10 @@ int unknown_command(std::string_view cmd) {
 }  // namespace
 
 int main(int argc, char** argv) {
+  // A file grown past the file-size limit (`ulimit -f`, a quota set that way) gets a write error
+  // the logs report and stop on ("File too large"), as a full disk does, instead of SIGXFSZ
+  // killing the process mid-session with no word (docs/hardening.md, "Faults").
+  std::signal(SIGXFSZ, SIG_IGN);
   const std::string_view first = argc < 2 ? "" : argv[1];
   if (argc < 2 || first == "-h" || first == "--help" || first == "help") {
     std::fputs(top_help().c_str(), argc < 2 ? stderr : stdout);
