@@ -66,4 +66,10 @@ class Context {
 // "no OpenGL 4.5 context: egl: <why>; osmesa: <why>".
 Result<std::unique_ptr<Context>> create_context(const ContextDesc& desc);
 
+// The X display a GLFW window was opened on went away (the X server killed, a remote session
+// dropped): any thread. Until then, and without a window, false. The window's loops end their
+// session then, as on a stop signal (app/cli/stop_signal.h): calls on the dead connection do
+// nothing, and the process is not ended by Xlib with its logs open.
+bool display_lost();
+
 }  // namespace ps::gl

@@ -6,6 +6,7 @@
 #include <string>
 
 #include "gl/context_internal.h"
+#include "gl/x_display.h"
 
 namespace ps::gl::detail {
 namespace {
@@ -68,6 +69,7 @@ Result<std::unique_ptr<Context>> create_glfw_context(const ContextDesc& desc) {
   // From here the context object owns GLFW: its destructor terminates it on failure.
   auto context = std::make_unique<GlfwContext>();
   if (Status s = context->init(desc); !s) return s.error();
+  watch_x_display();
   return std::unique_ptr<Context>(std::move(context));
 }
 

@@ -207,7 +207,8 @@ namespace {
 constexpr std::pair<EndReason, const char*> kEndReasons[] = {
     {EndReason::kCriterion, "criterion"}, {EndReason::kMaxPasses, "max_passes"},
     {EndReason::kDeviceEnded, "device_ended"}, {EndReason::kQuit, "quit"},
-    {EndReason::kPracticeEnded, "practice_ended"}, {EndReason::kTerminated, "terminated"}};
+    {EndReason::kPracticeEnded, "practice_ended"}, {EndReason::kTerminated, "terminated"},
+    {EndReason::kDisplayLost, "display_lost"}};
 }  // namespace
 
 const char* end_reason_name(EndReason r) {

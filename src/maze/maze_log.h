@@ -29,6 +29,7 @@ enum class EndReason {
   kQuit,           // Esc or Q in the window
   kPracticeEnded,  // Space or Enter ended the practice pass (DIR/practice/ only)
   kTerminated,     // SIGTERM, SIGINT or SIGHUP (docs/maze.md, "A signal")
+  kDisplayLost,    // the window's X display went away (docs/maze.md, "A signal")
 };
 const char* end_reason_name(EndReason r);  // "criterion", "max_passes", ...
 bool parse_end_reason(const std::string& name, EndReason& out);

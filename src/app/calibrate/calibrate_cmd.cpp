@@ -224,7 +224,7 @@ bool report_stopped(const calibrate::Calibration& cal, const std::string& log_pa
 // signal's number.
 int report_signal(const cli::Command& cmd, const cli::StopSignals& stop, const std::string& log_path) {
   const std::string next = "resume with: " + cli::command_with(cmd.name(), cmd.args(), "--resume", log_path);
-  std::fprintf(stderr, "%s\n", cli::stop_line("calibrate", stop.received(), "trial log", log_path, next).c_str());
+  std::fprintf(stderr, "%s\n", cli::stop_line("calibrate", stop, "trial log", log_path, next).c_str());
   return stop.exit_code();
 }
 

@@ -5,6 +5,8 @@
 #include <cassert>
 #include <csignal>
 
+#include "gl/context.h"
+
 namespace ps::cli {
 
 namespace {
@@ -47,8 +49,10 @@ StopSignals::~StopSignals() {
 
 int StopSignals::received() const { return g_received.load(std::memory_order_relaxed); }
 
+bool StopSignals::display_lost() const { return gl::display_lost(); }
+
 std::function<bool()> StopSignals::predicate() const {
-  return [] { return g_received.load(std::memory_order_relaxed) != 0; };
+  return [] { return g_received.load(std::memory_order_relaxed) != 0 || gl::display_lost(); };
 }
 
 std::string signal_name(int signo) {
@@ -60,10 +64,24 @@ std::string signal_name(int signo) {
   }
 }
 
+namespace {
+
+std::string stopped_line(const std::string& command, const std::string& cause, const std::string& what,
+                         const std::string& path, const std::string& next) {
+  return command + ": " + cause + (what.empty() ? "" : "; " + what + " flushed to " + path) + (next.empty() ? "" : "; " + next);
+}
+
+}  // namespace
+
 std::string stop_line(const std::string& command, int signo, const std::string& what, const std::string& path,
                       const std::string& next) {
-  return command + ": terminated by " + signal_name(signo) + (what.empty() ? "" : "; " + what + " flushed to " + path) +
-         (next.empty() ? "" : "; " + next);
+  return stopped_line(command, "terminated by " + signal_name(signo), what, path, next);
+}
+
+std::string stop_line(const std::string& command, const StopSignals& stop, const std::string& what,
+                      const std::string& path, const std::string& next) {
+  if (stop.received() != 0) return stop_line(command, stop.received(), what, path, next);
+  return stopped_line(command, "the display went away (the X server ended or the connection dropped)", what, path, next);
 }
 
 namespace {

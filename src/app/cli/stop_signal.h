@@ -31,12 +31,15 @@ class StopSignals {
 
   // The signal that asked to stop (SIGTERM, SIGINT, SIGHUP); 0: none yet.
   int received() const;
-  bool requested() const { return received() != 0; }
+  // The window's X display went away (gl::display_lost): the session ends as on a signal, and
+  // the command exits 1 (no signal's number: nothing sent it one).
+  bool display_lost() const;
+  bool requested() const { return received() != 0 || display_lost(); }
   // For loops below the app layer (maze::SessionOptions::stop, calibrate::run_simulated): they
   // take a predicate, not this class, so they hold no signal state of their own.
   std::function<bool()> predicate() const;
-  // 128 + received(): 143 for SIGTERM, 130 for SIGINT, 129 for SIGHUP.
-  int exit_code() const { return 128 + received(); }
+  // 128 + received(): 143 for SIGTERM, 130 for SIGINT, 129 for SIGHUP; 1 for a lost display.
+  int exit_code() const { return received() != 0 ? 128 + received() : 1; }
 };
 
 // "SIGTERM", "SIGINT", "SIGHUP" ("signal N" for any other).
@@ -47,6 +50,10 @@ std::string signal_name(int signo);
 // an empty WHAT or NEXT is left out with its part).
 std::string stop_line(const std::string& command, int signo, const std::string& what, const std::string& path,
                       const std::string& next);
+// The same for what stopped it: "terminated by SIGTERM", or "the display went away" (signo 0
+// and the display lost).
+std::string stop_line(const std::string& command, const StopSignals& stop, const std::string& what,
+                      const std::string& path, const std::string& next);
 
 // "pseudoshadow COMMAND ARGS... OPTION VALUE": the command line given (`args`: after the
 // command's name, Command::args()) with OPTION (and its value, as "OPTION V" or "OPTION=V")

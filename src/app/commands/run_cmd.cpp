@@ -251,7 +251,7 @@ int report_stop(const RunArgs& a, const cli::StopSignals& stop) {
     what += what.empty() ? "event log" : " and event log";
     path += path.empty() ? a.events.log_path : ", " + a.events.log_path;
   }
-  std::fprintf(stderr, "%s\n", cli::stop_line("run", stop.received(), what, path, next).c_str());
+  std::fprintf(stderr, "%s\n", cli::stop_line("run", stop, what, path, next).c_str());
   return stop.exit_code();
 }
 

@@ -194,7 +194,7 @@ int report_stop(const cli::StopSignals& stop, const maze::SessionOptions& o, maz
   const std::string next = maze::completes_session(ended)
                                ? std::string("the session had ended (") + maze::end_reason_name(ended) + "): nothing to resume"
                                : "resume with: pseudoshadow maze --resume " + (dir.empty() ? "." : dir);
-  std::fprintf(stderr, "%s\n", cli::stop_line("maze", stop.received(), "log", o.log_path, next).c_str());
+  std::fprintf(stderr, "%s\n", cli::stop_line("maze", stop, "log", o.log_path, next).c_str());
   return stop.exit_code();
 }
 

@@ -5,6 +5,7 @@
 
 #include "app/maze/maze_overlay.h"
 #include "app/session/session.h"
+#include "gl/context.h"
 #include "haptics/session_driver.h"
 #include "maze/maze_screen.h"
 #include "prepare/prepare.h"
@@ -140,6 +141,10 @@ Status follow_scene(maze::SessionCore& core, Window& w, LivePass& pass) {
 
 // A signal asked the command to stop (SessionOptions::stop, the CLI's StopSignals).
 bool stop_asked(const maze::SessionOptions& o) { return o.stop && o.stop(); }
+// Why a stop was asked: the display gone (gl::display_lost) or a signal.
+maze::EndReason stop_reason() {
+  return gl::display_lost() ? maze::EndReason::kDisplayLost : maze::EndReason::kTerminated;
+}
 
 // The pass is over: kScoreSeconds after the session ended (its last score stays up that long),
 // when a log device has played to its end, or when a signal asked to stop (after the ticks so
@@ -147,7 +152,7 @@ bool stop_asked(const maze::SessionOptions& o) { return o.stop && o.stop(); }
 bool pass_over(const maze::SessionOptions& o, const Window& w, const HapticState& st, double end_at,
                maze::EndReason& reason) {
   if (stop_asked(o)) {
-    reason = maze::EndReason::kTerminated;
+    reason = stop_reason();
     return true;
   }
   if (end_at >= 0.0) return st.time_s > end_at;
@@ -258,7 +263,9 @@ Result<bool> run_practice(const maze::SessionOptions& o, const MazeWindowParams&
   auto result = end_pass(po.value(), core, pass, looped, true);
   if (!result) return result.error();
   // Its one pass done (max_passes) or ended early with Space goes on; Esc or a signal stops.
-  if (result->reason == maze::EndReason::kQuit || result->reason == maze::EndReason::kTerminated) return false;
+  if (result->reason == maze::EndReason::kQuit || result->reason == maze::EndReason::kTerminated ||
+      result->reason == maze::EndReason::kDisplayLost)
+    return false;
   if (Status s = use_scene(w, scored.scene().scene); !s) return s.error();
   w.input()->place(on_plane(floor_plane(*w.renderer), w.renderer->scene().probe.position));
   Result<bool> go = wait_for_start(o, w, kPracticeOver);
@@ -288,7 +295,7 @@ int run_maze_window(const cli::Command& cmd, const maze::SessionOptions& o, cons
     if (w.input()) w.input()->poll(o.haptics.start_time_s, pointer_view(*w.renderer, floor_plane(*w.renderer)));
     looped = run_pass(o, params, core, w, pass, false);
   } else if (stop_asked(o)) {
-    pass.reason = maze::EndReason::kTerminated;  // before the start, or in the practice
+    pass.reason = stop_reason();  // before the start, or in the practice
   }
   auto result = end_pass(o, core, pass, looped, false);
   if (!result) return cmd.fail(result.error());

@@ -10,6 +10,7 @@
 #include <cstdint>
 
 #include "app/session/session.h"
+#include "gl/context.h"
 #include "gl/gl.h"
 #include "render/renderer.h"
 
@@ -87,21 +88,29 @@ LiveWindow::~LiveWindow() {
 void LiveWindow::poll_events() { glfwPollEvents(); }
 void LiveWindow::wait_events(double timeout_s) { glfwWaitEventsTimeout(timeout_s); }
 bool LiveWindow::should_close() const { return glfwWindowShouldClose(window_) != 0; }
-bool LiveWindow::hovered() const { return glfwGetWindowAttrib(window_, GLFW_HOVERED) == GLFW_TRUE; }
+bool LiveWindow::hovered() const {
+  return !gl::display_lost() && glfwGetWindowAttrib(window_, GLFW_HOVERED) == GLFW_TRUE;
+}
 
+// Once the display is gone (gl::display_lost; the very call that finds it so may be this one)
+// the window's size can no longer be asked (GLFW leaves garbage): the last size asked stands,
+// and the session's loop ends its session.
 glm::ivec2 LiveWindow::window_size() const {
   glm::ivec2 s(0);
-  glfwGetWindowSize(window_, &s.x, &s.y);
-  return s;
+  if (!gl::display_lost()) glfwGetWindowSize(window_, &s.x, &s.y);
+  if (!gl::display_lost()) last_window_size_ = s;
+  return last_window_size_;
 }
 
 glm::ivec2 LiveWindow::framebuffer_size() const {
   glm::ivec2 s(0);
-  glfwGetFramebufferSize(window_, &s.x, &s.y);
-  return s;
+  if (!gl::display_lost()) glfwGetFramebufferSize(window_, &s.x, &s.y);
+  if (!gl::display_lost()) last_framebuffer_size_ = s;
+  return last_framebuffer_size_;
 }
 
 std::optional<glm::dvec2> LiveWindow::pointer_in_window() const {
+  if (gl::display_lost()) return std::nullopt;
   const glm::ivec2 size = window_size();
   glm::dvec2 p(0.0);
   glfwGetCursorPos(window_, &p.x, &p.y);
@@ -113,7 +122,14 @@ void LiveWindow::set_title(const std::string& title) { glfwSetWindowTitle(window
 
 void LiveWindow::begin_frame() {
   ImGui_ImplOpenGL3_NewFrame();
-  ImGui_ImplGlfw_NewFrame();
+  ImGuiIO& io = ImGui::GetIO();
+  const ImVec2 size = io.DisplaySize, scale = io.DisplayFramebufferScale;
+  if (!gl::display_lost()) ImGui_ImplGlfw_NewFrame();
+  if (gl::display_lost()) {  // the window cannot be asked (window_size): the last frame's size stands
+    io.DisplaySize = size;
+    io.DisplayFramebufferScale = scale;
+    io.DeltaTime = 1.f / 60.f;
+  }
   ImGui::NewFrame();
 }
 
@@ -134,7 +150,7 @@ void LiveWindow::end_frame() {
   ImGui::Render();
   glBindFramebuffer(GL_FRAMEBUFFER, 0);  // the back buffer, whatever a pass or a blit left bound
   ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
-  glfwSwapBuffers(window_);
+  if (!gl::display_lost()) glfwSwapBuffers(window_);
 }
 
 Status LiveWindow::open_device(const DeviceSpec& spec, const GlfwInputParams& params) {

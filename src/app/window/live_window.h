@@ -92,6 +92,7 @@ class LiveWindow {
   std::unique_ptr<Device> device_;
   GlfwInputDevice* input_ = nullptr;
   PointerLogDevice* pointer_ = nullptr;
+  mutable glm::ivec2 last_window_size_{0}, last_framebuffer_size_{0};  // asked last (window_size)
 };
 
 }  // namespace ps
