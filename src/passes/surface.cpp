@@ -150,13 +150,56 @@ Status SurfacePass::run(const std::vector<SurfaceDraw>& draws, const gl::Texture
 
 Status SurfacePass::run(const std::vector<SurfaceDraw>& draws, const gl::Texture* probe_depth,
                         const glm::dvec3& background, const PixelRect& shadow_rect, const PixelRect& redraw) {
-  const PixelRect image = PixelRect::whole(params_.width, params_.height);
+  return run_in(draws, probe_depth, background, shadow_rect, redraw, PixelRect::whole(params_.width, params_.height));
+}
+
+Status SurfacePass::run_reduced(const std::vector<SurfaceDraw>& draws, const glm::dvec3& background, glm::ivec2 size,
+                                bool depth) {
+  assert(size.x > 0 && size.y > 0 && size.x <= params_.width && size.y <= params_.height &&
+         "SurfacePass::run_reduced: the reduced image must fit the targets");
+  const PixelRect small = PixelRect::whole(size.x, size.y);
+  if (Status s = run_in(draws, nullptr, background, PixelRect{}, small, small); !s) return s;
+  upsample_reduced(size, depth);
+  return ok_status();
+}
+
+// Small image -> staging (scaled) -> the targets (copied): two blits, since one framebuffer is
+// never both read and drawn. Depth is blitted by the nearest sample (GL allows no other filter
+// for it), in a blit of its own because the colour's is linear.
+void SurfacePass::upsample_reduced(glm::ivec2 size, bool depth) {
+  if (staging_fbo_.id() == 0) {
+    staging_color_ = gl::make_texture_2d(params_.width, params_.height, GL_RGBA8);
+    staging_depth_ = gl::make_renderbuffer(GL_DEPTH_COMPONENT32F, params_.width, params_.height);
+    staging_fbo_ = gl::make_framebuffer();
+    glNamedFramebufferTexture(staging_fbo_.id(), GL_COLOR_ATTACHMENT0, staging_color_.id(), 0);
+    glNamedFramebufferRenderbuffer(staging_fbo_.id(), GL_DEPTH_ATTACHMENT, GL_RENDERBUFFER, staging_depth_.id());
+    glNamedFramebufferDrawBuffer(staging_fbo_.id(), GL_COLOR_ATTACHMENT0);
+    glNamedFramebufferReadBuffer(staging_fbo_.id(), GL_COLOR_ATTACHMENT0);
+  }
+  const GLint w = params_.width, h = params_.height;
+  glDisable(GL_SCISSOR_TEST);  // a blit is clipped by the scissor box
+  glNamedFramebufferReadBuffer(fbo_.id(), GL_COLOR_ATTACHMENT0);
+  glBlitNamedFramebuffer(fbo_.id(), staging_fbo_.id(), 0, 0, size.x, size.y, 0, 0, w, h, GL_COLOR_BUFFER_BIT, GL_LINEAR);
+  if (depth)
+    glBlitNamedFramebuffer(fbo_.id(), staging_fbo_.id(), 0, 0, size.x, size.y, 0, 0, w, h, GL_DEPTH_BUFFER_BIT,
+                           GL_NEAREST);
+  // Back into the colour attachment alone: with all four draw buffers a blit writes each of them.
+  glNamedFramebufferDrawBuffer(fbo_.id(), GL_COLOR_ATTACHMENT0);
+  glBlitNamedFramebuffer(staging_fbo_.id(), fbo_.id(), 0, 0, w, h, 0, 0, w, h,
+                         GL_COLOR_BUFFER_BIT | (depth ? GL_DEPTH_BUFFER_BIT : 0), GL_NEAREST);
+  const GLenum buffers[4] = {GL_COLOR_ATTACHMENT0, GL_COLOR_ATTACHMENT1, GL_COLOR_ATTACHMENT2, GL_COLOR_ATTACHMENT3};
+  glNamedFramebufferDrawBuffers(fbo_.id(), 4, buffers);
+}
+
+Status SurfacePass::run_in(const std::vector<SurfaceDraw>& draws, const gl::Texture* probe_depth,
+                           const glm::dvec3& background, const PixelRect& shadow_rect, const PixelRect& redraw,
+                           const PixelRect& image) {
   shadow_rect_ = shadow_rect.clipped_to(image);
   const PixelRect area = redraw.clipped_to(image);
   assert(shadow_rect_.clipped_to(area) == shadow_rect_ &&
          "SurfacePass::run: the redrawn area must hold the shadow rectangle (FrameHistory::redraw)");
   glBindFramebuffer(GL_FRAMEBUFFER, fbo_.id());
-  glViewport(0, 0, params_.width, params_.height);
+  glViewport(0, 0, image.width(), image.height());
   glDisable(GL_BLEND);
   glDisable(GL_CULL_FACE);  // surfaces may be open or seen from behind (two-sided shading)
   glEnable(GL_DEPTH_TEST);
@@ -177,7 +220,7 @@ Status SurfacePass::run(const std::vector<SurfaceDraw>& draws, const gl::Texture
     glNamedBufferSubData(ubo_.id(), static_cast<GLintptr>(i) * ubo_stride_, sizeof(SurfaceBlock), &draws[i].block);
   glBindTextureUnit(0, probe_depth ? probe_depth->id() : dummy_.id());
   glEnable(GL_SCISSOR_TEST);
-  const Status s = draw_regions(draws, area);
+  const Status s = draw_regions(draws, area, image);
   glColorMaski(2, GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
   glColorMaski(3, GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
   glDisable(GL_SCISSOR_TEST);
@@ -204,7 +247,7 @@ void SurfacePass::clear(const glm::dvec3& background, const PixelRect* area) {
 // The footprint's rectangle with its own variants, the AOV cleared and written there only; then
 // the rest of `area` in bands around it (all of it when the rectangle is empty): plain shading,
 // no AOV, no filter need.
-Status SurfacePass::draw_regions(const std::vector<SurfaceDraw>& draws, const PixelRect& area) {
+Status SurfacePass::draw_regions(const std::vector<SurfaceDraw>& draws, const PixelRect& area, const PixelRect& image) {
   const float zero[4] = {0, 0, 0, 0}, aov_clear[4] = {0, kNoProbeDistance, 0, 0};
   if (!shadow_rect_.empty()) {
     glScissor(shadow_rect_.x0, shadow_rect_.y0, shadow_rect_.width(), shadow_rect_.height());
@@ -214,7 +257,6 @@ Status SurfacePass::draw_regions(const std::vector<SurfaceDraw>& draws, const Pi
   }
   glColorMaski(2, GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
   glColorMaski(3, GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
-  const PixelRect image = PixelRect::whole(params_.width, params_.height);
   const PixelRect& r = shadow_rect_;
   const PixelRect bands[4] = {{0, 0, image.x1, r.empty() ? image.y1 : r.y0},
                               {0, r.y1, image.x1, image.y1},

@@ -161,6 +161,14 @@ struct SurfacePass {
   // run()'s value. The whole image: the same as the overload above.
   Status run(const std::vector<SurfaceDraw>& draws, const gl::Texture* probe_depth,
              const glm::dvec3& background, const PixelRect& shadow_rect, const PixelRect& redraw);
+  // A reduced frame (adaptive resolution while the view moves, docs/adaptive.md): every surface
+  // drawn with its plain variant at `size` (smaller than the image: the same view at fewer
+  // pixels, a viewport that small at the origin of the targets), then upsampled to the whole
+  // image: the colour bilinearly, the depth (with `depth`: what the overlays are depth-tested
+  // against) by the nearest sample. The normal target holds the small image only and the AOV
+  // nothing: the caller redraws what the reductions read with run() (the footprint's rectangle).
+  Status run_reduced(const std::vector<SurfaceDraw>& draws, const glm::dvec3& background, glm::ivec2 size,
+                     bool depth);
   // Builds a variant now, not at its first draw: a variant a live session switches to later (the
   // filter's level of detail) is built ahead instead of stalling that frame.
   Status warm(SurfaceFlags variant);
@@ -192,12 +200,21 @@ struct SurfacePass {
   // with their PS_SHADOW=0 variant.
   Status draw_all(const std::vector<SurfaceDraw>& draws, bool shadow);
   void clear(const glm::dvec3& background, const PixelRect* area);
-  Status draw_regions(const std::vector<SurfaceDraw>& draws, const PixelRect& area);
+  Status draw_regions(const std::vector<SurfaceDraw>& draws, const PixelRect& area, const PixelRect& image);
+  // run()'s work over `image` (the whole image, or run_reduced()'s smaller one at the origin).
+  Status run_in(const std::vector<SurfaceDraw>& draws, const gl::Texture* probe_depth, const glm::dvec3& background,
+                const PixelRect& shadow_rect, const PixelRect& redraw, const PixelRect& image);
 
   std::map<SurfaceFlags, gl::Program> programs_;
   gl::Texture color_, normal_, aov_, filter_need_, dummy_;
   gl::Renderbuffer depth_;
   gl::Framebuffer fbo_;
+  // run_reduced()'s upsampled colour and depth, made at its first call (a session that never
+  // moves the view never pays for them): a blit cannot read and write one framebuffer.
+  gl::Texture staging_color_;
+  gl::Renderbuffer staging_depth_;
+  gl::Framebuffer staging_fbo_;
+  void upsample_reduced(glm::ivec2 size, bool depth);
   gl::Buffer ubo_;        // one SurfaceBlock per draw, ubo_stride_ bytes apart
   int ubo_capacity_ = 0;   // blocks
   GLint ubo_stride_ = 0;
