@@ -91,7 +91,14 @@ gl::Buffer make_intensity_lut_buffer(const Lut& lut) {
 Status SurfacePass::init(const std::string& glsl_root, const Params& params) {
   glsl_root_ = glsl_root;
   params_ = params;
-  padded_ = {next_pow2(params.width), next_pow2(params.height)};
+  if (Status s = make_targets(); !s) return s;
+  auto warm = program(SurfaceFlag::kShadow | SurfaceFlag::kTextured);  // compile the common variant up front: errors surface early
+  if (!warm) return warm.error();
+  return ok_status();
+}
+
+Status SurfacePass::make_targets() {
+  padded_ = {next_pow2(params_.width), next_pow2(params_.height)};
   levels_ = 1 + std::bit_width(static_cast<unsigned>(std::max(padded_.x, padded_.y))) - 1;
   color_ = gl::make_texture_2d(padded_.x, padded_.y, GL_RGBA8);
   normal_ = gl::make_texture_2d(padded_.x, padded_.y, GL_RGBA32F, levels_);
@@ -118,17 +125,15 @@ Status SurfacePass::init(const std::string& glsl_root, const Params& params) {
   ubo_stride_ = static_cast<GLint>((sizeof(SurfaceBlock) + align - 1) / align * align);
   ubo_capacity_ = 1;
   ubo_ = gl::make_buffer(ubo_stride_, nullptr, GL_DYNAMIC_STORAGE_BIT);
-  auto warm = program(SurfaceFlag::kShadow | SurfaceFlag::kTextured);  // compile the common variant up front: errors surface early
-  if (!warm) return warm.error();
   return ok_status();
 }
 
 Result<const gl::Program*> SurfacePass::program(SurfaceFlags variant) {
-  auto it = programs_.find(variant);
-  if (it != programs_.end()) return &it->second;
+  auto it = programs_->find(variant);
+  if (it != programs_->end()) return &it->second;
   auto built = gl::build_program({{"surface.vert", "surface.frag"}, defines_for(variant)}, glsl_root_);
   if (!built) return built.error();
-  return &programs_.emplace(variant, std::move(built.value())).first->second;
+  return &programs_->emplace(variant, std::move(built.value())).first->second;
 }
 
 Status SurfacePass::warm(SurfaceFlags variant) {
@@ -153,40 +158,23 @@ Status SurfacePass::run(const std::vector<SurfaceDraw>& draws, const gl::Texture
   return run_in(draws, probe_depth, background, shadow_rect, redraw, PixelRect::whole(params_.width, params_.height));
 }
 
-Status SurfacePass::run_reduced(const std::vector<SurfaceDraw>& draws, const glm::dvec3& background, glm::ivec2 size,
-                                bool depth) {
-  assert(size.x > 0 && size.y > 0 && size.x <= params_.width && size.y <= params_.height &&
-         "SurfacePass::run_reduced: the reduced image must fit the targets");
-  const PixelRect small = PixelRect::whole(size.x, size.y);
-  if (Status s = run_in(draws, nullptr, background, PixelRect{}, small, small); !s) return s;
-  upsample_reduced(size, depth);
-  return ok_status();
+Status SurfacePass::init_sharing(const SurfacePass& programs_from, const Params& params) {
+  glsl_root_ = programs_from.glsl_root_;
+  params_ = params;
+  programs_ = programs_from.programs_;
+  return make_targets();
 }
 
-// Small image -> staging (scaled) -> the targets (copied): two blits, since one framebuffer is
-// never both read and drawn. Depth is blitted by the nearest sample (GL allows no other filter
-// for it), in a blit of its own because the colour's is linear.
-void SurfacePass::upsample_reduced(glm::ivec2 size, bool depth) {
-  if (staging_fbo_.id() == 0) {
-    staging_color_ = gl::make_texture_2d(params_.width, params_.height, GL_RGBA8);
-    staging_depth_ = gl::make_renderbuffer(GL_DEPTH_COMPONENT32F, params_.width, params_.height);
-    staging_fbo_ = gl::make_framebuffer();
-    glNamedFramebufferTexture(staging_fbo_.id(), GL_COLOR_ATTACHMENT0, staging_color_.id(), 0);
-    glNamedFramebufferRenderbuffer(staging_fbo_.id(), GL_DEPTH_ATTACHMENT, GL_RENDERBUFFER, staging_depth_.id());
-    glNamedFramebufferDrawBuffer(staging_fbo_.id(), GL_COLOR_ATTACHMENT0);
-    glNamedFramebufferReadBuffer(staging_fbo_.id(), GL_COLOR_ATTACHMENT0);
-  }
-  const GLint w = params_.width, h = params_.height;
+// Into the colour attachment alone (with all four draw buffers a blit writes each of them); the
+// depth in a blit of its own, as GL allows it the nearest sample only.
+void SurfacePass::take_upsampled(const SurfacePass& small, bool depth) {
+  const GLint sw = small.params_.width, sh = small.params_.height, w = params_.width, h = params_.height;
   glDisable(GL_SCISSOR_TEST);  // a blit is clipped by the scissor box
-  glNamedFramebufferReadBuffer(fbo_.id(), GL_COLOR_ATTACHMENT0);
-  glBlitNamedFramebuffer(fbo_.id(), staging_fbo_.id(), 0, 0, size.x, size.y, 0, 0, w, h, GL_COLOR_BUFFER_BIT, GL_LINEAR);
-  if (depth)
-    glBlitNamedFramebuffer(fbo_.id(), staging_fbo_.id(), 0, 0, size.x, size.y, 0, 0, w, h, GL_DEPTH_BUFFER_BIT,
-                           GL_NEAREST);
-  // Back into the colour attachment alone: with all four draw buffers a blit writes each of them.
+  glNamedFramebufferReadBuffer(small.fbo_.id(), GL_COLOR_ATTACHMENT0);
   glNamedFramebufferDrawBuffer(fbo_.id(), GL_COLOR_ATTACHMENT0);
-  glBlitNamedFramebuffer(staging_fbo_.id(), fbo_.id(), 0, 0, w, h, 0, 0, w, h,
-                         GL_COLOR_BUFFER_BIT | (depth ? GL_DEPTH_BUFFER_BIT : 0), GL_NEAREST);
+  glBlitNamedFramebuffer(small.fbo_.id(), fbo_.id(), 0, 0, sw, sh, 0, 0, w, h, GL_COLOR_BUFFER_BIT, GL_LINEAR);
+  if (depth)
+    glBlitNamedFramebuffer(small.fbo_.id(), fbo_.id(), 0, 0, sw, sh, 0, 0, w, h, GL_DEPTH_BUFFER_BIT, GL_NEAREST);
   const GLenum buffers[4] = {GL_COLOR_ATTACHMENT0, GL_COLOR_ATTACHMENT1, GL_COLOR_ATTACHMENT2, GL_COLOR_ATTACHMENT3};
   glNamedFramebufferDrawBuffers(fbo_.id(), 4, buffers);
 }

@@ -318,10 +318,11 @@ void Renderer::reduce(const FramePlan& plan, PassTimer& timer) {
                                                    scene_.render.displacement == DisplacementMethod::kWeightedAverage,
                                                    options_.footprint_rect});
     timer.lap("reductions");
-    // A reduced frame's normal target holds the small image: the plane is kept (the last whole
-    // frame's mean) rather than reduced from it; the first whole frame at rest reduces it again.
-    bool reduced = false;
-    const ReductionResult n = last_reduced_ ? normal_mean_.result : mean_visible_normal(reduced, view_->camera);
+    // A reduced frame's plane is the mean of the small image's normals (the same surfaces at
+    // fewer pixels), never kept in normal_mean_: that holds whole images' means, by camera.
+    bool reduced = last_reduced_ != nullptr;
+    const ReductionResult n =
+        last_reduced_ ? reductions_.mean_normal(*last_reduced_) : mean_visible_normal(reduced, view_->camera);
     if (reduced) timer.lap("reference_normal");
     r.normal_sum = n.normal_sum;
     r.normal_coverage = n.normal_coverage;

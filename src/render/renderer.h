@@ -10,6 +10,7 @@
 
 #include <chrono>
 #include <cstdint>
+#include <map>
 #include <memory>
 #include <optional>
 #include <span>
@@ -173,8 +174,8 @@ class Renderer {
   // scale the surface pass is drawn at from the next frame on, `moving` when the frame's camera
   // differs from the last frame's, else `still`. Below 1 the frame is drawn small and upsampled,
   // and the footprint's rectangle (all the reductions read: max penetration, displacement) is
-  // redrawn at full resolution over it; the reference plane is kept, not reduced from the small
-  // image's normals. Never set (every headless command): {1, 1}, every frame whole. With
+  // redrawn at full resolution over it; the reference plane is reduced from the small image's
+  // normals (a whole frame at rest reduces the whole image's again). Never set (every headless command): {1, 1}, every frame whole. With
   // RendererOptions::footprint_rect off every frame is whole (the reductions read the image).
   void set_surface_scale(SurfaceScale scale) { surface_scale_ = scale; }
 
@@ -217,7 +218,8 @@ class Renderer {
   // The surface pass, whole or at a reduced scale (renderer_adaptive.cpp).
   Status draw_surfaces(const std::vector<SurfaceDraw>& draws, const FramePlan& plan, const PixelRect& rect);
   Status draw_reduced(const std::vector<SurfaceDraw>& draws, const FramePlan& plan, const PixelRect& rect,
-                      double scale);
+                      glm::ivec2 size);
+  Result<SurfacePass*> reduced_pass(glm::ivec2 size);
   double frame_scale();  // this frame's scale; notes it and whether the view moved in stats_
 
   Scene scene_;
@@ -244,7 +246,9 @@ class Renderer {
   FrameHistory history_;                   // what the last frame left: incremental frames
   SurfaceScale surface_scale_;             // set_surface_scale
   std::optional<Camera> last_camera_;      // the last frame's: did this frame's view move?
-  bool last_reduced_ = false;              // the last frame was drawn at a reduced scale
+  // The passes reduced frames are drawn by, by size, and the one the last frame was (null: whole).
+  std::map<std::pair<int, int>, SurfacePass> reduced_passes_;
+  const SurfacePass* last_reduced_ = nullptr;
   ProbeDepthPass probe_depth_;
   SurfacePass surface_;
   ReductionsPass reductions_;
