@@ -155,6 +155,30 @@ Status rest(Pair& p, const FrameInput& last, MovingRow& row) {
   return ok_status();
 }
 
+constexpr int kWarm = 5;  // moving frames first drawn untimed: shader builds, caches
+
+// The timed moving frames, and every error_every-th one's image error (read outside the timing).
+Status moving_frames(const MovingOptions& o, const Motion& m, const Scene& scene, Pair& p, MovingRow& row) {
+  double rms_sum = 0.0;
+  int rms_n = 0;
+  for (int i = 0; i < kWarm + o.frames; ++i) {
+    auto f = frame_pair(p, m.input(scene, i), i >= kWarm);
+    if (!f) return f.error();
+    if (i < kWarm) continue;
+    row.full_frames.push_back(f->first);
+    row.adaptive_frames.push_back(f->second);
+    row.scales.push_back(p.adaptive->stats().surface_scale);
+    if ((i - kWarm) % std::max(o.error_every, 1) == 0) {
+      double rms = 0.0, profile = 0.0;
+      if (Status s = image_error(*p.full, *p.adaptive, rms, profile); !s) return s;
+      rms_sum += rms, ++rms_n;
+      row.profile_max_levels = std::max(row.profile_max_levels, profile);
+    }
+  }
+  row.rms_levels = rms_n ? rms_sum / rms_n : 0.0;
+  return ok_status();
+}
+
 Result<MovingRow> run_case(const MovingOptions& o, const Motion& m, glm::ivec2 size) {
   auto scene = motion_scene(m, size);
   if (!scene) return scene.error();
@@ -174,24 +198,7 @@ Result<MovingRow> run_case(const MovingOptions& o, const Motion& m, glm::ivec2 s
   row.motion = m.name;
   row.scene = *m.scene ? m.scene : "default.toml";
   row.size = size;
-  constexpr int kWarm = 5;  // moving frames first drawn untimed: shader builds, caches
-  double rms_sum = 0.0;
-  int rms_n = 0;
-  for (int i = 0; i < kWarm + o.frames; ++i) {
-    auto f = frame_pair(p, m.input(scene.value(), i), i >= kWarm);
-    if (!f) return f.error();
-    if (i < kWarm) continue;
-    row.full_frames.push_back(f->first);
-    row.adaptive_frames.push_back(f->second);
-    row.scales.push_back(p.adaptive->stats().surface_scale);
-    if ((i - kWarm) % std::max(o.error_every, 1) == 0) {
-      double rms = 0.0, profile = 0.0;
-      if (Status s = image_error(*p.full, *p.adaptive, rms, profile); !s) return s.error();
-      rms_sum += rms, ++rms_n;
-      row.profile_max_levels = std::max(row.profile_max_levels, profile);
-    }
-  }
-  row.rms_levels = rms_n ? rms_sum / rms_n : 0.0;
+  if (Status s = moving_frames(o, m, scene.value(), p, row); !s) return s.error();
   if (Status s = rest(p, m.input(scene.value(), kWarm + o.frames - 1), row); !s) return s.error();
   row.full_p50_ms = percentile(row.full_frames, 0.5), row.full_p99_ms = percentile(row.full_frames, 0.99);
   row.adaptive_p50_ms = percentile(row.adaptive_frames, 0.5), row.adaptive_p99_ms = percentile(row.adaptive_frames, 0.99);
