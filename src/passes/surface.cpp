@@ -155,39 +155,13 @@ Status SurfacePass::run(const std::vector<SurfaceDraw>& draws, const gl::Texture
 
 Status SurfacePass::run(const std::vector<SurfaceDraw>& draws, const gl::Texture* probe_depth,
                         const glm::dvec3& background, const PixelRect& shadow_rect, const PixelRect& redraw) {
-  return run_in(draws, probe_depth, background, shadow_rect, redraw, PixelRect::whole(params_.width, params_.height));
-}
-
-Status SurfacePass::init_sharing(const SurfacePass& programs_from, const Params& params) {
-  glsl_root_ = programs_from.glsl_root_;
-  params_ = params;
-  programs_ = programs_from.programs_;
-  return make_targets();
-}
-
-// Into the colour attachment alone (with all four draw buffers a blit writes each of them); the
-// depth in a blit of its own, as GL allows it the nearest sample only.
-void SurfacePass::take_upsampled(const SurfacePass& small, bool depth) {
-  const GLint sw = small.params_.width, sh = small.params_.height, w = params_.width, h = params_.height;
-  glDisable(GL_SCISSOR_TEST);  // a blit is clipped by the scissor box
-  glNamedFramebufferReadBuffer(small.fbo_.id(), GL_COLOR_ATTACHMENT0);
-  glNamedFramebufferDrawBuffer(fbo_.id(), GL_COLOR_ATTACHMENT0);
-  glBlitNamedFramebuffer(small.fbo_.id(), fbo_.id(), 0, 0, sw, sh, 0, 0, w, h, GL_COLOR_BUFFER_BIT, GL_LINEAR);
-  if (depth)
-    glBlitNamedFramebuffer(small.fbo_.id(), fbo_.id(), 0, 0, sw, sh, 0, 0, w, h, GL_DEPTH_BUFFER_BIT, GL_NEAREST);
-  const GLenum buffers[4] = {GL_COLOR_ATTACHMENT0, GL_COLOR_ATTACHMENT1, GL_COLOR_ATTACHMENT2, GL_COLOR_ATTACHMENT3};
-  glNamedFramebufferDrawBuffers(fbo_.id(), 4, buffers);
-}
-
-Status SurfacePass::run_in(const std::vector<SurfaceDraw>& draws, const gl::Texture* probe_depth,
-                           const glm::dvec3& background, const PixelRect& shadow_rect, const PixelRect& redraw,
-                           const PixelRect& image) {
+  const PixelRect image = PixelRect::whole(params_.width, params_.height);
   shadow_rect_ = shadow_rect.clipped_to(image);
   const PixelRect area = redraw.clipped_to(image);
   assert(shadow_rect_.clipped_to(area) == shadow_rect_ &&
          "SurfacePass::run: the redrawn area must hold the shadow rectangle (FrameHistory::redraw)");
   glBindFramebuffer(GL_FRAMEBUFFER, fbo_.id());
-  glViewport(0, 0, image.width(), image.height());
+  glViewport(0, 0, params_.width, params_.height);
   glDisable(GL_BLEND);
   glDisable(GL_CULL_FACE);  // surfaces may be open or seen from behind (two-sided shading)
   glEnable(GL_DEPTH_TEST);
@@ -208,11 +182,33 @@ Status SurfacePass::run_in(const std::vector<SurfaceDraw>& draws, const gl::Text
     glNamedBufferSubData(ubo_.id(), static_cast<GLintptr>(i) * ubo_stride_, sizeof(SurfaceBlock), &draws[i].block);
   glBindTextureUnit(0, probe_depth ? probe_depth->id() : dummy_.id());
   glEnable(GL_SCISSOR_TEST);
-  const Status s = draw_regions(draws, area, image);
+  const Status s = draw_regions(draws, area);
   glColorMaski(2, GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
   glColorMaski(3, GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
   glDisable(GL_SCISSOR_TEST);
   return s;
+}
+
+Status SurfacePass::init_sharing(const SurfacePass& programs_from, const Params& params) {
+  glsl_root_ = programs_from.glsl_root_;
+  params_ = params;
+  programs_ = programs_from.programs_;
+  return make_targets();
+}
+
+// Into the colour attachment alone (with all four draw buffers a blit writes each of them; the
+// switch makes llvmpipe flush, in reduced frames only); the depth in a blit of its own, as GL
+// allows it the nearest sample only.
+void SurfacePass::take_upsampled(const SurfacePass& small, bool depth) {
+  const GLint sw = small.params_.width, sh = small.params_.height, w = params_.width, h = params_.height;
+  glDisable(GL_SCISSOR_TEST);  // a blit is clipped by the scissor box
+  glNamedFramebufferReadBuffer(small.fbo_.id(), GL_COLOR_ATTACHMENT0);
+  glNamedFramebufferDrawBuffer(fbo_.id(), GL_COLOR_ATTACHMENT0);
+  glBlitNamedFramebuffer(small.fbo_.id(), fbo_.id(), 0, 0, sw, sh, 0, 0, w, h, GL_COLOR_BUFFER_BIT, GL_LINEAR);
+  if (depth)
+    glBlitNamedFramebuffer(small.fbo_.id(), fbo_.id(), 0, 0, sw, sh, 0, 0, w, h, GL_DEPTH_BUFFER_BIT, GL_NEAREST);
+  const GLenum buffers[4] = {GL_COLOR_ATTACHMENT0, GL_COLOR_ATTACHMENT1, GL_COLOR_ATTACHMENT2, GL_COLOR_ATTACHMENT3};
+  glNamedFramebufferDrawBuffers(fbo_.id(), 4, buffers);
 }
 
 // Colour (background), normal and depth: the whole padded targets for a full frame (`area`
@@ -235,7 +231,7 @@ void SurfacePass::clear(const glm::dvec3& background, const PixelRect* area) {
 // The footprint's rectangle with its own variants, the AOV cleared and written there only; then
 // the rest of `area` in bands around it (all of it when the rectangle is empty): plain shading,
 // no AOV, no filter need.
-Status SurfacePass::draw_regions(const std::vector<SurfaceDraw>& draws, const PixelRect& area, const PixelRect& image) {
+Status SurfacePass::draw_regions(const std::vector<SurfaceDraw>& draws, const PixelRect& area) {
   const float zero[4] = {0, 0, 0, 0}, aov_clear[4] = {0, kNoProbeDistance, 0, 0};
   if (!shadow_rect_.empty()) {
     glScissor(shadow_rect_.x0, shadow_rect_.y0, shadow_rect_.width(), shadow_rect_.height());
@@ -245,6 +241,7 @@ Status SurfacePass::draw_regions(const std::vector<SurfaceDraw>& draws, const Pi
   }
   glColorMaski(2, GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
   glColorMaski(3, GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
+  const PixelRect image = PixelRect::whole(params_.width, params_.height);
   const PixelRect& r = shadow_rect_;
   const PixelRect bands[4] = {{0, 0, image.x1, r.empty() ? image.y1 : r.y0},
                               {0, r.y1, image.x1, image.y1},

@@ -201,10 +201,7 @@ struct SurfacePass {
   // with their PS_SHADOW=0 variant.
   Status draw_all(const std::vector<SurfaceDraw>& draws, bool shadow);
   void clear(const glm::dvec3& background, const PixelRect* area);
-  Status draw_regions(const std::vector<SurfaceDraw>& draws, const PixelRect& area, const PixelRect& image);
-  // run()'s work over `image` (the whole image, or run_reduced()'s smaller one at the origin).
-  Status run_in(const std::vector<SurfaceDraw>& draws, const gl::Texture* probe_depth, const glm::dvec3& background,
-                const PixelRect& shadow_rect, const PixelRect& redraw, const PixelRect& image);
+  Status draw_regions(const std::vector<SurfaceDraw>& draws, const PixelRect& area);
 
   // Shared with the passes init_sharing() made from this one (one context, one build each).
   std::shared_ptr<std::map<SurfaceFlags, gl::Program>> programs_ = std::make_shared<std::map<SurfaceFlags, gl::Program>>();

@@ -100,9 +100,11 @@ TEST_P(AdaptiveGLTest, AReducedFrameFeedsTheHapticSideTheWholeFramesValues) {
   EXPECT_EQ(a.penetrating_pixels, w.penetrating_pixels);
   // Every AOV but the normal, which covers the whole image (the small one here: it is read by
   // headless commands only, which never reduce a frame; the reductions read the footprint's).
-  for (const std::string& aov : aov_names())
-    if (aov != "normal")
+  for (const std::string& aov : aov_names()) {
+    if (aov != "normal") {
       EXPECT_TRUE(same_bits(p.adaptive->read_aov(aov).value(), p.whole->read_aov(aov).value())) << aov;
+    }
+  }
   const double rms = rms_levels(p.adaptive->read_color(), p.whole->read_color());
   EXPECT_GT(rms, 0.0);  // it was drawn reduced
   std::printf("reduced frame: RMS %.3f levels\n", rms);
