@@ -91,7 +91,14 @@ gl::Buffer make_intensity_lut_buffer(const Lut& lut) {
 Status SurfacePass::init(const std::string& glsl_root, const Params& params) {
   glsl_root_ = glsl_root;
   params_ = params;
-  padded_ = {next_pow2(params.width), next_pow2(params.height)};
+  if (Status s = make_targets(); !s) return s;
+  auto warm = program(SurfaceFlag::kShadow | SurfaceFlag::kTextured);  // compile the common variant up front: errors surface early
+  if (!warm) return warm.error();
+  return ok_status();
+}
+
+Status SurfacePass::make_targets() {
+  padded_ = {next_pow2(params_.width), next_pow2(params_.height)};
   levels_ = 1 + std::bit_width(static_cast<unsigned>(std::max(padded_.x, padded_.y))) - 1;
   color_ = gl::make_texture_2d(padded_.x, padded_.y, GL_RGBA8);
   normal_ = gl::make_texture_2d(padded_.x, padded_.y, GL_RGBA32F, levels_);
@@ -118,17 +125,15 @@ Status SurfacePass::init(const std::string& glsl_root, const Params& params) {
   ubo_stride_ = static_cast<GLint>((sizeof(SurfaceBlock) + align - 1) / align * align);
   ubo_capacity_ = 1;
   ubo_ = gl::make_buffer(ubo_stride_, nullptr, GL_DYNAMIC_STORAGE_BIT);
-  auto warm = program(SurfaceFlag::kShadow | SurfaceFlag::kTextured);  // compile the common variant up front: errors surface early
-  if (!warm) return warm.error();
   return ok_status();
 }
 
 Result<const gl::Program*> SurfacePass::program(SurfaceFlags variant) {
-  auto it = programs_.find(variant);
-  if (it != programs_.end()) return &it->second;
+  auto it = programs_->find(variant);
+  if (it != programs_->end()) return &it->second;
   auto built = gl::build_program({{"surface.vert", "surface.frag"}, defines_for(variant)}, glsl_root_);
   if (!built) return built.error();
-  return &programs_.emplace(variant, std::move(built.value())).first->second;
+  return &programs_->emplace(variant, std::move(built.value())).first->second;
 }
 
 Status SurfacePass::warm(SurfaceFlags variant) {
@@ -182,6 +187,28 @@ Status SurfacePass::run(const std::vector<SurfaceDraw>& draws, const gl::Texture
   glColorMaski(3, GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
   glDisable(GL_SCISSOR_TEST);
   return s;
+}
+
+Status SurfacePass::init_sharing(const SurfacePass& programs_from, const Params& params) {
+  glsl_root_ = programs_from.glsl_root_;
+  params_ = params;
+  programs_ = programs_from.programs_;
+  return make_targets();
+}
+
+// Into the colour attachment alone (with all four draw buffers a blit writes each of them; the
+// switch makes llvmpipe flush, in reduced frames only); the depth in a blit of its own, as GL
+// allows it the nearest sample only.
+void SurfacePass::take_upsampled(const SurfacePass& small, bool depth) {
+  const GLint sw = small.params_.width, sh = small.params_.height, w = params_.width, h = params_.height;
+  glDisable(GL_SCISSOR_TEST);  // a blit is clipped by the scissor box
+  glNamedFramebufferReadBuffer(small.fbo_.id(), GL_COLOR_ATTACHMENT0);
+  glNamedFramebufferDrawBuffer(fbo_.id(), GL_COLOR_ATTACHMENT0);
+  glBlitNamedFramebuffer(small.fbo_.id(), fbo_.id(), 0, 0, sw, sh, 0, 0, w, h, GL_COLOR_BUFFER_BIT, GL_LINEAR);
+  if (depth)
+    glBlitNamedFramebuffer(small.fbo_.id(), fbo_.id(), 0, 0, sw, sh, 0, 0, w, h, GL_DEPTH_BUFFER_BIT, GL_NEAREST);
+  const GLenum buffers[4] = {GL_COLOR_ATTACHMENT0, GL_COLOR_ATTACHMENT1, GL_COLOR_ATTACHMENT2, GL_COLOR_ATTACHMENT3};
+  glNamedFramebufferDrawBuffers(fbo_.id(), 4, buffers);
 }
 
 // Colour (background), normal and depth: the whole padded targets for a full frame (`area`

@@ -19,6 +19,7 @@
 
 #include <limits>
 #include <map>
+#include <memory>
 #include <optional>
 #include <span>
 #include <string>
@@ -161,6 +162,14 @@ struct SurfacePass {
   // run()'s value. The whole image: the same as the overload above.
   Status run(const std::vector<SurfaceDraw>& draws, const gl::Texture* probe_depth,
              const glm::dvec3& background, const PixelRect& shadow_rect, const PixelRect& redraw);
+  // A reduced frame (adaptive resolution while the view moves, docs/adaptive.md) is drawn by a
+  // second, smaller pass over the same view: init_sharing() makes one that builds no program
+  // of its own (it uses `programs_from`'s, built once for both), and take_upsampled() puts its
+  // image into this pass's whole image: the colour bilinearly, the depth (with `depth`: what the
+  // overlays are depth-tested against) by the nearest sample. The normal and AOV targets are
+  // left as they were: the caller redraws what the reductions read with run().
+  Status init_sharing(const SurfacePass& programs_from, const Params& params);
+  void take_upsampled(const SurfacePass& small, bool depth);
   // Builds a variant now, not at its first draw: a variant a live session switches to later (the
   // filter's level of detail) is built ahead instead of stalling that frame.
   Status warm(SurfaceFlags variant);
@@ -194,7 +203,9 @@ struct SurfacePass {
   void clear(const glm::dvec3& background, const PixelRect* area);
   Status draw_regions(const std::vector<SurfaceDraw>& draws, const PixelRect& area);
 
-  std::map<SurfaceFlags, gl::Program> programs_;
+  // Shared with the passes init_sharing() made from this one (one context, one build each).
+  std::shared_ptr<std::map<SurfaceFlags, gl::Program>> programs_ = std::make_shared<std::map<SurfaceFlags, gl::Program>>();
+  Status make_targets();
   gl::Texture color_, normal_, aov_, filter_need_, dummy_;
   gl::Renderbuffer depth_;
   gl::Framebuffer fbo_;

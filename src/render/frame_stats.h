@@ -27,6 +27,11 @@ struct FrameStats {
   // (RendererOptions::incremental; render/frame_key.h).
   std::int64_t drawn_pixels = 0;
   bool incremental = false;
+  // Adaptive resolution (Renderer::set_surface_scale, docs/adaptive.md): the scale the surface
+  // pass drew this frame at (1: whole; below 1 the footprint's rectangle still at full
+  // resolution), and whether the frame's camera differed from the last frame's.
+  double surface_scale = 1.0;
+  bool view_moved = false;
   // GPU time of each pass (GL_TIME_ELAPSED), of the newest frame whose queries have come back:
   // gpu_timings_lag frames before this one (0 on llvmpipe, which finishes each pass; usually 1
   // on a GPU). Empty, lag -1: none back yet (docs/benchmarks.md, "GPU timers").

@@ -16,13 +16,13 @@
 
 namespace ps {
 
-namespace {
-
 bool same_camera(const Camera& a, const Camera& b) {
   return a.projection == b.projection && a.position == b.position && a.target == b.target && a.up == b.up &&
          a.fov_y_deg == b.fov_y_deg && a.ortho_height_mm == b.ortho_height_mm && a.near_mm == b.near_mm &&
          a.far_mm == b.far_mm;
 }
+
+namespace {
 
 // The probe's bounds where it stands (a mesh probe's from its model-space box).
 BoundingSphere bounds_at(const Probe& p, const Aabb& mesh_box) {
@@ -299,10 +299,7 @@ Status Renderer::draw() {
   }
   const std::vector<SurfaceDraw> draws = surface_draws(plan, view);
   const PixelRect rect = shadow_rect(plan);
-  if (Status s = surface_.run(draws, plan.shadow_active ? &probe_depth_.depth() : nullptr, scene_.render.background,
-                              rect, redraw_rect(draws, rect));
-      !s)
-    return s;
+  if (Status s = draw_surfaces(draws, plan, rect); !s) return s;
   timer.lap("surface");
   reduce(plan, timer);
   draw_overlays(timer);
@@ -321,8 +318,11 @@ void Renderer::reduce(const FramePlan& plan, PassTimer& timer) {
                                                    scene_.render.displacement == DisplacementMethod::kWeightedAverage,
                                                    options_.footprint_rect});
     timer.lap("reductions");
-    bool reduced = false;
-    const ReductionResult n = mean_visible_normal(reduced, view_->camera);
+    // A reduced frame's plane is the mean of the small image's normals (the same surfaces at
+    // fewer pixels), never kept in normal_mean_: that holds whole images' means, by camera.
+    bool reduced = last_reduced_ != nullptr;
+    const ReductionResult n =
+        last_reduced_ ? reductions_.mean_normal(*last_reduced_) : mean_visible_normal(reduced, view_->camera);
     if (reduced) timer.lap("reference_normal");
     r.normal_sum = n.normal_sum;
     r.normal_coverage = n.normal_coverage;

@@ -10,7 +10,9 @@
 
 #include <chrono>
 #include <cstdint>
+#include <map>
 #include <memory>
+#include <optional>
 #include <span>
 #include <string>
 #include <utility>
@@ -27,6 +29,7 @@
 #include "passes/probe_view.h"
 #include "passes/reductions.h"
 #include "passes/surface.h"
+#include "render/adaptive_scale.h"
 #include "render/aov.h"
 #include "render/frame_input.h"
 #include "render/frame_key.h"
@@ -167,6 +170,14 @@ class Renderer {
   // The frame's colour target (RGBA8, padded to a power of two; the image is the
   // width x height region at the origin, bottom row first): blitted to the window.
   const gl::Texture& color_texture() const { return surface_.color(); }
+  // Adaptive resolution (docs/adaptive.md; the window's frame loop, render/adaptive_scale.h): the
+  // scale the surface pass is drawn at from the next frame on, `moving` when the frame's camera
+  // differs from the last frame's, else `still`. Below 1 the frame is drawn small and upsampled,
+  // and the footprint's rectangle (all the reductions read: max penetration, displacement) is
+  // redrawn at full resolution over it; the reference plane is reduced from the small image's
+  // normals (a whole frame at rest reduces the whole image's again). Never set (every headless command): {1, 1}, every frame whole. With
+  // RendererOptions::footprint_rect off every frame is whole (the reductions read the image).
+  void set_surface_scale(SurfaceScale scale) { surface_scale_ = scale; }
 
  private:
   gl::TimerQueries gpu_timers_;  // per-pass GL_TIME_ELAPSED queries (RendererOptions::gpu_timers)
@@ -204,6 +215,12 @@ class Renderer {
   void reduce(const FramePlan& plan, PassTimer& timer);
   void draw_overlays(PassTimer& timer);  // ends the incremental run (renderer_incremental.cpp)
   PixelRect redraw_rect(const std::vector<SurfaceDraw>& draws, const PixelRect& shadow_rect);
+  // The surface pass, whole or at a reduced scale (renderer_adaptive.cpp).
+  Status draw_surfaces(const std::vector<SurfaceDraw>& draws, const FramePlan& plan, const PixelRect& rect);
+  Status draw_reduced(const std::vector<SurfaceDraw>& draws, const FramePlan& plan, const PixelRect& rect,
+                      glm::ivec2 size);
+  Result<SurfacePass*> reduced_pass(glm::ivec2 size);
+  double frame_scale();  // this frame's scale; notes it and whether the view moved in stats_
 
   Scene scene_;
   RendererOptions options_;
@@ -227,6 +244,11 @@ class Renderer {
   std::vector<std::uint64_t> uploaded_;
   std::uint64_t mesh_version_ = 0;         // deformed mesh uploads so far (the frame key)
   FrameHistory history_;                   // what the last frame left: incremental frames
+  SurfaceScale surface_scale_;             // set_surface_scale
+  std::optional<Camera> last_camera_;      // the last frame's: did this frame's view move?
+  // The passes reduced frames are drawn by, by size, and the one the last frame was (null: whole).
+  std::map<std::pair<int, int>, SurfacePass> reduced_passes_;
+  const SurfacePass* last_reduced_ = nullptr;
   ProbeDepthPass probe_depth_;
   SurfacePass surface_;
   ReductionsPass reductions_;
@@ -241,6 +263,9 @@ class Renderer {
   void add_path_point();        // the probe on its sheet, to the world view's path
   WorldView world_view_;  // bodies, markers, the 4D path and the device ghost
 };
+
+// Every field of the two cameras equal: the same view matrix and projection.
+bool same_camera(const Camera& a, const Camera& b);
 
 // Stats as JSON (the CLI's --stats FILE): backend, renderer, reference_normal, displacement,
 // max_penetration, probe_position, timings_ms, skipped, ...

@@ -91,6 +91,8 @@ TEST(ReadoutsLogTest, OneJsonLineWithEveryField) {
   f.dent_mm = 2.5;
   f.pointer_px = glm::dvec2(256.5, 100.0);
   f.shadow_px = glm::dvec2(255.0, 102.25);
+  f.surface_scale = 0.5;
+  f.view_moved = true;
   const std::string line = readouts_json_line(f);
   EXPECT_EQ(line,
             "{\"frame\": 7, \"t_s\": 1.25, \"scene\": \"panel.toml\", \"state\": \"touching\", \"distance_mm\": 0, "
@@ -98,13 +100,15 @@ TEST(ReadoutsLogTest, OneJsonLineWithEveryField) {
             "\"view_offset_mm\": [0, -12.5, 0], \"hand_mm\": [1, 2, 3], \"proxy_mm\": [1, 2, 4.5], "
             "\"button\": {\"index\": 2, \"depth_mm\": 2.9, \"travel_mm\": 3}, \"flags\": [\"light\"], \"keys\": 3, "
             "\"haptic_hz\": 999.5, \"jitter_p99_us\": 12.25, \"dent_mm\": 2.5, \"pointer_px\": [256.5, 100], "
-            "\"shadow_px\": [255, 102.25]}");
+            "\"shadow_px\": [255, 102.25], \"surface_scale\": 0.5, \"view_moved\": true}");
   ReadoutsFrame out;  // out of reach: distance null, no button, a scene without flags
   const std::string far = readouts_json_line(out);
   EXPECT_NE(far.find("\"state\": \"out of reach\", \"distance_mm\": null"), std::string::npos) << far;
   EXPECT_NE(far.find("\"button\": null, \"flags\": null"), std::string::npos) << far;
-  EXPECT_NE(far.find("\"dent_mm\": null, \"pointer_px\": null, \"shadow_px\": null}"), std::string::npos)
-      << far;  // no deformable surface, no pointer in the window, no shadow
+  EXPECT_NE(far.find("\"dent_mm\": null, \"pointer_px\": null, \"shadow_px\": null, \"surface_scale\": 1, "
+                     "\"view_moved\": false}"),
+            std::string::npos)
+      << far;  // no deformable surface, no pointer in the window, no shadow, a whole still frame
 }
 
 constexpr const char* kSphereOnPlane =

@@ -9,6 +9,7 @@
 #include <unistd.h>
 
 #include "app/bench/bench_first_image.h"
+#include "app/bench/bench_moving.h"
 #include "app/bench/bench_plot.h"
 #include "app/bench/bench_report.h"
 #include "app/bench/bench_sweep.h"
@@ -43,6 +44,9 @@ struct BenchArgs {
   bool shadow_distance = false;  // only surface_normal against reference_plane distances; prints
   bool lut_cost = false;  // only the thesis formula against the same curve as a lookup table; prints
   bool texture_filter = false;  // only the Gabor texture's filtering: time vs error; prints
+  bool moving = false;  // only frames while the view moves: whole against adaptive (bench_moving.h)
+  bool quick = false;   // --moving: a few frames at 320x180, for the tests
+  glm::ivec2 size_wh{0, 0};  // --size as given (any aspect): --moving's size; 0: its two sizes
 };
 
 // The measurements that replace the sweep, one flag each.
@@ -51,6 +55,12 @@ void declare_modes(CLI::App& app, BenchArgs& a) {
                "only time the first image as a user meets it: every shipped scene's one-frame `render` process "
                "and a 301-frame `replay`, under auto, naive and baked (CPU seconds, ratios; --out-dir gets "
                "first_image.md; about 10 minutes on 2 cores)");
+  app.add_flag("--moving", a.moving,
+               "only measure frames while the view moves (a camera orbit on the default scene, a travel "
+               "through Field, a turn of the rolling flat torus) at 1280x720 and 1920x1080: whole frames against "
+               "adaptive resolution in the same run, the scale used, the rest frame and the image error; --out-dir "
+               "gets moving.md and moving.csv (a few minutes on 2 cores)");
+  app.add_flag("--quick", a.quick, "--moving: 8 frames per case at 320x180 with a budget of 1 ms, so that they are reduced (a smoke test)");
   cli::add_int(app, "--reps", "N", a.reps, 1, 99,
                "--first-image: alternating runs per scene and strategy, the median is reported (default 3)");
   app.add_flag("--shadow-cost", a.shadow_cost,
@@ -77,12 +87,11 @@ void declare(cli::Command& cmd, BenchArgs& a) {
          [&a](const std::string& v) {
            // The sweep's analytic scene is square: WxH must have W == H (N is short for NxN).
            const glm::ivec2 sz = cli::parse_size(v, 2048, 2048LL * 2048);
-           if (sz.x != sz.y || sz.x < 64)
-             throw cli::UsageError("--size " + v + ": the sweep renders square images of 64 to 2048 pixels "
-                                   "per side, e.g. --size 512x512 (or --size 512)");
+           a.size_wh = sz;  // checked in run_and_report: --moving takes any aspect
            a.size = sz.x;
          },
-         "image size for the sweep, square: NxN or N (default 512x512; 64..2048 per side)")
+         "image size for the sweep, square: NxN or N (default 512x512; 64..2048 per side); with --moving "
+         "any WxH, in place of its 1280x720 and 1920x1080")
       ->type_name("WxH");
   cli::add_int(app, "--frames", "N", a.frames, 1, 1000,
                "timed warm frames per configuration and round (default 3); every configuration is measured "
@@ -261,8 +270,38 @@ Status first_image(const BenchArgs& a) {
   return ok_status();
 }
 
+// --moving: whole against adaptive frames while the view moves (bench_moving.h).
+Status moving(const BenchArgs& a) {
+  OutputSet outputs;
+  const std::string md_path = a.out_dir + "/moving.md", csv_path = a.out_dir + "/moving.csv";
+  if (Status s = outputs.add(md_path); !s) return s;
+  if (Status s = outputs.add(csv_path); !s) return s;
+  bench::BenchOptions unused;
+  auto ctx = bench_context(a, unused);
+  if (!ctx) return ctx.error();
+  bench::MovingOptions o;
+  // Quick: a budget no frame meets, so that the reduced frames and the rest are exercised.
+  if (a.quick) o.sizes = {{320, 180}}, o.frames = 8, o.error_every = 4, o.budget_ms = 1.0;
+  if (a.size_wh.x > 0) o.sizes = {a.size_wh};
+  if (!a.quiet) o.progress = [](const std::string& line) { std::fprintf(stderr, "%s\n", line.c_str()); };
+  auto rows = bench::run_moving(o);
+  if (!rows) return rows.error();
+  const std::string md = bench::moving_markdown(rows.value(), o);
+  if (Status s = outputs.stage_text(md_path, md); !s) return s;
+  if (Status s = outputs.stage_text(csv_path, bench::moving_csv(rows.value())); !s) return s;
+  if (Status s = outputs.publish(); !s) return s;
+  if (!a.quiet) std::fputs(md.c_str(), stdout);
+  return ok_status();
+}
+
 int run_and_report(const cli::Command& cmd, const BenchArgs& a) {
-  const Status s = a.plot_only     ? plot_only(a)
+  const glm::ivec2 sz = a.size_wh;
+  if (!a.moving && sz.x > 0 && (sz.x != sz.y || sz.x < 64))
+    return cmd.usage_error(make_error("--size " + std::to_string(sz.x) + "x" + std::to_string(sz.y) +
+                                      ": the sweep renders square images of 64 to 2048 pixels per side, e.g. "
+                                      "--size 512x512 (or --size 512)"));
+  const Status s = a.moving ? moving(a)
+                   : a.plot_only     ? plot_only(a)
                    : a.first_image ? first_image(a)
                    : a.shadow_cost ? shadow_cost_only(a)
                    : a.shadow_distance ? shadow_distance_only(a)

@@ -101,6 +101,11 @@ void declare(cli::Command& cmd, RunArgs& a) {
   app.add_flag("--no-incremental", a.no_incremental,
                "redraw every pixel of every frame (default: while only the probe moves, only its shadow's "
                "rectangles; the same images)");
+  app.add_flag_callback("--no-adaptive", [&a] { a.adaptive = false; },
+                        "draw every frame at full resolution (default: while the view moves, the surface pass at "
+                        "a reduced scale that holds --frame-budget, full resolution again at rest; docs/adaptive.md)");
+  cli::add_positive(app, "--frame-budget", "MS", a.frame_budget_ms, 1000.0, "16.7",
+                    "the frame time adaptive resolution holds while the view moves");
   app.add_flag_callback("--no-watch", [&a] { a.watch = false; },
                         "do not reload the scene, its textures and glsl/ when they change");
   cli::add_int(app, "--realtime", "PRIO", a.realtime, 1, 99,
@@ -184,6 +189,9 @@ Status live_frame(const RunArgs& a, RunState& s, std::uint64_t frame, double now
     t.last_watch = now_s;
     run_live::poll_reload(win, *s.tune, h, s.shown_error);
   }
+  // The scale this frame draws at if its view moves (or stays), from the last frames' cost; a
+  // renderer rebuilt or switched below draws its first frame whole.
+  s.tune->renderer().set_surface_scale(a.adaptive ? s.adaptive.next(now_s * 1e3) : SurfaceScale{});
   if (Status r = drive_frame(s.tune->renderer(), *h.loop(), frame, st); !r) return r;
   if (Status r = h.events->pump(h.loop()->events()); !r) return r;
   if (!s.trail.pending.empty()) {
@@ -219,6 +227,9 @@ Status window_loop(const RunArgs& a, RunState& s, const cli::StopSignals& stop) 
     HapticState st;
     if (Status r = live_frame(a, s, frame, now_s, times, st); !r) return r;
     count_frame(s.readouts, st, f0);
+    const FrameStats& drawn = s.tune->renderer().stats();
+    s.adaptive.frame(now_s * 1e3 + s.readouts.last_frame_ms, s.readouts.last_frame_ms, drawn.surface_scale,
+                     drawn.view_moved, !drawn.incremental);
     // The recording, about once a second: a crash loses at most the last second.
     if (Status r = s.haptics.recorded->flush_due(st.time_s); !r) return r;
   }
@@ -267,6 +278,9 @@ int run(const cli::Command& cmd, const RunArgs& a) {
   auto scene = cli::load_scene_or_default(a.scene);
   if (!scene) return cmd.fail(scene.error(), cli::scene_exit_code(scene.error()));
   RunState s;
+  AdaptiveScaleParams scale_params;
+  scale_params.budget_ms = a.frame_budget_ms;
+  s.adaptive = AdaptiveScale(scale_params);
   LiveHaptics& h = s.haptics;
   auto live = cli::apply_live_loop(a.live);  // before the context and the haptic thread
   if (!live) return cmd.usage_error(live.error());

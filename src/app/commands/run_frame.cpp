@@ -116,6 +116,8 @@ ReadoutsFrame readouts_frame(const Renderer& renderer, const HapticState& st, co
   f.jitter_p99_us = r.jitter_p99_us;
   if (const DeformationStats& d = renderer.deformation(); d.surfaces > 0) f.dent_mm = d.max_displacement_mm;
   if (shadow.core) f.shadow_px = glm::dvec2(shadow.core->first, shadow.core->second);
+  f.surface_scale = renderer.stats().surface_scale;
+  f.view_moved = renderer.stats().view_moved;
   return f;
 }
 

@@ -25,6 +25,7 @@
 #include "haptics/loop_stats.h"
 #include "haptics/session_driver.h"
 #include "image/image.h"
+#include "render/adaptive_scale.h"
 #include "tune/tune_session.h"
 
 namespace ps::run_live {
@@ -38,6 +39,10 @@ struct RunArgs {
   double quit_after_s = 0.0;
   bool quiet = false, watch = true, show_probe = false, show_device = false, panel = false;
   bool no_incremental = false;  // RendererOptions::incremental off
+  // Adaptive resolution while the view moves (docs/adaptive.md): off with --no-adaptive; the
+  // frame time it holds, --frame-budget.
+  bool adaptive = true;
+  double frame_budget_ms = 16.7;
   RunEventsDesc events;  // --events, --mute, --audio-device (docs/sound.md)
 };
 
@@ -107,6 +112,7 @@ struct RunState {
   SceneTrail trail;
   LiveHaptics haptics;
   FrameReadouts readouts;
+  AdaptiveScale adaptive;  // the next frame's surface scale, from the last frames' cost
 };
 
 // run_frame.cpp: the device, the window's opening and what is drawn over each frame.

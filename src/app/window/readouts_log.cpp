@@ -58,7 +58,9 @@ std::string readouts_json_line(const ReadoutsFrame& f) {
          ", \"keys\": " + std::to_string(f.keys) +
          ", \"haptic_hz\": " + num(f.haptic_hz) + ", \"jitter_p99_us\": " + num(f.jitter_p99_us) +
          ", \"dent_mm\": " + (f.dent_mm ? num(*f.dent_mm) : std::string("null")) +
-         ", \"pointer_px\": " + vec(f.pointer_px) + ", \"shadow_px\": " + vec(f.shadow_px) + "}";
+         ", \"pointer_px\": " + vec(f.pointer_px) + ", \"shadow_px\": " + vec(f.shadow_px) +
+         ", \"surface_scale\": " + num(f.surface_scale) + ", \"view_moved\": " + (f.view_moved ? "true" : "false") +
+         "}";
 }
 
 ReadoutsLog::~ReadoutsLog() { (void)close(); }

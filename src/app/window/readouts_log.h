@@ -7,7 +7,9 @@
 // haptic_hz and jitter_p99_us (the haptic loop over the last second: what tools/soak.sh follows),
 // dent_mm (the deepest dent of a deformable surface as drawn; null when the scene has none),
 // pointer_px (the cursor in window pixels; null outside the window) and shadow_px (the centre of
-// the pseudo-shadow's bounding box in window pixels, the measure --ui-report gives; null: none).
+// the pseudo-shadow's bounding box in window pixels, the measure --ui-report gives; null: none),
+// surface_scale (the scale the frame's surface pass drew at: below 1 while the view moves,
+// docs/adaptive.md) and view_moved (the frame's camera differed from the last frame's).
 #pragma once
 
 #include <cstdint>
@@ -44,6 +46,8 @@ struct ReadoutsFrame {
   double jitter_p99_us = 0.0;       // |period - nominal|, p99 over the last second
   std::optional<double> dent_mm;    // largest vertex displacement of the deformable surfaces
   std::optional<glm::dvec2> pointer_px, shadow_px;  // window pixels (origin top left, y down)
+  double surface_scale = 1.0;       // FrameStats::surface_scale
+  bool view_moved = false;          // FrameStats::view_moved
 };
 
 // The frame as one JSON line (no newline); numbers with up to 4 decimals (0.1 um: far below any

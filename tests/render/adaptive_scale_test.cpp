@@ -1,0 +1,81 @@
+// The adaptive resolution's controller (render/adaptive_scale.h), without GL: from the frames'
+// costs, which scale the next frame is drawn at, and how long after the last move it stays there.
+#include <gtest/gtest.h>
+
+#include "render/adaptive_scale.h"
+
+namespace ps {
+namespace {
+
+// A full redraw at `scale` costing `ms`, the view moving, at time `t_ms`.
+void moving_frame(AdaptiveScale& a, double t_ms, double ms, double scale = 1.0) { a.frame(t_ms, ms, scale, true, true); }
+
+TEST(AdaptiveScaleTest, NothingMeasuredDrawsWhole) {
+  const AdaptiveScale a;
+  EXPECT_EQ(a.next(0.0), (SurfaceScale{1.0, 1.0}));
+  EXPECT_EQ(a.full_cost_ms(), 0.0);
+}
+
+// docs/benchmarks.md's full redraws on 2-core llvmpipe: 38.4 ms at 1280x720 (0.75^2 * 38.4 =
+// 21.6 ms is over the 16.7 ms budget, 0.5^2 * 38.4 = 9.6 ms fits) and 85.8 ms at 1920x1080
+// (0.5^2 * 85.8 = 21.5 ms over, 0.35^2 * 85.8 = 10.5 ms fits).
+TEST(AdaptiveScaleTest, TheLargestStepWhoseCostFitsTheBudget) {
+  const struct {
+    double full_ms, scale;
+  } cases[] = {{10.0, 1.0}, {16.7, 1.0}, {20.0, 0.75}, {29.0, 0.75}, {38.4, 0.5}, {85.8, 0.35}, {500.0, 0.35}};
+  for (const auto& c : cases) {
+    AdaptiveScale a;
+    moving_frame(a, 0.0, c.full_ms);
+    EXPECT_EQ(a.next(1.0).moving, c.scale) << c.full_ms << " ms";
+  }
+}
+
+TEST(AdaptiveScaleTest, AReducedFrameCountsAsItsPixels) {
+  AdaptiveScale a;
+  moving_frame(a, 0.0, 9.6, 0.5);  // 9.6 ms at a quarter of the pixels: 38.4 ms whole
+  EXPECT_DOUBLE_EQ(a.full_cost_ms(), 38.4);
+  EXPECT_EQ(a.next(1.0).moving, 0.5);
+}
+
+// An incremental frame (only the probe's rectangles redrawn) says nothing of a whole one's cost.
+TEST(AdaptiveScaleTest, IncrementalFramesAreNotCosts) {
+  AdaptiveScale a;
+  moving_frame(a, 0.0, 38.4);
+  for (int i = 1; i <= 10; ++i) a.frame(i * 4.0, 3.7, 1.0, false, false);
+  EXPECT_DOUBLE_EQ(a.full_cost_ms(), 38.4);
+}
+
+// The median of the last five: one frame slowed by something else does not move the scale, a
+// lasting change does within three frames.
+TEST(AdaptiveScaleTest, OneSlowFrameDoesNotMoveTheScale) {
+  AdaptiveScale a;
+  for (int i = 0; i < 5; ++i) moving_frame(a, i * 16.0, 20.0);
+  EXPECT_EQ(a.next(80.0).moving, 0.75);
+  moving_frame(a, 80.0, 200.0);
+  EXPECT_EQ(a.next(280.0).moving, 0.75);
+  moving_frame(a, 280.0, 200.0);
+  moving_frame(a, 480.0, 200.0);
+  EXPECT_EQ(a.next(680.0).moving, 0.35);
+}
+
+// Still frames stay reduced for rest_ms after the last move (a drag's events do not come every
+// frame), then are whole: well within the 100 ms the rest frame must come in.
+TEST(AdaptiveScaleTest, WholeAgainAfterRestMs) {
+  AdaptiveScale a;
+  moving_frame(a, 100.0, 38.4);
+  EXPECT_EQ(a.next(120.0), (SurfaceScale{0.5, 0.5}));
+  EXPECT_EQ(a.next(130.0), (SurfaceScale{0.5, 0.5}));
+  EXPECT_EQ(a.next(130.1), (SurfaceScale{0.5, 1.0}));
+  EXPECT_LT(a.params().rest_ms, 100.0);
+}
+
+TEST(AdaptiveScaleTest, TheBudgetIsAParameter) {
+  AdaptiveScaleParams p;
+  p.budget_ms = 40.0;
+  AdaptiveScale a(p);
+  moving_frame(a, 0.0, 38.4);
+  EXPECT_EQ(a.next(1.0).moving, 1.0);
+}
+
+}  // namespace
+}  // namespace ps
