@@ -186,16 +186,19 @@ TEST(PointingTest, TheRayIsMarchedInTheWorldOfAMovedWorkspace) {
   EXPECT_NEAR(glm::length(*hit - glm::dvec3(-60.0, 5.0, kTop)), 0.0, 0.02);
 }
 
+// A 30 x 30 mm button in the top face of a floor slab (the face at z = 0).
+constexpr const char* kButtonInFloor =
+    "[probe]\nradius_mm = 8.0\n[materials.m]\nlambda_min = 0.5\n"
+    "[[surfaces]]\ntype = \"box\"\ncenter = [0.0, 0.0, -5.0]\nsize_mm = [160.0, 100.0, 10.0]\nmaterial = \"m\"\n"
+    "[[buttons]]\ncenter = [-25.0, 0.0, 0.0]\nsize_mm = [30.0, 30.0]\nstiffness_n_per_mm = 0.2\ntravel_mm = 3.0\n"
+    "action = \"flag:light\"\n";
+
 // A button is a hole in its face with a pocket behind it (world/buttons.h); pointing at it finds
 // its face, not the pocket's far wall: seen at 45 degrees the ray would reach the pocket's
 // bottom 4.5 mm down and 4.5 mm further on (Weight's button: 7.8 mm, and its press failed).
 TEST(PointingTest, AButtonsFaceIsSolidForPointing) {
   FreeHeight floor;
-  floor.set_scene(felt(
-      "[probe]\nradius_mm = 8.0\n[materials.m]\nlambda_min = 0.5\n"
-      "[[surfaces]]\ntype = \"box\"\ncenter = [0.0, 0.0, -5.0]\nsize_mm = [160.0, 100.0, 10.0]\nmaterial = \"m\"\n"
-      "[[buttons]]\ncenter = [-25.0, 0.0, 0.0]\nsize_mm = [30.0, 30.0]\nstiffness_n_per_mm = 0.2\ntravel_mm = 3.0\n"
-      "action = \"flag:light\"\n"));
+  floor.set_scene(felt(kButtonInFloor));
   const PointerView view = perspective_view(&floor);
   for (const glm::dvec3 at : {glm::dvec3(-25.0, 0.0, 0.0), glm::dvec3(-30.0, 8.0, 0.0), glm::dvec3(-15.0, -10.0, 0.0)}) {
     const std::optional<glm::dvec3> hit = floor.first_hit(pointer_ray(view, project_to_window(view, at)));
@@ -212,11 +215,7 @@ TEST(PointingTest, AButtonsFaceIsSolidForPointing) {
 // above (the lowering stops within 0.01 mm of the plate).
 TEST(PointingTest, OverAButtonUnderATiltedPlaneTheProbeHoversAlongTheFacesNormal) {
   FreeHeight floor;
-  floor.set_scene(felt(
-      "[probe]\nradius_mm = 8.0\n[materials.m]\nlambda_min = 0.5\n"
-      "[[surfaces]]\ntype = \"box\"\ncenter = [0.0, 0.0, -5.0]\nsize_mm = [160.0, 100.0, 10.0]\nmaterial = \"m\"\n"
-      "[[buttons]]\ncenter = [-25.0, 0.0, 0.0]\nsize_mm = [30.0, 30.0]\nstiffness_n_per_mm = 0.2\ntravel_mm = 3.0\n"
-      "action = \"flag:light\"\n"));
+  floor.set_scene(felt(kButtonInFloor));
   floor.set_top_mm(200.0);
   PointerView view = perspective_view(&floor);
   const glm::dvec3 n = glm::normalize(glm::dvec3(0.0, -1.0, 1.0));

@@ -21,6 +21,7 @@
 #include "scene/scene_io.h"
 #include "support/expect_reductions.h"
 #include "support/gl_test.h"
+#include "support/shipped.h"
 
 namespace ps {
 namespace {
@@ -33,12 +34,7 @@ struct Case {
   std::vector<glm::dvec3> probe_path;  // one position per frame
 };
 
-Scene shipped(const std::string& name, int width, int height) {
-  auto s = load_scene(std::string(PS_SOURCE_DIR) + "/scenes/" + name + ".toml",
-                      {"render.size=[" + std::to_string(width) + "," + std::to_string(height) + "]"});
-  EXPECT_TRUE(s.ok()) << (s.ok() ? "" : s.error().message);
-  return s.ok() ? s.value() : Scene{};
-}
+using test::shipped;
 
 std::vector<Case> cases() {
   std::vector<Case> c;

@@ -16,23 +16,16 @@
 #include "render/renderer.h"
 #include "scene/scene_io.h"
 #include "support/gl_test.h"
+#include "support/shipped.h"
 
 namespace ps {
 namespace {
 
 class IncrementalGLTest : public test::GlTest {};
 
-Scene shipped(const std::string& name, int width, int height) {
-  auto s = load_scene(std::string(PS_SOURCE_DIR) + "/scenes/" + name + ".toml",
-                      {"render.size=[" + std::to_string(width) + "," + std::to_string(height) + "]"});
-  EXPECT_TRUE(s.ok()) << (s.ok() ? "" : s.error().message);
-  return s.ok() ? s.value() : Scene{};
-}
+using test::shipped;
 
-bool same_bits(const Image& a, const Image& b) {
-  return a.width == b.width && a.height == b.height && a.channels == b.channels &&
-         std::memcmp(a.pixels.data(), b.pixels.data(), a.pixels.size() * sizeof(float)) == 0;
-}
+using test::same_bits;
 
 // The same frames drawn incrementally and in full.
 struct Pair {
