@@ -22,6 +22,9 @@ The rule, so the points are chosen without looking at where the shadow lands:
   - with --outside-visual-stretch: where the ray through the pixel passes no surface drawn with a
     visual_stretch within the reach of its stretch (the drawn probe is moved off the hand there,
     by design: Illusion);
+  - away from every hidden surface (visible = false) by its radius, the probe's radius, its
+    material's magnetic range and 5 mm, since a hidden magnet pulls the probe into contact by
+    design; a sweep between two points that passes over that reach checks `unburied` only;
   - spread by farthest-point sampling from the qualifying pixel nearest the window's centre.
 The points are the walk's inputs, not its expected outputs: the check (near=PX) measures the
 shadow the window draws there.
@@ -148,6 +151,61 @@ def outside_stretch(scene, shape, floor_z):
     return ok
 
 
+def material_range_mm(doc, name):
+    """The magnetic pull's reach of a material (0 without one); materials of an included library
+    are looked up in that library's file."""
+    mats = dict(doc.get("materials", {}))
+    return float(mats.get(name, {}).get("haptic", {}).get("magnetic_range_mm", 0.0))
+
+
+def away_from_hidden(scene, shape, floor_z):
+    """Pixels whose hovering probe stays out of the reach of every hidden surface (visible = false:
+    felt, never drawn): its radius + the probe's radius + its material's magnetic range + 5 mm
+    around its centre, the probe taken over the floor point of the pixel's ray (a hidden object
+    lies on the floor; over a raised drawn surface the probe is on that surface, farther up). A
+    hidden magnet pulls the probe into contact there by design, and nothing drawn tells the
+    pointer it is there."""
+    doc = load(scene)
+    ok = np.ones(shape, dtype=bool)
+    hidden = [s for s in doc.get("surfaces", []) if not s.get("visible", True)]
+    if not hidden:
+        return ok
+    radius = doc["probe"]["radius_mm"]
+    centres = floor_points(doc["camera"], shape, floor_z + radius)
+    for s in hidden:
+        if s["type"] != "sphere":
+            sys.exit("pointing_points: a hidden surface other than a sphere is not known here")
+        centre = np.asarray(s["center"], dtype=np.float64)
+        reach = s["radius_mm"] + radius + library_range_mm(scene, doc, s.get("material", "")) + 5.0
+        with np.errstate(invalid="ignore"):
+            ok &= ~(np.linalg.norm(centres - centre, axis=2) <= reach)
+    return ok
+
+
+def library_range_mm(scene, doc, name):
+    """material_range_mm over the scene and the libraries it includes (the scene's own wins)."""
+    import os
+    found = material_range_mm(doc, name)
+    if name in doc.get("materials", {}):
+        return found
+    for inc in doc.get("include", []):
+        lib = load(os.path.join(os.path.dirname(scene), inc))
+        if name in lib.get("materials", {}):
+            return material_range_mm(lib, name)
+    return found
+
+
+def crosses(mask, a, b, samples=64):
+    """Whether the straight pointer path from a to b (window fractions) passes a pixel off mask."""
+    h, w = mask.shape
+    for t in np.linspace(0.0, 1.0, samples):
+        x = int(min(w - 1, (a[0] + t * (b[0] - a[0])) * w))
+        y = int(min(h - 1, (a[1] + t * (b[1] - a[1])) * h))
+        if not mask[y, x]:
+            return True
+    return False
+
+
 def spread(ok, count):
     ys, xs = np.nonzero(ok)
     if len(xs) == 0:
@@ -195,6 +253,8 @@ def main():
         ok &= inside_box(a.scene, ok.shape, a.floor_z, a.box_margin_mm)
     if a.outside_visual_stretch:
         ok &= outside_stretch(a.scene, ok.shape, a.floor_z)
+    clear = away_from_hidden(a.scene, ok.shape, a.floor_z)
+    ok &= clear
     points = spread(ok, a.count)
     if len(points) < a.count:
         sys.exit(f"pointing_points: only {len(points)} qualifying points in {a.scene}")
@@ -212,8 +272,14 @@ def main():
     # moves a mouse, in 0.5 s: a jump across the window in one reading sends the hand's filter
     # swinging out of reach for ~2 s before it settles.
     at = (0.5, 0.5)
+    # A sweep over a hidden surface's reach checks only that the proxy is never buried: the pull
+    # of a hidden magnet may bring the probe into contact there, by design.
     for x, y in points:
-        print(f"sweep {at[0]:.3f} {at[1]:.3f} {x:.3f} {y:.3f} 0.5 {a.check}")
+        check = a.check
+        if crosses(clear, at, (x, y)):
+            check = "unburied"
+            print("# over a hidden surface's reach (felt, not drawn): contact allowed, burial not")
+        print(f"sweep {at[0]:.3f} {at[1]:.3f} {x:.3f} {y:.3f} 0.5 {check}")
         if a.settle > 0:
             print(f"wait {a.settle:g} {a.check}")
         print(f"wait 1.5 {a.check} still near={a.near:g}")

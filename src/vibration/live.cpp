@@ -11,6 +11,10 @@ namespace {
 
 constexpr const char* kChoices = "none, sound, sound:DEVICE, gamepad, both, both:DEVICE";
 
+// The outputs are looked at every 100 wakes (0.1 s): a lost output is noticed within that, and
+// looking costs a query to OpenAL and SDL's joystick update. A gamepad is looked for every 0.5 s.
+constexpr std::uint64_t kCheckWakes = 100, kReattachWakes = 500;
+
 std::int64_t steady_ns() { return std::chrono::steady_clock::now().time_since_epoch().count(); }
 
 }  // namespace
@@ -87,8 +91,8 @@ void LiveVibration::emit_chunks() {
     const std::span<const float> chunk(pending_.data() + used, n);
     const std::uint64_t first = pending_start_ + used, end = first + n;
     const std::uint64_t position = sound_ ? sound_->queued() : 0;
-    const bool queued = sound_ && sound_->queue(chunk);
-    if (rumble_) rumble_->write(chunk);
+    const bool queued = sound_ && !sound_gone_ && sound_->queue(chunk);
+    if (rumble_ && !rumble_gone_) rumble_->write(chunk);
     std::size_t keep = 0;
     for (const TickMark& t : ticks_) {
       if (t.sample >= end) ticks_[keep++] = t;
@@ -102,7 +106,7 @@ void LiveVibration::emit_chunks() {
 }
 
 void LiveVibration::poll_latency() {
-  if (!sound_ || waiting_.empty()) return;
+  if (!sound_ || sound_gone_ || waiting_.empty()) return;
   const std::uint64_t mixed = sound_->mixed();
   const std::int64_t now = steady_ns();
   const double device_ms = sound_->device_latency_ms();
@@ -113,6 +117,38 @@ void LiveVibration::poll_latency() {
     else waiting_[keep++] = w;
   }
   waiting_.resize(keep);
+}
+
+void LiveVibration::say(const std::string& line) {
+  {
+    std::lock_guard<std::mutex> lock(notices_mutex_);
+    notices_.push_back(line);
+  }
+  if (desc_.notice) desc_.notice(line);
+  else std::fprintf(stderr, "%s\n", line.c_str());
+}
+
+std::vector<std::string> LiveVibration::notices() const {
+  std::lock_guard<std::mutex> lock(notices_mutex_);
+  return notices_;
+}
+
+void LiveVibration::check_outputs() {
+  if (sound_ && !sound_gone_ && !sound_->connected()) {
+    sound_gone_ = true;
+    waiting_.clear();  // their samples will never leave
+    say("vibration: the audio output '" + sound_->device_name() +
+        "' went away: vibration sound stopped until the next session; the rest runs");
+  }
+  if (!rumble_) return;
+  if (!rumble_gone_ && !rumble_->attached()) {
+    rumble_gone_ = true;
+    say("vibration: the gamepad '" + rumble_->name() +
+        "' went away: rumble stopped until a gamepad with rumble is connected; the rest runs");
+  } else if (rumble_gone_ && wakes_ % kReattachWakes == 0 && rumble_->reattach()) {
+    rumble_gone_ = false;
+    say("vibration: rumble back on '" + rumble_->name() + "'");
+  }
 }
 
 void LiveVibration::run() {
@@ -137,17 +173,18 @@ void LiveVibration::run() {
     });
     emit_chunks();
     poll_latency();
+    if (++wakes_ % kCheckWakes == 0) check_outputs();
   }
 }
 
 std::string LiveVibration::summary() const {
   std::string out = "vibration:";
-  if (sound_) out += " sound on '" + sound_->device_name() + "'";
-  if (rumble_) out += std::string(sound_ ? "," : "") + " rumble on '" + rumble_->name() + "'";
+  if (sound_) out += " sound on '" + sound_->device_name() + "'" + (sound_gone_ ? " (lost)" : "");
+  if (rumble_) out += std::string(sound_ ? "," : "") + " rumble on '" + rumble_->name() + "'" + (rumble_gone_ ? " (lost)" : "");
   if (!active()) return out + " off";
   char buf[256];
   const Percentiles l = latency_ms();
-  std::snprintf(buf, sizeof buf, "; %llu ticks", static_cast<unsigned long long>(ticks_seen_));
+  std::snprintf(buf, sizeof buf, "; %llu ticks", static_cast<unsigned long long>(ticks_seen()));
   out += buf;
   if (sound_) {
     std::snprintf(buf, sizeof buf,

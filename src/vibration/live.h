@@ -3,13 +3,18 @@
 // thread of ours wakes every millisecond, drains it, turns the ticks into samples
 // (vibration/signal.h) and hands 5 ms chunks to the outputs: a sound channel of its own
 // (vibration/sound_out.h) and a gamepad's rumble (vibration/rumble.h). Never waits for a frame.
-// An output that cannot open is one warning line; the rest runs.
+// An output that cannot open is one warning line; the rest runs. An output that goes away while
+// running (the audio device unplugged or its server ended, the gamepad unplugged) is one notice
+// line too: that output stops, the rest runs; a gamepad plugged back in (or another with rumble)
+// rumbles again, with a notice (OpenAL Soft 1.19 cannot reopen a lost device, so the sound stays
+// off until the next session).
 // Latency, measured (not assumed): for every tick of each queued chunk, its loop clock time
 // against the moment OpenAL's playback position passes that tick's sample (polled every wake);
 // beside it, the device's own buffering after the mixer as OpenAL reports it.
 #pragma once
 
 #include <atomic>
+#include <functional>
 #include <memory>
 #include <mutex>
 #include <string>
@@ -38,6 +43,8 @@ struct LiveDesc {
   SoundOutDesc sound;
   RumbleDesc rumble;
   std::size_t feed_capacity = 1024;  // ticks (1 s): the thread drains it every millisecond
+  // Where an output's loss or return is said, on the vibration thread; empty: standard error.
+  std::function<void(const std::string&)> notice;
 };
 
 class LiveVibration {
@@ -61,12 +68,17 @@ class LiveVibration {
   // empty if the extension is missing).
   Percentiles device_latency_ms() const { return percentiles(device_latency_ms_); }
   std::string summary() const;  // one line: outputs, latency, drops
+  // What was said of outputs lost or back so far (any thread).
+  std::vector<std::string> notices() const;
+  std::uint64_t ticks_seen() const { return ticks_seen_.load(std::memory_order_relaxed); }
 
  private:
   LiveVibration(const LiveDesc& desc, const Scene& scene);
   void run();
   void emit_chunks();
   void poll_latency();
+  void check_outputs();  // every kCheckWakes: an output gone or back
+  void say(const std::string& line);
   LiveDesc desc_;
   TickFeed feed_;
   SignalSynth synth_;
@@ -88,7 +100,11 @@ class LiveVibration {
   };
   std::vector<Waiting> waiting_;  // queued ticks whose sample has not left yet
   std::vector<double> latency_ms_, device_latency_ms_;
-  std::uint64_t ticks_seen_ = 0;
+  std::atomic<std::uint64_t> ticks_seen_{0};
+  std::uint64_t wakes_ = 0;
+  bool sound_gone_ = false, rumble_gone_ = false;  // the vibration thread's own
+  mutable std::mutex notices_mutex_;  // guards notices_
+  std::vector<std::string> notices_;
   std::atomic<bool> stop_{false};
   std::thread thread_;
 };

@@ -49,11 +49,18 @@ class RumbleOut {
   RumbleOut& operator=(const RumbleOut&) = delete;
 
   void write(std::span<const float> chunk);  // any one thread
+  // False once the gamepad is unplugged (SDL's joystick state, updated here: nothing else pumps
+  // SDL's events). The same thread as write().
+  bool attached();
+  // After attached() said false: opens the first joystick with rumble SDL finds now (the same
+  // pad plugged back, or another); true if one was found. The same thread as write().
+  bool reattach();
   const std::string& name() const { return name_; }
   RumbleLevels last() const { return last_; }
 
  private:
   RumbleOut(const RumbleDesc& desc) : envelope_(desc), desc_(desc) {}
+  int open_first();  // opens the first joystick with rumble into joystick_; returns the count seen
   void* joystick_ = nullptr;  // SDL_Joystick*, kept out of this header
   RumbleEnvelope envelope_;
   RumbleDesc desc_;

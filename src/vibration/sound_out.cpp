@@ -17,6 +17,7 @@ struct SoundOut::Impl {
   ALCcontext* context = nullptr;
   PFNALCSETTHREADCONTEXTPROC set_thread_context = nullptr;
   LPALGETSOURCEI64VSOFT get_source_i64 = nullptr;  // AL_SOFT_source_latency, if present
+  bool reports_disconnect = false;                 // ALC_EXT_disconnect
   ALuint source = 0;
   std::vector<ALuint> buffers, free;
   std::vector<std::int16_t> pcm;  // one chunk, converted
@@ -56,6 +57,7 @@ Result<std::unique_ptr<SoundOut>> SoundOut::open(const SoundOutDesc& desc) {
   im.set_thread_context =
       reinterpret_cast<PFNALCSETTHREADCONTEXTPROC>(alcGetProcAddress(im.device, "alcSetThreadContext"));
   if (im.set_thread_context == nullptr) return make_error("OpenAL: alcSetThreadContext missing");
+  im.reports_disconnect = alcIsExtensionPresent(im.device, "ALC_EXT_disconnect") == ALC_TRUE;
   im.set_thread_context(im.context);
   alGetError();
   if (alIsExtensionPresent("AL_SOFT_source_latency") == AL_TRUE)
@@ -121,6 +123,13 @@ std::uint64_t SoundOut::mixed() {
   ALint offset = 0;
   alGetSourcei(impl_->source, AL_SAMPLE_OFFSET, &offset);
   return processed_samples_ + static_cast<std::uint64_t>(std::max(0, offset));
+}
+
+bool SoundOut::connected() const {
+  if (!impl_->reports_disconnect) return true;
+  ALCint connected = 1;
+  alcGetIntegerv(impl_->device, ALC_CONNECTED, 1, &connected);
+  return connected != 0;
 }
 
 double SoundOut::device_latency_ms() {

@@ -47,6 +47,10 @@ class SoundOut {
   std::uint64_t dropped() const { return dropped_; }
   std::uint64_t underruns() const { return underruns_; }
   const std::string& device_name() const { return device_name_; }
+  // False once OpenAL reports the device gone (ALC_EXT_disconnect: a USB card unplugged, the
+  // sound server ended, a write to the device failed); it never comes back on this device
+  // (OpenAL Soft 1.19 cannot reopen one). True where the extension is missing.
+  bool connected() const;
 
  private:
   struct Impl;

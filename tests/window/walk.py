@@ -29,6 +29,7 @@ SKIP = 77
 # Frames drawn this soon after a step starts still show the step before it (the window handles
 # input once a frame): not counted as the step's.
 SETTLE_S = 0.3
+SWEEP_POINT_WAIT_S = 3.0  # longest wait for the window to read one point of a sweep (a stall of 2.5 s was seen under load)
 STATES = {"hovering", "touching", "out_of_reach"}
 
 
@@ -122,8 +123,15 @@ class Window(window_proc.Window):
                 t = i / n
                 fx = float(a[0]) + t * (float(a[2]) - float(a[0]))
                 fy = float(a[1]) + t * (float(a[3]) - float(a[1]))
+                moved_at = self.line_count()
                 self.xdo("mousemove", *self.at(fx, fy))
                 time.sleep(float(a[4]) / n)
+                # Every point of the sweep is read by the window: the frame drawing when the
+                # pointer moved may have read it before the move, the next one reads it after.
+                # Under load (70 ms frames) a sweep timed by the wall clock alone skipped points,
+                # and the hand, filtered between readings 25 mm apart, grazed a surface the
+                # pointer never crossed.
+                self.wait_lines(moved_at + 2, SWEEP_POINT_WAIT_S)
             if op == "drag":
                 time.sleep(0.1)
                 self.xdo("mouseup", "1")

@@ -73,6 +73,7 @@ class Window:
         self.offset_s = 0.0  # wall clock (time.monotonic) minus the window's session time t_s
         self.stem, self.window_shots = "", 0  # WINDOW_SHOTS: the scene's name, dumps taken
         self.torn_reads = 0  # consecutive reads that stopped at an unreadable line (frames())
+        self.lines_read, self.lines_seen = 0, 0  # line_count(): bytes of the log counted, lines in them
 
     def xdo(self, *args):
         subprocess.run(["xdotool", *args], check=True, stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
@@ -119,6 +120,25 @@ class Window:
             if sum(1 for f in self.frames() if f["t_s"] >= t) >= count or self.proc.poll() is not None:
                 return
             time.sleep(0.05)
+
+    def line_count(self):
+        """Frames logged so far, counted from where the last call stopped (cheap enough to call
+        between two pointer moves, unlike frames(), which parses the whole log)."""
+        try:
+            with open(self.log_path, "rb") as f:
+                f.seek(self.lines_read)
+                more = f.read()
+        except FileNotFoundError:
+            return 0
+        self.lines_read += len(more)
+        self.lines_seen += more.count(b"\n")
+        return self.lines_seen
+
+    def wait_lines(self, count, timeout_s):
+        """Waits until the log holds `count` frames, or the window ended, or timeout_s passed."""
+        end = time.monotonic() + timeout_s
+        while self.line_count() < count and time.monotonic() < end and self.proc.poll() is None:
+            time.sleep(0.005)
 
     def frames(self):
         try:
