@@ -128,9 +128,8 @@ class Window(window_proc.Window):
                 time.sleep(float(a[4]) / n)
                 # Every point of the sweep is read by the window: the frame drawing when the
                 # pointer moved may have read it before the move, the next one reads it after.
-                # Under load (70 ms frames) a sweep timed by the wall clock alone skipped points,
-                # and the hand, filtered between readings 25 mm apart, grazed a surface the
-                # pointer never crossed.
+                # Under load (70 ms frames) a sweep timed by the wall clock alone left points
+                # unread: the window saw a few readings 25 mm apart, not the path walked.
                 self.wait_lines(moved_at + 2, SWEEP_POINT_WAIT_S)
             if op == "drag":
                 time.sleep(0.1)
