@@ -1,6 +1,7 @@
 #include "haptics/session_driver.h"
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <utility>
 
@@ -35,14 +36,51 @@ RecordedLoop::RecordedLoop(Device& device, Clock& clock, const HapticLoopParams&
   if (feed_) loop_.add_tick_feed(feed_.get());
 }
 
+RecordedLoop::~RecordedLoop() { stop_flushing(); }
+
 Status RecordedLoop::flush_due(double time_s) {
+  if (flusher_.joinable()) {
+    std::lock_guard<std::mutex> lock(flush_mutex_);
+    return flush_error_.empty() ? ok_status() : make_error(flush_error_);
+  }
   if (!recording_ || time_s - flushed_s_ < 1.0) return ok_status();
   flushed_s_ = time_s;
   return recorder_.flush();
 }
 
+void RecordedLoop::start_flushing() {
+  if (!recording_ || flusher_.joinable()) return;
+  flush_stop_ = false;
+  flusher_ = std::thread([this] { flush_every_second(); });
+}
+
+void RecordedLoop::flush_every_second() {
+  std::unique_lock<std::mutex> lock(flush_mutex_);
+  while (!flush_wake_.wait_for(lock, std::chrono::seconds(1), [this] { return flush_stop_; })) {
+    lock.unlock();
+    const Status s = recorder_.flush();
+    lock.lock();
+    if (!s) {
+      flush_error_ = s.error().message;
+      return;
+    }
+  }
+}
+
+void RecordedLoop::stop_flushing() {
+  if (!flusher_.joinable()) return;
+  {
+    std::lock_guard<std::mutex> lock(flush_mutex_);
+    flush_stop_ = true;
+  }
+  flush_wake_.notify_all();
+  flusher_.join();
+}
+
 Status RecordedLoop::finish() {
   if (!recording_) return ok_status();
+  stop_flushing();
+  if (!flush_error_.empty()) return make_error(flush_error_);
   return recorder_.close();
 }
 

@@ -15,10 +15,13 @@
 // No GL: drawing is the caller's on_frame.
 #pragma once
 
+#include <condition_variable>
 #include <cstdint>
 #include <functional>
 #include <memory>
+#include <mutex>
 #include <string>
+#include <thread>
 
 #include "core/result.h"
 #include "devices/device.h"
@@ -71,18 +74,34 @@ class RecordedLoop {
   // every tick's record goes to a tick feed of that many ticks (feed()), for one consumer to drain.
   RecordedLoop(Device& device, Clock& clock, const HapticLoopParams& params, const world::HapticScene* scene,
                const std::string& record_path, std::size_t feed_ticks);
+  ~RecordedLoop();
+  RecordedLoop(const RecordedLoop&) = delete;
+  RecordedLoop& operator=(const RecordedLoop&) = delete;
   HapticLoop& loop() { return loop_; }
   TickFeed* feed() { return feed_.get(); }  // null without one
   // The recording's pending samples to "<path>.partial" when `time_s` (the session's clock, in
   // s) is a second or more past the last flush (the first: past 0): a crash loses at most about
   // the last second, and a caller may ask after every tick or every frame.
+  // After start_flushing(): flushes nothing, and returns the flushing thread's error if it had one.
   Status flush_due(double time_s);
+  // Live windows: a thread of the recording's own flushes it once a second of wall time, frames
+  // or not. A window minimised or covered for minutes draws no frames while the haptic loop goes
+  // on recording; flushed only at frames, all of that would wait in memory, lost to a crash.
+  // Nothing without a recording. Stopped by finish() and the destructor.
+  void start_flushing();
   // Closes the recording (its last samples flushed, the file published): at the end, on stop too.
   Status finish();
 
  private:
+  void flush_every_second();  // the flushing thread
+  void stop_flushing();
   bool recording_;
   double flushed_s_ = 0.0;  // the session time of the last flush
+  std::thread flusher_;
+  std::mutex flush_mutex_;  // guards flush_stop_, flush_error_
+  std::condition_variable flush_wake_;
+  bool flush_stop_ = false;
+  std::string flush_error_;  // the flushing thread's failure; it stops at the first
   SampleRecorder recorder_;
   std::unique_ptr<TickFeed> feed_;
   HapticLoop loop_;  // last: it holds the recorder and the feed (and is stopped first)

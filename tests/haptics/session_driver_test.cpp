@@ -6,9 +6,11 @@
 
 #include <unistd.h>
 
+#include <chrono>
 #include <filesystem>
 #include <fstream>
 #include <string>
+#include <thread>
 #include <vector>
 
 #include "devices/sample_log.h"
@@ -173,6 +175,40 @@ TEST(RecordedLoopTest, FlushesAtFramesOnceASecondOfSessionTime) {
   ASSERT_TRUE(resumed.flush_due(120.0).ok());  // a session resumed at 120 s: at its first frame
   EXPECT_EQ(line_count((dir / "resumed.log.partial").string()), 11);
   ASSERT_TRUE(resumed.finish().ok());
+  fs::remove_all(dir);
+}
+
+// Lines of `path` once there are `want` of them, or after 3 s (the flushing thread's 1 s and
+// room for a loaded machine).
+int lines_within_3s(const fs::path& path, int want) {
+  const auto end = std::chrono::steady_clock::now() + std::chrono::seconds(3);
+  int n = line_count(path);
+  while (n != want && std::chrono::steady_clock::now() < end) {
+    std::this_thread::sleep_for(std::chrono::milliseconds(20));
+    n = line_count(path);
+  }
+  return n;
+}
+
+// A live window that draws no frame for a while (minimised, covered, its swap blocked): the
+// haptic loop goes on recording, and the recording's own thread flushes it once a second of wall
+// time with no frame asking. flush_due at the next frame only reports that thread's failure.
+TEST(RecordedLoopTest, ItsOwnThreadFlushesWhileNoFrameComes) {
+  const fs::path dir = fresh_dir("recorded_loop_no_frames");
+  const std::string log = (dir / "device.log").string();
+  LogDevice device(line_samples(), true, "line");
+  FakeClock clock;
+  RecordedLoop r(device, clock, HapticLoopParams{}, nullptr, log, 0);
+  r.start_flushing();
+  r.loop().run_ticks(1000);
+  EXPECT_EQ(lines_within_3s(log + ".partial", 1001), 1001);  // the header and ticks 0..999
+  r.loop().run_ticks(500);
+  EXPECT_EQ(lines_within_3s(log + ".partial", 1501), 1501);
+  ASSERT_TRUE(r.flush_due(0.5).ok());
+  r.loop().run_ticks(10);
+  ASSERT_TRUE(r.finish().ok());  // stops the thread, then the last samples and the rename
+  EXPECT_EQ(line_count(log), 1511);
+  EXPECT_FALSE(fs::exists(log + ".partial"));
   fs::remove_all(dir);
 }
 

@@ -26,18 +26,30 @@ start_x() {
   export DISPLAY=":$(head -n 1 display.txt)"
   rm -f display.txt
 }
-# run_and_lose SECONDS KEY COMMAND...: the command in the window, KEY pressed after 4 s and
-# again every 0.5 s for 2 s (none: -; a frame late on a loaded machine still gets one), the X
-# server killed SECONDS after the first; the command's exit status in `rc`, its output in out.txt.
+# run_and_lose SECONDS KEY COMMAND...: the command in the window, KEY pressed once its window is
+# up (and 2 s more for its first frames on a loaded machine) and again every 0.5 s for 2 s (none:
+# -; a frame late still gets one), the X server killed SECONDS after the first; with `until_file`
+# set, not before that file has 2 lines (the key pressed again each 0.5 s meanwhile, up to 30 s).
+# The command's exit status in `rc`, its output in out.txt.
+until_file=""
 run_and_lose() {
   local after=$1 key=$2
   shift 2
   start_x
   timeout 90 "$@" > out.txt 2>&1 &
   local pid=$!
-  sleep 4
+  # Any window with a name: this X server is the command's own.
+  for _ in $(seq 300); do xdotool search --name . > /dev/null 2>&1 && break; sleep 0.1; done
+  sleep 2
   [ "${key}" = "-" ] || xdotool key --delay 500 "${key}" "${key}" "${key}" "${key}"
   sleep "${after}"
+  if [ -n "${until_file}" ]; then
+    for _ in $(seq 60); do
+      [ -f "${until_file}" ] && [ "$(wc -l < "${until_file}")" -ge 2 ] && break
+      xdotool key "${key}"
+      sleep 0.5
+    done
+  fi
   kill "${xvfb_pid}"
   wait "${pid}"
   rc=$?
@@ -65,7 +77,7 @@ tail -n 1 m/session.jsonl | grep -q '"type":"session_end","reason":"display_lost
 grep -q '"type":"resumed"' m/session.jsonl || fail "maze: no resumed line"
 
 # calibrate: two answers given, the trial log written, the resume line printed.
-run_and_lose 3 Left "${exe}" calibrate --curve distance --out c.lut
+until_file=c.trials.csv run_and_lose 3 Left "${exe}" calibrate --curve distance --out c.lut
 [ "${rc}" -eq 1 ] || fail "calibrate: exit ${rc}, expected 1"
 grep -q "^calibrate: the display went away .*; trial log flushed to c.trials.csv; resume with: pseudoshadow calibrate" out.txt ||
   fail "calibrate: no line saying the display went away"

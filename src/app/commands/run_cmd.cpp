@@ -230,7 +230,7 @@ Status window_loop(const RunArgs& a, RunState& s, const cli::StopSignals& stop) 
     const FrameStats& drawn = s.tune->renderer().stats();
     s.adaptive.frame(now_s * 1e3 + s.readouts.last_frame_ms, s.readouts.last_frame_ms, drawn.surface_scale,
                      drawn.view_moved, !drawn.incremental);
-    // The recording, about once a second: a crash loses at most the last second.
+    // The recording's flushing thread failed (a full disk): the session stops here.
     if (Status r = s.haptics.recorded->flush_due(st.time_s); !r) return r;
   }
   return ok_status();
@@ -289,6 +289,7 @@ int run(const cli::Command& cmd, const RunArgs& a) {
   if (!a.readouts_log.empty())
     if (Status st = s.readouts.log.open(a.readouts_log); !st) return cmd.fail(st.error());
   h.loop()->start();
+  h.recorded->start_flushing();  // the recording, once a second, frames or not
   h.vibration->start();
   // The first frame shows the device's probe, not the scene's: wait for the first tick (about
   // 1 ms; bounded, as a gamepad may have nothing to give yet).

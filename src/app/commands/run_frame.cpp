@@ -227,7 +227,8 @@ Status open_haptics(const RunArgs& a, const LiveWindow& win, const Renderer& r, 
   if (!haptic_scene) return haptic_scene.error();
   h.scene = std::make_shared<const world::HapticScene>(std::move(haptic_scene.value()));
   h.floor.set_scene(h.scene);  // the first sample already hovers over what is under the pointer
-  // The loop with the device stream's recording (--record; flushed about once a second).
+  // The loop with the device stream's recording (--record; flushed once a second by a thread of
+  // its own, frames or not: start_flushing).
   h.recorded = std::make_unique<RecordedLoop>(win.device(), h.clock, params, h.scene.get(), a.record, 0);
   fit_height_to_buttons(win, h, *h.scene);
   h.vibration = cli::open_live_vibration(a.live, r.scene(), *h.loop());

@@ -190,7 +190,7 @@ Status window_loop(const maze::SessionOptions& o, const MazeWindowParams& p, maz
     ov.label = core.label();
     ov.show_hand = p.show_hand && w.input();
     if (Status s = draw(w, o.desc, st, ov, std::exchange(w.events.screenshot, false)); !s) return s;
-    if (Status s = pass.haptics.flush_due(st.time_s); !s) return s;  // the device stream, about once a second
+    if (Status s = pass.haptics.flush_due(st.time_s); !s) return s;  // the recording's flushing thread failed
   }
 }
 
@@ -200,6 +200,7 @@ Status window_loop(const maze::SessionOptions& o, const MazeWindowParams& p, maz
 Status run_pass(const maze::SessionOptions& o, const MazeWindowParams& p, maze::SessionCore& core, Window& w,
                 LivePass& pass, bool practice) {
   pass.loop().start();
+  pass.haptics.start_flushing();  // the recording, once a second, frames or not
   pass.vib->start();
   return window_loop(o, p, core, w, pass, practice);
 }
