@@ -182,6 +182,17 @@ Result<int> replay(RunState& s, const TrialLog& log, bool& complete, std::string
   return done;
 }
 
+// An existing log read and checked, its trials replayed (replay); r's counts and torn warning set.
+Status read_existing(RunState& s, RunReport& r, std::string& last) {
+  Result<TrialLog> log = read_trial_log(r.log_path);
+  if (!log) return log.error();
+  r.torn = log.value().torn;
+  Result<int> done = replay(s, log.value(), r.complete, last);
+  if (!done) return done.error();
+  r.done_before = done.value();
+  return ok_status();
+}
+
 Status append(maze::SessionLog& log, const ojson& j, std::string& last) {
   const std::string line = seal_line(j.dump(), last);
   last = line.substr(line.size() - 66, 64);
@@ -206,14 +217,10 @@ Result<RunReport> run_participant(const Experiment& e, const RunSpec& spec) {
   if (ec) return make_error(dir.string() + ": cannot create the participant's directory: " + ec.message());
   std::string last;
   const bool exists = std::filesystem::exists(r.log_path);
-  if (exists) {
-    Result<TrialLog> log = read_trial_log(r.log_path);
-    if (!log) return log.error();
-    r.torn = log.value().torn;
-    Result<int> done = replay(s, log.value(), r.complete, last);
-    if (!done) return done.error();
-    r.done_before = done.value();
-  }
+  if (!exists && spec.resume_only)
+    return make_error(r.log_path + ": no trial log to resume (start the participant with `study run`)");
+  if (exists)
+    if (Status st = read_existing(s, r, last); !st) return st.error();
   if (r.complete) return r;
   Result<maze::SessionLog> log = exists ? maze::SessionLog::open_existing(r.log_path) : maze::SessionLog::open(r.log_path);
   if (!log) return log.error();

@@ -31,6 +31,7 @@ struct RunSpec {
   std::string out_dir;      // the study's directory: the log goes to out_dir/participant/trials.jsonl
   ObserverSpec observer;
   int stop_after = 0;       // > 0: stop after this many new trials (a break; run again to go on)
+  bool resume_only = false; // `study resume`: an error when there is no log to go on from
 };
 
 struct RunReport {

@@ -112,7 +112,8 @@ void psychometric_script(std::ostringstream& gp, const std::string& png, const s
   gp << "set terminal pngcairo noenhanced size 900,600 font ',10'\nset output '" << png << "'\n"
      << "set title 'Proportion correct by level (points: the data, size by trials; lines: the fits)'\n"
      << "set xlabel 'level (difference from the reference)'\nset ylabel 'proportion correct'\nset yrange [0.3:1.05]\n"
-     << "set key outside right\nset grid\nset samples 400\n";
+     << "set key outside right\nset grid\nset samples 400\n"
+     << (people.front().shape == Shape::kWeibull ? "set logscale x\n" : "");  // Weibull: levels judged in ratio
   std::string plot;
   int i = 0;
   for (const ParticipantResult& p : people)

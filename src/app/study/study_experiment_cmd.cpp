@@ -84,9 +84,10 @@ int run_main(const cli::Command& cmd, const RunArgs& a) {
   if (!a.simulate)
     return cmd.usage_error(make_error("the window run is not built yet: give --simulate for a simulated participant "
                                       "(docs/study.md, \"Running\")"));
+  if (Result<int> id = study::participant_index(a.participant); !id) return cmd.usage_error(id.error());
   study::Experiment e;
   if (int rc = load(cmd, a.experiment, e); rc != cli::kExitOk) return rc;
-  study::RunSpec spec{a.participant, a.out, {}, static_cast<int>(a.stop_after)};
+  study::RunSpec spec{a.participant, a.out, {}, static_cast<int>(a.stop_after), cmd.name() == "study resume"};
   spec.observer.shape = a.shape == "logistic" ? study::Shape::kLogistic
                         : a.shape == "normal" ? study::Shape::kCumulativeNormal
                                               : study::Shape::kWeibull;
