@@ -1,6 +1,8 @@
 #include "study/study_run.h"
 
 #include <filesystem>
+#include <fstream>
+#include <iterator>
 #include <memory>
 #include <optional>
 #include <random>
@@ -138,11 +140,16 @@ ojson names(const std::vector<Variant>& v, const std::vector<int>& order = {}) {
   return a;
 }
 
+std::string file_sha256(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  return sha256_hex(std::string((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>()));
+}
+
 ojson session_start(const RunState& s) {
   const Experiment& e = s.e;
   const ObserverSpec& o = s.spec.observer;
   ojson j = {{"type", "session_start"}, {"schema", kStudyLogSchema}, {"experiment", e.name},
-             {"experiment_file", e.path}, {"task", task_name(e.task)}, {"scene", e.scene},
+             {"experiment_file", e.path}, {"experiment_sha256", file_sha256(e.path)}, {"task", task_name(e.task)}, {"scene", e.scene},
              {"participant", s.plan.participant}, {"seed", s.plan.seed}, {"conditions", names(e.conditions)},
              {"condition_order", names(e.conditions, s.plan.order)}, {"trials", e.trials}, {"blocks", e.blocks},
              {"practice_trials", e.practice}, {"total_trials", total_trials(e)}, {"response_keys", e.response_keys}};
@@ -159,13 +166,26 @@ ojson session_start(const RunState& s) {
   return j;
 }
 
-// An existing log: its trials replayed into the tracks; the count of whole trials, whether it
-// ended, and the last checksum (the chain goes on from it).
-Result<int> replay(RunState& s, const TrialLog& log, bool& complete, std::string& last) {
+// A log goes on only with what began it: the same experiment, file unchanged, participant and
+// simulated participant; otherwise the trials after the break would not be the unbroken run's.
+Status check_same_session(const RunState& s, const TrialLog& log) {
   const nlohmann::json& start = log.lines.front().json;
+  const std::string where = log.lines.front().json.value("participant", "") + "/trials.jsonl: ";
   if (start.value("experiment", "") != s.e.name || start.value("participant", "") != s.plan.participant)
     return make_error(s.spec.out_dir + ": the log there is of experiment '" + start.value("experiment", "") +
                       "', participant '" + start.value("participant", "") + "': give another --out");
+  if (start.value("experiment_sha256", "") != file_sha256(s.e.path))
+    return make_error(s.spec.out_dir + "/" + where + s.e.path + " changed since this participant started: resume with the file the run began with");
+  if (nlohmann::json::parse(session_start(s).at("observer").dump()) != start.at("observer"))
+    return make_error(s.spec.out_dir + "/" + where + "the simulated participant's options differ from the run's first part "
+                      "(its session_start line's \"observer\"): give the same ones");
+  return ok_status();
+}
+
+// An existing log: its trials replayed into the tracks; the count of whole trials, whether it
+// ended, and the last checksum (the chain goes on from it).
+Result<int> replay(RunState& s, const TrialLog& log, bool& complete, std::string& last) {
+  if (Status st = check_same_session(s, log); !st) return st.error();
   int done = 0;
   for (const LogLine& l : log.lines) {
     const std::string type = l.json.value("type", "");

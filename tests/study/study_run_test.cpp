@@ -151,6 +151,18 @@ TEST(StudyRunTest, ResumeAfterATornLineLosesNothingAndRepeatsNothing) {
   }
 }
 
+// A break goes on only with what began the run: the same simulated participant.
+TEST(StudyRunTest, ResumeRefusesAnotherSimulatedParticipant) {
+  const Experiment e = load_experiment(kStudies + "theta_threshold.toml").value();
+  RunSpec s = spec_for(fresh_dir("other_observer"));
+  s.stop_after = 10;
+  ASSERT_TRUE(run_participant(e, s));
+  s.observer.truth.threshold = 0.2;
+  const Result<RunReport> r = run_participant(e, s);
+  ASSERT_FALSE(r);
+  EXPECT_NE(r.error().message.find("the simulated participant's options differ"), std::string::npos) << r.error().message;
+}
+
 TEST(StudyRunTest, AChangedOrRemovedLineIsRefusedNamingItsLine) {
   const Experiment e = load_experiment(kStudies + "theta_threshold.toml").value();
   const std::string dir = fresh_dir("tamper");
