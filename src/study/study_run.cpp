@@ -1,6 +1,9 @@
 #include "study/study_run.h"
 
 #include <filesystem>
+#include <fcntl.h>
+#include <sys/file.h>
+#include <unistd.h>
 #include <fstream>
 #include <iterator>
 #include <memory>
@@ -219,6 +222,28 @@ Status append(maze::SessionLog& log, const ojson& j, std::string& last) {
   return log.append_line(line);
 }
 
+// The participant's folder locked (flock) for the run: a second run of the same participant
+// (a resume started while the first still writes) is refused instead of interleaving its trials.
+// The kernel drops the lock when the process ends, however it ends.
+class DirLock {
+ public:
+  explicit DirLock(const std::string& dir) : fd_(::open(dir.c_str(), O_RDONLY | O_DIRECTORY | O_CLOEXEC)) {
+    if (fd_ >= 0 && ::flock(fd_, LOCK_EX | LOCK_NB) != 0) {
+      ::close(fd_);
+      fd_ = -1;
+    }
+  }
+  ~DirLock() {
+    if (fd_ >= 0) ::close(fd_);
+  }
+  DirLock(const DirLock&) = delete;
+  DirLock& operator=(const DirLock&) = delete;
+  bool held() const { return fd_ >= 0; }
+
+ private:
+  int fd_;
+};
+
 }  // namespace
 
 Result<RunReport> run_participant(const Experiment& e, const RunSpec& spec) {
@@ -235,6 +260,9 @@ Result<RunReport> run_participant(const Experiment& e, const RunSpec& spec) {
   std::error_code ec;
   std::filesystem::create_directories(dir, ec);
   if (ec) return make_error(dir.string() + ": cannot create the participant's directory: " + ec.message());
+  const DirLock lock(dir.string());
+  if (!lock.held())
+    return make_error(dir.string() + ": another `study run` is writing this participant's log (two would interleave their trials)");
   std::string last;
   const bool exists = std::filesystem::exists(r.log_path);
   if (!exists && spec.resume_only)

@@ -10,6 +10,10 @@
 #include <iterator>
 #include <sstream>
 
+#include <fcntl.h>
+#include <sys/file.h>
+#include <unistd.h>
+
 #include <nlohmann/json.hpp>
 
 #include "study/experiment.h"
@@ -161,6 +165,23 @@ TEST(StudyRunTest, ResumeRefusesAnotherSimulatedParticipant) {
   const Result<RunReport> r = run_participant(e, s);
   ASSERT_FALSE(r);
   EXPECT_NE(r.error().message.find("the simulated participant's options differ"), std::string::npos) << r.error().message;
+}
+
+// Two runs of one participant at once (a resume started while the first still writes) would
+// interleave their trials: the second is refused while the folder is locked.
+TEST(StudyRunTest, ASecondRunOfTheSameParticipantIsRefusedWhileTheFirstWrites) {
+  const Experiment e = load_experiment(kStudies + "theta_threshold.toml").value();
+  const std::string dir = fresh_dir("locked");
+  std::filesystem::create_directories(dir + "/P01");
+  const int fd = ::open((dir + "/P01").c_str(), O_RDONLY | O_DIRECTORY);
+  ASSERT_GE(fd, 0);
+  ASSERT_EQ(::flock(fd, LOCK_EX | LOCK_NB), 0);  // what a running `study run` holds
+  const Result<RunReport> r = run_participant(e, spec_for(dir));
+  ::close(fd);
+  ASSERT_FALSE(r);
+  EXPECT_NE(r.error().message.find("another `study run` is writing this participant's log"), std::string::npos);
+  EXPECT_FALSE(std::filesystem::exists(dir + "/P01/trials.jsonl"));
+  EXPECT_TRUE(run_participant(e, spec_for(dir)));  // the lock gone, the run goes
 }
 
 TEST(StudyRunTest, AChangedOrRemovedLineIsRefusedNamingItsLine) {
