@@ -190,6 +190,9 @@ void check_whole(const Reader& r, const toml::table& root, Experiment& e) {
       for (std::size_t i = 1; i <= e.materials.size(); ++i) e.response_keys.push_back(std::to_string(i));
     need(e.response_keys.size() == e.materials.size(),
          "[experiment] response_keys: one key per material (" + std::to_string(e.materials.size()) + ")");
+    need(e.trials % static_cast<int>(e.materials.size()) == 0,
+         "[experiment] trials (" + std::to_string(e.trials) + ") must be a multiple of the " +
+             std::to_string(e.materials.size()) + " materials, so that each is shown equally often");
   }
   if (e.conditions.empty()) e.conditions.push_back({"main", {}, 0});
 }

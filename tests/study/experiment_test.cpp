@@ -89,6 +89,10 @@ TEST(ExperimentFileTest, WholeFileRulesAreChecked) {
   EXPECT_NE(error_of("[experiment]\ntask = \"identification\"\n[scene]\npath = \"x.toml\"\n")
                 .find("at least 2 [[identification.materials]]"),
             std::string::npos);
+  EXPECT_EQ(error_of("[experiment]\ntask = \"identification\"\ntrials = 10\n[scene]\npath = \"x.toml\"\n"
+                     "[[identification.materials]]\nname = \"a\"\n[[identification.materials]]\nname = \"b\"\n"
+                     "[[identification.materials]]\nname = \"c\"\n"),
+            "bad.toml:1: [experiment] trials (10) must be a multiple of the 3 materials, so that each is shown equally often");
   EXPECT_NE(error_of("[experiment]\nresponse_keys = [\"1\", \"2\", \"3\"]\n" + valid_text().substr(13))
                 .find("a 2AFC threshold takes 2 keys"),
             std::string::npos);
