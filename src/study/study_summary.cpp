@@ -51,6 +51,10 @@ void read_start(ParticipantResult& p, const json& s) {
     c.condition = name;
     p.conditions.push_back(c);
   }
+  if (const json o = s.value("observer", json::object()); o.value("kind", "") == "simulated" && p.task == "threshold") {
+    p.truth = PsychometricParams{o.at("threshold"), o.at("slope"), o.at("guess"), o.at("lapse")};
+    p.truth_shape = shape_named(o.at("shape"));
+  }
   if (p.task == "threshold") {
     const json& t = s.at("threshold");
     p.shape = shape_named(t.at("shape"));

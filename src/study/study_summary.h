@@ -6,6 +6,7 @@
 // summary.md, the psychometric curves to a gnuplot plot.
 #pragma once
 
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -35,6 +36,9 @@ struct ParticipantResult {
   Shape shape = Shape::kWeibull;
   double criterion = 0.75, reference = 0.0;
   std::vector<std::string> materials;
+  // The simulated participant's own function (session_start's "observer"); none for a person.
+  std::optional<PsychometricParams> truth;
+  Shape truth_shape = Shape::kWeibull;
   bool complete = false;
   std::string torn;  // a cut-off last line's warning
   std::vector<ConditionResult> conditions;  // in the experiment's order

@@ -126,6 +126,14 @@ void psychometric_script(std::ostringstream& gp, const std::string& png, const s
       plot += (plot.empty() ? "plot " : ", ") + std::string("$d") + std::to_string(i) + " using 1:2:(0.4 + sqrt($3) / 3) with points pt 7 ps variable lc " +
               std::to_string(i) + " notitle, " + curve(p.shape, c.fit.params) + " lc " + std::to_string(i) + " title '" + name + "'";
     }
+  // The simulated participants' own function, when they share one: the truth the fits estimate.
+  bool same = people.front().truth.has_value();
+  for (const ParticipantResult& p : people)
+    same = same && p.truth && p.truth_shape == people.front().truth_shape &&
+           p.truth->threshold == people.front().truth->threshold && p.truth->slope == people.front().truth->slope &&
+           p.truth->lapse == people.front().truth->lapse;
+  if (same && !plot.empty())
+    plot += ", " + curve(people.front().truth_shape, *people.front().truth) + " lc black lw 3 dt 2 title 'true (simulated)'";
   gp << plot << "\n";
 }
 

@@ -59,6 +59,9 @@ TEST(StudySummaryTest, ThresholdTablesSummaryAndPlot) {
   EXPECT_NE(read_text(out + "summary.md").find("# lambda_threshold: summary"), std::string::npos);
   const bool gnuplot = std::system("command -v gnuplot > /dev/null 2>&1") == 0;
   EXPECT_EQ(std::filesystem::exists(out + "psychometric.png"), gnuplot);
+  if (gnuplot)  // the simulated participants' own function beside the fits (their session_start's observer)
+    EXPECT_NE(read_text(out + "psychometric.gp").find("0.5 + (1 - 0.5 - 0.02) * (x > 0 ? 1 - exp(-(x / 0.1) ** 3) : 0) lc black"),
+              std::string::npos);
   if (!gnuplot) EXPECT_NE(notes.at(0).find("psychometric.png skipped: gnuplot not found"), std::string::npos);
 }
 
