@@ -110,8 +110,9 @@ ojson threshold_trial(RunState& s, const Slot& slot, int k) {
 // rounds of K from the participant's seed, so every material is shown equally often.
 int material_of(const RunState& s, const Slot& slot) {
   const int K = static_cast<int>(s.e.materials.size());
-  const std::uint64_t round = static_cast<std::uint64_t>(slot.block * 1000003 + slot.condition * 1009 + slot.in_segment / K);
-  std::mt19937_64 rng(trial_seed(s.plan.seed, round, kMaterials));
+  const auto u = [](int v) { return static_cast<std::uint64_t>(v); };
+  const std::uint64_t segment = trial_seed(trial_seed(s.plan.seed, u(slot.block), kMaterials), u(slot.condition), kMaterials);
+  std::mt19937_64 rng(trial_seed(segment, u(slot.in_segment / K), kMaterials));
   std::vector<int> order(static_cast<std::size_t>(K));
   for (int i = 0; i < K; ++i) order[static_cast<std::size_t>(i)] = i;
   for (int i = K - 1; i > 0; --i)  // Fisher-Yates from the engine's bits (fit.h's uniform01)
