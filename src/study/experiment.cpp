@@ -87,11 +87,12 @@ class Reader {
   // Reads every key of `t` with its reader; an unknown key names the known ones.
   void keys(const toml::table& t, const std::string& name, const std::vector<std::pair<std::string, KeyReader>>& known) const {
     for (const auto& [key, node] : t) {
-      const auto it = std::find_if(known.begin(), known.end(), [&](const auto& k) { return k.first == key.str(); });
+      const std::string word(key.str());  // a copy: clang before 16 cannot capture a structured binding
+      const auto it = std::find_if(known.begin(), known.end(), [&](const auto& k) { return k.first == word; });
       if (it == known.end()) {
         std::string list;
         for (const auto& k : known) list += (list.empty() ? "" : ", ") + k.first;
-        fail(node, "unknown key '" + std::string(key.str()) + "' in [" + name + "]; known keys: " + list);
+        fail(node, "unknown key '" + word + "' in [" + name + "]; known keys: " + list);
       }
       it->second(node);
     }
