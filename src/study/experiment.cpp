@@ -114,7 +114,9 @@ void read_experiment_table(const Reader& r, const toml::node& n, Experiment& e) 
           {"blocks", [&](const toml::node& v) { e.blocks = r.whole(v, "blocks", 1, 100); }},
           {"practice_trials", [&](const toml::node& v) { e.practice = r.whole(v, "practice_trials", 0, 1000); }},
           {"first_seed", [&](const toml::node& v) {
-             e.first_seed = static_cast<std::uint64_t>(r.number(v, "first_seed", 0, 9007199254740991.0));
+             const double seed = r.number(v, "first_seed", 0, 9007199254740991.0);
+             if (seed != std::floor(seed)) r.fail(v, "'first_seed' must be a whole number");
+             e.first_seed = static_cast<std::uint64_t>(seed);
            }},
           {"response_keys", [&](const toml::node& v) { e.response_keys = r.strings(v, "response_keys"); }}});
 }

@@ -71,6 +71,8 @@ TEST(ExperimentFileTest, BadValuesSayWhatIsAllowed) {
   EXPECT_EQ(error_of(valid_text("value = \"[0, 0, 1]\"\n")),
             "bad.toml:10: 'value' must hold {} where the number goes, e.g. \"[0.0, 0.0, {}]\"");
   EXPECT_EQ(error_of("[experiment]\ntrials = 2.5\n"), "bad.toml:2: 'trials' must be a whole number");
+  EXPECT_EQ(error_of("[experiment]\nfirst_seed = 1.5\n"), "bad.toml:2: 'first_seed' must be a whole number");
+  EXPECT_EQ(error_of("[experiment]\nblocks = 0\n"), "bad.toml:2: 'blocks' must be a number in [1, 100]");
   EXPECT_EQ(error_of(valid_text() + "[[conditions]]\nname = \"a\"\nset = [\"probe.velocity\"]\n"),
             "bad.toml:12: 'set' holds --set-style overrides KEY=VALUE, e.g. \"materials.wood.a_max=0.5\" (got "
             "\"probe.velocity\")");
