@@ -1,7 +1,7 @@
 # cmake -DEXE=pseudoshadow -DEXPERIMENT=file.toml -DWORK=dir -P study_run_summarize.cmake
 # `study run --simulate` for two participants (one broken off with --stop-after and finished by
 # `study resume`), then `study summarize`: exit 0, the tables and summary.md written, each
-# participant complete. Then a copy with one answer changed: summarize exits 1 naming its line.
+# participant complete; a participant given twice is refused. Then a copy with one answer changed: summarize exits 1 naming its line.
 file(REMOVE_RECURSE ${WORK})
 function(run expect_rc)
   execute_process(COMMAND ${EXE} ${ARGN} RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
@@ -26,6 +26,10 @@ foreach(f participants.csv groups.csv summary.md)
     message(FATAL_ERROR "summarize wrote no ${f}")
   endif()
 endforeach()
+run(2 study summarize ${WORK}/study ${WORK}/study/P01 --out ${WORK}/twice)
+if(NOT output MATCHES "participant P01 is also in .*: give each participant once")
+  message(FATAL_ERROR "summarize should refuse a participant given twice")
+endif()
 file(STRINGS ${WORK}/summary/participants.csv rows)
 list(LENGTH rows n)
 if(NOT n EQUAL 5)  # the header, 2 participants x 2 conditions

@@ -134,6 +134,10 @@ int summarize_main(const cli::Command& cmd, const SummarizeArgs& a) {
     if (!people.empty() && (p->experiment != people[0].experiment || p->task != people[0].task))
       return cmd.usage_error(make_error(log + ": of experiment '" + p->experiment + "', not '" + people[0].experiment +
                                         "': summarize one experiment at a time"));
+    for (const study::ParticipantResult& q : people)
+      if (q.participant == p->participant)
+        return cmd.usage_error(make_error(log + ": participant " + p->participant + " is also in " + q.log +
+                                          ": give each participant once"));
     if (!p->torn.empty()) notes.push_back(p->torn);
     people.push_back(std::move(p.value()));
   }
