@@ -19,6 +19,7 @@ readonly kPackages=(
   libgtest-dev libgmock-dev libbenchmark-dev
   libassimp-dev assimp-testmodels libembree-dev libimgui-dev libtomlplusplus-dev nlohmann-json3-dev
   libcli11-dev gnuplot-nox
+  libssl-dev  # libcrypto: the SHA-256 checksums of `study run`'s trial logs (docs/study.md)
   libopenal-dev libsndfile1-dev libsdl2-dev pybind11-dev python3-dev python3-numpy
   libdbus-1-dev dbus rtkit
 )

@@ -99,6 +99,8 @@ class SessionLog {
   // `device`, its stream in device_log (the resume's own file); resume counts from 1.
   Status resumed(int resume, int pass, int room, double time_s, const std::string& device, const std::string& device_log);
   Status session_end(EndReason reason, int passes, int trials_to_criterion, double time_s);
+  // Any other JSON line, written and fsync'd as every line above (`study run`'s trials).
+  Status append_line(const std::string& json_line) { return append(json_line); }
   const std::string& path() const { return path_; }
   int lines() const { return lines_; }
 

@@ -6,19 +6,27 @@
 
 namespace ps::maze {
 
-std::vector<RoomOrder> williams_orders() {
-  // Williams (1949) for an odd number of treatments: the first row 0, 1, n-1, 2, n-2, ... and its
-  // n cyclic shifts, then each of those rows reversed.
-  constexpr int kN = 5;
-  constexpr int kFirst[kN] = {0, 1, 4, 2, 3};
-  std::vector<RoomOrder> rows;
-  for (int reversed = 0; reversed < 2; ++reversed)
-    for (int shift = 0; shift < kN; ++shift) {
-      RoomOrder r{};
-      for (int j = 0; j < kN; ++j)
-        r[static_cast<std::size_t>(reversed ? kN - 1 - j : j)] = kCueRooms[static_cast<std::size_t>((kFirst[j] + shift) % kN)];
+std::vector<std::vector<int>> williams_square(int n) {
+  std::vector<int> first;  // 0, 1, n-1, 2, n-2, ...
+  for (int j = 0, lo = 1, hi = n - 1; j < n; ++j) first.push_back(j == 0 ? 0 : (j % 2 == 1 ? lo++ : hi--));
+  std::vector<std::vector<int>> rows;
+  for (int reversed = 0; reversed < (n % 2 == 1 ? 2 : 1); ++reversed)
+    for (int shift = 0; shift < n; ++shift) {
+      std::vector<int> r(static_cast<std::size_t>(n));
+      for (int j = 0; j < n; ++j)
+        r[static_cast<std::size_t>(reversed ? n - 1 - j : j)] = (first[static_cast<std::size_t>(j)] + shift) % n;
       rows.push_back(r);
     }
+  return rows;
+}
+
+std::vector<RoomOrder> williams_orders() {
+  std::vector<RoomOrder> rows;
+  for (const std::vector<int>& w : williams_square(static_cast<int>(kCueRooms.size()))) {
+    RoomOrder r{};
+    for (std::size_t j = 0; j < r.size(); ++j) r[j] = kCueRooms[static_cast<std::size_t>(w[j])];
+    rows.push_back(r);
+  }
   return rows;
 }
 

@@ -37,6 +37,11 @@ struct PlanRow {
   std::vector<RoomOrder> orders;  // pass 1, 2, ...
 };
 
+// A balanced Latin square (Williams 1949) of n treatments 0 .. n-1: the first row 0, 1, n-1, 2,
+// n-2, ... and its n cyclic shifts; for odd n those rows again, each reversed (2n rows). Every
+// treatment stands at every position equally often and follows every other one equally often.
+// Shared by the maze's room orders and `study plan`'s condition orders (docs/study.md).
+std::vector<std::vector<int>> williams_square(int n);
 // The Williams square of the five cue rooms (10 rows).
 std::vector<RoomOrder> williams_orders();
 std::vector<PlanRow> make_plan(const PlanSpec& spec);

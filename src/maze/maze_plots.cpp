@@ -126,9 +126,11 @@ std::string errors_skip(const std::vector<ParticipantSummary>& people, const std
   return "no room left by an exit";
 }
 
+}  // namespace
+
 // Runs `script` (written beside the plot) through gnuplot into png + ".partial", renamed to png
 // when gnuplot succeeded and wrote something; on any failure nothing is left at either name.
-Status draw(const std::string& dir, const std::string& png_name,
+Status draw_plot(const std::string& dir, const std::string& png_name,
             const std::function<void(std::ostringstream&, const std::string&)>& script) {
   const std::string png = dir + "/" + png_name, partial = png + ".partial";
   const std::string stem = png_name.substr(0, png_name.size() - 4);  // without ".png"
@@ -145,8 +147,6 @@ Status draw(const std::string& dir, const std::string& png_name,
   std::filesystem::remove(log, ec);
   return rename_durable(partial, png);
 }
-
-}  // namespace
 
 std::vector<PlotPlan> plan_plots(const std::vector<ParticipantSummary>& people, const std::vector<GroupSummary>& groups) {
   bool any_pass = false;
@@ -165,7 +165,7 @@ Status write_plots(const std::string& dir, const std::vector<ParticipantSummary>
   for (const PlotPlan& plan : plan_plots(people, groups)) {
     if (!plan.skipped.empty()) continue;
     const bool errors = plan.kind == PlotPlan::Kind::kErrorsByRoom;
-    const Status s = draw(dir, plan.file, [&](std::ostringstream& gp, const std::string& png) {
+    const Status s = draw_plot(dir, plan.file, [&](std::ostringstream& gp, const std::string& png) {
       if (errors) errors_script(gp, png, groups);
       else time_script(gp, png, people, groups);
     });

@@ -8,6 +8,8 @@
 #pragma once
 
 #include <array>
+#include <functional>
+#include <sstream>
 #include <string>
 #include <vector>
 
@@ -131,5 +133,12 @@ std::vector<PlotPlan> plan_plots(const std::vector<ParticipantSummary>& people, 
 // plot's gnuplot script stays beside it (FILE without .png + .gp).
 Status write_plots(const std::string& dir, const std::vector<ParticipantSummary>& people,
                    const std::vector<GroupSummary>& groups);
+
+// One plot: `script` writes a gnuplot script drawing to the PNG path it is given; the script is
+// kept as dir/STEM.gp, the plot drawn to dir/png_name + ".partial" and renamed to dir/png_name
+// when gnuplot succeeded and wrote something; on any failure nothing is left at either name.
+// Shared with `study summarize`.
+Status draw_plot(const std::string& dir, const std::string& png_name,
+                 const std::function<void(std::ostringstream&, const std::string&)>& script);
 
 }  // namespace ps::maze

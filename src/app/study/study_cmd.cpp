@@ -1,6 +1,7 @@
-// `pseudoshadow study`: experiments on the thesis's open questions (docs/study.md). So far its
-// `simulate` subcommand: a simulated observer with a known psychometric function answers the Psi
-// method and calibrate's staircase, each run is fitted by maximum likelihood with bootstrap 95 %
+// `pseudoshadow study`: experiments on the thesis's open questions (docs/study.md). `plan`,
+// `run`, `resume` and `summarize` take an experiment file (study_experiment_cmd.cpp). `simulate`:
+// a simulated observer with a known psychometric function answers the Psi method and calibrate's
+// staircase, each run is fitted by maximum likelihood with bootstrap 95 %
 // intervals, and the recovered threshold and slope are printed beside the truth (study/simulate.h).
 #include "app/study/study_cmd.h"
 
@@ -9,6 +10,7 @@
 #include <vector>
 
 #include "app/cli/cli.h"
+#include "app/study/study_experiment_cmd.h"
 #include "core/result.h"
 #include "study/simulate.h"
 
@@ -90,9 +92,12 @@ int run_study(int argc, char** argv) {
   if (sub == "simulate")
     return cli::run_command<SimulateArgs>(argc - 1, argv + 1, "study simulate", kSimulateDescription,
                                           declare_simulate, simulate_main);
+  if (argc >= 2)
+    if (const int rc = run_study_experiment(argc - 1, argv + 1); rc >= 0) return rc;
   std::fprintf(stderr,
                "pseudoshadow study: give a subcommand: `study simulate` (a simulated observer through Psi and the "
-               "staircase, fitted with 95 %% intervals); see docs/study.md\n");
+               "staircase, fitted with 95 %% intervals), `study plan`, `study run`, `study resume` or `study summarize` "
+               "(an experiment file's participants); see docs/study.md\n");
   return sub == "--help" || sub == "-h" ? cli::kExitOk : cli::kExitUsage;
 }
 

@@ -1,4 +1,4 @@
-// `pseudoshadow study` (docs/study.md): its `simulate` subcommand so far.
+// `pseudoshadow study` (docs/study.md): simulate, plan, run, resume, summarize.
 #pragma once
 
 namespace ps {

@@ -1,0 +1,176 @@
+#include "app/study/study_experiment_cmd.h"
+
+#include <cstdio>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "app/cli/cli.h"
+#include "app/cli/cli_groups.h"
+#include "core/file_io.h"
+#include "study/experiment_scene.h"
+#include "study/study_plan.h"
+#include "study/study_run.h"
+#include "study/study_summary.h"
+
+namespace ps {
+
+namespace {
+
+// The experiment, read and its stimuli checked against the scene; a bad file is a usage error.
+int load(const cli::Command& cmd, const std::string& path, study::Experiment& out) {
+  Result<study::Experiment> e = study::load_experiment(path);
+  if (!e) return cmd.usage_error(e.error());
+  if (Status s = study::check_experiment_scene(e.value()); !s) return cmd.usage_error(s.error());
+  out = std::move(e.value());
+  return cli::kExitOk;
+}
+
+struct PlanArgs {
+  std::string experiment, out;
+  long long participants = 12;
+};
+
+void declare_plan(cli::Command& cmd, PlanArgs& a) {
+  CLI::App& app = cmd.app();
+  app.add_option("experiment", a.experiment, "the experiment file (e.g. scenes/studies/lambda_threshold.toml)")
+      ->required()->type_name("EXPERIMENT");
+  cli::add_int(app, "--participants", "N", a.participants, 1LL, 999LL, "participants to plan (default 12)");
+  cli::add_output(app, "--out", a.out, "FILE", "writes the plan as CSV there (default: standard output)");
+  cmd.usage("pseudoshadow study plan EXPERIMENT --participants N [--out plan.csv]");
+}
+
+int plan_main(const cli::Command& cmd, const PlanArgs& a) {
+  study::Experiment e;
+  if (int rc = load(cmd, a.experiment, e); rc != cli::kExitOk) return rc;
+  const std::string csv = study::study_plan_csv(e, study::make_study_plan(e, static_cast<int>(a.participants)));
+  if (a.out.empty()) {
+    std::fputs(csv.c_str(), stdout);
+    return cli::kExitOk;
+  }
+  if (Status s = write_file_atomic(a.out, csv); !s) return cmd.fail(s.error());
+  return cli::kExitOk;
+}
+
+struct RunArgs {
+  std::string experiment, participant, out, shape = "weibull";
+  bool simulate = false, quiet = false;
+  double threshold = 0.1, slope = 3.0, lapse = 0.02, p_correct = 0.6;
+  long long observer_seed = 0, stop_after = 0;
+};
+
+void declare_run(cli::Command& cmd, RunArgs& a) {
+  CLI::App& app = cmd.app();
+  app.add_option("experiment", a.experiment, "the experiment file")->required()->type_name("EXPERIMENT");
+  app.add_option("--participant", a.participant, "the participant's ID, as `study plan` lists them (P01, ...)")
+      ->required()->type_name("ID");
+  app.add_option("--out", a.out, "the study's folder: the log goes to DIR/ID/trials.jsonl")->required()->type_name("DIR");
+  app.add_flag("--simulate", a.simulate, "a simulated participant answers (the window run is not built yet)");
+  cli::add_choice(app, "--shape", "weibull|logistic|normal", a.shape, {"weibull", "logistic", "normal"}, "weibull",
+                  "the simulated participant's psychometric function (default weibull)");
+  cli::add_positive(app, "--threshold", "ALPHA", a.threshold, 1e9, "0.1", "its threshold alpha, a difference (default 0.1)");
+  cli::add_positive(app, "--slope", "BETA", a.slope, 1e9, "3", "its slope beta (default 3)");
+  app.add_option("--lapse", a.lapse, "its lapse rate (default 0.02)")->check(CLI::Range(0.0, 0.49))->type_name("L");
+  app.add_option("--p-correct", a.p_correct, "identification: its probability of naming the material shown (default 0.6)")
+      ->check(CLI::Range(0.0, 1.0))->type_name("P");
+  cli::add_int(app, "--observer-seed", "N", a.observer_seed, 0LL, 9'007'199'254'740'991LL,
+               "its answers' seed (default 0: the participant's seed)");
+  cli::add_int(app, "--stop-after", "N", a.stop_after, 0LL, 1'000'000LL, "stop after N new trials (a break; run again to go on)");
+  cli::add_quiet_option(app, a.quiet);
+  cmd.usage("pseudoshadow study run EXPERIMENT --participant P01 --simulate [observer options] --out DIR");
+}
+
+int run_main(const cli::Command& cmd, const RunArgs& a) {
+  if (!a.simulate)
+    return cmd.usage_error(make_error("the window run is not built yet: give --simulate for a simulated participant "
+                                      "(docs/study.md, \"Running\")"));
+  if (Result<int> id = study::participant_index(a.participant); !id) return cmd.usage_error(id.error());
+  study::Experiment e;
+  if (int rc = load(cmd, a.experiment, e); rc != cli::kExitOk) return rc;
+  study::RunSpec spec{a.participant, a.out, {}, static_cast<int>(a.stop_after), cmd.name() == "study resume"};
+  spec.observer.shape = a.shape == "logistic" ? study::Shape::kLogistic
+                        : a.shape == "normal" ? study::Shape::kCumulativeNormal
+                                              : study::Shape::kWeibull;
+  spec.observer.truth = {a.threshold, a.slope, 0.5, a.lapse};
+  spec.observer.p_correct = a.p_correct;
+  spec.observer.seed = static_cast<std::uint64_t>(a.observer_seed);
+  Result<study::RunReport> r = study::run_participant(e, spec);
+  if (!r) return cmd.fail(r.error());
+  if (!r->torn.empty()) std::fprintf(stderr, "pseudoshadow %s: warning: %s\n", cmd.name().c_str(), r->torn.c_str());
+  if (!a.quiet)
+    std::printf("%s: %d of %d trials logged (%d before this run, %d now)%s\n", r->log_path.c_str(),
+                r->done_before + r->written, r->total, r->done_before, r->written, r->complete ? ", complete" : "");
+  return cli::kExitOk;
+}
+
+struct SummarizeArgs {
+  std::vector<std::string> logs;
+  std::string out;
+  long long resamples = 1000, seed = 1;
+  bool quiet = false;
+};
+
+void declare_summarize(cli::Command& cmd, SummarizeArgs& a) {
+  CLI::App& app = cmd.app();
+  app.add_option("logs", a.logs, "trial logs, participants' folders or a study's folder (the --out of `study run`)")
+      ->required()->type_name("LOG|DIR");
+  app.add_option("--out", a.out, "writes participants.csv, groups.csv, summary.md and the plot there")
+      ->required()->type_name("DIR");
+  cli::add_int(app, "--resamples", "N", a.resamples, 10LL, 1000000LL, "bootstrap resamples (default 1000)");
+  cli::add_int(app, "--seed", "N", a.seed, 0LL, 9'007'199'254'740'991LL, "the bootstrap's seed (default 1)");
+  cli::add_quiet_option(app, a.quiet);
+  cmd.usage("pseudoshadow study summarize LOG|DIR... --out DIR");
+}
+
+int summarize_main(const cli::Command& cmd, const SummarizeArgs& a) {
+  Result<std::vector<std::string>> logs = study::find_trial_logs(a.logs);
+  if (!logs) return cmd.fail(logs.error());
+  std::vector<study::ParticipantResult> people;
+  std::vector<std::string> notes;
+  for (const std::string& log : logs.value()) {
+    Result<study::ParticipantResult> p =
+        study::summarize_participant(log, {static_cast<int>(a.resamples), static_cast<std::uint64_t>(a.seed)});
+    if (!p) return cmd.fail(p.error());
+    if (!people.empty() && (p->experiment != people[0].experiment || p->task != people[0].task))
+      return cmd.usage_error(make_error(log + ": of experiment '" + p->experiment + "', not '" + people[0].experiment +
+                                        "': summarize one experiment at a time"));
+    for (const study::ParticipantResult& q : people)
+      if (q.participant == p->participant)
+        return cmd.usage_error(make_error(log + ": participant " + p->participant + " is also in " + q.log +
+                                          ": give each participant once"));
+    if (!p->torn.empty()) notes.push_back(p->torn);
+    people.push_back(std::move(p.value()));
+  }
+  if (Status s = study::write_study_summary(a.out, people, notes); !s) return cmd.fail(s.error());
+  for (const std::string& n : notes) std::fprintf(stderr, "pseudoshadow %s: %s\n", cmd.name().c_str(), n.c_str());
+  if (!a.quiet) std::printf("summarized %zu participant%s into %s\n", people.size(), people.size() == 1 ? "" : "s", a.out.c_str());
+  return cli::kExitOk;
+}
+
+constexpr const char* kPlanDescription =
+    "Each participant's ID, seed and condition order (a balanced Latin square of the experiment's conditions)\n"
+    "as CSV (docs/study.md, \"Planning\").";
+constexpr const char* kRunDescription =
+    "One participant through an experiment, headless: a simulated participant answers every trial, each\n"
+    "appended to DIR/ID/trials.jsonl with its SHA-256 and fsync'd. Run again on the same DIR (or use\n"
+    "`study resume`), it goes on after the last whole trial (docs/study.md, \"Running\").";
+constexpr const char* kSummarizeDescription =
+    "Checks every trial log's checksums, fits each participant and condition (threshold, slope, 95 % bootstrap\n"
+    "intervals, Weber fraction; or the confusion matrix and information transfer) and writes the tables,\n"
+    "summary.md and a plot (docs/study.md, \"Summarizing\").";
+
+}  // namespace
+
+int run_study_experiment(int argc, char** argv) {
+  const std::string_view sub = argv[0];
+  if (sub == "plan")
+    return cli::run_command<PlanArgs>(argc, argv, "study plan", kPlanDescription, declare_plan, plan_main);
+  if (sub == "run" || sub == "resume")
+    return cli::run_command<RunArgs>(argc, argv, "study " + std::string(sub), kRunDescription, declare_run, run_main);
+  if (sub == "summarize")
+    return cli::run_command<SummarizeArgs>(argc, argv, "study summarize", kSummarizeDescription, declare_summarize,
+                                           summarize_main);
+  return -1;
+}
+
+}  // namespace ps

@@ -1,0 +1,290 @@
+#include "study/study_run.h"
+
+#include <filesystem>
+#include <fcntl.h>
+#include <sys/file.h>
+#include <unistd.h>
+#include <fstream>
+#include <iterator>
+#include <memory>
+#include <optional>
+#include <random>
+
+#include <nlohmann/json.hpp>
+
+#include "calibrate/staircase.h"
+#include "maze/maze_log.h"
+#include "study/fit.h"
+#include "study/psi.h"
+#include "study/simulate.h"
+#include "study/study_log.h"
+#include "study/study_plan.h"
+
+namespace ps::study {
+
+using ojson = nlohmann::ordered_json;  // members in the order written
+
+std::uint64_t trial_seed(std::uint64_t seed, std::uint64_t trial, std::uint64_t stream) {
+  std::uint64_t z = seed + 0x9E3779B97F4A7C15ull * (trial + 1) + 0xBF58476D1CE4E5B9ull * (stream + 1);
+  z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ull;
+  z = (z ^ (z >> 27)) * 0x94D049BB133111EBull;
+  return z ^ (z >> 31);
+}
+
+namespace {
+
+enum Stream : std::uint64_t { kInterval = 1, kObserver = 2, kMaterials = 3 };
+
+// Where trial k (from 0) stands: practice first, then each block runs the participant's
+// conditions in order, `trials` each.
+struct Slot {
+  bool practice = false;
+  int block = 0;      // from 1 (0: practice)
+  int condition = 0;  // index into Experiment::conditions
+  int in_segment = 0; // the trial's place in its block and condition
+};
+
+Slot slot_of(const Experiment& e, const PlanEntry& plan, int k) {
+  if (k < e.practice) return {true, 0, plan.order[0], k};
+  const int m = k - e.practice, per_block = e.trials * static_cast<int>(plan.order.size());
+  return {false, m / per_block + 1, plan.order[static_cast<std::size_t>((m % per_block) / e.trials)], m % e.trials};
+}
+
+int total_trials(const Experiment& e) { return e.practice + e.blocks * static_cast<int>(e.conditions.size()) * e.trials; }
+
+// One condition's adaptive procedure: Psi or calibrate's staircase, over [level_min, level_max].
+class Track {
+ public:
+  explicit Track(const ThresholdSpec& t) {
+    if (t.method == Method::kPsi) {
+      SimulationSpec s;  // only what simulation_grid reads: the shape, the guess, the levels, the lapse
+      s.shape = t.shape;
+      s.level_min = t.level_min;
+      s.level_max = t.level_max;
+      s.psi_lapse = t.lapse;
+      psi_.emplace(simulation_grid(s, false));
+    } else {
+      calibrate::StaircaseParams p;
+      p.start_delta = t.level_max / 2.0;  // an easy start, inside the range: the coarse steps find the threshold
+      p.min_delta = t.level_min;
+      p.max_delta = t.level_max;
+      p.max_trials = 1 << 30;  // the experiment's trial count ends it
+      stairs_.emplace(p);
+    }
+  }
+  double next() { return psi_ ? psi_->next_level() : stairs_->delta(); }
+  void update(double level, bool correct) {
+    if (psi_) psi_->update(level, correct);
+    else stairs_->record(correct);
+  }
+
+ private:
+  std::optional<PsiMethod> psi_;
+  std::optional<calibrate::Staircase> stairs_;
+};
+
+struct RunState {
+  const Experiment& e;
+  const RunSpec& spec;
+  PlanEntry plan;
+  std::vector<Track> tracks;  // one per condition
+  std::uint64_t observer_seed = 0;
+};
+
+ojson threshold_trial(RunState& s, const Slot& slot, int k) {
+  const ThresholdSpec& t = s.e.threshold;
+  const double level = slot.practice ? t.level_max : s.tracks[static_cast<std::size_t>(slot.condition)].next();
+  std::mt19937_64 rng(trial_seed(s.plan.seed, static_cast<std::uint64_t>(k), kInterval));
+  const int interval = uniform01(rng) < 0.5 ? 1 : 2;  // which interval shows the comparison
+  SimulatedObserver o(s.spec.observer.shape, s.spec.observer.truth, trial_seed(s.observer_seed, static_cast<std::uint64_t>(k), kObserver));
+  const bool correct = o.respond(level);
+  const int response = correct ? interval : 3 - interval;
+  if (!slot.practice) s.tracks[static_cast<std::size_t>(slot.condition)].update(level, correct);
+  return {{"type", "trial"}, {"trial", k + 1}, {"practice", slot.practice}, {"block", slot.block},
+          {"condition", s.e.conditions[static_cast<std::size_t>(slot.condition)].name}, {"level", level},
+          {"reference", t.reference}, {"comparison", t.reference + level}, {"interval", interval},
+          {"response", response}, {"key", s.e.response_keys[static_cast<std::size_t>(response - 1)]}, {"correct", correct}};
+}
+
+// The material of a trial: each block and condition shows the materials in turn, shuffled in
+// rounds of K from the participant's seed, so every material is shown equally often.
+int material_of(const RunState& s, const Slot& slot) {
+  const int K = static_cast<int>(s.e.materials.size());
+  const auto u = [](int v) { return static_cast<std::uint64_t>(v); };
+  const std::uint64_t segment = trial_seed(trial_seed(s.plan.seed, u(slot.block), kMaterials), u(slot.condition), kMaterials);
+  std::mt19937_64 rng(trial_seed(segment, u(slot.in_segment / K), kMaterials));
+  std::vector<int> order(static_cast<std::size_t>(K));
+  for (int i = 0; i < K; ++i) order[static_cast<std::size_t>(i)] = i;
+  for (int i = K - 1; i > 0; --i)  // Fisher-Yates from the engine's bits (fit.h's uniform01)
+    std::swap(order[static_cast<std::size_t>(i)], order[static_cast<std::size_t>(uniform01(rng) * (i + 1))]);
+  return order[static_cast<std::size_t>(slot.in_segment % K)];
+}
+
+ojson identification_trial(RunState& s, const Slot& slot, int k) {
+  const int K = static_cast<int>(s.e.materials.size());
+  const int shown = material_of(s, slot);
+  std::mt19937_64 rng(trial_seed(s.observer_seed, static_cast<std::uint64_t>(k), kObserver));
+  int answered = shown;
+  if (uniform01(rng) >= s.spec.observer.p_correct) {
+    answered = static_cast<int>(uniform01(rng) * (K - 1));  // one of the others, each alike
+    if (answered >= shown) ++answered;
+  }
+  return {{"type", "trial"}, {"trial", k + 1}, {"practice", slot.practice}, {"block", slot.block},
+          {"condition", s.e.conditions[static_cast<std::size_t>(slot.condition)].name},
+          {"shown", s.e.materials[static_cast<std::size_t>(shown)].name}, {"shown_index", shown},
+          {"answered", s.e.materials[static_cast<std::size_t>(answered)].name}, {"answered_index", answered},
+          {"key", s.e.response_keys[static_cast<std::size_t>(answered)]}, {"correct", shown == answered}};
+}
+
+ojson names(const std::vector<Variant>& v, const std::vector<int>& order = {}) {
+  ojson a = ojson::array();
+  if (order.empty())
+    for (const Variant& x : v) a.push_back(x.name);
+  for (const int i : order) a.push_back(v[static_cast<std::size_t>(i)].name);
+  return a;
+}
+
+std::string file_sha256(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  return sha256_hex(std::string((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>()));
+}
+
+ojson session_start(const RunState& s) {
+  const Experiment& e = s.e;
+  const ObserverSpec& o = s.spec.observer;
+  ojson j = {{"type", "session_start"}, {"schema", kStudyLogSchema}, {"experiment", e.name},
+             {"experiment_file", e.path}, {"experiment_sha256", file_sha256(e.path)}, {"task", task_name(e.task)}, {"scene", e.scene},
+             {"participant", s.plan.participant}, {"seed", s.plan.seed}, {"conditions", names(e.conditions)},
+             {"condition_order", names(e.conditions, s.plan.order)}, {"trials", e.trials}, {"blocks", e.blocks},
+             {"practice_trials", e.practice}, {"total_trials", total_trials(e)}, {"response_keys", e.response_keys}};
+  if (e.task == Task::kThreshold)
+    j["threshold"] = {{"method", method_name(e.threshold.method)}, {"keys", e.threshold.keys},
+                      {"reference", e.threshold.reference}, {"level_min", e.threshold.level_min},
+                      {"level_max", e.threshold.level_max}, {"shape", shape_name(e.threshold.shape)},
+                      {"criterion", e.threshold.criterion}, {"guess", 0.5}};
+  else
+    j["materials"] = names(e.materials);
+  j["observer"] = {{"kind", "simulated"}, {"seed", s.observer_seed}, {"shape", shape_name(o.shape)},
+                   {"threshold", o.truth.threshold}, {"slope", o.truth.slope}, {"guess", o.truth.guess},
+                   {"lapse", o.truth.lapse}, {"p_correct", o.p_correct}};
+  return j;
+}
+
+// A log goes on only with what began it: the same experiment, file unchanged, participant and
+// simulated participant; otherwise the trials after the break would not be the unbroken run's.
+Status check_same_session(const RunState& s, const TrialLog& log) {
+  const nlohmann::json& start = log.lines.front().json;
+  const std::string where = log.lines.front().json.value("participant", "") + "/trials.jsonl: ";
+  if (start.value("experiment", "") != s.e.name || start.value("participant", "") != s.plan.participant)
+    return make_error(s.spec.out_dir + ": the log there is of experiment '" + start.value("experiment", "") +
+                      "', participant '" + start.value("participant", "") + "': give another --out");
+  if (start.value("experiment_sha256", "") != file_sha256(s.e.path))
+    return make_error(s.spec.out_dir + "/" + where + s.e.path + " changed since this participant started: resume with the file the run began with");
+  if (nlohmann::json::parse(session_start(s).at("observer").dump()) != start.at("observer"))
+    return make_error(s.spec.out_dir + "/" + where + "the simulated participant's options differ from the run's first part "
+                      "(its session_start line's \"observer\"): give the same ones");
+  return ok_status();
+}
+
+// An existing log: its trials replayed into the tracks; the count of whole trials, whether it
+// ended, and the last checksum (the chain goes on from it).
+Result<int> replay(RunState& s, const TrialLog& log, bool& complete, std::string& last) {
+  if (Status st = check_same_session(s, log); !st) return st.error();
+  int done = 0;
+  for (const LogLine& l : log.lines) {
+    const std::string type = l.json.value("type", "");
+    complete |= type == "session_end";
+    if (type != "trial") continue;
+    if (l.json.value("trial", 0) != done + 1)
+      return make_error(s.spec.out_dir + ": trial " + std::to_string(done + 1) + " expected at line " + std::to_string(l.number));
+    ++done;
+    const Slot slot = slot_of(s.e, s.plan, done - 1);
+    if (s.e.task == Task::kThreshold && !slot.practice)
+      s.tracks[static_cast<std::size_t>(slot.condition)].update(l.json.at("level"), l.json.at("correct"));
+  }
+  last = log.lines.back().checksum;
+  return done;
+}
+
+// An existing log read and checked, its trials replayed (replay); r's counts and torn warning set.
+Status read_existing(RunState& s, RunReport& r, std::string& last) {
+  Result<TrialLog> log = read_trial_log(r.log_path);
+  if (!log) return log.error();
+  r.torn = log.value().torn;
+  Result<int> done = replay(s, log.value(), r.complete, last);
+  if (!done) return done.error();
+  r.done_before = done.value();
+  return ok_status();
+}
+
+Status append(maze::SessionLog& log, const ojson& j, std::string& last) {
+  const std::string line = seal_line(j.dump(), last);
+  last = line.substr(line.size() - 66, 64);
+  return log.append_line(line);
+}
+
+// The participant's folder locked (flock) for the run: a second run of the same participant
+// (a resume started while the first still writes) is refused instead of interleaving its trials.
+// The kernel drops the lock when the process ends, however it ends.
+class DirLock {
+ public:
+  explicit DirLock(const std::string& dir) : fd_(::open(dir.c_str(), O_RDONLY | O_DIRECTORY | O_CLOEXEC)) {
+    if (fd_ >= 0 && ::flock(fd_, LOCK_EX | LOCK_NB) != 0) {
+      ::close(fd_);
+      fd_ = -1;
+    }
+  }
+  ~DirLock() {
+    if (fd_ >= 0) ::close(fd_);
+  }
+  DirLock(const DirLock&) = delete;
+  DirLock& operator=(const DirLock&) = delete;
+  bool held() const { return fd_ >= 0; }
+
+ private:
+  int fd_;
+};
+
+}  // namespace
+
+Result<RunReport> run_participant(const Experiment& e, const RunSpec& spec) {
+  Result<int> index = participant_index(spec.participant);
+  if (!index) return index.error();
+  RunState s{e, spec, plan_entry(e, index.value()), {}, 0};
+  s.plan.participant = spec.participant;
+  s.observer_seed = spec.observer.seed != 0 ? spec.observer.seed : s.plan.seed;
+  if (e.task == Task::kThreshold) s.tracks.assign(e.conditions.size(), Track(e.threshold));
+  RunReport r;
+  const std::filesystem::path dir = std::filesystem::path(spec.out_dir) / spec.participant;
+  r.log_path = (dir / "trials.jsonl").string();
+  r.total = total_trials(e);
+  std::error_code ec;
+  std::filesystem::create_directories(dir, ec);
+  if (ec) return make_error(dir.string() + ": cannot create the participant's directory: " + ec.message());
+  const DirLock lock(dir.string());
+  if (!lock.held())
+    return make_error(dir.string() + ": another `study run` is writing this participant's log (two would interleave their trials)");
+  std::string last;
+  const bool exists = std::filesystem::exists(r.log_path);
+  if (!exists && spec.resume_only)
+    return make_error(r.log_path + ": no trial log to resume (start the participant with `study run`)");
+  if (exists)
+    if (Status st = read_existing(s, r, last); !st) return st.error();
+  if (r.complete) return r;
+  Result<maze::SessionLog> log = exists ? maze::SessionLog::open_existing(r.log_path) : maze::SessionLog::open(r.log_path);
+  if (!log) return log.error();
+  Status st = exists ? append(log.value(), {{"type", "resumed"}, {"at_trial", r.done_before + 1}}, last)
+                     : append(log.value(), session_start(s), last);
+  for (int k = r.done_before; st && k < r.total && (spec.stop_after <= 0 || r.written < spec.stop_after); ++k, ++r.written) {
+    const Slot slot = slot_of(e, s.plan, k);
+    st = append(log.value(), e.task == Task::kThreshold ? threshold_trial(s, slot, k) : identification_trial(s, slot, k), last);
+  }
+  if (st && r.done_before + r.written == r.total) {
+    st = append(log.value(), {{"type", "session_end"}, {"trials", r.total}}, last);
+    r.complete = true;
+  }
+  if (!st) return st.error();
+  return r;
+}
+
+}  // namespace ps::study

@@ -1,0 +1,51 @@
+// `study run --simulate` (docs/study.md, "Running"): one participant through an experiment, each
+// trial answered by a simulated participant and appended to DIR/PARTICIPANT/trials.jsonl
+// (study_log.h) before the next is chosen. Run again on the same DIR, it resumes after the last
+// whole trial: the procedures are rebuilt by replaying the logged answers, and every trial's
+// random draws (which interval holds the comparison, which material is shown, the simulated
+// answer) come from the participant's seed and the trial's number alone, so a resumed run writes
+// exactly the trials an unbroken one would have.
+#pragma once
+
+#include <cstdint>
+#include <string>
+
+#include "core/result.h"
+#include "study/experiment.h"
+#include "study/psychometric.h"
+
+namespace ps::study {
+
+// The simulated participant: a psychometric function for threshold tasks (the level is the
+// difference shown), a probability of naming the shown material for identification (a wrong
+// answer names one of the others, each alike).
+struct ObserverSpec {
+  Shape shape = Shape::kWeibull;
+  PsychometricParams truth{0.1, 3.0, 0.5, 0.02};
+  double p_correct = 0.6;
+  std::uint64_t seed = 0;  // 0: the participant's own seed
+};
+
+struct RunSpec {
+  std::string participant;  // P01, ...
+  std::string out_dir;      // the study's directory: the log goes to out_dir/participant/trials.jsonl
+  ObserverSpec observer;
+  int stop_after = 0;       // > 0: stop after this many new trials (a break; run again to go on)
+  bool resume_only = false; // `study resume`: an error when there is no log to go on from
+};
+
+struct RunReport {
+  std::string log_path;
+  int total = 0;         // trials in the experiment, practice included
+  int done_before = 0;   // whole trials already in the log
+  int written = 0;       // trials this run added
+  bool complete = false; // session_end written (now or before)
+  std::string torn;      // the warning for a cut-off last line, when there was one
+};
+
+Result<RunReport> run_participant(const Experiment& e, const RunSpec& spec);
+
+// A 64-bit mix of a seed and a trial number (splitmix64's finaliser): each trial's own draws.
+std::uint64_t trial_seed(std::uint64_t seed, std::uint64_t trial, std::uint64_t stream);
+
+}  // namespace ps::study

@@ -1,0 +1,128 @@
+#include "study/study_summary.h"
+
+#include <algorithm>
+#include <cmath>
+#include <filesystem>
+
+#include <nlohmann/json.hpp>
+
+#include "study/study_log.h"
+
+namespace ps::study {
+
+using json = nlohmann::json;
+
+Result<std::vector<std::string>> find_trial_logs(const std::vector<std::string>& args) {
+  std::vector<std::string> logs;
+  for (const std::string& arg : args) {
+    const std::filesystem::path p(arg);
+    std::error_code ec;
+    if (std::filesystem::is_regular_file(p, ec)) {
+      logs.push_back(arg);
+    } else if (std::filesystem::is_regular_file(p / "trials.jsonl", ec)) {
+      logs.push_back((p / "trials.jsonl").string());
+    } else if (std::filesystem::is_directory(p, ec)) {
+      std::vector<std::string> found;
+      for (const auto& entry : std::filesystem::directory_iterator(p, ec))
+        if (std::filesystem::is_regular_file(entry.path() / "trials.jsonl")) found.push_back((entry.path() / "trials.jsonl").string());
+      if (found.empty()) return make_error(arg + ": no trials.jsonl in it or in its subfolders (give the --out of `study run`)");
+      std::sort(found.begin(), found.end());
+      logs.insert(logs.end(), found.begin(), found.end());
+    } else {
+      return make_error(arg + ": no such file or folder (give trial logs, participants' folders or a study folder)");
+    }
+  }
+  return logs;
+}
+
+namespace {
+
+Shape shape_named(const std::string& s) {
+  return s == "logistic" ? Shape::kLogistic : s == "normal" ? Shape::kCumulativeNormal : Shape::kWeibull;
+}
+
+// The session_start line: who, which task, which conditions (and materials).
+void read_start(ParticipantResult& p, const json& s) {
+  p.participant = s.at("participant");
+  p.experiment = s.at("experiment");
+  p.task = s.at("task");
+  for (const auto& name : s.at("conditions")) {
+    ConditionResult c;
+    c.condition = name;
+    p.conditions.push_back(c);
+  }
+  if (const json o = s.value("observer", json::object()); o.value("kind", "") == "simulated" && p.task == "threshold") {
+    p.truth = PsychometricParams{o.at("threshold"), o.at("slope"), o.at("guess"), o.at("lapse")};
+    p.truth_shape = shape_named(o.at("shape"));
+  }
+  if (p.task == "threshold") {
+    const json& t = s.at("threshold");
+    p.shape = shape_named(t.at("shape"));
+    p.criterion = t.at("criterion");
+    p.reference = t.at("reference");
+  } else {
+    for (const auto& m : s.at("materials")) p.materials.push_back(m);
+    const std::size_t K = p.materials.size();
+    for (ConditionResult& c : p.conditions) c.confusion.assign(K, std::vector<int>(K, 0));
+  }
+}
+
+std::size_t condition_index(const ParticipantResult& p, const std::string& name) {
+  for (std::size_t i = 0; i < p.conditions.size(); ++i)
+    if (p.conditions[i].condition == name) return i;
+  throw std::runtime_error("condition '" + name + "' is not among the session_start line's conditions");
+}
+
+// One threshold condition's fit: maximum likelihood with the lapse free, then the bootstrap.
+void fit_condition(ConditionResult& c, const ParticipantResult& p, const std::vector<TrialResult>& trials,
+                   const SummaryOptions& o) {
+  c.data = group_by_level(trials);
+  if (c.data.size() < 2) return;  // one level: nothing to fit (the tables say so)
+  FitOptions f;
+  f.shape = p.shape;
+  f.guess = 0.5;
+  c.fit = fit_psychometric(c.data, f);
+  BootstrapOptions b;
+  b.resamples = o.resamples;
+  b.criterion = p.criterion;
+  b.seed = o.seed;
+  c.boot = bootstrap(c.data, f, c.fit, b);
+  if (p.reference != 0.0) {
+    c.weber = weber_fraction(c.boot.threshold, p.reference);
+    c.weber_ci = {c.boot.threshold_ci.low / p.reference, c.boot.threshold_ci.high / p.reference};
+  }
+}
+
+}  // namespace
+
+Result<ParticipantResult> summarize_participant(const std::string& log_path, const SummaryOptions& o) {
+  Result<TrialLog> log = read_trial_log(log_path);
+  if (!log) return log.error();
+  ParticipantResult p;
+  p.log = log_path;
+  p.torn = log.value().torn;
+  std::vector<std::vector<TrialResult>> trials;
+  for (const LogLine& l : log.value().lines) {
+    try {
+      const std::string type = l.json.at("type");
+      if (l.number == 1) read_start(p, l.json);
+      trials.resize(p.conditions.size());
+      p.complete |= type == "session_end";
+      if (type != "trial" || l.json.at("practice").get<bool>()) continue;
+      const std::size_t c = condition_index(p, l.json.at("condition"));
+      ++p.conditions[c].trials;
+      if (p.task == "threshold") trials[c].push_back({l.json.at("level"), l.json.at("correct")});
+      else ++p.conditions[c].confusion.at(l.json.at("shown_index")).at(l.json.at("answered_index"));
+    } catch (const std::exception& e) {
+      return make_error(log_path + ":" + std::to_string(l.number) + ": not a study log line (" + e.what() +
+                        "); docs/study.md lists the schema");
+    }
+  }
+  for (std::size_t c = 0; c < p.conditions.size(); ++c) {
+    if (p.task == "threshold") fit_condition(p.conditions[c], p, trials[c], o);
+    else if (p.conditions[c].trials > 0) p.conditions[c].ident = identification_stats(ConfusionMatrix(p.conditions[c].confusion));
+  }
+  return p;
+}
+
+}  // namespace ps::study

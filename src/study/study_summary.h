@@ -1,0 +1,62 @@
+// `study summarize` (docs/study.md, "Summarizing"): every participant's trial log checked
+// (study_log.h: a changed line is refused naming file:line), then fitted: a threshold task by
+// maximum likelihood per condition (threshold, slope, bootstrap 95 % intervals, Weber fraction),
+// an identification task as a confusion matrix per condition (percent correct, information
+// transfer, 2^IT). Practice trials are left out. The tables go to CSV, the summary to
+// summary.md, the psychometric curves to a gnuplot plot.
+#pragma once
+
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "core/result.h"
+#include "study/fit.h"
+#include "study/identification.h"
+
+namespace ps::study {
+
+struct ConditionResult {
+  std::string condition;
+  int trials = 0;
+  // threshold
+  std::vector<LevelCounts> data;
+  PsychometricFit fit;
+  BootstrapResult boot;
+  double weber = 0.0;
+  Interval weber_ci;
+  // identification
+  std::vector<std::vector<int>> confusion;
+  IdentificationStats ident;
+};
+
+struct ParticipantResult {
+  std::string participant, log;
+  std::string experiment, task;
+  Shape shape = Shape::kWeibull;
+  double criterion = 0.75, reference = 0.0;
+  std::vector<std::string> materials;
+  // The simulated participant's own function (session_start's "observer"); none for a person.
+  std::optional<PsychometricParams> truth;
+  Shape truth_shape = Shape::kWeibull;
+  bool complete = false;
+  std::string torn;  // a cut-off last line's warning
+  std::vector<ConditionResult> conditions;  // in the experiment's order
+};
+
+struct SummaryOptions {
+  int resamples = 1000;
+  std::uint64_t seed = 1;
+};
+
+// The trials.jsonl files under each argument: a log itself, a participant's folder, or a study's
+// folder (each subfolder's log, in name order).
+Result<std::vector<std::string>> find_trial_logs(const std::vector<std::string>& args);
+Result<ParticipantResult> summarize_participant(const std::string& log_path, const SummaryOptions& o);
+
+// participants.csv, groups.csv, summary.md and (gnuplot found) psychometric.png or
+// confusion.png in `dir` (created); `notes` get the plots skipped and why.
+Status write_study_summary(const std::string& dir, const std::vector<ParticipantResult>& people,
+                           std::vector<std::string>& notes);
+
+}  // namespace ps::study
