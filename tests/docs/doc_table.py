@@ -12,7 +12,7 @@ from doc_commands import program_words
 GROUPS = {
     "readme": ["README.md", "docs/api.md", "docs/testing.md", "docs/vibration.md", "docs/hardening.md"],
     "scenes": ["docs/fourd.md", "docs/universe.md", "docs/calibrate.md"],
-    "studies": ["docs/maze.md", "docs/tuning.md"],
+    "studies": ["docs/maze.md", "docs/tuning.md", "docs/study.md"],
     "window": [],  # every file's window commands
 }
 
