@@ -16,7 +16,9 @@ log() { echo "sanitize: $*"; }
 configure() {  # configure DIR [cmake args...] unless DIR is already configured
   local dir="$1"; shift
   if [ -f "${dir}/CMakeCache.txt" ] && [ -f "${dir}/Makefile" ]; then return 0; fi
-  cmake -S "${repo_root}" -B "${dir}" -DCMAKE_BUILD_TYPE=RelWithDebInfo \
+  # No precompiled header here: ccache would hand clang a header built in another checkout, which
+  # clang refuses by its timestamp, and these builds are not what a newcomer waits for.
+  cmake -S "${repo_root}" -B "${dir}" -DCMAKE_BUILD_TYPE=RelWithDebInfo -DCMAKE_DISABLE_PRECOMPILE_HEADERS=ON \
     -DCMAKE_C_COMPILER=clang -DCMAKE_CXX_COMPILER=clang++ \
     "-DCMAKE_C_COMPILER_LAUNCHER=${ccache_launcher}" "-DCMAKE_CXX_COMPILER_LAUNCHER=${ccache_launcher}" "$@" \
     > "${dir}.configure.log" ||
