@@ -4,6 +4,8 @@
 #include <cstdlib>
 #include <cstring>
 #include <filesystem>
+#include <fstream>
+#include <sstream>
 #include <system_error>
 #include <utility>
 #include <vector>
@@ -38,6 +40,14 @@ bool sync_path(const std::string& path, int extra_flags) {
 }
 
 }  // namespace
+
+std::optional<std::string> read_whole_file(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) return std::nullopt;
+  std::ostringstream text;
+  text << in.rdbuf();
+  return std::move(text).str();
+}
 
 Status prepare_output_dir(const std::string& path, bool* created) {
   if (created != nullptr) *created = false;

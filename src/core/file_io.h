@@ -14,12 +14,17 @@
 // Errors are one line naming the path and the OS reason.
 #pragma once
 
+#include <optional>
 #include <string>
 #include <string_view>
 
 #include "core/result.h"
 
 namespace ps {
+
+// The whole file's bytes, or nullopt when it cannot be opened (errno says why, as open(2) left it):
+// each reader words its own error, naming what the file should have been.
+std::optional<std::string> read_whole_file(const std::string& path);
 
 // Applies the directory rule to the directory that will hold `path` (its parent path; "." when
 // it has none). Sets `*created` when this call made the directory (so a caller that fails later

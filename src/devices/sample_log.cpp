@@ -67,11 +67,9 @@ Result<std::vector<DeviceSample>> parse_log(std::string_view text, const std::st
 }
 
 Result<std::vector<DeviceSample>> load_log(const std::string& path, const LogFields& fields) {
-  std::ifstream f(path, std::ios::binary);
-  if (!f) return make_error(path + ": cannot open device log: " + std::strerror(errno));
-  std::ostringstream ss;
-  ss << f.rdbuf();
-  return parse_log(ss.str(), path, fields);
+  const std::optional<std::string> text = read_whole_file(path);
+  if (!text) return make_error(path + ": cannot open device log: " + std::strerror(errno));
+  return parse_log(*text, path, fields);
 }
 
 }  // namespace

@@ -7,6 +7,7 @@
 #include <toml++/toml.h>
 
 #include "maze/maze.h"
+#include "core/file_io.h"
 #include "scene/toml_text.h"
 
 namespace ps::maze {
@@ -207,11 +208,9 @@ Result<MazeDesc> parse_maze_desc(const std::string& text, const std::string& sou
 }
 
 Result<MazeDesc> load_maze_desc(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) return make_error(path + ": cannot open maze description (give an existing file, e.g. scenes/maze/maze.toml)");
-  std::ostringstream text;
-  text << in.rdbuf();
-  return parse_maze_desc(text.str(), path);
+  const std::optional<std::string> text = read_whole_file(path);
+  if (!text) return make_error(path + ": cannot open maze description (give an existing file, e.g. scenes/maze/maze.toml)");
+  return parse_maze_desc(*text, path);
 }
 
 }  // namespace ps::maze

@@ -138,11 +138,9 @@ Result<Lut> read_lut(const std::string& path, LutAxis expected) {
   if (const std::uintmax_t bytes = std::filesystem::file_size(path, ec); !ec && bytes > kMaxBytes)
     return make_error(path + ": lookup table file is " + std::to_string(bytes) + " bytes, more than the limit of " +
                       std::to_string(kMaxBytes));
-  std::ifstream in(path, std::ios::binary);
-  if (!in) return make_error(path + ": cannot open lookup table: " + std::strerror(errno));
-  std::ostringstream ss;
-  ss << in.rdbuf();
-  const std::string text = ss.str();
+  const std::optional<std::string> read = read_whole_file(path);
+  if (!read) return make_error(path + ": cannot open lookup table: " + std::strerror(errno));
+  const std::string& text = *read;
   auto lut = parse_lut(text, path);
   if (!lut) return lut;
   if (lut->axis != expected) {

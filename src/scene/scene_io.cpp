@@ -6,6 +6,7 @@
 #include <fstream>
 #include <sstream>
 
+#include "core/file_io.h"
 #include "core/install_layout.h"
 #include "scene/mesh.h"
 #include "scene/scene_convert.h"
@@ -302,18 +303,16 @@ Result<Scene> load_scene(const std::string& path, const std::vector<std::string>
   if (!size_ec && bytes > kMaxSceneFileBytes)
     return make_error(path + ": scene file is " + std::to_string(bytes) + " bytes, more than the limit of " +
                       std::to_string(kMaxSceneFileBytes));
-  std::ifstream in(path, std::ios::binary);
-  if (!in) {
+  const std::optional<std::string> text = read_whole_file(path);
+  if (!text) {
     std::error_code ec;
     const bool exists = std::filesystem::exists(path, ec);
     return make_error(path + ": cannot open scene file: " +
                       (exists ? "permission denied or not a file" : "no such file"));
   }
-  std::ostringstream text;
-  text << in.rdbuf();
   const std::string base_dir =
       std::filesystem::absolute(std::filesystem::path(path)).parent_path().string();
-  return parse_scene(text.str(), path, base_dir, overrides, allow_paths);
+  return parse_scene(*text, path, base_dir, overrides, allow_paths);
 }
 
 Result<Scene> load_scene_or_default(const std::string& path, const std::vector<std::string>& overrides,

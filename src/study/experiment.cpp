@@ -13,6 +13,7 @@
 
 #include <toml++/toml.h>
 
+#include "core/file_io.h"
 #include "scene/toml_text.h"
 
 namespace ps::study {
@@ -226,11 +227,9 @@ Result<Experiment> parse_experiment(const std::string& text, const std::string& 
 }
 
 Result<Experiment> load_experiment(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) return make_error(path + ": cannot open the experiment file (e.g. scenes/studies/lambda_threshold.toml)");
-  std::ostringstream text;
-  text << in.rdbuf();
-  return parse_experiment(text.str(), path);
+  const std::optional<std::string> text = read_whole_file(path);
+  if (!text) return make_error(path + ": cannot open the experiment file (e.g. scenes/studies/lambda_threshold.toml)");
+  return parse_experiment(*text, path);
 }
 
 namespace {

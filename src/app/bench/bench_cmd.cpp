@@ -9,6 +9,7 @@
 #include <unistd.h>
 
 #include "app/bench/bench_first_image.h"
+#include "core/file_io.h"
 #include "app/bench/bench_moving.h"
 #include "app/bench/bench_plot.h"
 #include "app/bench/bench_report.h"
@@ -238,11 +239,9 @@ Status texture_filter_only(const BenchArgs& a) {
 // --plot-only: the plots are the whole job here, so a missing gnuplot is an error, not a warning.
 Status plot_only(const BenchArgs& a) {
   const std::string csv = a.out_dir + "/bench.csv";
-  std::ifstream in(csv, std::ios::binary);
-  if (!in) return make_error(csv + ": cannot read (--plot-only draws from the bench.csv of an earlier run)");
-  std::ostringstream text;
-  text << in.rdbuf();
-  auto rows = bench::parse_csv(text.str(), csv);
+  const std::optional<std::string> text = read_whole_file(csv);
+  if (!text) return make_error(csv + ": cannot read (--plot-only draws from the bench.csv of an earlier run)");
+  auto rows = bench::parse_csv(*text, csv);
   if (!rows) return rows.error();
   if (Status s = bench::write_plots(a.out_dir, rows.value()); !s) return s;
   if (!a.quiet) std::fprintf(stderr, "wrote %s/bench.png and %s/bench_ratios.png\n", a.out_dir.c_str(), a.out_dir.c_str());

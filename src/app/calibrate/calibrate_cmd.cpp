@@ -174,11 +174,9 @@ Status write_table(const CalibrateArgs& a, const calibrate::Calibration& cal, co
 // --resume LOG: the log's answers again, in order (a simulated observer draws its answers as
 // it did, so the rest goes on as the uninterrupted run would).
 Status resume_from(const std::string& path, calibrate::Calibration& cal, calibrate::SimulatedObserver* observer) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) return make_error(path + ": cannot open the trial log to resume (the .trials.csv a stopped run wrote)");
-  std::ostringstream text;
-  text << in.rdbuf();
-  auto answers = calibrate::parse_trial_log(text.str(), path);
+  const std::optional<std::string> text = read_whole_file(path);
+  if (!text) return make_error(path + ": cannot open the trial log to resume (the .trials.csv a stopped run wrote)");
+  auto answers = calibrate::parse_trial_log(*text, path);
   if (!answers) return answers.error();
   for (std::size_t i = 0; i < answers->size(); ++i) {
     if (observer && !cal.done()) observer->answer_left(cal.current(), cal.spec().kind);
