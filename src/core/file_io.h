@@ -1,5 +1,6 @@
-// Output files that are never half-written (docs/errors.md: "nothing is written when a command
-// fails"). Three pieces, each built on the one below:
+// Reading a file whole (read_whole_file), and output files that are never half-written
+// (docs/errors.md: "nothing is written when a command fails"). Three pieces, each built on the
+// one below:
 //
 //   prepare_output_dir  the directory rule every output path follows: the file's directory must
 //                       exist, or only its LAST component may be missing (it is created, its

@@ -11,6 +11,7 @@
 #include <sstream>
 #include <system_error>
 
+#include "core/file_io.h"
 #include "gl/shader.h"
 
 namespace ps::gl {
@@ -25,17 +26,15 @@ struct Preprocessor {
 };
 
 Result<std::string> read_file(const fs::path& path) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) {
+  std::optional<std::string> text = read_whole_file(path.string());
+  if (!text) {
     std::error_code ec(errno, std::generic_category());
     return make_error(path.string() + ": cannot open shader: " + ec.message());
   }
-  std::ostringstream text;
-  text << in.rdbuf();
-  if (text.str().size() > kMaxShaderFileBytes)
+  if (text->size() > kMaxShaderFileBytes)
     return make_error(path.string() + ": shader file larger than the limit of " +
                       std::to_string(kMaxShaderFileBytes) + " bytes");
-  return text.str();
+  return std::move(*text);
 }
 
 std::vector<std::string> split_lines(const std::string& text) {
