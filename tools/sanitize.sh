@@ -35,7 +35,9 @@ export UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1
 # allocations until their DRI driver is unloaded at exit, and frames of the unloaded driver
 # cannot be symbolized or suppressed; memory errors and undefined behaviour are still fatal.
 log "unit tests under ASan+UBSan (leaks checked)"
-ASAN_OPTIONS=detect_leaks=1 ctest --test-dir "${asan}" -L unit --output-on-failure -j"${jobs}"
+# tools/lsan_suppressions.txt: leaks inside a library that are not ours, each with its reason.
+ASAN_OPTIONS=detect_leaks=1 LSAN_OPTIONS="suppressions=${repo_root}/tools/lsan_suppressions.txt" \
+  ctest --test-dir "${asan}" -L unit --output-on-failure -j"${jobs}"
 # The `window` walks (a real window under Xvfb, driven by xdotool for 15-30 s each) are left to
 # the plain build: under ASan each would take minutes, and they test timing as a person sees it.
 log "GL tests under ASan+UBSan (leaks not checked, see above; not the window walks)"

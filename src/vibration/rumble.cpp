@@ -84,7 +84,8 @@ RumbleOut::~RumbleOut() {  // once per successful SDL_InitSubSystem in open()
 
 void RumbleOut::write(std::span<const float> chunk) {
   const RumbleLevels l = envelope_.next(chunk);
-  if (joystick_ == nullptr) return;
+  // Not on a pad that went away (SDL would only answer with an error).
+  if (joystick_ == nullptr || SDL_JoystickGetAttached(static_cast<SDL_Joystick*>(joystick_)) != SDL_TRUE) return;
   const bool silent = l.low == 0 && l.high == 0;
   if (silent && last_ == RumbleLevels{}) return;  // already stopped: nothing to renew
   SDL_JoystickRumble(static_cast<SDL_Joystick*>(joystick_), l.low, l.high, silent ? 0 : desc_.hold_ms);
