@@ -63,6 +63,33 @@ PYBIND11_MODULE(_core, m) {
       .def("set_probe", &psa::Renderer::set_probe)
       .def("size", &psa::Renderer::size)
       .def("probe", &psa::Renderer::probe)
+      .def("nearest_surface",
+           [](const psa::Renderer& r, py::array_t<double, py::array::c_style | py::array::forcecast> points,
+              double max_distance_mm) {
+             if (points.ndim() != 2 || points.shape(1) != 3)
+               throw psa::Error("nearest_surface: points must be an N x 3 array of mm");
+             const py::ssize_t n = points.shape(0);
+             std::vector<psa::Vec3> in(static_cast<size_t>(n));
+             const double* p = points.data();
+             for (py::ssize_t i = 0; i < n; ++i) in[i] = {p[3 * i], p[3 * i + 1], p[3 * i + 2]};
+             std::vector<psa::SurfacePoint> found;
+             {
+               py::gil_scoped_release release;  // a mesh's queries take a while for many points
+               found = r.nearest_surface(in, max_distance_mm);
+             }
+             py::array_t<double> distance(n), point({n, py::ssize_t{3}}), normal({n, py::ssize_t{3}});
+             double* d = distance.mutable_data();
+             double* q = point.mutable_data();
+             double* m = normal.mutable_data();
+             for (py::ssize_t i = 0; i < n; ++i) {
+               d[i] = found[i].distance_mm;
+               for (int k = 0; k < 3; ++k) {
+                 q[3 * i + k] = found[i].point[k];
+                 m[3 * i + k] = found[i].normal[k];
+               }
+             }
+             return py::make_tuple(distance, point, normal);
+           })
       .def("render", [](psa::Renderer& r, std::optional<psa::Vec3> probe, std::optional<psa::Vec3> velocity,
                         int frames, const std::vector<std::string>& aovs) {
         psa::RenderDesc desc{probe, velocity, frames, aovs};

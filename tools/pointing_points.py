@@ -22,6 +22,15 @@ The rule, so the points are chosen without looking at where the shadow lands:
   - with --outside-visual-stretch: where the ray through the pixel passes no surface drawn with a
     visual_stretch within the reach of its stretch (the drawn probe is moved off the hand there,
     by design: Illusion);
+  - with --probe-fits: where the probe fits the surface under the pointer. The ray through the
+    pixel is marched to the surface point S (pseudoshadow.Renderer.nearest_surface: the felt
+    geometry), and the probe hovering --hover-mm above S along the drawn normal m there (its
+    centre at S + (R + h) m) must have S as its nearest surface point, within --fit-mm. Where a
+    hollow is narrower than the probe (Suzanne's eye sockets, the ear, the nostrils), or another
+    part of the surface comes nearer (the nose beside the cheek), the probe's nearest point, and so
+    the shadow's dark core, lies elsewhere by geometry, whatever the mapping does (docs/window.md);
+  - with --raised: only where the drawn normal turns more than 25 degrees from the pointer
+    plane's (the raised things on a floor: Poly's Suzanne);
   - away from every hidden surface (visible = false) by its radius, the probe's radius, its
     material's magnetic range and 5 mm, since a hidden magnet pulls the probe into contact by
     design; a sweep between two points that passes over that reach checks `unburied` only;
@@ -55,13 +64,10 @@ def smooth(normal, max_crease_deg):
     return ok
 
 
-def qualifying(normal, reference, min_facing, margin, max_crease_deg=None):
-    drawn = np.linalg.norm(normal, axis=2) > 0.5
-    facing = drawn & (normal @ np.asarray(reference, dtype=np.float32) >= min_facing)
-    if max_crease_deg is not None:
-        facing &= smooth(normal, max_crease_deg)
-    ok = facing.copy()
-    for _ in range(margin):  # erosion by one pixel, margin times (4-neighbourhood)
+def erode(mask, margin):
+    """mask less every pixel within margin pixels (4-neighbourhood steps) of one outside it."""
+    ok = mask.copy()
+    for _ in range(margin):
         shifted = ok.copy()
         shifted[1:, :] &= ok[:-1, :]
         shifted[:-1, :] &= ok[1:, :]
@@ -70,6 +76,18 @@ def qualifying(normal, reference, min_facing, margin, max_crease_deg=None):
         shifted[0, :] = shifted[-1, :] = False
         shifted[:, 0] = shifted[:, -1] = False
         ok = shifted
+    return ok
+
+
+def qualifying(normal, reference, min_facing, margin, max_crease_deg=None, also=None):
+    """also(facing) -> mask: a further rule, applied before the margin is taken."""
+    drawn = np.linalg.norm(normal, axis=2) > 0.5
+    facing = drawn & (normal @ np.asarray(reference, dtype=np.float32) >= min_facing)
+    if max_crease_deg is not None:
+        facing &= smooth(normal, max_crease_deg)
+    if also is not None:
+        facing &= also(facing)
+    ok = erode(facing, margin)
     ok[: READOUTS_BOX[1], : READOUTS_BOX[0]] = False
     ok[:EDGE, :] = ok[-EDGE:, :] = False
     ok[:, :EDGE] = ok[:, -EDGE:] = False
@@ -102,6 +120,67 @@ def floor_points(camera, shape, floor_z):
         t = (floor_z - eye[2]) / rays[..., 2]
     t[~(t > 0)] = np.nan
     return eye + t[..., None] * rays
+
+
+def surface_under(renderer, camera, ok):
+    """The felt surface point where each qualifying pixel's ray first meets the geometry (NaN:
+    none within the camera's far plane), by sphere tracing on nearest_surface's distances."""
+    eye, rays = pixel_rays(camera, ok.shape)
+    dirs = rays[ok]
+    t = np.full(len(dirs), float(camera.get("near_mm", 1.0)))
+    far = float(camera.get("far_mm", 2000.0))
+    live = np.ones(len(dirs), dtype=bool)
+    met = np.zeros(len(dirs), dtype=bool)
+    for _ in range(400):
+        idx = np.nonzero(live)[0]
+        if len(idx) == 0:
+            break
+        d, _, _ = renderer.nearest_surface(eye + t[idx, None] * dirs[idx], 1000.0)
+        d = np.where(np.isfinite(d), d, 1000.0)
+        hit = d < 0.005
+        met[idx[hit]] = True
+        t[idx] += d
+        live[idx[hit | (t[idx] > far)]] = False
+    points = np.full(ok.shape + (3,), np.nan)
+    points[ok] = np.where(met[:, None], eye + t[:, None] * dirs, np.nan)
+    return points
+
+
+def core_centre(intensity):
+    """The shadow's core as the window measures it (src/app/window/ui_layout.cpp, measure_shadow):
+    the centroid of the pixels within 90 % of the darkest, in the box of the visible shadow
+    (intensity > 1/255); pixel centres at i + 0.5. None: no shadow."""
+    seen = intensity > 1.0 / 255.0
+    if not seen.any():
+        return None
+    ys, xs = np.nonzero(seen)
+    box = intensity[ys.min():ys.max() + 1, xs.min():xs.max() + 1]
+    cy, cx = np.nonzero(box >= 0.9 * box.max())
+    return xs.min() + cx.mean() + 0.5, ys.min() + cy.mean() + 0.5
+
+
+def probe_fits(scene, renderer, normal, facing, hover_mm, fit_px, step=3):
+    """--probe-fits: pixels where the probe hovering hover_mm over the surface point S under it,
+    along the drawn normal m there (centre S + (R + h) m, the place the pointer mapping aims for,
+    docs/window.md "Over a slope"), draws its shadow's core within fit_px of the pixel. Tried on
+    every step-th pixel of `facing` (one frame each), each answer standing for its step x step
+    block."""
+    doc = load(scene)
+    radius = float(doc["probe"].get("radius_mm", 8.0))
+    grid = np.zeros(facing.shape, dtype=bool)
+    grid[step // 2::step, step // 2::step] = True
+    tried = facing & grid
+    s = surface_under(renderer, doc["camera"], tried)
+    fits = np.zeros(facing.shape, dtype=bool)
+    for y, x in zip(*np.nonzero(tried & np.isfinite(s[..., 0]))):
+        m = normal[y, x].astype(np.float64)
+        centre = s[y, x] + (radius + hover_mm) * m / np.linalg.norm(m)
+        frame = renderer.render(probe=list(centre), velocity=[0.0, 0.0, 0.0], frames=1, aovs=["intensity"])
+        core = core_centre(frame.aovs["intensity"])
+        if core is not None and np.hypot(core[0] - (x + 0.5), core[1] - (y + 0.5)) <= fit_px:
+            y0, x0 = y - step // 2, x - step // 2
+            fits[max(y0, 0):y0 + step, max(x0, 0):x0 + step] = True
+    return fits
 
 
 def load(scene):
@@ -240,6 +319,13 @@ def main():
                     help="mm inside the box's walls beyond the probe's radius (--inside-navigation-box)")
     ap.add_argument("--outside-visual-stretch", action="store_true",
                     help="only where the ray passes no surface drawn with a visual_stretch (Illusion)")
+    ap.add_argument("--raised", action="store_true",
+                    help="only where the normal turns more than 25 degrees from the plane's (not the floor)")
+    ap.add_argument("--probe-fits", action="store_true",
+                    help="only where the probe hovering over the pointed point is nearest to it (Suzanne)")
+    ap.add_argument("--hover-mm", type=float, default=1.0, help="the person's height h (the window's start, 1 mm)")
+    ap.add_argument("--fit-px", type=float, default=3.0,
+                    help="--probe-fits: how far from the pixel the ideally placed probe's shadow core may lie (half the walk's near)")
     ap.add_argument("--settle", type=float, default=0.0,
                     help="seconds to wait at each point before the rest check (a rolling view settles)")
     a = ap.parse_args()
@@ -247,8 +333,18 @@ def main():
         import pseudoshadow
     except ImportError:
         sys.exit("pointing_points: the Python module is not found: run with PYTHONPATH=build/python")
-    frame = pseudoshadow.Renderer(a.scene).render(aovs=["normal"])
-    ok = qualifying(frame.aovs["normal"], frame.stats["reference_normal"], a.min_facing, a.margin, a.max_crease_deg)
+    renderer = pseudoshadow.Renderer(a.scene)
+    frame = renderer.render(aovs=["normal"])
+    reference = np.asarray(frame.stats["reference_normal"], dtype=np.float32)
+    raised = frame.aovs["normal"] @ reference < np.cos(np.radians(25.0)) if a.raised else True
+
+    def fits(facing):
+        facing = facing & raised
+        if a.probe_fits:
+            facing &= probe_fits(a.scene, renderer, frame.aovs["normal"], facing, a.hover_mm, a.fit_px)
+        return facing
+    ok = qualifying(frame.aovs["normal"], frame.stats["reference_normal"], a.min_facing, a.margin, a.max_crease_deg,
+                    also=fits)
     if a.inside_navigation_box:
         ok &= inside_box(a.scene, ok.shape, a.floor_z, a.box_margin_mm)
     if a.outside_visual_stretch:
@@ -264,6 +360,10 @@ def main():
         crease += f" --settle {a.settle:g}"
     if a.outside_visual_stretch:
         crease += f" --outside-visual-stretch --floor-z {a.floor_z:g}"
+    if a.raised:
+        crease += " --raised"
+    if a.probe_fits:
+        crease += f" --probe-fits --hover-mm {a.hover_mm:g} --fit-px {a.fit_px:g}"
     if a.inside_navigation_box:
         crease += f" --inside-navigation-box --floor-z {a.floor_z:g} --box-margin-mm {a.box_margin_mm:g}"
     print(f"# {a.count} points over the visible surfaces (tools/pointing_points.py --margin {a.margin} "

@@ -103,6 +103,15 @@ struct Stats {
   std::string json;
 };
 
+// The touchable surface nearest to a point (Renderer::nearest_surface).
+struct SurfacePoint {
+  // mm from the point to the surface; +infinity where no surface is within the asked distance
+  // (then point and normal are 0).
+  double distance_mm = 0.0;
+  Vec3 point{0.0, 0.0, 0.0};   // the nearest surface point, mm
+  Vec3 normal{0.0, 0.0, 0.0};  // the surface's outward normal there (unit)
+};
+
 // What render() returns: the last frame.
 struct PSEUDOSHADOW_API Frame {
   int width = 0, height = 0;
@@ -150,6 +159,14 @@ class PSEUDOSHADOW_API Renderer {
   std::pair<int, int> size() const;
   // The scene's current probe position and velocity.
   std::pair<Vec3, Vec3> probe() const;
+
+  // For each of `points` (mm), the nearest point of the scene's touchable surfaces within
+  // `max_distance_mm`: the geometry the probe feels (the haptic loop's closest-point query), as the
+  // scene file places it (before any frame dents or moves it). Hidden surfaces count (they are
+  // felt); a button is a hole in its face with its pocket behind. For placing things against the
+  // surfaces, and with a ray marched by these distances, for what lies under a pixel. Needs no GL
+  // context; the geometry is built at the first call after opening or set() (a mesh: its BVH).
+  std::vector<SurfacePoint> nearest_surface(const std::vector<Vec3>& points, double max_distance_mm = 1000.0) const;
 
  private:
   struct Impl;

@@ -133,6 +133,21 @@ class Renderer:
         """Move the probe (mm) and set its velocity (mm/s) without rendering."""
         self._core.set_probe(tuple(position), tuple(velocity))
 
+    def nearest_surface(self, points, max_distance_mm=1000.0):
+        """The nearest point of the scene's touchable surfaces to each point (mm): the geometry
+        the probe feels, as the scene file places it (hidden surfaces included, a button a hole in
+        its face). points: one (x, y, z) or an N x 3 array. Returns (distance, point, normal) as
+        numpy arrays (N; N x 3; N x 3): distance is inf, point and normal 0, where no surface is
+        within max_distance_mm. March a ray by these distances to find what lies under a pixel
+        (tools/pointing_points.py does)."""
+        import numpy as np
+        pts = np.asarray(points, dtype=np.float64)
+        single = pts.ndim == 1
+        distance, point, normal = self._core.nearest_surface(pts.reshape(-1, 3), float(max_distance_mm))
+        if single:
+            return distance[0], point[0], normal[0]
+        return distance, point, normal
+
     @property
     def size(self):
         """(width, height) in pixels."""

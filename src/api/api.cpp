@@ -9,12 +9,16 @@
 #include <cmath>
 #include <filesystem>
 #include <functional>
+#include <limits>
+#include <optional>
+#include <sstream>
 
 #include "api/api_context.h"
 #include "image/image.h"
 #include "render/renderer.h"
 #include "render/scene_frames.h"
 #include "scene/scene_io.h"
+#include "world/haptic_scene.h"
 
 namespace pseudoshadow {
 
@@ -82,6 +86,8 @@ struct Renderer::Impl {
   std::vector<std::string> overrides;
   ps::Scene scene;                         // as parsed, with the probe where the user put it
   std::unique_ptr<ps::Renderer> renderer;  // null until render(); dropped by set()
+  // The touchable geometry of `scene` (nearest_surface); built at its first call, dropped by set().
+  mutable std::optional<ps::world::HapticScene> haptic;
 
   ~Impl() {
     if (renderer && context) context->make_current();
@@ -165,6 +171,7 @@ void Renderer::set_all(const std::vector<std::string>& key_equals_values) {
   if (!sets_velocity) scene.probe.velocity = velocity;
   if (m.renderer) m.context->make_current();
   m.renderer.reset();
+  m.haptic.reset();
   m.scene = std::move(scene);
   m.overrides = std::move(overrides);
 }
@@ -187,6 +194,30 @@ std::pair<int, int> Renderer::size() const {
 std::pair<Vec3, Vec3> Renderer::probe() const {
   const Impl& m = impl("probe");
   return {to_vec3(m.probe().position), to_vec3(m.probe().velocity)};
+}
+
+std::vector<SurfacePoint> Renderer::nearest_surface(const std::vector<Vec3>& points, double max_distance_mm) const {
+  const Impl& m = impl("nearest_surface");
+  if (!(max_distance_mm > 0.0) || !std::isfinite(max_distance_mm)) {
+    std::ostringstream given;
+    given << max_distance_mm;
+    throw Error("nearest_surface: max_distance_mm must be a positive number of mm, not " + given.str());
+  }
+  if (!m.haptic) m.haptic = value_or_throw(ps::world::HapticScene::build(m.scene));
+  std::vector<SurfacePoint> out;
+  out.reserve(points.size());
+  for (const Vec3& p : points) {
+    const glm::dvec3 at = to_dvec3(p);
+    SurfacePoint s;
+    s.distance_mm = std::numeric_limits<double>::infinity();
+    if (std::isfinite(at.x) && std::isfinite(at.y) && std::isfinite(at.z)) {
+      // No hint: on a surface embedded in 4D a hint keeps the query to the hint's sheet.
+      const ps::world::Contact c = m.haptic->closest(at, max_distance_mm);
+      if (c.hit) s = SurfacePoint{c.distance_mm, to_vec3(c.point), to_vec3(c.normal)};
+    }
+    out.push_back(s);
+  }
+  return out;
 }
 
 Frame Renderer::render(const RenderDesc& desc) {

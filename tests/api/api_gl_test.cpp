@@ -4,6 +4,8 @@
 // without a change, the errors' words.
 #include <gtest/gtest.h>
 
+#include <cmath>
+#include <limits>
 #include <string>
 
 #include "pseudoshadow/pseudoshadow.h"
@@ -84,3 +86,29 @@ TEST(ApiGLTest, ErrorsSayWhatToDo) {
 }
 
 }  // namespace
+
+// nearest_surface on the default scene's plank (top at z = 0, 200 x 120 mm, normal +z), in
+// closed form: above it, beside its edge, out of range, a NaN point. Exact up to rounding (the
+// plank is analytic, no mesh): 1e-9 mm.
+TEST(ApiGLTest, NearestSurfaceIsTheFeltGeometryInClosedForm) {
+  psa::Renderer r = psa::Renderer::open_default(small(psa::Backend::kAuto));
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  const std::vector<psa::SurfacePoint> s = r.nearest_surface({{10, 5, 12}, {130, 0, 0}, {0, 0, 5000}, {nan, 0, 0}});
+  ASSERT_EQ(s.size(), 4u);
+  EXPECT_NEAR(s[0].distance_mm, 12.0, 1e-9);
+  EXPECT_NEAR(s[0].point[0], 10.0, 1e-9);
+  EXPECT_NEAR(s[0].point[1], 5.0, 1e-9);
+  EXPECT_NEAR(s[0].point[2], 0.0, 1e-9);
+  EXPECT_NEAR(s[0].normal[2], 1.0, 1e-9);
+  EXPECT_NEAR(s[1].distance_mm, 30.0, 1e-9);  // the plank's edge at x = 100
+  EXPECT_NEAR(s[1].point[0], 100.0, 1e-9);
+  EXPECT_TRUE(std::isinf(s[2].distance_mm));  // beyond the default 1000 mm
+  EXPECT_EQ(s[2].point, (psa::Vec3{0, 0, 0}));
+  EXPECT_TRUE(std::isinf(s[3].distance_mm));
+  EXPECT_NEAR(r.nearest_surface({{0, 0, 5000}}, 6000.0)[0].distance_mm, 5000.0, 1e-9);
+  // set() moves the geometry with the scene.
+  r.set("surfaces.0.center", "[0, 0, -3]");
+  EXPECT_NEAR(r.nearest_surface({{10, 5, 12}})[0].distance_mm, 15.0, 1e-9);
+  EXPECT_EQ(error_of([&] { r.nearest_surface({{0, 0, 0}}, 0.0); }),
+            "nearest_surface: max_distance_mm must be a positive number of mm, not 0");
+}

@@ -233,3 +233,38 @@ def test_lambda_sweep_example_measures_the_wavelength_it_sets():
     assert measured[0] < measured[1]
     for set_mm, got_mm in zip(lambdas, measured):
         assert got_mm == pytest.approx(set_mm, rel=sweep.tolerance(set_mm))
+
+
+def test_nearest_surface_is_the_felt_sphere_in_closed_form():
+    # A sphere of 20 mm at (5, -3, 10): the distance from p is |p - c| - 20, the point on the ray
+    # from c through p, the normal along it. Analytic geometry: exact up to rounding (1e-9 mm).
+    text = """
+[camera]
+position = [0.0, -200.0, 50.0]
+target = [0.0, 0.0, 0.0]
+up = [0.0, 0.0, 1.0]
+[probe]
+radius_mm = 4.0
+position = [0.0, 0.0, 60.0]
+[materials.m]
+albedo = [0.5, 0.5, 0.5]
+[[surfaces]]
+type = "sphere"
+material = "m"
+center = [5.0, -3.0, 10.0]
+radius_mm = 20.0
+"""
+    r = ps.Renderer(scene_text=text, backend=BACKEND, set=SIZE)
+    c = np.array([5.0, -3.0, 10.0])
+    pts = np.array([[5.0, -3.0, 40.0], [45.0, 27.0, 10.0], [0.0, 0.0, 0.0], [5.0, -3.0, 3000.0]])
+    distance, point, normal = r.nearest_surface(pts)
+    want = np.linalg.norm(pts[:3] - c, axis=1) - 20.0
+    assert np.allclose(distance[:3], np.abs(want), atol=1e-9)
+    out = (pts[:2] - c) / np.linalg.norm(pts[:2] - c, axis=1, keepdims=True)
+    assert np.allclose(point[:2], c + 20.0 * out, atol=1e-9)
+    assert np.allclose(normal[:2], out, atol=1e-9)
+    assert np.isinf(distance[3]) and not point[3].any()
+    one = r.nearest_surface((5.0, -3.0, 40.0))
+    assert one[0] == pytest.approx(10.0, abs=1e-9)
+    with pytest.raises(ps.Error, match="max_distance_mm must be a positive"):
+        r.nearest_surface(pts, max_distance_mm=-1)
