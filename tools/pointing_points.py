@@ -29,6 +29,9 @@ The rule, so the points are chosen without looking at where the shadow lands:
     hollow is narrower than the probe (Suzanne's eye sockets, the ear, the nostrils), or another
     part of the surface comes nearer (the nose beside the cheek), the probe's nearest point, and so
     the shadow's dark core, lies elsewhere by geometry, whatever the mapping does (docs/window.md);
+  - with --charge-pull-below N: where the scene's [[fields]] charges pull the probe resting on
+    the floor (--floor-z) by less than N newtons (their pull moves the drawn probe off the hand,
+    by design: fields_bodies_demo);
   - with --raised: only where the drawn normal turns more than 25 degrees from the pointer
     plane's (the raised things on a floor: Poly's Suzanne);
   - away from every hidden surface (visible = false) by its radius, the probe's radius, its
@@ -261,6 +264,26 @@ def away_from_hidden(scene, shape, floor_z):
     return ok
 
 
+def weak_charge_pull(scene, shape, floor_z, max_pull_n):
+    """--charge-pull-below N: pixels where every [[fields]] charge pulls the probe hovering over the
+    floor point of the pixel's ray (its centre R above the floor's top: gravity rests it there) by
+    less than N newtons, |q| r / (r^2 + s^2)^1.5 as the haptic loop's charge field
+    (world/fields.cpp; s the softening, 2 mm unless the scene says). The pull moves the drawn probe off the hand by design: that is the scene's
+    point (fields_bodies_demo)."""
+    doc = load(scene)
+    ok = np.ones(shape, dtype=bool)
+    radius = doc["probe"]["radius_mm"]
+    centres = floor_points(doc["camera"], shape, floor_z + radius)
+    for f in doc.get("fields", []):
+        if f.get("type") != "charge":
+            continue
+        r2 = np.sum((centres - np.asarray(f.get("position", [0.0, 0.0, 0.0]), dtype=np.float64)) ** 2, axis=2)
+        soft2 = r2 + f.get("softening_mm", 2.0) ** 2
+        with np.errstate(invalid="ignore"):
+            ok &= abs(f["charge_n_mm2"]) * np.sqrt(r2) / soft2 ** 1.5 < max_pull_n
+    return ok
+
+
 def library_range_mm(scene, doc, name):
     """material_range_mm over the scene and the libraries it includes (the scene's own wins)."""
     import os
@@ -319,6 +342,8 @@ def main():
                     help="mm inside the box's walls beyond the probe's radius (--inside-navigation-box)")
     ap.add_argument("--outside-visual-stretch", action="store_true",
                     help="only where the ray passes no surface drawn with a visual_stretch (Illusion)")
+    ap.add_argument("--charge-pull-below", type=float, default=None, metavar="N",
+                    help="only where the scene's charges pull the probe resting on the floor by less than N newtons")
     ap.add_argument("--raised", action="store_true",
                     help="only where the normal turns more than 25 degrees from the plane's (not the floor)")
     ap.add_argument("--probe-fits", action="store_true",
@@ -349,6 +374,8 @@ def main():
         ok &= inside_box(a.scene, ok.shape, a.floor_z, a.box_margin_mm)
     if a.outside_visual_stretch:
         ok &= outside_stretch(a.scene, ok.shape, a.floor_z)
+    if a.charge_pull_below is not None:
+        ok &= weak_charge_pull(a.scene, ok.shape, a.floor_z, a.charge_pull_below)
     clear = away_from_hidden(a.scene, ok.shape, a.floor_z)
     ok &= clear
     points = spread(ok, a.count)
@@ -360,6 +387,8 @@ def main():
         crease += f" --settle {a.settle:g}"
     if a.outside_visual_stretch:
         crease += f" --outside-visual-stretch --floor-z {a.floor_z:g}"
+    if a.charge_pull_below is not None:
+        crease += f" --charge-pull-below {a.charge_pull_below:g} --floor-z {a.floor_z:g}"
     if a.raised:
         crease += " --raised"
     if a.probe_fits:
