@@ -36,7 +36,7 @@ inline constexpr CommandInfo kCommands[] = {
     {"tune", "parameter sweeps into a labelled contact sheet, or a scripted console session", run_tune},
     {"maze", "the haptic cue maze of Sepulveda-Cervantes et al.: run a participant, script one, summarize the logs", run_maze},
     {"calibrate", "2AFC staircases measure JNDs along a curve; write a lookup table of equal-looking steps", run_calibrate},
-    {"study", "psychophysics: `study simulate` runs a simulated observer through Psi and the staircase, fitted with 95% CIs", run_study},
+    {"study", "experiments from a file (thresholds, identification): plan, run, resume, summarize; simulate an observer", run_study},
     {"doctor", "check GL backends, display, audio, gamepads, real-time scheduling and data; how to fix each", run_doctor},
 };
 

@@ -85,11 +85,13 @@ std::string summary_md(const std::vector<ParticipantResult>& people, const std::
                        const std::vector<std::string>& notes) {
   std::ostringstream o;
   const ParticipantResult& first = people.front();
-  o << "# " << first.experiment << ": summary\n\n" << people.size() << " participants, task " << first.task;
+  o << "# " << first.experiment << ": summary\n\n" << people.size()
+    << (people.size() == 1 ? " participant" : " participants") << ", task " << first.task;
   if (is_threshold(people))
     o << "; thresholds at " << first.criterion << " correct (maximum likelihood, lapse free in [0, 0.06]), 95 % "
       << "bootstrap intervals; Weber fractions against the reference " << first.reference;
   o << ".\n\n## Each condition over participants (mean, 95 % CI: Student's t)\n\n```\n" << groups << "```\n\n";
+  if (people.size() == 1) o << "With one participant the intervals over participants are empty: a t interval needs two.\n\n";
   o << "## Participants\n\nparticipants.csv: one row per participant and condition.\n\n";
   for (const ParticipantResult& p : people)
     o << "- " << p.participant << ": " << p.log << (p.complete ? "" : " (not complete)") << (p.torn.empty() ? "" : "; " + p.torn) << "\n";

@@ -59,10 +59,22 @@ TEST(StudySummaryTest, ThresholdTablesSummaryAndPlot) {
   EXPECT_NE(read_text(out + "summary.md").find("# lambda_threshold: summary"), std::string::npos);
   const bool gnuplot = std::system("command -v gnuplot > /dev/null 2>&1") == 0;
   EXPECT_EQ(std::filesystem::exists(out + "psychometric.png"), gnuplot);
-  if (gnuplot)  // the simulated participants' own function beside the fits (their session_start's observer)
+  if (gnuplot) {  // the simulated participants' own function beside the fits (their session_start's observer)
     EXPECT_NE(read_text(out + "psychometric.gp").find("0.5 + (1 - 0.5 - 0.02) * (x > 0 ? 1 - exp(-(x / 0.1) ** 3) : 0) lc black"),
               std::string::npos);
-  if (!gnuplot) EXPECT_NE(notes.at(0).find("psychometric.png skipped: gnuplot not found"), std::string::npos);
+  } else {
+    EXPECT_NE(notes.at(0).find("psychometric.png skipped: gnuplot not found"), std::string::npos);
+  }
+  EXPECT_NE(read_text(out + "summary.md").find("\n3 participants, task"), std::string::npos);
+  // One participant: the count in the singular, and why the intervals over participants are empty.
+  const auto logs = find_trial_logs({out + "../runs"});
+  ASSERT_TRUE(logs);
+  const std::vector<ParticipantResult> one{summarize_participant(logs->at(0), {100, 1}).value()};
+  std::vector<std::string> one_notes;
+  ASSERT_TRUE(write_study_summary(out + "../one", one, one_notes));
+  const std::string md = read_text(out + "../one/summary.md");
+  EXPECT_NE(md.find("\n1 participant, task"), std::string::npos);
+  EXPECT_NE(md.find("a t interval needs two"), std::string::npos);
 }
 
 TEST(StudySummaryTest, IdentificationTablesAndConfusionPlot) {
