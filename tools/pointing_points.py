@@ -347,7 +347,7 @@ def main():
     ap.add_argument("--raised", action="store_true",
                     help="only where the normal turns more than 25 degrees from the plane's (not the floor)")
     ap.add_argument("--probe-fits", action="store_true",
-                    help="only where the probe hovering over the pointed point is nearest to it (Suzanne)")
+                    help="only where the probe placed ideally over the pointed point draws its shadow's core on it (Suzanne)")
     ap.add_argument("--hover-mm", type=float, default=1.0, help="the person's height h (the window's start, 1 mm)")
     ap.add_argument("--fit-px", type=float, default=3.0,
                     help="--probe-fits: how far from the pixel the ideally placed probe's shadow core may lie (half the walk's near)")
