@@ -87,9 +87,7 @@ def measure(scene, points, hover_mm):
         centres = {"normal": s + (radius + hover_mm) * m,
                    "ray": along_ray(r, eye, rays[y, x], s, radius + hover_mm)}
         for how, c in centres.items():
-            f = r.render(probe=list(c), velocity=[0.0, 0.0, 0.0], frames=1, aovs=["intensity"])
-            core = pp.core_centre(f.aovs["intensity"])
-            out[how].append(np.inf if core is None else float(np.hypot(core[0] - (x + 0.5), core[1] - (y + 0.5))))
+            out[how].append(pp.core_offset_px(r, c, x, y))
     r.close()
     return out
 

@@ -24,11 +24,12 @@ The rule, so the points are chosen without looking at where the shadow lands:
     by design: Illusion);
   - with --probe-fits: where the probe fits the surface under the pointer. The ray through the
     pixel is marched to the surface point S (pseudoshadow.Renderer.nearest_surface: the felt
-    geometry), and the probe hovering --hover-mm above S along the drawn normal m there (its
-    centre at S + (R + h) m) must have S as its nearest surface point, within --fit-mm. Where a
-    hollow is narrower than the probe (Suzanne's eye sockets, the ear, the nostrils), or another
-    part of the surface comes nearer (the nose beside the cheek), the probe's nearest point, and so
-    the shadow's dark core, lies elsewhere by geometry, whatever the mapping does (docs/window.md);
+    geometry), the probe is put --hover-mm above S along the drawn normal m there (its centre at
+    S + (R + h) m), one frame is drawn, and its shadow's core must lie within --fit-px of the
+    pixel. Where a hollow is narrower than the probe (Suzanne's eye sockets, the ear), or another
+    part of the surface comes nearer (the brow over the eye, the cheek beside the nose), the place
+    lies inside that part and the core elsewhere, by geometry, whatever the mapping does
+    (docs/window.md);
   - with --charge-pull-below N: where the scene's [[fields]] charges pull the probe resting on
     the floor (--floor-z) by less than N newtons (their pull moves the drawn probe off the hand,
     by design: fields_bodies_demo);
@@ -162,6 +163,14 @@ def core_centre(intensity):
     return xs.min() + cx.mean() + 0.5, ys.min() + cy.mean() + 0.5
 
 
+def core_offset_px(renderer, centre, x, y):
+    """Pixels from pixel (x, y)'s centre to the core of the shadow of the probe still at `centre`
+    (one frame); inf where no shadow is drawn."""
+    frame = renderer.render(probe=list(centre), velocity=[0.0, 0.0, 0.0], frames=1, aovs=["intensity"])
+    core = core_centre(frame.aovs["intensity"])
+    return np.inf if core is None else float(np.hypot(core[0] - (x + 0.5), core[1] - (y + 0.5)))
+
+
 def probe_fits(scene, renderer, normal, facing, hover_mm, fit_px, step=3):
     """--probe-fits: pixels where the probe hovering hover_mm over the surface point S under it,
     along the drawn normal m there (centre S + (R + h) m, the place the pointer mapping aims for,
@@ -178,9 +187,7 @@ def probe_fits(scene, renderer, normal, facing, hover_mm, fit_px, step=3):
     for y, x in zip(*np.nonzero(tried & np.isfinite(s[..., 0]))):
         m = normal[y, x].astype(np.float64)
         centre = s[y, x] + (radius + hover_mm) * m / np.linalg.norm(m)
-        frame = renderer.render(probe=list(centre), velocity=[0.0, 0.0, 0.0], frames=1, aovs=["intensity"])
-        core = core_centre(frame.aovs["intensity"])
-        if core is not None and np.hypot(core[0] - (x + 0.5), core[1] - (y + 0.5)) <= fit_px:
+        if core_offset_px(renderer, centre, x, y) <= fit_px:
             y0, x0 = y - step // 2, x - step // 2
             fits[max(y0, 0):y0 + step, max(x0, 0):x0 + step] = True
     return fits
@@ -395,7 +402,8 @@ def main():
         crease += f" --probe-fits --hover-mm {a.hover_mm:g} --fit-px {a.fit_px:g}"
     if a.inside_navigation_box:
         crease += f" --inside-navigation-box --floor-z {a.floor_z:g} --box-margin-mm {a.box_margin_mm:g}"
-    print(f"# {a.count} points over the visible surfaces (tools/pointing_points.py --margin {a.margin} "
+    count = f"--count {a.count} " if a.count != 8 else ""
+    print(f"# {a.count} points over the visible surfaces (tools/pointing_points.py {count}--margin {a.margin} "
           f"--min-facing {a.min_facing:g}{crease}{check})")
     # From the window's centre (where the walks rest the pointer first), point to point as a hand
     # moves a mouse, in 0.5 s: a jump across the window in one reading sends the hand's filter
