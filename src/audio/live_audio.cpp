@@ -6,6 +6,7 @@
 
 #include <AL/al.h>
 #include <AL/alc.h>
+#include <AL/alext.h>
 
 #include "audio/quiet_stderr.h"
 #include "audio/track.h"
@@ -17,6 +18,7 @@ struct LiveAudio::Impl {
   LiveAudioDesc desc;
   ALCdevice* device = nullptr;
   ALCcontext* context = nullptr;
+  bool reports_disconnect = false;       // ALC_EXT_disconnect: ALC_CONNECTED can be asked
   std::vector<ALuint> sources, buffers;  // one buffer per source
   std::size_t next_voice = 0;            // round robin when every source is busy
   EventQueue queue;                      // render thread -> audio thread
@@ -46,14 +48,35 @@ struct LiveAudio::Impl {
     if (alGetError() == AL_NO_ERROR) started.fetch_add(1, std::memory_order_relaxed);
   }
 
-  void run(std::atomic<std::uint64_t>& started) {
+  bool connected() const {
+    if (!reports_disconnect) return true;
+    ALCint c = 1;
+    alcGetIntegerv(device, ALC_CONNECTED, 1, &c);
+    return c != 0;
+  }
+
+  // Starts what is queued; once the output is gone, takes it and counts it as not played.
+  void drain(LiveAudio& owner) {
+    if (!owner.lost() && !connected()) {
+      owner.lost_.store(true, std::memory_order_release);
+      owner.say("sound: the audio output '" + owner.device_name_ +
+                "' went away: event sounds stopped until the next session; the rest runs");
+    }
+    if (owner.lost()) {
+      queue.drain([&](const HapticEvent&) { owner.unplayed_.fetch_add(1, std::memory_order_relaxed); });
+      return;
+    }
+    queue.drain([&](const HapticEvent& e) { start_clip(e, owner.started_); });
+  }
+
+  void run(LiveAudio& owner) {
     alcMakeContextCurrent(context);
     for (;;) {
       const std::uint32_t seen = wake.load(std::memory_order_acquire);
-      queue.drain([&](const HapticEvent& e) { start_clip(e, started); });
+      drain(owner);
       if (stop.load(std::memory_order_acquire)) {
         // What play() queued before close() is visible now (stop was stored after it): start it.
-        queue.drain([&](const HapticEvent& e) { start_clip(e, started); });
+        drain(owner);
         break;
       }
       wake.wait(seen, std::memory_order_acquire);  // until play() or the destructor bumps it
@@ -80,6 +103,7 @@ struct LiveAudio::Impl {
 
 std::unique_ptr<LiveAudio> LiveAudio::open(const LiveAudioDesc& desc) {
   std::unique_ptr<LiveAudio> a(new LiveAudio);
+  a->notice_ = desc.notice;
   if (desc.mute) {
     a->warning_ = "sound is off (--mute): the event log and everything else run as usual";
     return a;
@@ -109,10 +133,11 @@ std::unique_ptr<LiveAudio> LiveAudio::open(const LiveAudioDesc& desc) {
   }
   const ALCchar* name = alcGetString(impl->device, ALC_DEVICE_SPECIFIER);
   a->device_name_ = name != nullptr ? name : "";
+  impl->reports_disconnect = alcIsExtensionPresent(impl->device, "ALC_EXT_disconnect") == ALC_TRUE;
   alcMakeContextCurrent(nullptr);  // the audio thread makes it current
   Impl* raw = impl.get();
-  std::atomic<std::uint64_t>& started = a->started_;
-  impl->thread = std::thread([raw, &started] { raw->run(started); });
+  LiveAudio* owner = a.get();  // outlives the thread: close() joins it first
+  impl->thread = std::thread([raw, owner] { raw->run(*owner); });
   a->impl_ = std::move(impl);
   return a;
 }
@@ -129,5 +154,27 @@ void LiveAudio::play(const HapticEvent& e) {
 }
 
 std::uint64_t LiveAudio::dropped() const { return impl_ ? impl_->queue.dropped() : 0; }
+
+void LiveAudio::say(const std::string& line) {
+  {
+    std::lock_guard<std::mutex> lock(notices_mutex_);
+    notices_.push_back(line);
+  }
+  if (notice_) notice_(line);
+  else std::fprintf(stderr, "%s\n", line.c_str());
+}
+
+std::vector<std::string> LiveAudio::notices() const {
+  std::lock_guard<std::mutex> lock(notices_mutex_);
+  return notices_;
+}
+
+std::string LiveAudio::summary() const {
+  if (device_name_.empty()) return "event sounds: off";
+  std::string out = "event sounds: " + std::to_string(started()) + " started on '" + device_name_ + "', " +
+                    std::to_string(dropped()) + " dropped";
+  if (lost()) out += "; the output went away, " + std::to_string(unplayed()) + " not played";
+  return out;
+}
 
 }  // namespace ps::audio

@@ -11,9 +11,10 @@
 #include <unistd.h>
 
 #include <algorithm>
-#include <cassert>
 #include <cerrno>
 #include <cmath>
+#include <cstdio>
+#include <cstdlib>
 
 namespace ps {
 
@@ -24,7 +25,8 @@ struct HapticLoop::Stages {
       : plane(surface), effects(live_charges, coupling_n_per_mm) {}
   // A scene adopted (its first, or one switched to): every stage starts afresh with it.
   void use_scene(const world::HapticScene& scene, bool after_switch) {
-    god.emplace(scene);  // GodObject holds no heap memory: nothing is freed on the haptic thread
+    god.emplace(scene);  // GodObject holds no heap memory (the effects' restart frees and allocates
+                         // their small vectors here, on the haptic thread: glibc allows it)
     proxy = &*god;
     effects.restart(scene, after_switch);
     workspace.restart(&scene);
@@ -51,6 +53,12 @@ HapticLoop::HapticLoop(Device& device, Clock& clock, const HapticLoopParams& par
   stages_ = std::make_unique<Stages>(surface_, live_charges_, params.forces.coupling_n_per_mm);
   if (scene != nullptr) stages_->use_scene(*scene, false);
   clock_.set_wake_spin(std::chrono::microseconds(std::max<std::int64_t>(params.wake_spin_us, 0)));
+}
+
+HapticLoop::HapticLoop(Device& device, Clock& clock, const HapticLoopParams& params,
+                       std::shared_ptr<const world::HapticScene> scene)
+    : HapticLoop(device, clock, params, scene.get()) {
+  scene_owned_ = std::move(scene);  // retired at the switch that replaces it, as any adopted scene
 }
 
 HapticLoop::~HapticLoop() { stop(); }
@@ -224,8 +232,11 @@ void HapticLoop::push_tick_sample(const ForceResult& f, double t, Clock::Ns now)
 }
 
 void HapticLoop::add_tick_feed(TickFeed* feed) {
-  assert(feed != nullptr && tick_feed_count_ < kMaxTickFeeds && "HapticLoop::add_tick_feed: null or too many feeds");
-  assert(!thread_.joinable() && "HapticLoop::add_tick_feed: before start()");
+  // Checked in release builds too: a third feed would be written past tick_feeds_ on every tick.
+  if (feed == nullptr || tick_feed_count_ >= kMaxTickFeeds || thread_.joinable()) {
+    std::fprintf(stderr, "HapticLoop::add_tick_feed: null, more than %zu feeds, or after start()\n", kMaxTickFeeds);
+    std::abort();
+  }
   tick_feeds_[tick_feed_count_++] = feed;
 }
 

@@ -82,6 +82,13 @@ class HapticLoop {
   // the render thread publishes (kept for callers with no scene: the plane-model tests).
   HapticLoop(Device& device, Clock& clock, const HapticLoopParams& params,
              const world::HapticScene* scene = nullptr);
+  // The same with a scene the loop shares: it stays alive while the haptic thread may use it,
+  // whatever the caller drops (released, like every scene replace_scene() drops, by the next
+  // replace_scene() call after the switch, or with the loop). For a caller whose own reference
+  // changes hands while the loop runs (the maze's session core, each pass: a raw pointer there
+  // left the haptic thread ticking on a freed scene until it adopted the next).
+  HapticLoop(Device& device, Clock& clock, const HapticLoopParams& params,
+             std::shared_ptr<const world::HapticScene> scene);
   ~HapticLoop();
   HapticLoop(const HapticLoop&) = delete;
   HapticLoop& operator=(const HapticLoop&) = delete;
@@ -89,7 +96,7 @@ class HapticLoop {
   void set_recorder(SampleRecorder* recorder) { recorder_ = recorder; }  // before start()
   // Before start(): one TickSample per tick pushed into `feed` (not owned; it must outlive the
   // loop), for the vibration signal or the maze's tracker (haptics/tick_feed.h); each feed added
-  // gets every tick, at most kMaxTickFeeds of them (asserted). None by default.
+  // gets every tick, at most kMaxTickFeeds of them (more aborts, with a line). None by default.
   static constexpr std::size_t kMaxTickFeeds = 2;
   void add_tick_feed(TickFeed* feed);
   // Hands the loop a new haptic scene (a live reload, a button's scene switch): any thread, at
@@ -182,7 +189,7 @@ class HapticLoop {
   bool have_fed_ = false;
   std::uint32_t placements_seen_ = 0;  // DeviceSample::placements at the last sample read
   std::unique_ptr<Stages> stages_;
-  std::shared_ptr<const world::HapticScene> scene_owned_;  // after replace_scene()
+  std::shared_ptr<const world::HapticScene> scene_owned_;  // after replace_scene(), or shared at construction
   std::mutex swap_mutex_;  // guards pending_, retired_
   std::shared_ptr<const world::HapticScene> pending_, retired_;
   std::string pending_label_;

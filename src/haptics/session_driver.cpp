@@ -27,11 +27,12 @@ constexpr std::size_t kDriverFeedTicks = 4096;
 }  // namespace
 
 RecordedLoop::RecordedLoop(Device& device, Clock& clock, const HapticLoopParams& params,
-                           const world::HapticScene* scene, const std::string& record_path, std::size_t feed_ticks)
+                           std::shared_ptr<const world::HapticScene> scene, const std::string& record_path,
+                           std::size_t feed_ticks)
     : recording_(!record_path.empty()),
       recorder_(record_path),
       feed_(feed_ticks > 0 ? std::make_unique<TickFeed>(feed_ticks) : nullptr),
-      loop_(device, clock, params, scene) {
+      loop_(device, clock, params, std::move(scene)) {
   if (recording_) loop_.set_recorder(&recorder_);
   if (feed_) loop_.add_tick_feed(feed_.get());
 }
@@ -88,7 +89,10 @@ SessionDriver::SessionDriver(Device& device, const HapticLoopParams& params, con
                              const std::string& record_path, FrameSchedule schedule, DriverHooks hooks)
     : schedule_(schedule),
       hooks_(std::move(hooks)),
-      recorded_(device, clock_, params, scene, record_path, hooks_.on_tick ? kDriverFeedTicks : 0) {}
+      // Not owned (the aliasing constructor with no owner): the driver ticks on its caller's
+      // thread, which keeps the scene for the whole run.
+      recorded_(device, clock_, params, std::shared_ptr<const world::HapticScene>(std::shared_ptr<void>(), scene),
+                record_path, hooks_.on_tick ? kDriverFeedTicks : 0) {}
 
 Result<DriveResult> SessionDriver::run(std::uint64_t ticks, int max_frames) {
   DriveResult out;

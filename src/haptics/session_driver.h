@@ -72,8 +72,9 @@ class RecordedLoop {
  public:
   // `record_path` non-empty: the device stream the loop reads is recorded there. `feed_ticks` > 0:
   // every tick's record goes to a tick feed of that many ticks (feed()), for one consumer to drain.
-  RecordedLoop(Device& device, Clock& clock, const HapticLoopParams& params, const world::HapticScene* scene,
-               const std::string& record_path, std::size_t feed_ticks);
+  // The loop shares `scene` (HapticLoop's shared constructor; null: no haptic scene).
+  RecordedLoop(Device& device, Clock& clock, const HapticLoopParams& params,
+               std::shared_ptr<const world::HapticScene> scene, const std::string& record_path, std::size_t feed_ticks);
   ~RecordedLoop();
   RecordedLoop(const RecordedLoop&) = delete;
   RecordedLoop& operator=(const RecordedLoop&) = delete;

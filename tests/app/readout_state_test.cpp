@@ -5,6 +5,8 @@
 #include <cmath>
 #include <string>
 
+#include <glm/gtc/matrix_transform.hpp>
+
 #include "app/session/free_height.h"
 #include "app/window/readout_state.h"
 #include "app/window/readouts_log.h"
@@ -71,6 +73,18 @@ TEST(ProbeReadoutTest, ContactIsTouchingWithThePressedDepth) {
   EXPECT_EQ(probe_readout(in).state, ProbeState::kTouching);
 }
 
+// The walks' `home` check reads it (tests/window/walk_checks.py): a rolled view left turned by
+// 0.01 degree must read as turned, and a turn is the same angle about any axis. The truth here is
+// glm's own axis-angle rotation, an independent construction.
+TEST(ReadoutsLogTest, ViewTurnIsTheRotationsAngleAboutAnyAxis) {
+  EXPECT_EQ(view_turn_deg(glm::dmat3(1.0)), 0.0);
+  for (const double deg : {0.01, 1.0, 30.0, 90.0, 179.0})
+    for (const glm::dvec3 axis : {glm::dvec3(0, 0, 1), glm::dvec3(1, 0, 0), glm::normalize(glm::dvec3(1, -2, 0.5))}) {
+      const glm::dmat3 r(glm::rotate(glm::dmat4(1.0), glm::radians(deg), axis));
+      EXPECT_NEAR(view_turn_deg(r), deg, 1e-9) << deg << " degrees about " << axis.x << " " << axis.y << " " << axis.z;
+    }
+}
+
 TEST(ReadoutsLogTest, OneJsonLineWithEveryField) {
   ReadoutsFrame f;
   f.frame = 7;
@@ -79,6 +93,7 @@ TEST(ReadoutsLogTest, OneJsonLineWithEveryField) {
   f.probe = {ProbeState::kTouching, 0.0, 1.5};
   f.force_n = 0.75;
   f.view_offset_mm = {0.0, -12.5, 0.0};
+  f.view_turn_deg = 12.5;
   f.hand_mm = {1.0, 2.0, 3.0};
   f.proxy_mm = {1.0, 2.0, 4.5};
   f.button = 2;
@@ -97,7 +112,7 @@ TEST(ReadoutsLogTest, OneJsonLineWithEveryField) {
   EXPECT_EQ(line,
             "{\"frame\": 7, \"t_s\": 1.25, \"scene\": \"panel.toml\", \"state\": \"touching\", \"distance_mm\": 0, "
             "\"pressed_mm\": 1.5, \"penetration_mm\": 0, \"buried_mm\": 0, \"contact\": true, \"force_n\": 0.75, "
-            "\"view_offset_mm\": [0, -12.5, 0], \"hand_mm\": [1, 2, 3], \"proxy_mm\": [1, 2, 4.5], "
+            "\"view_offset_mm\": [0, -12.5, 0], \"view_turn_deg\": 12.5, \"hand_mm\": [1, 2, 3], \"proxy_mm\": [1, 2, 4.5], "
             "\"button\": {\"index\": 2, \"depth_mm\": 2.9, \"travel_mm\": 3}, \"flags\": [\"light\"], \"keys\": 3, "
             "\"haptic_hz\": 999.5, \"jitter_p99_us\": 12.25, \"dent_mm\": 2.5, \"pointer_px\": [256.5, 100], "
             "\"shadow_px\": [255, 102.25], \"surface_scale\": 0.5, \"view_moved\": true}");

@@ -5,6 +5,9 @@
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <mutex>
+#include <thread>
+#include <vector>
 
 #include <nlohmann/json.hpp>
 
@@ -145,6 +148,49 @@ TEST(LiveAudioTest, NullDevicePlaysEveryQueuedEvent) {
   a->close();  // starts what is queued, then joins the audio thread
   EXPECT_EQ(a->started() + a->dropped(), 20u);
   EXPECT_EQ(a->dropped(), 0u) << "20 events fit the 256-event queue";
+}
+
+// The output going away while the event sounds run (a USB card unplugged, the sound server
+// ended): OpenAL Soft's wave writer on /dev/full, where every write fails (ENOSPC). The device
+// opens, then OpenAL reports it disconnected (ALC_EXT_disconnect) at its first mix, as for a card
+// that goes away. One notice; the events after it are taken and counted as not played (none
+// waits, none is lost from the count); play() never blocks.
+TEST(LiveAudioTest, OutputGoneIsOneNoticeAndTheEventsAreCountedNotPlayed) {
+  const std::filesystem::path conf = std::filesystem::temp_directory_path() / "ps_live_audio_full.conf";
+  std::ofstream(conf) << "drivers = wave\n[wave]\nfile = /dev/full\n";
+  setenv("ALSOFT_CONF", conf.c_str(), 1);
+  unsetenv("ALSOFT_DRIVERS");
+  audio::LiveAudioDesc desc;
+  std::mutex m;
+  std::vector<std::string> said;
+  desc.notice = [&](const std::string& line) {
+    std::lock_guard<std::mutex> lock(m);
+    said.push_back(line);
+  };
+  auto a = audio::LiveAudio::open(desc);
+  unsetenv("ALSOFT_CONF");
+  ASSERT_TRUE(a->active()) << a->warning();
+  // The mixer's first write fails within a period (OpenAL Soft's default: 20 ms): events go on
+  // coming until the audio thread has seen it (at most 3 s), then 10 more.
+  std::uint64_t sent = 0;
+  for (; sent < 600 && !a->lost(); ++sent) {
+    a->play(make(EventKind::contact_start, sent, 100.0));
+    std::this_thread::sleep_for(std::chrono::milliseconds(5));
+  }
+  ASSERT_TRUE(a->lost()) << "OpenAL never reported the wave writer on /dev/full disconnected";
+  for (int i = 0; i < 10; ++i, ++sent) a->play(make(EventKind::body_impact, sent, 100.0));
+  a->close();
+  const std::vector<std::string> notices = a->notices();
+  ASSERT_EQ(notices.size(), 1u) << a->summary();
+  EXPECT_NE(notices[0].find("audio output"), std::string::npos) << notices[0];
+  EXPECT_NE(notices[0].find("went away"), std::string::npos) << notices[0];
+  EXPECT_EQ(said, notices);
+  EXPECT_EQ(a->started() + a->unplayed() + a->dropped(), sent) << "every event accounted for";
+  EXPECT_GE(a->unplayed(), 10u) << "nothing is started once the device is gone";
+  EXPECT_NE(a->summary().find("the output went away, " + std::to_string(a->unplayed()) + " not played"),
+            std::string::npos)
+      << a->summary();
+  std::filesystem::remove(conf);
 }
 
 }  // namespace

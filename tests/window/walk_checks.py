@@ -12,6 +12,10 @@ PENETRATION_TOL_MM = 0.25
 # View drift allowed while the pointer rests, mm: a resting view does not move at all; 0.5 mm
 # is under one pixel of every shipped scene's camera.
 DRIFT_TOL_MM = 0.5
+# The same for the turn a rolling 4D surface gives the view (view_turn_deg), degrees: 0.1 degree
+# moves the rolling flat torus's camera target (150 mm away) by 0.26 mm, inside DRIFT_TOL_MM.
+# Logs written before the field existed read as unturned.
+TURN_TOL_DEG = 0.1
 # Depth a hovering hand may graze a surface, mm: the mouse is read once a frame (4-30 frames a
 # second on llvmpipe) and the hand's filter coasts between readings, on a straight line that cuts
 # under a curved surface the pointer sweeps over; half the 1 mm hover height.
@@ -76,6 +80,11 @@ def check_step(step, frames, report):
         report["max_rest_drift_mm"] = max(report["max_rest_drift_mm"], drift)
         if drift > DRIFT_TOL_MM:
             out.append(f"{where}: the view drifted {drift:.2f} mm while the pointer rested")
+        # The turn's angle alone: a view turning on at rest changes it (a turn that kept its angle
+        # while changing its axis would pass; no rolling view does that at rest).
+        turned = abs(rest[-1].get("view_turn_deg", 0.0) - rest[0].get("view_turn_deg", 0.0))
+        if turned > TURN_TOL_DEG:
+            out.append(f"{where}: the view turned {turned:.2f} degrees while the pointer rested")
     if step["scene"] is not None and os.path.basename(frames[-1]["scene"]) != step["scene"]:
         out.append(f"{where}: scene {frames[-1]['scene']} at frame {frames[-1]['frame']}, expected {step['scene']}")
     if step["switches"] is not None:
@@ -91,6 +100,9 @@ def check_step(step, frames, report):
         off = sum(x * x for x in frames[-1]["view_offset_mm"]) ** 0.5
         if off > DRIFT_TOL_MM:
             out.append(f"{where}: the view is {off:.2f} mm from home at frame {frames[-1]['frame']}")
+        turn = frames[-1].get("view_turn_deg", 0.0)
+        if turn > TURN_TOL_DEG:
+            out.append(f"{where}: the view is turned {turn:.2f} degrees from home at frame {frames[-1]['frame']}")
     if step["dent_min"] is not None:
         deepest = max((f.get("dent_mm") or 0.0) for f in frames)
         report["max_dent_mm"] = max(report.get("max_dent_mm", 0.0), deepest)

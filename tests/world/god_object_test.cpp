@@ -8,6 +8,7 @@
 #include <filesystem>
 #include <fstream>
 #include <functional>
+#include <memory>
 
 #include "devices/sample_log.h"
 #include "haptics/haptic_loop.h"
@@ -285,6 +286,34 @@ TEST(HapticLoopSceneTest, ReplacedSceneIsAdoptedAtTheNextTickWithAnEvent) {
   EXPECT_TRUE(st.in_contact);
   EXPECT_NEAR(st.proxy_mm.z, 13.0, kBehindTolMm);
   EXPECT_NEAR(st.force_n.z, 7.2, 1e-2);
+}
+
+// A scene the loop shares from its construction (the maze's live pass: its session core drops its
+// own reference at a pass's end, before the haptic thread has adopted the next pass's scene) is
+// kept while the loop may tick in it, and released as every replaced scene is: by the next
+// replace_scene() call, on the caller's thread, never on the haptic thread. Given as a raw
+// pointer, the first pass's scene was freed while the haptic thread still ticked in it.
+TEST(HapticLoopSceneTest, ASharedSceneLivesUntilTheSwitchAfterTheOneThatReplacedIt) {
+  Surface floor = test::analytic(SurfaceType::kPlane);
+  floor.size_mm = {200.0, 200.0};
+  auto built = HapticScene::build(test::scene_with(8.0, {floor}));
+  auto second = HapticScene::build(test::scene_with(8.0, {floor}));
+  auto third = HapticScene::build(test::scene_with(8.0, {floor}));
+  ASSERT_TRUE(built && second && third);
+  auto first = std::make_shared<const HapticScene>(std::move(built.value()));
+  const std::weak_ptr<const HapticScene> watch = first;
+  LogDevice device({{0.0, {0, 0, 9}, 0, true}, {1.0, {0, 0, 9}, 0, true}}, false, "hover");
+  FakeClock clock;
+  HapticLoop loop(device, clock, HapticLoopParams{}, std::move(first));  // the caller keeps none
+  loop.run_ticks(10);
+  EXPECT_FALSE(watch.expired()) << "the loop ticks in it";
+  loop.replace_scene(std::make_shared<const HapticScene>(std::move(second.value())), "second");
+  EXPECT_FALSE(watch.expired()) << "in use until the next tick adopts the second scene";
+  loop.run_ticks(10);
+  EXPECT_EQ(loop.state().read().scene_serial, 1u) << "the second scene adopted";
+  EXPECT_FALSE(watch.expired()) << "never released on the haptic thread";
+  loop.replace_scene(std::make_shared<const HapticScene>(std::move(third.value())), "third");
+  EXPECT_TRUE(watch.expired()) << "released by the next replace_scene(), on the caller's thread";
 }
 
 // A scene switch with a placement (run's mouse, issue 27): the hand hovered 1 mm over a floor at

@@ -13,6 +13,7 @@
 #include "app/window/live_window.h"
 #include "core/file_io.h"
 #include "gl/gl.h"
+#include "haptics/live_heap.h"
 #include "render/renderer.h"
 
 namespace ps {
@@ -175,6 +176,10 @@ Status run_trials(LiveWindow& win, calibrate::Calibration& cal, const CalibrateW
 }  // namespace
 
 Status run_calibrate_window(calibrate::Calibration& cal, const CalibrateWindowParams& p) {
+  // Of the live commands' set-up (cli::apply_live_loop) only the heap's: a calibration runs for
+  // tens of minutes. It has no haptic thread, so no CPU is left spare for one and llvmpipe keeps
+  // every core for the two stimuli.
+  keep_large_blocks_mapped();
   auto win = LiveWindow::open({2 * kSide, kSide, "pseudoshadow calibrate"});
   if (!win) return win.error();
   const Scene s = stimulus_scene(p.scene, p.material);

@@ -305,6 +305,7 @@ int run(const cli::Command& cmd, const RunArgs& a) {
     return cmd.fail(st.error());
   if (!a.quiet) run_live::print_summary(*h.loop(), s.readouts);
   if (!a.quiet && h.vibration->active()) std::printf("%s\n", h.vibration->summary().c_str());
+  if (!a.quiet && h.events->warning().empty()) std::printf("%s\n", h.events->audio().summary().c_str());
   return stop.requested() ? report_stop(a, stop) : cli::kExitOk;
 }
 

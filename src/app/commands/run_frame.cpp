@@ -101,6 +101,7 @@ ReadoutsFrame readouts_frame(const Renderer& renderer, const HapticState& st, co
   f.penetration_mm = r.penetration_mm;
   f.force_n = r.force_n;
   f.view_offset_mm = st.view_offset_mm;
+  f.view_turn_deg = view_turn_deg(st.view_rotation);
   f.hand_mm = st.position_mm;
   f.proxy_mm = st.proxy_mm;
   f.button = r.button;
@@ -229,7 +230,7 @@ Status open_haptics(const RunArgs& a, const LiveWindow& win, const Renderer& r, 
   h.floor.set_scene(h.scene);  // the first sample already hovers over what is under the pointer
   // The loop with the device stream's recording (--record; flushed once a second by a thread of
   // its own, frames or not: start_flushing).
-  h.recorded = std::make_unique<RecordedLoop>(win.device(), h.clock, params, h.scene.get(), a.record, 0);
+  h.recorded = std::make_unique<RecordedLoop>(win.device(), h.clock, params, h.scene, a.record, 0);
   fit_height_to_buttons(win, h, *h.scene);
   h.vibration = cli::open_live_vibration(a.live, r.scene(), *h.loop());
   if (win.input() || win.pointer()) {  // they move over the plane: distance known from the start

@@ -37,14 +37,23 @@ constexpr const char* kPracticeOver =
 // vibration. Built before the pass starts (run_pass).
 struct LivePass {
   SteadyClock clock;
+  // The loop shares the pass's first scene: at the pass's end the core drops its own reference
+  // to it before the loop has adopted the next, while the haptic thread still ticks in it.
   RecordedLoop haptics;
-  // Destroyed before the loop that feeds it: both are stopped first (end_pass).
+  // Fed by the loop: destroyed before it, so the destructor stops the loop first (end_pass
+  // does too; this covers a pass left by an error or an exception).
   std::unique_ptr<vibration::LiveVibration> vib;
   // Why the pass ended (session_end's reason unless the tracker ended it: criterion, max_passes).
   maze::EndReason reason = maze::EndReason::kQuit;
   LivePass(Window& w, const maze::SessionOptions& o, const maze::SessionCore& core, const cli::LiveLoopArgs& live)
-      : haptics(w.live->device(), clock, o.haptics, core.haptic().get(), o.record_path, kTrackFeedTicks),
+      : haptics(w.live->device(), clock, o.haptics, core.haptic(), o.record_path, kTrackFeedTicks),
         vib(cli::open_live_vibration(live, core.scene().scene, haptics.loop())) {}
+  ~LivePass() {
+    haptics.loop().stop();
+    if (vib) vib->close();
+  }
+  LivePass(const LivePass&) = delete;
+  LivePass& operator=(const LivePass&) = delete;
   HapticLoop& loop() { return haptics.loop(); }
   TickFeed& ticks() { return *haptics.feed(); }
 };

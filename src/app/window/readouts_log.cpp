@@ -34,6 +34,13 @@ std::string str(const std::string& s) {
 
 }  // namespace
 
+double view_turn_deg(const glm::dmat3& r) {
+  // glm is column-major: r[c][row]. 2 sin(angle) = |(r32 - r23, r13 - r31, r21 - r12)|.
+  const glm::dvec3 twice_sin_axis(r[1][2] - r[2][1], r[2][0] - r[0][2], r[0][1] - r[1][0]);
+  const double c = 0.5 * (r[0][0] + r[1][1] + r[2][2] - 1.0);
+  return glm::degrees(std::atan2(0.5 * glm::length(twice_sin_axis), c));
+}
+
 std::string readouts_json_line(const ReadoutsFrame& f) {
   const ProbeReadout& p = f.probe;
   std::string distance = "null";
@@ -53,7 +60,8 @@ std::string readouts_json_line(const ReadoutsFrame& f) {
          ", \"state\": " + str(probe_state_name(p.state)) + ", \"distance_mm\": " + distance +
          ", \"pressed_mm\": " + num(p.pressed_mm) + ", \"penetration_mm\": " + num(f.penetration_mm) + ", \"buried_mm\": " + num(f.buried_mm) +
          ", \"contact\": " + (p.state == ProbeState::kTouching ? "true" : "false") + ", \"force_n\": " + num(f.force_n) +
-         ", \"view_offset_mm\": " + vec(f.view_offset_mm) + ", \"hand_mm\": " + vec(f.hand_mm) +
+         ", \"view_offset_mm\": " + vec(f.view_offset_mm) + ", \"view_turn_deg\": " + num(f.view_turn_deg) +
+         ", \"hand_mm\": " + vec(f.hand_mm) +
          ", \"proxy_mm\": " + vec(f.proxy_mm) + ", \"button\": " + button + ", \"flags\": " + flags +
          ", \"keys\": " + std::to_string(f.keys) +
          ", \"haptic_hz\": " + num(f.haptic_hz) + ", \"jitter_p99_us\": " + num(f.jitter_p99_us) +

@@ -2,7 +2,8 @@
 // state machine, app/window/readout_state.h) and the positions behind it, for experimenters and for the
 // window tests (tests/window). Fields (docs/window.md, "run --readouts-log"): frame, t_s, scene,
 // state, distance_mm (null out of reach, 0 touching), pressed_mm, penetration_mm, buried_mm, contact,
-// force_n, view_offset_mm, hand_mm, proxy_mm, button ({index, depth_mm, travel_mm} or null),
+// force_n, view_offset_mm, view_turn_deg (how far a rolling 4D surface has turned the view from
+// where the scene started: 0 for every other scene), hand_mm, proxy_mm, button ({index, depth_mm, travel_mm} or null),
 // flags (names on, or null when the scene has none), keys (key presses handled this frame),
 // haptic_hz and jitter_p99_us (the haptic loop over the last second: what tools/soak.sh follows),
 // dent_mm (the deepest dent of a deformable surface as drawn; null when the scene has none),
@@ -38,6 +39,7 @@ struct ReadoutsFrame {
   double buried_mm = 0.0;
   double force_n = 0.0;             // |force on the hand|
   glm::dvec3 view_offset_mm{0.0}, hand_mm{0.0}, proxy_mm{0.0};
+  double view_turn_deg = 0.0;       // view_turn_deg(HapticState::view_rotation)
   int button = -1;                  // pressed button (-1: none), its depth and travel
   double button_depth_mm = 0.0, button_travel_mm = 0.0;
   std::optional<std::vector<std::string>> flags;  // the flags on; none: the scene has no flags
@@ -49,6 +51,11 @@ struct ReadoutsFrame {
   double surface_scale = 1.0;       // FrameStats::surface_scale
   bool view_moved = false;          // FrameStats::view_moved
 };
+
+// The angle of the rotation `r`, degrees (0 at identity, up to 180), from its sine (the
+// antisymmetric part) and cosine (the trace) together: exact near 0, where acos of the trace
+// alone loses half the digits.
+double view_turn_deg(const glm::dmat3& r);
 
 // The frame as one JSON line (no newline); numbers with up to 4 decimals (0.1 um: far below any
 // tolerance a reader would use).
