@@ -3,13 +3,19 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <filesystem>
+#include <optional>
 #include <string>
+#include <vector>
 
 #include <glm/gtc/matrix_transform.hpp>
+#include <nlohmann/json.hpp>
 
 #include "app/session/free_height.h"
 #include "app/window/readout_state.h"
 #include "app/window/readouts_log.h"
+#include "app/window/ui_layout.h"
+#include "core/file_io.h"
 #include "scene/scene_io.h"
 #include "support/felt.h"
 #include "world/haptic_scene.h"
@@ -83,6 +89,50 @@ TEST(ReadoutsLogTest, ViewTurnIsTheRotationsAngleAboutAnyAxis) {
       const glm::dmat3 r(glm::rotate(glm::dmat4(1.0), glm::radians(deg), axis));
       EXPECT_NEAR(view_turn_deg(r), deg, 1e-9) << deg << " degrees about " << axis.x << " " << axis.y << " " << axis.z;
     }
+}
+
+// --ui-report streamed (UiReportLog): 5000 frames, several 64 KiB blocks, publish the same bytes
+// as the whole report made at once (ui_report_json), and the file is valid JSON with every frame;
+// a log destroyed unclosed (a failed run) publishes nothing. Memory no longer grows with the run.
+TEST(UiReportLogTest, StreamedReportIsTheWholeReportAndAFailedRunLeavesNone) {
+  const std::filesystem::path dir = std::filesystem::temp_directory_path() / "ps_ui_report_log";
+  std::filesystem::remove_all(dir);
+  std::filesystem::create_directories(dir);
+  std::vector<UiFrameReport> frames;
+  for (std::uint64_t i = 0; i < 5000; ++i) {
+    UiFrameReport f;
+    f.frame = i;
+    if (i % 3) f.shadow = UiRect{1.0f * i, 2, 3, 4};
+    f.hud = UiRect::at(6, 6, 10.5f, 20);
+    f.buttons.assign(i % 5, UiRect{10, 20, 30, 40});
+    frames.push_back(f);
+  }
+  const std::string path = (dir / "ui.json").string();
+  {
+    UiReportLog log;
+    ASSERT_TRUE(log.open(path));
+    for (const UiFrameReport& f : frames) log.add(f);
+    EXPECT_FALSE(std::filesystem::exists(path)) << "published only at close";
+    ASSERT_TRUE(log.close(640, 480));
+    EXPECT_EQ(log.frames(), 5000u);
+  }
+  const std::optional<std::string> got = read_whole_file(path);
+  ASSERT_TRUE(got);
+  EXPECT_EQ(*got, ui_report_json(640, 480, frames));
+  const nlohmann::json j = nlohmann::json::parse(*got);
+  EXPECT_EQ(j["frames"].size(), 5000u);
+  EXPECT_EQ(j["window"], nlohmann::json::array({640, 480}));
+  EXPECT_EQ(j["frames"][4999]["buttons"].size(), 4u);
+  const std::string failed = (dir / "failed.json").string();
+  {
+    UiReportLog log;
+    ASSERT_TRUE(log.open(failed));
+    for (const UiFrameReport& f : frames) log.add(f);
+  }
+  EXPECT_FALSE(std::filesystem::exists(failed));
+  EXPECT_EQ(std::distance(std::filesystem::directory_iterator(dir), std::filesystem::directory_iterator{}), 1)
+      << "no hidden file left beside it";
+  std::filesystem::remove_all(dir);
 }
 
 TEST(ReadoutsLogTest, OneJsonLineWithEveryField) {

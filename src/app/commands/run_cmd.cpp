@@ -68,8 +68,8 @@ void declare_outputs(CLI::App& app, RunArgs& a) {
   app.add_option("--audio-device", a.events.audio.device, "OpenAL output device (default: the system's default)")
       ->type_name("NAME");
   cli::add_output(app, "--ui-report", a.ui_report, "FILE",
-                  "at exit, write JSON with every frame's overlay, help and panel rectangles and the "
-                  "pseudo-shadow's bounding box, in window pixels");
+                  "write JSON with every frame's overlay, help and panel rectangles and the "
+                  "pseudo-shadow's bounding box, in window pixels (streamed; FILE appears at exit)");
   cli::add_output(app, "--readouts-log", a.readouts_log, "FILE",
                   "write one JSON line per frame: what the readouts say (state, distance, pressed depth, "
                   "force), hand, proxy, view offset, button, flags, key presses (docs/window.md)");
@@ -237,7 +237,7 @@ Status window_loop(const RunArgs& a, RunState& s, const cli::StopSignals& stop) 
 }
 
 // At exit: --stats (the renderer's last frame) and --ui-report (every frame's rectangles).
-Status write_reports(const RunArgs& a, const run_live::WindowIo& io, const Renderer& r, std::size_t frames) {
+Status write_reports(const RunArgs& a, run_live::WindowIo& io, const Renderer& r, std::size_t frames) {
   if (!a.stats_path.empty()) {
     const gl::Context& ctx = io.window->context();
     const std::string json = stats_json(r.stats(), gl::backend_name(ctx.backend()), ctx.egl_device(), ctx.renderer(),
@@ -246,7 +246,7 @@ Status write_reports(const RunArgs& a, const run_live::WindowIo& io, const Rende
   }
   if (!a.ui_report.empty()) {
     const glm::ivec2 size = io.window->window_size();
-    if (Status st = write_file_atomic(a.ui_report, ui_report_json(size.x, size.y, io.ui_frames)); !st) return st;
+    if (Status st = io.ui_report.close(size.x, size.y); !st) return st;
   }
   return ok_status();
 }
@@ -288,6 +288,8 @@ int run(const cli::Command& cmd, const RunArgs& a) {
   if (Status st = open_events(a, h, s.trail, s.tune); !st) return cmd.fail(st.error());
   if (!a.readouts_log.empty())
     if (Status st = s.readouts.log.open(a.readouts_log); !st) return cmd.fail(st.error());
+  if (!a.ui_report.empty())
+    if (Status st = s.io.ui_report.open(a.ui_report); !st) return cmd.fail(st.error());
   h.loop()->start();
   h.recorded->start_flushing();  // the recording, once a second, frames or not
   h.vibration->start();

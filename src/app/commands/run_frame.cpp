@@ -55,8 +55,7 @@ void scene_readouts(const Scene& sc, const HapticState& st, HudReadouts& r) {
     }
   // A rolling fourd surface: the angle the view has turned from the scene's (docs/fourd.md).
   if (std::any_of(sc.surfaces.begin(), sc.surfaces.end(), [](const Surface& x) { return x.fourd.roll.on; })) {
-    const glm::dmat3& m = st.view_rotation;
-    r.rolled_deg = glm::degrees(std::acos(std::clamp(0.5 * (m[0][0] + m[1][1] + m[2][2] - 1.0), -1.0, 1.0)));
+    r.rolled_deg = view_turn_deg(st.view_rotation);  // the readouts log's view_turn_deg
   }
 }
 
@@ -316,7 +315,7 @@ void draw_overlays(const RunArgs& a, WindowIo& io, TuneSession& tune, const HudR
                                        static_cast<float>(size.x), static_cast<float>(size.y));
   UiFrameReport report = io.ui->draw(shown, shadow, tune, now_s, buttons);
   report.frame = frame;
-  if (!a.ui_report.empty()) io.ui_frames.push_back(report);
+  if (!a.ui_report.empty()) io.ui_report.add(report);
 }
 
 }  // namespace ps::run_live

@@ -53,7 +53,7 @@ struct WindowIo {
   std::unique_ptr<WindowUi> ui;        // readouts, help, parameter panel (one ImGui frame)
   WindowInput input;
   int screenshots_saved = 0;             // numbers the next screenshot_NNNN.png
-  std::vector<UiFrameReport> ui_frames;  // --ui-report
+  UiReportLog ui_report;                 // --ui-report, streamed
 };
 
 // The render thread's side of the haptic loop: the haptic scene it feels, the surface under the

@@ -71,6 +71,42 @@ std::string readouts_json_line(const ReadoutsFrame& f) {
          "}";
 }
 
+Status UiReportLog::open(const std::string& path) {
+  if (Status st = prepare_output_dir(path); !st) return make_error("--ui-report: " + st.error().message);
+  auto f = TempFile::create(path);
+  if (!f) return make_error("--ui-report: " + f.error().message);
+  file_.emplace(std::move(f.value()));
+  pending_ = kUiReportHead;
+  frames_ = 0;
+  failed_ = ok_status();
+  return ok_status();
+}
+
+void UiReportLog::add(const UiFrameReport& f) {
+  if (!file_ || !failed_) return;
+  pending_ += (frames_++ ? ",\n    " : "\n    ") + ui_frame_json(f);
+  if (pending_.size() >= kBlockBytes) failed_ = flush();
+}
+
+Status UiReportLog::flush() {
+  Status st = file_->write(pending_);
+  pending_.clear();
+  if (!st) return make_error("--ui-report: writing '" + file_->target() + "' failed: " + st.error().message);
+  return ok_status();
+}
+
+Status UiReportLog::close(int window_w, int window_h) {
+  if (!file_) return ok_status();
+  Status st = failed_;
+  if (st) {
+    pending_ += ui_report_tail(window_w, window_h);
+    st = flush();
+  }
+  if (st) st = file_->publish();
+  file_.reset();  // unpublished: removed
+  return st;
+}
+
 ReadoutsLog::~ReadoutsLog() { (void)close(); }
 
 Status ReadoutsLog::open(const std::string& path) {

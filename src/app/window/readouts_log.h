@@ -22,6 +22,8 @@
 #include <glm/glm.hpp>
 
 #include "app/window/readout_state.h"
+#include "app/window/ui_layout.h"
+#include "core/file_io.h"
 #include "core/result.h"
 
 namespace ps {
@@ -60,6 +62,29 @@ double view_turn_deg(const glm::dmat3& r);
 // The frame as one JSON line (no newline); numbers with up to 4 decimals (0.1 um: far below any
 // tolerance a reader would use).
 std::string readouts_json_line(const ReadoutsFrame& f);
+
+// `run --ui-report FILE`: every frame's UI rectangles (app/window/ui_layout.h), streamed to a
+// hidden file beside FILE as the frames come and published as FILE at close(), with the window's
+// size: the same bytes as ui_report_json of the whole run, FILE whole or absent. Held in memory
+// instead, an hour at 30 frames a second was 27 MiB (about 250 bytes a frame: the tour soak's
+// RSS grew by it, docs/hardening.md). A write error is kept and returned by close(); the frames
+// after it are dropped. Destroyed unclosed (a failed run), nothing is published.
+class UiReportLog {
+ public:
+  Status open(const std::string& path);
+  bool is_open() const { return file_.has_value(); }
+  void add(const UiFrameReport& f);
+  Status close(int window_w, int window_h);
+  std::uint64_t frames() const { return frames_; }
+
+ private:
+  Status flush();
+  std::optional<TempFile> file_;
+  std::string pending_;  // written in blocks of kBlockBytes
+  std::uint64_t frames_ = 0;
+  Status failed_ = ok_status();
+  static constexpr std::size_t kBlockBytes = 64 * 1024;
+};
 
 class ReadoutsLog {
  public:

@@ -260,28 +260,30 @@ UiLayout layout_ui(const UiLayoutInput& in) {
   return out;
 }
 
-std::string ui_report_json(int window_w, int window_h, const std::vector<UiFrameReport>& frames) {
-  std::string out = "{\n  \"window\": [" + std::to_string(window_w) + ", " + std::to_string(window_h) +
-                    "],\n  \"frames\": [";
-  for (size_t i = 0; i < frames.size(); ++i) {
-    const UiFrameReport& f = frames[i];
-    out += (i ? ",\n    " : "\n    ");
-    out += "{\"frame\": " + std::to_string(f.frame);
-    append_rect(out, "shadow", f.shadow);
-    append_rect(out, "hud", f.hud);
-    append_rect(out, "help", f.help);
-    append_rect(out, "panel", f.panel);
-    out += ", \"buttons\": [";
-    for (size_t b = 0; b < f.buttons.size(); ++b) {
-      char buf[96];
-      const UiRect& r = f.buttons[b];
-      std::snprintf(buf, sizeof buf, "%s[%.1f, %.1f, %.1f, %.1f]", b ? ", " : "", r.x0, r.y0, r.x1, r.y1);
-      out += buf;
-    }
-    out += "]}";
+std::string ui_frame_json(const UiFrameReport& f) {
+  std::string out = "{\"frame\": " + std::to_string(f.frame);
+  append_rect(out, "shadow", f.shadow);
+  append_rect(out, "hud", f.hud);
+  append_rect(out, "help", f.help);
+  append_rect(out, "panel", f.panel);
+  out += ", \"buttons\": [";
+  for (size_t b = 0; b < f.buttons.size(); ++b) {
+    char buf[96];
+    const UiRect& r = f.buttons[b];
+    std::snprintf(buf, sizeof buf, "%s[%.1f, %.1f, %.1f, %.1f]", b ? ", " : "", r.x0, r.y0, r.x1, r.y1);
+    out += buf;
   }
-  out += "\n  ]\n}\n";
-  return out;
+  return out + "]}";
+}
+
+std::string ui_report_tail(int window_w, int window_h) {
+  return "\n  ],\n  \"window\": [" + std::to_string(window_w) + ", " + std::to_string(window_h) + "]\n}\n";
+}
+
+std::string ui_report_json(int window_w, int window_h, const std::vector<UiFrameReport>& frames) {
+  std::string out = kUiReportHead;
+  for (size_t i = 0; i < frames.size(); ++i) out += (i ? ",\n    " : "\n    ") + ui_frame_json(frames[i]);
+  return out + ui_report_tail(window_w, window_h);
 }
 
 }  // namespace ps

@@ -136,8 +136,13 @@ struct UiFrameReport {
   std::optional<UiRect> shadow, hud, help, panel;
   std::vector<UiRect> buttons;  // the scene's buttons on screen (app/window/button_overlay.h)
 };
-// {"window": [w, h], "frames": [{"frame": 0, "shadow": [x0, y0, x1, y1] or null, "hud": ...,
-//  "help": ..., "panel": ..., "buttons": [[x0, y0, x1, y1], ...]}, ...]}
+// {"frames": [{"frame": 0, "shadow": [x0, y0, x1, y1] or null, "hud": ..., "help": ...,
+//  "panel": ..., "buttons": [[x0, y0, x1, y1], ...]}, ...], "window": [w, h]} (the window's size
+// last: a streamed report, app/window/readouts_log.h UiReportLog, knows it only at the end).
 std::string ui_report_json(int window_w, int window_h, const std::vector<UiFrameReport>& frames);
+// Its pieces: the text before the first frame, one frame's object, the text after the last.
+inline constexpr const char* kUiReportHead = "{\n  \"frames\": [";
+std::string ui_frame_json(const UiFrameReport& f);
+std::string ui_report_tail(int window_w, int window_h);
 
 }  // namespace ps
