@@ -84,7 +84,7 @@ Status UiReportLog::open(const std::string& path) {
 
 void UiReportLog::add(const UiFrameReport& f) {
   if (!file_ || !failed_) return;
-  pending_ += (frames_++ ? ",\n    " : "\n    ") + ui_frame_json(f);
+  append_ui_frame(pending_, frames_++, f);
   if (pending_.size() >= kBlockBytes) failed_ = flush();
 }
 

@@ -72,7 +72,6 @@ std::string readouts_json_line(const ReadoutsFrame& f);
 class UiReportLog {
  public:
   Status open(const std::string& path);
-  bool is_open() const { return file_.has_value(); }
   void add(const UiFrameReport& f);
   Status close(int window_w, int window_h);
   std::uint64_t frames() const { return frames_; }

@@ -260,8 +260,9 @@ UiLayout layout_ui(const UiLayoutInput& in) {
   return out;
 }
 
-std::string ui_frame_json(const UiFrameReport& f) {
-  std::string out = "{\"frame\": " + std::to_string(f.frame);
+void append_ui_frame(std::string& out, std::uint64_t index, const UiFrameReport& f) {
+  out += index ? ",\n    " : "\n    ";
+  out += "{\"frame\": " + std::to_string(f.frame);
   append_rect(out, "shadow", f.shadow);
   append_rect(out, "hud", f.hud);
   append_rect(out, "help", f.help);
@@ -273,7 +274,7 @@ std::string ui_frame_json(const UiFrameReport& f) {
     std::snprintf(buf, sizeof buf, "%s[%.1f, %.1f, %.1f, %.1f]", b ? ", " : "", r.x0, r.y0, r.x1, r.y1);
     out += buf;
   }
-  return out + "]}";
+  out += "]}";
 }
 
 std::string ui_report_tail(int window_w, int window_h) {
@@ -282,7 +283,7 @@ std::string ui_report_tail(int window_w, int window_h) {
 
 std::string ui_report_json(int window_w, int window_h, const std::vector<UiFrameReport>& frames) {
   std::string out = kUiReportHead;
-  for (size_t i = 0; i < frames.size(); ++i) out += (i ? ",\n    " : "\n    ") + ui_frame_json(frames[i]);
+  for (size_t i = 0; i < frames.size(); ++i) append_ui_frame(out, i, frames[i]);
   return out + ui_report_tail(window_w, window_h);
 }
 

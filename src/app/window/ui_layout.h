@@ -140,9 +140,10 @@ struct UiFrameReport {
 //  "panel": ..., "buttons": [[x0, y0, x1, y1], ...]}, ...], "window": [w, h]} (the window's size
 // last: a streamed report, app/window/readouts_log.h UiReportLog, knows it only at the end).
 std::string ui_report_json(int window_w, int window_h, const std::vector<UiFrameReport>& frames);
-// Its pieces: the text before the first frame, one frame's object, the text after the last.
+// Its pieces: the text before the first frame, the frame numbered `index` (from 0) appended with
+// the separator before it, the text after the last.
 inline constexpr const char* kUiReportHead = "{\n  \"frames\": [";
-std::string ui_frame_json(const UiFrameReport& f);
+void append_ui_frame(std::string& out, std::uint64_t index, const UiFrameReport& f);
 std::string ui_report_tail(int window_w, int window_h);
 
 }  // namespace ps
