@@ -77,6 +77,25 @@ TEST(ProbeReadoutTest, ContactIsTouchingWithThePressedDepth) {
   EXPECT_EQ(probe_distance_text(r), "touching");
   in.distance_mm = 4.0;  // a stale shadow distance does not outvote the contact
   EXPECT_EQ(probe_readout(in).state, ProbeState::kTouching);
+  EXPECT_DOUBLE_EQ(probe_readout(in).held_mm, 3.0) << "no field: the surface holds all of it";
+}
+
+// Field's floor under a repelling charge: the charge pushes the hovering proxy 1.14 mm down (0.57 N
+// through the 0.5 N/mm coupling) onto the floor, 1 mm below the hand. In contact and pressed
+// 1.14 mm from the hand, but the floor holds only what the field does not explain (0.14 mm): the
+// hand pushed nothing in. The hand pushed 2 mm further holds 2.14.
+TEST(ProbeReadoutTest, AFieldsPushIsPressedButNotHeld) {
+  ProbeReadoutInput in;
+  in.in_contact = true;
+  in.hand_mm = {-30.0, 3.0, 7.0};
+  in.proxy_mm = {-30.0, 3.0, 6.0};
+  in.field_offset_mm = {0.0, 0.0, -1.14};
+  const ProbeReadout pushed = probe_readout(in);
+  EXPECT_EQ(pushed.state, ProbeState::kTouching);
+  EXPECT_NEAR(pushed.pressed_mm, 1.0, 1e-12);
+  EXPECT_NEAR(pushed.held_mm, 0.14, 1e-12);
+  in.hand_mm.z = 5.0;
+  EXPECT_NEAR(probe_readout(in).held_mm, 2.14, 1e-12);
 }
 
 // The walks' `home` check reads it (tests/window/walk_checks.py): a rolled view left turned by
@@ -140,7 +159,7 @@ TEST(ReadoutsLogTest, OneJsonLineWithEveryField) {
   f.frame = 7;
   f.t_s = 1.25;
   f.scene = "panel.toml";
-  f.probe = {ProbeState::kTouching, 0.0, 1.5};
+  f.probe = {ProbeState::kTouching, 0.0, 1.5, 0.25};
   f.force_n = 0.75;
   f.view_offset_mm = {0.0, -12.5, 0.0};
   f.view_turn_deg = 12.5;
@@ -161,7 +180,7 @@ TEST(ReadoutsLogTest, OneJsonLineWithEveryField) {
   const std::string line = readouts_json_line(f);
   EXPECT_EQ(line,
             "{\"frame\": 7, \"t_s\": 1.25, \"scene\": \"panel.toml\", \"state\": \"touching\", \"distance_mm\": 0, "
-            "\"pressed_mm\": 1.5, \"penetration_mm\": 0, \"buried_mm\": 0, \"contact\": true, \"force_n\": 0.75, "
+            "\"pressed_mm\": 1.5, \"held_mm\": 0.25, \"penetration_mm\": 0, \"buried_mm\": 0, \"contact\": true, \"force_n\": 0.75, "
             "\"view_offset_mm\": [0, -12.5, 0], \"view_turn_deg\": 12.5, \"hand_mm\": [1, 2, 3], \"proxy_mm\": [1, 2, 4.5], "
             "\"button\": {\"index\": 2, \"depth_mm\": 2.9, \"travel_mm\": 3}, \"flags\": [\"light\"], \"keys\": 3, "
             "\"haptic_hz\": 999.5, \"jitter_p99_us\": 12.25, \"dent_mm\": 2.5, \"pointer_px\": [256.5, 100], "

@@ -56,9 +56,14 @@ def check_step(step, frames, report):
             if not f["contact"]:
                 report[key] = max(report[key], f["penetration_mm"])
             report["max_hover_buried_mm"] = max(report["max_hover_buried_mm"], f["buried_mm"])
+            # What the hand pushed in: the surface's hold (held_mm), without a field's push. In
+            # Field a repelling charge pushes the proxy hovering 1 mm under it onto the floor,
+            # pressed 1.1 mm from the hand, held 0.1-0.3 mm (the hand's filter lag): the field's
+            # touch, not the pointer's. Logs written before held_mm existed read pressed_mm.
+            held = f.get("held_mm", f["pressed_mm"])
             if f["contact"]:
-                report["max_hover_pressed_mm"] = max(report["max_hover_pressed_mm"], f["pressed_mm"])
-            touching = step["free"] and f["contact"] and f["pressed_mm"] > CONTACT_TOL_MM
+                report["max_hover_pressed_mm"] = max(report["max_hover_pressed_mm"], held)
+            touching = step["free"] and f["contact"] and held > CONTACT_TOL_MM
             # The drawn probe's penetration counts while the pointer rests and the proxy touches
             # nothing. It is measured per pixel along the renderer's reference normal, which
             # converges away from the pointer's plane after the start: a probe passing beside a steep

@@ -11,10 +11,12 @@ ProbeReadout probe_readout(const ProbeReadoutInput& in) {
   // default 0.5 N/mm coupling, below any force a person feels, above the filter's rounding.
   constexpr double kHeldMm = 0.05;
   ProbeReadout r;
-  const bool held = !in.catching_up && glm::length(in.hand_mm + in.field_offset_mm - in.proxy_mm) > kHeldMm;
+  const double hold_mm = glm::length(in.hand_mm + in.field_offset_mm - in.proxy_mm);
+  const bool held = !in.catching_up && hold_mm > kHeldMm;
   if (in.in_contact || held) {
     r.state = ProbeState::kTouching;
     r.pressed_mm = glm::length(in.hand_mm - in.proxy_mm);
+    r.held_mm = hold_mm;
   } else if (in.distance_mm) {
     // The drawn probe may graze a surface the proxy does not touch (the shadow's distance is
     // measured on the render mesh, the proxy on the haptic geometry): still hovering, at 0.

@@ -35,6 +35,11 @@ struct ProbeReadout {
   ProbeState state = ProbeState::kOutOfReach;
   double hover_mm = 0.0;    // kHovering: distance to the surface, >= 0
   double pressed_mm = 0.0;  // kTouching: the hand's depth past the proxy, >= 0
+  // kTouching: the part of pressed_mm the surface holds, |hand + field offset - proxy|: what the
+  // hand pushed in. A field that pushes a hovering proxy onto the floor (Field, under a repelling
+  // charge) presses it by the field's offset with the hand pushing nothing: held ~0. Equal to
+  // pressed_mm in a scene without fields, bodies or walls.
+  double held_mm = 0.0;
 };
 
 ProbeReadout probe_readout(const ProbeReadoutInput& in);

@@ -58,7 +58,7 @@ std::string readouts_json_line(const ReadoutsFrame& f) {
   }
   return "{\"frame\": " + std::to_string(f.frame) + ", \"t_s\": " + num(f.t_s) + ", \"scene\": " + str(f.scene) +
          ", \"state\": " + str(probe_state_name(p.state)) + ", \"distance_mm\": " + distance +
-         ", \"pressed_mm\": " + num(p.pressed_mm) + ", \"penetration_mm\": " + num(f.penetration_mm) + ", \"buried_mm\": " + num(f.buried_mm) +
+         ", \"pressed_mm\": " + num(p.pressed_mm) + ", \"held_mm\": " + num(p.held_mm) + ", \"penetration_mm\": " + num(f.penetration_mm) + ", \"buried_mm\": " + num(f.buried_mm) +
          ", \"contact\": " + (p.state == ProbeState::kTouching ? "true" : "false") + ", \"force_n\": " + num(f.force_n) +
          ", \"view_offset_mm\": " + vec(f.view_offset_mm) + ", \"view_turn_deg\": " + num(f.view_turn_deg) +
          ", \"hand_mm\": " + vec(f.hand_mm) +

@@ -1,7 +1,8 @@
 // `run --readouts-log FILE`: one JSON line per window frame with what the readouts say (one
 // state machine, app/window/readout_state.h) and the positions behind it, for experimenters and for the
 // window tests (tests/window). Fields (docs/window.md, "run --readouts-log"): frame, t_s, scene,
-// state, distance_mm (null out of reach, 0 touching), pressed_mm, penetration_mm, buried_mm, contact,
+// state, distance_mm (null out of reach, 0 touching), pressed_mm, held_mm (the part of it the surface
+// holds: without the fields' push), penetration_mm, buried_mm, contact,
 // force_n, view_offset_mm, view_turn_deg (how far a rolling 4D surface has turned the view from
 // where the scene started: 0 for every other scene), hand_mm, proxy_mm, button ({index, depth_mm, travel_mm} or null),
 // flags (names on, or null when the scene has none), keys (key presses handled this frame),
