@@ -23,7 +23,8 @@ import time
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 import window_proc  # noqa: E402  (the window's process: started, followed, why it ended)
-from walk_checks import check_fired, check_panel, check_saves, check_step, check_switch_frames, read_events  # noqa: E402
+from walk_checks import (check_fired, check_panel, check_saves, check_step, check_switch_frames, new_report,  # noqa: E402
+                         read_events)
 
 SKIP = 77
 # Frames drawn this soon after a step starts still show the step before it (the window handles
@@ -328,8 +329,7 @@ def walk(args):
     win = Window(None, log, console)
     walk_name = os.path.splitext(os.path.basename(args.walk))[0]
     win.stem = walk_name if walk_name not in ("default", win_scene_stem(args)) else win_scene_stem(args)
-    report = {"max_rest_penetration_mm": 0.0, "max_sweep_penetration_mm": 0.0, "max_hover_pressed_mm": 0.0,
-              "max_hover_buried_mm": 0.0, "max_rest_drift_mm": 0.0}
+    report = new_report()
     failures, panel_steps, save_steps, fired_steps, keys_counted = drive(args, win, cmd, steps, report)
     if win.proc is not None and win.proc.returncode == 0:
         failures += check_panel(args.out, panel_steps, report) + check_saves(args.out, save_steps)

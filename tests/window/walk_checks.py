@@ -44,6 +44,12 @@ def check_near(step, frame, where, report):
     return []
 
 
+def new_report():
+    """The largest values check_step() has seen, all 0 before the first step (walk.py prints them)."""
+    return {"max_rest_penetration_mm": 0.0, "max_sweep_penetration_mm": 0.0, "max_hover_pressed_mm": 0.0,
+            "max_hover_buried_mm": 0.0, "max_rest_drift_mm": 0.0}
+
+
 def check_step(step, frames, report):
     """The step's checks on its frames; returns failure messages."""
     where = f"walk line {step['line']} ({step['op']})"
