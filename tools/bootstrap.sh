@@ -28,6 +28,7 @@ readonly kPackages=(
 readonly kTestPackages=(
   xvfb xauth xdotool clang libclang-rt-14-dev dpkg-dev file
   python3-pytest python3-matplotlib parallel
+  r-base-core  # R's glm(): the outside check of the study's psychometric fit (docs/study.md)
 )
 
 repo_root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
