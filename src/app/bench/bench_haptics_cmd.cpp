@@ -1,9 +1,12 @@
 // `pseudoshadow bench-haptics`: the haptic loop on its real thread and clock while the
 // renderer draws flat out on the main thread (headless), then rate, period jitter and the
 // latency device sample -> finished frame. Numbers only; nothing here passes or fails.
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
+
+#include <glm/gtc/matrix_transform.hpp>
 
 #include "app/cli/cli.h"
 #include "app/cli/cli_groups.h"
@@ -11,6 +14,7 @@
 #include "app/session/session.h"
 #include "gl/context.h"
 #include "prepare/prepare.h"
+#include "render/adaptive_scale.h"
 
 namespace ps {
 
@@ -51,6 +55,84 @@ void print_report(const HapticLoop& loop, double seconds, const std::vector<doub
               scene.analytic_count(), scene.triangle_count(), fc.mean, fc.p99, fc.max);
 }
 
+// --orbit: the camera turns about its target (around its up) at `deg_per_s` of wall time, and
+// the run alternates one-second phases of whole frames and of adaptive resolution (the window's
+// AdaptiveScale, docs/adaptive.md), so that load from other processes hits both alike. Each
+// phase's frames, latencies and haptic periods are reported apart: the haptic loop's period while
+// the view moves, and the latency device sample -> frame finished, at both.
+struct OrbitMode {
+  const char* name = "";
+  std::vector<double> frame_ms, latency_ms, scales, periods_us;
+};
+
+Camera orbited(const Camera& c0, double degrees) {
+  Camera c = c0;
+  const glm::dmat4 turn = glm::rotate(glm::dmat4(1.0), glm::radians(degrees), c0.up);
+  c.position = c0.target + glm::dvec3(turn * glm::dvec4(c0.position - c0.target, 0.0));
+  return c;
+}
+
+Status measure_orbit(Renderer& renderer, HapticLoop& loop, double seconds, double deg_per_s, double budget_ms,
+                     OrbitMode (&modes)[2], std::vector<double>& facets) {
+  using Clock = std::chrono::steady_clock;
+  const Camera start = renderer.camera();
+  AdaptiveScale control(AdaptiveScaleParams{.budget_ms = budget_ms});
+  std::vector<std::pair<double, int>> phases;  // (start s since the loop's start, mode)
+  const auto t0 = Clock::now();
+  loop.start();
+  for (std::uint64_t frame = 0;; ++frame) {
+    const auto f0 = Clock::now();
+    const double t = std::chrono::duration<double>(f0 - t0).count();
+    if (t >= seconds) break;
+    const int mode = static_cast<int>(t) % 2;  // 0 whole, 1 adaptive
+    if (phases.empty() || phases.back().second != mode) phases.emplace_back(static_cast<int>(t), mode);
+    renderer.set_surface_scale(mode == 1 ? control.next(t * 1e3) : SurfaceScale{});
+    HapticState st;
+    if (Status s = drive_frame(renderer, loop, frame, st, orbited(start, deg_per_s * t)); !s) {
+      loop.stop();
+      return s;
+    }
+    const auto f1 = Clock::now();
+    const double ms = std::chrono::duration<double, std::milli>(f1 - f0).count();
+    const FrameStats& fs = renderer.stats();
+    facets.push_back(st.local_facets);
+    // Whole frames inform the controller too, as every frame does in the window.
+    control.frame(t * 1e3 + ms, ms, fs.surface_scale, fs.view_moved, !fs.incremental);
+    if (t - static_cast<int>(t) < 0.1) continue;  // a phase's first 0.1 s: the switch's frame settles
+    modes[mode].frame_ms.push_back(ms);
+    modes[mode].scales.push_back(fs.surface_scale);
+    if (st.have_sample)
+      modes[mode].latency_ms.push_back(static_cast<double>(f1.time_since_epoch().count() - st.sample_clock_ns) * 1e-6);
+  }
+  loop.stop();
+  // Each period to the phase its tick ended in (the ticks' own clock: the running sum of periods
+  // from the loop's start, which is within a tick of t0).
+  double tick_s = 0.0;
+  std::size_t phase = 0;
+  for (double p : loop.periods_us()) {
+    tick_s += p * 1e-6;
+    while (phase + 1 < phases.size() && tick_s >= phases[phase + 1].first) ++phase;
+    if (!phases.empty()) modes[phases[phase].second].periods_us.push_back(p);
+  }
+  return ok_status();
+}
+
+void print_orbit_report(const OrbitMode (&modes)[2], double deg_per_s, double budget_ms) {
+  std::printf("orbit %.0f deg/s, phases of 1 s alternating whole and adaptive (budget %.1f ms); a phase's first 0.1 s "
+              "not counted in frames:\n",
+              deg_per_s, budget_ms);
+  std::printf("| frames | count | frame p50 / p99 ms | latency p50 / p99 ms | scale median | haptic period p50 / p99 us | "
+              "jitter p99 us |\n| --- | --- | --- | --- | --- | --- | --- |\n");
+  for (const OrbitMode& m : modes) {
+    std::vector<double> jitter;
+    for (double p : m.periods_us) jitter.push_back(std::abs(p - 1000.0));
+    const Percentiles f = percentiles(m.frame_ms), l = percentiles(m.latency_ms), s = percentiles(m.scales),
+                      p = percentiles(m.periods_us), j = percentiles(jitter);
+    std::printf("| %s | %zu | %.1f / %.1f | %.1f / %.1f | %.2f | %.1f / %.1f | %.1f |\n", m.name, f.count, f.p50, f.p99,
+                l.p50, l.p99, s.p50, p.p50, p.p99, j.p99);
+  }
+}
+
 // Renders flat out for `seconds` while the loop runs; per-frame time and latency in ms.
 Status measure(Renderer& renderer, HapticLoop& loop, double seconds, std::vector<double>& latency_ms,
                std::vector<double>& frame_ms, std::vector<double>& facets) {
@@ -88,6 +170,8 @@ struct BenchArgs {
   int slice_us = -1;
   cli::LiveLoopArgs live;
   bool no_incremental = false;  // RendererOptions::incremental off
+  double orbit_deg_per_s = 0.0;   // 0: the camera stays
+  double frame_budget_ms = 16.7;  // --orbit's adaptive phases (AdaptiveScaleParams::budget_ms)
 };
 
 void declare(cli::Command& cmd, BenchArgs& a) {
@@ -111,6 +195,12 @@ void declare(cli::Command& cmd, BenchArgs& a) {
   cli::add_live_loop_options(app, a.live);
   app.add_flag("--no-incremental", a.no_incremental,
                "redraw every pixel of every frame (default: while the camera is still, only the shadow's rectangles)");
+  cli::add_positive(app, "--orbit", "DEG_PER_S", a.orbit_deg_per_s, 3600.0, "90",
+                    "turn the camera about its target at DEG_PER_S while measuring (a mouse drag's orbit: 90), in "
+                    "one-second phases of whole frames and of adaptive resolution as the window draws (docs/adaptive.md); "
+                    "reports each apart: frame time, latency, the scale, the haptic period");
+  cli::add_positive(app, "--frame-budget", "MS", a.frame_budget_ms, 1000.0, "16.7",
+                    "--orbit: the adaptive phases' frame budget (default 16.7, as `run`)");
 }
 
 int bench(const cli::Command& cmd, const BenchArgs& a) {
@@ -141,14 +231,23 @@ int bench(const cli::Command& cmd, const BenchArgs& a) {
   std::vector<double> latency_ms, frame_ms, facets;
   const auto t0 = std::chrono::steady_clock::now();
   vib->start();
-  const Status measured = measure(*renderer.value(), loop, a.seconds, latency_ms, frame_ms, facets);
+  OrbitMode modes[2];
+  modes[0].name = "whole", modes[1].name = "adaptive";
+  const Status measured = a.orbit_deg_per_s > 0.0
+                              ? measure_orbit(*renderer.value(), loop, a.seconds, a.orbit_deg_per_s, a.frame_budget_ms, modes, facets)
+                              : measure(*renderer.value(), loop, a.seconds, latency_ms, frame_ms, facets);
   vib->close();
   if (!measured) return cmd.fail(measured.error());
+  for (const OrbitMode& m : modes) {  // --orbit: the whole run's lines count both phases
+    frame_ms.insert(frame_ms.end(), m.frame_ms.begin(), m.frame_ms.end());
+    latency_ms.insert(latency_ms.end(), m.latency_ms.begin(), m.latency_ms.end());
+  }
   const double elapsed = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   std::printf("bench-haptics: %s, %dx%d, %s, %s, haptic thread %s, %s frames\n", scene->path.c_str(),
               scene->render.width, scene->render.height, ctx.value()->renderer().c_str(), live->report().c_str(),
               loop.scheduling().c_str(), a.no_incremental ? "full" : "incremental");
   print_report(loop, elapsed, latency_ms, frame_ms, facets, haptic_scene.value());
+  if (a.orbit_deg_per_s > 0.0) print_orbit_report(modes, a.orbit_deg_per_s, a.frame_budget_ms);
   if (vib->active()) std::printf("%s\n", vib->summary().c_str());
   return cli::kExitOk;
 }

@@ -10,9 +10,11 @@
 
 namespace ps {
 
-Status drive_frame(Renderer& renderer, HapticLoop& loop, std::uint64_t frame, HapticState& state) {
+Status drive_frame(Renderer& renderer, HapticLoop& loop, std::uint64_t frame, HapticState& state,
+                   const std::optional<Camera>& camera) {
   state = loop.state().read();
   HapticFrameSources sources;
+  sources.camera = camera;
   sources.coupling_n_per_mm = loop.params().forces.coupling_n_per_mm;
   sources.charges = loop.live_charges().read();
   const FrameInput input = haptic_frame_input(renderer, state, sources);

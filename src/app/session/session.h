@@ -4,6 +4,7 @@
 
 #include <functional>
 #include <memory>
+#include <optional>
 #include <string>
 
 #include "core/result.h"
@@ -17,8 +18,10 @@
 namespace ps {
 
 // One frame: renderer <- (proxy, filtered velocity) of `state`; render; the frame's reference
-// normal and penetration -> loop.surface(). `state` is what was rendered.
-Status drive_frame(Renderer& renderer, HapticLoop& loop, std::uint64_t frame, HapticState& state);
+// normal and penetration -> loop.surface(). `state` is what was rendered. `camera`, when given,
+// is the camera this frame draws with (bench-haptics --orbit moves the view this way).
+Status drive_frame(Renderer& renderer, HapticLoop& loop, std::uint64_t frame, HapticState& state,
+                   const std::optional<Camera>& camera = std::nullopt);
 
 // The plane a pointer maps onto: through the camera target, along the renderer's reference
 // frame (taken once when a session opens, so the mapping stays put while the plane converges).
