@@ -91,7 +91,13 @@ class PointerLogDevice final : public Device {
  public:
   PointerLogDevice(std::vector<DeviceSample> samples, std::string name);
   // Render thread (the one writer): the camera, window and plane the pointer is mapped with.
-  void set_view(const PointerView& view) { view_.publish({view, true}); }
+  // The floor is the render thread's (not owned, not thread-safe): it never crosses to the
+  // haptic thread, which maps from the plane.
+  void set_view(const PointerView& view) {
+    PointerView published = view;
+    published.floor = nullptr;
+    view_.publish({published, true});
+  }
   DeviceSample read(double now_s) override;  // haptic thread
   double duration_s() const override { return log_.duration_s(); }
   std::string name() const override { return name_; }

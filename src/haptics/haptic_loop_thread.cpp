@@ -15,6 +15,7 @@
 #include <algorithm>
 #include <cerrno>
 #include <cstring>
+#include <future>
 
 namespace ps {
 
@@ -46,17 +47,19 @@ int request_slice(std::int64_t slice_us) {
 
 void HapticLoop::start() {
   stop_.store(false);
-  std::atomic<pid_t> tid{0};
-  thread_ = std::thread([this, &tid] {
-    tid.store(static_cast<pid_t>(syscall(SYS_gettid)));
-    tid.notify_one();
+  // The thread's id comes back through a promise the thread owns: a flag on this stack frame,
+  // notified after its store, could be notified after start() returned and the frame was gone.
+  std::promise<pid_t> id;
+  std::future<pid_t> tid = id.get_future();
+  thread_ = std::thread([this, id = std::move(id)]() mutable {
+    id.set_value(static_cast<pid_t>(syscall(SYS_gettid)));
     pthread_setname_np(pthread_self(), "ps-haptic");  // shows in top -H, ps -L, /proc/<pid>/task/*/comm
     if (params_.sched_slice_us > 0) slice_error_.store(request_slice(params_.sched_slice_us));
     if (params_.timer_slack_ns > 0) prctl(PR_SET_TIMERSLACK, static_cast<unsigned long>(params_.timer_slack_ns), 0, 0, 0);
     while (!stop_.load(std::memory_order_relaxed)) scheduled_tick();
   });
-  tid.wait(0);
-  if (params_.realtime_priority > 0) request_realtime(tid.load());
+  const pid_t thread_id = tid.get();
+  if (params_.realtime_priority > 0) request_realtime(thread_id);
 }
 
 // SCHED_FIFO when this process may (CAP_SYS_NICE, RLIMIT_RTPRIO), else SCHED_RR through
