@@ -22,6 +22,16 @@ struct AdaptiveScaleParams {
   // 100 ms wherever a whole frame takes under 50 ms (1280x720 on 2-core llvmpipe: 38 ms).
   double rest_ms = 30.0;
   std::size_t window = 5;  // the last full-redraw frames the cost estimate is the median of
+  // A step's own measured cost (the median of its last `window` frames within memory_ms) wins
+  // over the estimate scaled from other steps: a frame's fixed part (the upsample to the whole
+  // image, the footprint's rectangle at full resolution, the reductions) does not shrink with the
+  // scale, so scaling by pixels alone would keep a cheap view at the smallest step for good.
+  double memory_ms = 1000.0;
+  // The step above the chosen one is tried for a frame when the chosen step's measured cost is
+  // at most this part of the budget and the step above has no measurement in memory_ms: the
+  // way back up once the view gets cheaper. A try that misses the budget costs one frame, at
+  // most once per memory_ms.
+  double probe_fraction = 0.8;
 };
 
 // The scale for a frame whose view moves and for one whose view stays (the renderer picks by
@@ -39,8 +49,10 @@ class AdaptiveScale {
   // and whether it redrew every pixel (an incremental frame says nothing about a full one's cost).
   void frame(double now_ms, double frame_ms, double scale, bool view_moved, bool full_redraw);
   // For the next frame: `moving` the largest step whose predicted cost fits the budget (the
-  // smallest step when none does; 1 until a full redraw has been measured), `still` the same
-  // within rest_ms of the last move, else 1.
+  // smallest step when none does; 1 until a full redraw has been measured), or the step above it
+  // on a try (AdaptiveScaleParams::probe_fraction); `still` the same within rest_ms of the last
+  // move, else 1. A step's predicted cost is its own measured one where it has one in
+  // memory_ms, else the whole cost scaled by its pixels.
   SurfaceScale next(double now_ms) const;
   // The cost a full-scale redraw is estimated at now, ms (0: none measured yet).
   double full_cost_ms() const;
@@ -48,8 +60,15 @@ class AdaptiveScale {
 
  private:
   AdaptiveScaleParams params_;
+  struct Measured {
+    double at_ms = 0.0, cost_ms = 0.0;
+  };
+  // The median cost of step i's frames within memory_ms of now; negative when there is none.
+  double step_cost_ms(std::size_t i, double now_ms) const;
+
   std::vector<double> full_costs_;  // per full redraw: its cost divided by its scale squared
   std::size_t next_slot_ = 0;       // ring index into full_costs_
+  std::vector<std::vector<Measured>> step_costs_;  // per step: its last `window` full redraws
   double last_move_ms_ = -1e300;
 };
 

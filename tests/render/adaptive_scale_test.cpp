@@ -32,9 +32,47 @@ TEST(AdaptiveScaleTest, TheLargestStepWhoseCostFitsTheBudget) {
 
 TEST(AdaptiveScaleTest, AReducedFrameCountsAsItsPixels) {
   AdaptiveScale a;
-  moving_frame(a, 0.0, 9.6, 0.5);  // 9.6 ms at a quarter of the pixels: 38.4 ms whole
-  EXPECT_DOUBLE_EQ(a.full_cost_ms(), 38.4);
+  moving_frame(a, 0.0, 14.0, 0.5);  // 14 ms at a quarter of the pixels: 56 ms whole
+  EXPECT_DOUBLE_EQ(a.full_cost_ms(), 56.0);
+  // 0.75 would cost 31.5 ms by pixels; 0.5's own 14 ms fits with too little room to try it.
   EXPECT_EQ(a.next(1.0).moving, 0.5);
+}
+
+// bench --moving's Field travel (docs/benchmarks.md): as the view leaves the scene a whole frame
+// falls to 9 ms, while the 0.35 frame, with its upsample and full-resolution rectangle, stays
+// near 10 ms; scaled by pixels the 10 ms says 82 ms whole and the view would stay at 0.35. A step
+// whose own cost leaves room tries the one above it, and the view climbs back to whole.
+TEST(AdaptiveScaleTest, ACheapViewClimbsBackByTryingTheStepAbove) {
+  AdaptiveScale a;
+  for (int i = 0; i < 5; ++i) moving_frame(a, i * 10.0, 10.0, 0.35);
+  EXPECT_NEAR(a.full_cost_ms(), 81.6, 0.1);
+  EXPECT_EQ(a.next(50.0).moving, 0.5);  // 10 ms <= 0.8 x 16.7: 0.5 is tried
+  moving_frame(a, 50.0, 10.5, 0.5);
+  EXPECT_EQ(a.next(61.0).moving, 0.75);  // 0.5 measured 10.5 ms: fits, with room: 0.75 tried
+  moving_frame(a, 61.0, 11.0, 0.75);
+  EXPECT_EQ(a.next(72.0).moving, 1.0);
+  moving_frame(a, 72.0, 9.0, 1.0);
+  EXPECT_EQ(a.next(81.0).moving, 1.0);  // whole, measured at 9 ms: stays
+}
+
+// A try that misses the budget goes back down at once, and the step is not tried again until
+// its measurement is older than memory_ms: one slow frame per second at most.
+TEST(AdaptiveScaleTest, AMissedTryWaitsMemoryMs) {
+  AdaptiveScale a;
+  for (int i = 0; i < 5; ++i) moving_frame(a, i * 10.0, 12.0, 0.35);
+  EXPECT_EQ(a.next(50.0).moving, 0.5);
+  moving_frame(a, 50.0, 25.0, 0.5);  // over the budget
+  double t = 75.0;
+  for (; t < 1050.0; t += 12.0) {
+    ASSERT_EQ(a.next(t).moving, 0.35) << t << " ms";
+    moving_frame(a, t, 12.0, 0.35);
+  }
+  EXPECT_EQ(a.next(t).moving, 0.5);  // 0.5's 25 ms is more than a second old: tried again
+  // With no room (0.35 at 14 ms > 0.8 x 16.7) nothing is tried.
+  AdaptiveScale b;
+  for (int i = 0; i < 5; ++i) moving_frame(b, i * 15.0, 14.0, 0.35);
+  EXPECT_EQ(b.next(75.0).moving, 0.35);
+  EXPECT_EQ(b.next(5000.0).moving, 0.35);
 }
 
 // An incremental frame (only the probe's rectangles redrawn) says nothing of a whole one's cost.
