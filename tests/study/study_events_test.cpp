@@ -1,7 +1,8 @@
 // A session's BIDS-style events.tsv and its JSON sidecar (src/study/study_events.h): simulated
 // sessions of both tasks run through `study run`'s code, their events written as `study summarize`
 // writes them, then read back here on their own (split on tabs, the sidecar parsed) and held
-// against the trial log line by line; a changed log, a session not ended and a torn one write none.
+// against the trial log line by line; a member the log lacks is n/a; a changed log, a session not
+// ended and a torn one write none.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -15,6 +16,7 @@
 
 #include "study/experiment.h"
 #include "study/study_events.h"
+#include "study/study_log.h"
 #include "study/study_run.h"
 
 namespace ps::study {
@@ -192,6 +194,34 @@ TEST(StudyEventsTest, AResumedSessionsEventsEqualAnUnbrokenOnes) {
   check_events(dir + "/a/runs/P01/trials.jsonl", stem, {"level", "correct"});
   check_events(log, stem, {"level", "correct"});
   EXPECT_EQ(read_text(dir + "/a/runs/P01/" + stem + ".tsv"), read_text(dir + "/b/runs/P01/" + stem + ".tsv"));
+}
+
+TEST(StudyEventsTest, WhatTheLogLacksIsNaAndATabInANameIsNoColumn) {
+  // A real session's lines, then one trial line without its "key", with an empty condition and
+  // a tab in its material's name: n/a, n/a and a space, the row as wide as the header.
+  const std::string dir = fresh_dir("lacking");
+  const std::string log = run_session("identification", dir, "P01");
+  TrialLog t = read_trial_log(log).value();
+  std::vector<LogLine> kept;
+  for (const LogLine& l : t.lines)
+    if (l.json.at("type") != "trial" || l.json.at("trial") == 1) kept.push_back(l);
+  t.lines = kept;
+  ASSERT_EQ(t.lines.at(1).json.at("type"), "trial");
+  t.lines[1].json.erase("key");
+  t.lines[1].json["condition"] = "";
+  t.lines[1].json["answered"] = "a\tb";
+  const Result<SessionEvents> ev = session_events(t, log);
+  ASSERT_TRUE(ev) << ev.error().message;
+  std::vector<std::string> lines = split(ev->tsv, '\n');
+  ASSERT_EQ(lines.size(), 3u);  // the header, one trial, "" after the last newline
+  const std::vector<std::string> header = split(lines[0], '\t'), row = split(lines[1], '\t');
+  ASSERT_EQ(row.size(), header.size());
+  const auto at = [&](const std::string& c) { return row.at(static_cast<std::size_t>(std::find(header.begin(), header.end(), c) - header.begin())); };
+  EXPECT_EQ(at("key"), "n/a");
+  EXPECT_EQ(at("trial_type"), "n/a");
+  EXPECT_EQ(at("answered"), "a b");
+  EXPECT_EQ(at("shown"), t.lines[1].json.at("shown").get<std::string>());
+  EXPECT_EQ(ev->stem, "sub-P01_task-identification_events");
 }
 
 TEST(StudyEventsTest, AChangedLogWritesNoEventsFile) {
