@@ -9,6 +9,7 @@
 #include "app/cli/cli_groups.h"
 #include "core/file_io.h"
 #include "study/experiment_scene.h"
+#include "study/study_events.h"
 #include "study/study_plan.h"
 #include "study/study_run.h"
 #include "study/study_summary.h"
@@ -114,7 +115,7 @@ void declare_summarize(cli::Command& cmd, SummarizeArgs& a) {
   CLI::App& app = cmd.app();
   app.add_option("logs", a.logs, "trial logs, participants' folders or a study's folder (the --out of `study run`)")
       ->required()->type_name("LOG|DIR");
-  app.add_option("--out", a.out, "writes participants.csv, groups.csv, summary.md and the plot there")
+  app.add_option("--out", a.out, "writes participants.csv, groups.csv, summary.md and the plot there (events.tsv go beside each log)")
       ->required()->type_name("DIR");
   cli::add_int(app, "--resamples", "N", a.resamples, 10LL, 1000000LL, "bootstrap resamples (default 1000)");
   cli::add_int(app, "--seed", "N", a.seed, 0LL, 9'007'199'254'740'991LL, "the bootstrap's seed (default 1)");
@@ -141,6 +142,15 @@ int summarize_main(const cli::Command& cmd, const SummarizeArgs& a) {
     if (!p->torn.empty()) notes.push_back(p->torn);
     people.push_back(std::move(p.value()));
   }
+  // Each ended session's events.tsv and sidecar, beside its log, from the log just checked; a
+  // session not ended (or cut off) gets none, with a note.
+  for (const study::ParticipantResult& p : people) {
+    if (!p.complete || !p.torn.empty()) {
+      notes.push_back(p.participant + ": no events.tsv written: the session has not ended (resume it, then summarize again)");
+      continue;
+    }
+    if (Result<study::EventsFiles> f = study::write_session_events(p.log); !f) return cmd.fail(f.error());
+  }
   if (Status s = study::write_study_summary(a.out, people, notes); !s) return cmd.fail(s.error());
   for (const std::string& n : notes) std::fprintf(stderr, "pseudoshadow %s: %s\n", cmd.name().c_str(), n.c_str());
   if (!a.quiet) std::printf("summarized %zu participant%s into %s\n", people.size(), people.size() == 1 ? "" : "s", a.out.c_str());
@@ -157,7 +167,8 @@ constexpr const char* kRunDescription =
 constexpr const char* kSummarizeDescription =
     "Checks every trial log's checksums, fits each participant and condition (threshold, slope, 95 % bootstrap\n"
     "intervals, Weber fraction; or the confusion matrix and information transfer) and writes the tables,\n"
-    "summary.md and a plot (docs/study.md, \"Summarizing\").";
+    "summary.md and a plot (docs/study.md, \"Summarizing\"); beside each ended session's log, its BIDS-style\n"
+    "sub-ID_task-NAME_events.tsv and .json (docs/study.md, \"events.tsv (BIDS)\").";
 
 }  // namespace
 
