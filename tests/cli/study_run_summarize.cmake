@@ -1,7 +1,7 @@
 # cmake -DEXE=pseudoshadow -DEXPERIMENT=file.toml -DWORK=dir -P study_run_summarize.cmake
 # `study run --simulate` for two participants (one broken off with --stop-after and finished by
 # `study resume`), then `study summarize`: exit 0, the tables and summary.md written, each
-# participant complete; a participant given twice is refused. Then a copy with one answer changed: summarize exits 1 naming its line.
+# participant complete, each session's events.tsv written; a participant given twice is refused. Then a copy with one answer changed: summarize exits 1 naming its line.
 file(REMOVE_RECURSE ${WORK})
 function(run expect_rc)
   execute_process(COMMAND ${EXE} ${ARGN} RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
@@ -24,6 +24,23 @@ run(0 study summarize ${WORK}/study --out ${WORK}/summary --resamples 100)
 foreach(f participants.csv groups.csv summary.md)
   if(NOT EXISTS ${WORK}/summary/${f})
     message(FATAL_ERROR "summarize wrote no ${f}")
+  endif()
+endforeach()
+# Each ended session's BIDS-style events file and sidecar, beside its log (docs/study.md,
+# "events.tsv (BIDS)"): a header and one row per trial line of the log.
+foreach(p P01 P02)
+  file(GLOB tsv ${WORK}/study/${p}/sub-${p}_task-*_events.tsv)
+  file(GLOB sidecar ${WORK}/study/${p}/sub-${p}_task-*_events.json)
+  if(NOT tsv OR NOT sidecar)
+    message(FATAL_ERROR "summarize wrote no events.tsv and sidecar for ${p}")
+  endif()
+  file(STRINGS ${tsv} events)
+  file(STRINGS ${WORK}/study/${p}/trials.jsonl trial_lines REGEX "\"trial\":")
+  list(LENGTH events n_events)
+  list(LENGTH trial_lines n_trials)
+  math(EXPR n_rows "${n_events} - 1")
+  if(NOT n_rows EQUAL n_trials OR n_trials EQUAL 0)
+    message(FATAL_ERROR "${tsv}: ${n_rows} rows for ${n_trials} trial lines")
   endif()
 endforeach()
 run(2 study summarize ${WORK}/study ${WORK}/study/P01 --out ${WORK}/twice)
