@@ -32,6 +32,12 @@ struct FrameStats {
   // resolution), and whether the frame's camera differed from the last frame's.
   double surface_scale = 1.0;
   bool view_moved = false;
+  // The frame made the targets of a scale not drawn at before (one per size, kept): its time
+  // includes that allocation and says nothing of the scale's cost.
+  bool new_targets = false;
+  // Whether this frame's time is what a redraw of every pixel at surface_scale costs: what the
+  // adaptive scale (render/adaptive_scale.h) learns from.
+  bool measures_full_redraw() const { return !incremental && !new_targets; }
   // GPU time of each pass (GL_TIME_ELAPSED), of the newest frame whose queries have come back:
   // gpu_timings_lag frames before this one (0 on llvmpipe, which finishes each pass; usually 1
   // on a GPU). Empty, lag -1: none back yet (docs/benchmarks.md, "GPU timers").

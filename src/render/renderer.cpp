@@ -279,6 +279,7 @@ Status Renderer::draw() {
   probe_.position = view.probe.position;
   probe_.velocity = view.probe.velocity;
   stats_.timings_ms.clear();
+  stats_.new_targets = false;
   upload_deformed();  // what the session stepped since the last frame
   stats_.deformation = deformation();
   if (Status s = advance_bake(); !s) return s;  // before the timer: a band is not the frame's work

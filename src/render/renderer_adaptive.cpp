@@ -35,6 +35,7 @@ Status Renderer::draw_surfaces(const std::vector<SurfaceDraw>& draws, const Fram
 // The small pass of `size` (one per size, made at its first frame, sharing the programs).
 Result<SurfacePass*> Renderer::reduced_pass(glm::ivec2 size) {
   auto [it, fresh] = reduced_passes_.try_emplace(std::make_pair(size.x, size.y));
+  stats_.new_targets = fresh;
   if (fresh)
     if (Status s = it->second.init_sharing(surface_, {size.x, size.y}); !s) {
       reduced_passes_.erase(it);

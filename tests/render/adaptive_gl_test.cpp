@@ -123,9 +123,13 @@ TEST_P(AdaptiveGLTest, TheFramesAtRestAreTheWholeFramesBitForBit) {
     Pair p(s);
     ASSERT_TRUE(p.whole && p.adaptive) << c.scene;
     p.frame(c.motion(s, 0), 1.0);
+    EXPECT_FALSE(p.adaptive->stats().new_targets) << c.scene;  // the whole frame has its targets from the start
     for (int i = 1; i <= 5; ++i) {
       p.frame(c.motion(s, i), 0.5);
       EXPECT_EQ(p.adaptive->stats().surface_scale, 0.5) << c.scene << " frame " << i;
+      // The first frame at 0.5 makes its targets: its time is not 0.5's cost (AdaptiveScale).
+      EXPECT_EQ(p.adaptive->stats().new_targets, i == 1) << c.scene << " frame " << i;
+      EXPECT_EQ(p.adaptive->stats().measures_full_redraw(), i != 1) << c.scene << " frame " << i;
     }
     for (int rest = 0; rest < 3; ++rest) {
       p.frame(c.motion(s, 5), 1.0);

@@ -97,7 +97,7 @@ Status measure_orbit(Renderer& renderer, HapticLoop& loop, double seconds, doubl
     const FrameStats& fs = renderer.stats();
     facets.push_back(st.local_facets);
     // Whole frames inform the controller too, as every frame does in the window.
-    control.frame(t * 1e3 + ms, ms, fs.surface_scale, fs.view_moved, !fs.incremental);
+    control.frame(t * 1e3 + ms, ms, fs.surface_scale, fs.view_moved, fs.measures_full_redraw());
     if (t - static_cast<int>(t) < 0.1) continue;  // a phase's first 0.1 s: the switch's frame settles
     modes[mode].frame_ms.push_back(ms);
     modes[mode].scales.push_back(fs.surface_scale);

@@ -100,7 +100,7 @@ Result<std::pair<double, double>> frame_pair(Pair& p, const FrameInput& in, bool
   const double adaptive_ms = ms_between(a0, Clock::now());
   p.clock_ms += adaptive_ms;
   const FrameStats& st = p.adaptive->stats();
-  p.control.frame(p.clock_ms, adaptive_ms, st.surface_scale, st.view_moved, !st.incremental);
+  p.control.frame(p.clock_ms, adaptive_ms, st.surface_scale, st.view_moved, st.measures_full_redraw());
   if (record) {
     for (const auto& [name, ms] : p.full->stats().timings_ms) p.full_passes[name].push_back(ms);
     for (const auto& [name, ms] : st.timings_ms) p.adaptive_passes[name].push_back(ms);

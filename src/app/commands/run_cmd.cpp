@@ -229,7 +229,7 @@ Status window_loop(const RunArgs& a, RunState& s, const cli::StopSignals& stop) 
     count_frame(s.readouts, st, f0);
     const FrameStats& drawn = s.tune->renderer().stats();
     s.adaptive.frame(now_s * 1e3 + s.readouts.last_frame_ms, s.readouts.last_frame_ms, drawn.surface_scale,
-                     drawn.view_moved, !drawn.incremental);
+                     drawn.view_moved, drawn.measures_full_redraw());
     // The recording's flushing thread failed (a full disk): the session stops here.
     if (Status r = s.haptics.recorded->flush_due(st.time_s); !r) return r;
   }
