@@ -67,12 +67,16 @@ SurfaceScale AdaptiveScale::next(double now_ms) const {
         break;
       }
     }
-    // The way back up: a step with room to spare tries the one above it, unless that one was
-    // measured lately (then its own cost decided above).
+    // The way back up: a step with room to spare tries the whole frame, which has no upsample
+    // and may cost less than any reduced step, then the step above it; a step measured lately
+    // is not tried (its own cost decided above).
     const double own = step_cost_ms(chosen, now_ms);
-    if (chosen > 0 && own >= 0.0 && own <= params_.probe_fraction * params_.budget_ms &&
-        step_cost_ms(chosen - 1, now_ms) < 0.0)
-      --chosen;
+    if (chosen > 0 && own >= 0.0 && own <= params_.probe_fraction * params_.budget_ms) {
+      if (step_cost_ms(0, now_ms) < 0.0)
+        chosen = 0;
+      else if (step_cost_ms(chosen - 1, now_ms) < 0.0)
+        --chosen;
+    }
     moving = params_.steps[chosen];
   }
   const bool resting = now_ms - last_move_ms_ > params_.rest_ms;

@@ -27,10 +27,10 @@ struct AdaptiveScaleParams {
   // image, the footprint's rectangle at full resolution, the reductions) does not shrink with the
   // scale, so scaling by pixels alone would keep a cheap view at the smallest step for good.
   double memory_ms = 1000.0;
-  // The step above the chosen one is tried for a frame when the chosen step's measured cost is
-  // at most this part of the budget and the step above has no measurement in memory_ms: the
-  // way back up once the view gets cheaper. A try that misses the budget costs one frame, at
-  // most once per memory_ms.
+  // When the chosen step's measured cost is at most this part of the budget, a frame tries the
+  // whole scale, or (whole measured in memory_ms) the step above: the way back up once the view
+  // gets cheaper. Whole first, since a reduced frame's upsample can make it dearer than a whole
+  // one. A try that misses the budget costs one frame, and is not repeated within memory_ms.
   double probe_fraction = 0.8;
 };
 
@@ -49,8 +49,8 @@ class AdaptiveScale {
   // and whether it redrew every pixel (an incremental frame says nothing about a full one's cost).
   void frame(double now_ms, double frame_ms, double scale, bool view_moved, bool full_redraw);
   // For the next frame: `moving` the largest step whose predicted cost fits the budget (the
-  // smallest step when none does; 1 until a full redraw has been measured), or the step above it
-  // on a try (AdaptiveScaleParams::probe_fraction); `still` the same within rest_ms of the last
+  // smallest step when none does; 1 until a full redraw has been measured), or a larger one on a
+  // try (AdaptiveScaleParams::probe_fraction); `still` the same within rest_ms of the last
   // move, else 1. A step's predicted cost is its own measured one where it has one in
   // memory_ms, else the whole cost scaled by its pixels.
   SurfaceScale next(double now_ms) const;

@@ -41,33 +41,49 @@ TEST(AdaptiveScaleTest, AReducedFrameCountsAsItsPixels) {
 // bench --moving's Field travel (docs/benchmarks.md): as the view leaves the scene a whole frame
 // falls to 9 ms, while the 0.35 frame, with its upsample and full-resolution rectangle, stays
 // near 10 ms; scaled by pixels the 10 ms says 82 ms whole and the view would stay at 0.35. A step
-// whose own cost leaves room tries the one above it, and the view climbs back to whole.
-TEST(AdaptiveScaleTest, ACheapViewClimbsBackByTryingTheStepAbove) {
+// whose own cost leaves room tries the whole frame, which then stays.
+TEST(AdaptiveScaleTest, ACheapViewTriesTheWholeFrameAndStays) {
   AdaptiveScale a;
   for (int i = 0; i < 5; ++i) moving_frame(a, i * 10.0, 10.0, 0.35);
   EXPECT_NEAR(a.full_cost_ms(), 81.6, 0.1);
-  EXPECT_EQ(a.next(50.0).moving, 0.5);  // 10 ms <= 0.8 x 16.7: 0.5 is tried
-  moving_frame(a, 50.0, 10.5, 0.5);
-  EXPECT_EQ(a.next(61.0).moving, 0.75);  // 0.5 measured 10.5 ms: fits, with room: 0.75 tried
-  moving_frame(a, 61.0, 11.0, 0.75);
-  EXPECT_EQ(a.next(72.0).moving, 1.0);
-  moving_frame(a, 72.0, 9.0, 1.0);
-  EXPECT_EQ(a.next(81.0).moving, 1.0);  // whole, measured at 9 ms: stays
+  EXPECT_EQ(a.next(50.0).moving, 1.0);  // 10 ms <= 0.8 x 16.7: whole is tried
+  moving_frame(a, 50.0, 9.0, 1.0);
+  for (double t = 60.0; t < 3000.0; t += 10.0) {
+    ASSERT_EQ(a.next(t).moving, 1.0) << t << " ms";  // measured at 9 ms: stays
+    moving_frame(a, t, 9.0, 1.0);
+  }
 }
 
-// A try that misses the budget goes back down at once, and the step is not tried again until
-// its measurement is older than memory_ms: one slow frame per second at most.
+// A whole frame tried and missed: the step above is tried next, and climbing goes on while a step
+// leaves room; what missed is not tried again until its measurement is older than memory_ms.
+TEST(AdaptiveScaleTest, AMissedWholeTryClimbsStepByStep) {
+  AdaptiveScale a;
+  for (int i = 0; i < 5; ++i) moving_frame(a, i * 10.0, 10.0, 0.35);
+  ASSERT_EQ(a.next(50.0).moving, 1.0);
+  moving_frame(a, 50.0, 30.0, 1.0);  // the whole frame: over the budget
+  EXPECT_EQ(a.next(80.0).moving, 0.5);  // 0.35 still has room: the step above
+  moving_frame(a, 80.0, 11.0, 0.5);
+  EXPECT_EQ(a.next(91.0).moving, 0.75);
+  moving_frame(a, 91.0, 15.0, 0.75);  // fits, without room: stays
+  EXPECT_EQ(a.next(106.0).moving, 0.75);
+  moving_frame(a, 106.0, 15.0, 0.75);
+  EXPECT_EQ(a.next(121.0).moving, 0.75);
+}
+
+// Tries that miss go back down at once and wait memory_ms: one slow frame per second at most.
 TEST(AdaptiveScaleTest, AMissedTryWaitsMemoryMs) {
   AdaptiveScale a;
   for (int i = 0; i < 5; ++i) moving_frame(a, i * 10.0, 12.0, 0.35);
-  EXPECT_EQ(a.next(50.0).moving, 0.5);
-  moving_frame(a, 50.0, 25.0, 0.5);  // over the budget
-  double t = 75.0;
+  EXPECT_EQ(a.next(50.0).moving, 1.0);
+  moving_frame(a, 50.0, 40.0, 1.0);  // over the budget
+  EXPECT_EQ(a.next(90.0).moving, 0.5);
+  moving_frame(a, 90.0, 25.0, 0.5);  // over the budget
+  double t = 115.0;
   for (; t < 1050.0; t += 12.0) {
     ASSERT_EQ(a.next(t).moving, 0.35) << t << " ms";
     moving_frame(a, t, 12.0, 0.35);
   }
-  EXPECT_EQ(a.next(t).moving, 0.5);  // 0.5's 25 ms is more than a second old: tried again
+  EXPECT_EQ(a.next(t).moving, 1.0);  // the whole frame's 40 ms is more than a second old: tried again
   // With no room (0.35 at 14 ms > 0.8 x 16.7) nothing is tried.
   AdaptiveScale b;
   for (int i = 0; i < 5; ++i) moving_frame(b, i * 15.0, 14.0, 0.35);
