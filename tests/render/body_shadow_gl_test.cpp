@@ -253,7 +253,9 @@ TEST_P(BodyShadowGLTest, DarkensMonotonicallyAsTheBodyApproaches) {
     int lightened = 0, darkened = 0;
     for (double gap = 13.0; gap >= -3.0; gap -= 0.375) {
       const glm::dvec3 ball = ball_at_gap(gap);
-      ASSERT_TRUE(r.render({.bodies_mm = std::vector<glm::dvec3>{ball}}).ok());
+      FrameInput in;
+      in.bodies_mm = std::vector<glm::dvec3>{ball};
+      ASSERT_TRUE(r.render(in).ok());
       Image c = r.read_color();
       if (prev)
         for (int y = 0; y < s.render.height; ++y)

@@ -185,8 +185,10 @@ TEST_P(FootprintRectGLTest, ReferenceNormalFollowsTheCamera) {
   Scene s = shipped("torus_capsule", 160, 120);  // curved: the mean normal depends on the view
   Scene moved = s;
   moved.camera.position = {40.0, -100.0, 70.0};
-  auto a = Renderer::create(s, {.expected_frames = 2});
-  auto b = Renderer::create(moved, {.expected_frames = 2});
+  RendererOptions two_frames;
+  two_frames.expected_frames = 2;
+  auto a = Renderer::create(s, two_frames);
+  auto b = Renderer::create(moved, two_frames);
   ASSERT_TRUE(a.ok() && b.ok());
   ASSERT_TRUE(a.value()->render_frame().ok());
   const glm::dvec3 n_first = a.value()->reference().n;
