@@ -19,22 +19,14 @@
 #include "study/study_log.h"
 #include "study/study_run.h"
 
+#include "study/study_test_files.h"
+
 namespace ps::study {
 namespace {
 
-const std::string kStudies = std::string(PS_SOURCE_DIR) + "/scenes/studies/";
-
-std::string fresh_dir(const std::string& name) {
-  const std::string dir = std::string(PS_BINARY_DIR) + "/tests/study/events/" + name;
-  std::filesystem::remove_all(dir);
-  std::filesystem::create_directories(dir);
-  return dir;
-}
-
-std::string read_text(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
-}
+using test_files::kStudies;
+using test_files::read_text;
+using test_files::fresh_dir;
 
 std::vector<std::string> split(const std::string& text, char sep) {
   std::vector<std::string> out;
@@ -162,7 +154,7 @@ TEST(StudyEventsTest, BidsLabelsKeepLettersAndDigitsOnly) {
 }
 
 TEST(StudyEventsTest, AThresholdSessionsEventsMatchItsLog) {
-  const std::string dir = fresh_dir("threshold");
+  const std::string dir = fresh_dir("events", "threshold");
   const std::string log = run_session("lambda_threshold", dir, "P02");
   const std::vector<std::string> header = check_events(
       log, "sub-P02_task-lambdaThreshold_events",
@@ -179,14 +171,14 @@ TEST(StudyEventsTest, AThresholdSessionsEventsMatchItsLog) {
 }
 
 TEST(StudyEventsTest, AnIdentificationSessionsEventsMatchItsLog) {
-  const std::string dir = fresh_dir("identification");
+  const std::string dir = fresh_dir("events", "identification");
   const std::string log = run_session("identification", dir, "P01");
   check_events(log, "sub-P01_task-identification_events",
                {"trial", "practice", "block", "shown", "shown_index", "answered", "answered_index", "key", "correct"});
 }
 
 TEST(StudyEventsTest, AResumedSessionsEventsEqualAnUnbrokenOnes) {
-  const std::string dir = fresh_dir("resumed");
+  const std::string dir = fresh_dir("events", "resumed");
   run_session("theta_threshold", dir + "/a", "P01");
   run_session("theta_threshold", dir + "/b", "P01", 30);
   const std::string log = run_session("theta_threshold", dir + "/b", "P01");
@@ -199,7 +191,7 @@ TEST(StudyEventsTest, AResumedSessionsEventsEqualAnUnbrokenOnes) {
 TEST(StudyEventsTest, WhatTheLogLacksIsNaAndATabInANameIsNoColumn) {
   // A real session's lines, then one trial line without its "key", with an empty condition and
   // a tab in its material's name: n/a, n/a and a space, the row as wide as the header.
-  const std::string dir = fresh_dir("lacking");
+  const std::string dir = fresh_dir("events", "lacking");
   const std::string log = run_session("identification", dir, "P01");
   TrialLog t = read_trial_log(log).value();
   std::vector<LogLine> kept;
@@ -225,7 +217,7 @@ TEST(StudyEventsTest, WhatTheLogLacksIsNaAndATabInANameIsNoColumn) {
 }
 
 TEST(StudyEventsTest, AChangedLogWritesNoEventsFile) {
-  const std::string dir = fresh_dir("tampered");
+  const std::string dir = fresh_dir("events", "tampered");
   const std::string log = run_session("theta_threshold", dir, "P01");
   std::string text = read_text(log);
   const std::string from = "\"trial\":9,\"practice\":false,\"block\":1";  // after 4 practice trials
@@ -243,7 +235,7 @@ TEST(StudyEventsTest, AChangedLogWritesNoEventsFile) {
 }
 
 TEST(StudyEventsTest, ASessionNotEndedOrCutOffWritesNoEventsFile) {
-  const std::string dir = fresh_dir("unfinished");
+  const std::string dir = fresh_dir("events", "unfinished");
   const std::string log = run_session("theta_threshold", dir, "P01", 20);
   Result<EventsFiles> f = write_session_events(log);
   ASSERT_FALSE(f);

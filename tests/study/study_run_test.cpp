@@ -21,22 +21,14 @@
 #include "study/study_run.h"
 #include "study/study_summary.h"
 
+#include "study/study_test_files.h"
+
 namespace ps::study {
 namespace {
 
-const std::string kStudies = std::string(PS_SOURCE_DIR) + "/scenes/studies/";
-
-std::string fresh_dir(const std::string& name) {
-  const std::string dir = std::string(PS_BINARY_DIR) + "/tests/study/runs/" + name;
-  std::filesystem::remove_all(dir);
-  std::filesystem::create_directories(dir);
-  return dir;
-}
-
-std::string read_text(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
-}
+using test_files::kStudies;
+using test_files::read_text;
+using test_files::fresh_dir;
 
 void write_text(const std::string& path, const std::string& text) { std::ofstream(path, std::ios::binary) << text; }
 
@@ -85,7 +77,7 @@ TEST(StudyLogTest, SealedLinesChainEachToTheOneBefore) {
 
 TEST(StudyRunTest, ASimulatedParticipantsThresholdLiesInItsInterval) {
   const Experiment e = load_experiment(kStudies + "lambda_threshold.toml").value();
-  const std::string dir = fresh_dir("recover");
+  const std::string dir = fresh_dir("runs", "recover");
   const Result<RunReport> r = run_participant(e, spec_for(dir));
   ASSERT_TRUE(r) << r.error().message;
   EXPECT_TRUE(r->complete);
@@ -109,7 +101,7 @@ TEST(StudyRunTest, ASimulatedParticipantsThresholdLiesInItsInterval) {
 TEST(StudyRunTest, IntervalsOfManySimulatedParticipantsCoverTheTruth) {
   const Experiment e = load_experiment(kStudies + "lambda_threshold.toml").value();
   const double truth = threshold_at(Shape::kWeibull, {0.1, 3.0, 0.5, 0.02}, 0.75);
-  const std::string dir = fresh_dir("coverage");
+  const std::string dir = fresh_dir("runs", "coverage");
   int inside = 0, intervals = 0;
   for (int i = 1; i <= 20; ++i) {
     RunSpec s = spec_for(dir);
@@ -133,7 +125,8 @@ TEST(StudyRunTest, IntervalsOfManySimulatedParticipantsCoverTheTruth) {
 TEST(StudyRunTest, ResumeAfterATornLineLosesNothingAndRepeatsNothing) {
   for (const char* name : {"lambda_threshold", "theta_threshold", "identification"}) {
     const Experiment e = load_experiment(kStudies + name + ".toml").value();
-    const std::string whole = fresh_dir(std::string("whole_") + name), broken = fresh_dir(std::string("broken_") + name);
+    const std::string whole = fresh_dir("runs", std::string("whole_") + name),
+                      broken = fresh_dir("runs", std::string("broken_") + name);
     ASSERT_TRUE(run_participant(e, spec_for(whole)));
     RunSpec s = spec_for(broken);
     s.stop_after = 25;
@@ -158,7 +151,7 @@ TEST(StudyRunTest, ResumeAfterATornLineLosesNothingAndRepeatsNothing) {
 // A break goes on only with what began the run: the same simulated participant.
 TEST(StudyRunTest, ResumeRefusesAnotherSimulatedParticipant) {
   const Experiment e = load_experiment(kStudies + "theta_threshold.toml").value();
-  RunSpec s = spec_for(fresh_dir("other_observer"));
+  RunSpec s = spec_for(fresh_dir("runs", "other_observer"));
   s.stop_after = 10;
   ASSERT_TRUE(run_participant(e, s));
   s.observer.truth.threshold = 0.2;
@@ -171,7 +164,7 @@ TEST(StudyRunTest, ResumeRefusesAnotherSimulatedParticipant) {
 // interleave their trials: the second is refused while the folder is locked.
 TEST(StudyRunTest, ASecondRunOfTheSameParticipantIsRefusedWhileTheFirstWrites) {
   const Experiment e = load_experiment(kStudies + "theta_threshold.toml").value();
-  const std::string dir = fresh_dir("locked");
+  const std::string dir = fresh_dir("runs", "locked");
   std::filesystem::create_directories(dir + "/P01");
   const int fd = ::open((dir + "/P01").c_str(), O_RDONLY | O_DIRECTORY);
   ASSERT_GE(fd, 0);
@@ -186,7 +179,7 @@ TEST(StudyRunTest, ASecondRunOfTheSameParticipantIsRefusedWhileTheFirstWrites) {
 
 TEST(StudyRunTest, AChangedOrRemovedLineIsRefusedNamingItsLine) {
   const Experiment e = load_experiment(kStudies + "theta_threshold.toml").value();
-  const std::string dir = fresh_dir("tamper");
+  const std::string dir = fresh_dir("runs", "tamper");
   const std::string log = run_participant(e, spec_for(dir))->log_path;
   std::vector<std::string> lines = lines_of(read_text(log));
   ASSERT_TRUE(summarize_participant(log, {50, 1}));
@@ -216,7 +209,7 @@ TEST(StudyRunTest, AChangedOrRemovedLineIsRefusedNamingItsLine) {
 
 TEST(StudyRunTest, IdentificationGivesTheConfusionMatrixOfTheSimulatedChannel) {
   const Experiment e = load_experiment(kStudies + "identification.toml").value();
-  const std::string dir = fresh_dir("ident");
+  const std::string dir = fresh_dir("runs", "ident");
   RunSpec s = spec_for(dir);
   s.observer.p_correct = 0.75;
   const Result<RunReport> r = run_participant(e, s);

@@ -14,15 +14,13 @@
 #include "study/study_run.h"
 #include "study/study_summary.h"
 
+#include "study/study_test_files.h"
+
 namespace ps::study {
 namespace {
 
-const std::string kStudies = std::string(PS_SOURCE_DIR) + "/scenes/studies/";
-
-std::string read_text(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
-}
+using test_files::kStudies;
+using test_files::read_text;
 
 int count_lines(const std::string& text) { return static_cast<int>(std::count(text.begin(), text.end(), '\n')); }
 
