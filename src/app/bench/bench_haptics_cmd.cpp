@@ -6,8 +6,7 @@
 #include <cmath>
 #include <cstdio>
 
-#include <glm/gtc/matrix_transform.hpp>
-
+#include "app/bench/bench_moving.h"
 #include "app/cli/cli.h"
 #include "app/cli/cli_groups.h"
 #include "app/commands.h"
@@ -65,13 +64,6 @@ struct OrbitMode {
   std::vector<double> frame_ms, latency_ms, scales, periods_us;
 };
 
-Camera orbited(const Camera& c0, double degrees) {
-  Camera c = c0;
-  const glm::dmat4 turn = glm::rotate(glm::dmat4(1.0), glm::radians(degrees), c0.up);
-  c.position = c0.target + glm::dvec3(turn * glm::dvec4(c0.position - c0.target, 0.0));
-  return c;
-}
-
 Status measure_orbit(Renderer& renderer, HapticLoop& loop, double seconds, double deg_per_s, double budget_ms,
                      OrbitMode (&modes)[2], std::vector<double>& facets) {
   using Clock = std::chrono::steady_clock;
@@ -88,7 +80,7 @@ Status measure_orbit(Renderer& renderer, HapticLoop& loop, double seconds, doubl
     if (phases.empty() || phases.back().second != mode) phases.emplace_back(static_cast<int>(t), mode);
     renderer.set_surface_scale(mode == 1 ? control.next(t * 1e3) : SurfaceScale{});
     HapticState st;
-    if (Status s = drive_frame(renderer, loop, frame, st, orbited(start, deg_per_s * t)); !s) {
+    if (Status s = drive_frame(renderer, loop, frame, st, bench::orbited(start, deg_per_s * t)); !s) {
       loop.stop();
       return s;
     }
@@ -203,7 +195,7 @@ void declare(cli::Command& cmd, BenchArgs& a) {
                     "--orbit: the adaptive phases' frame budget (default 16.7, as `run`)");
 }
 
-int bench(const cli::Command& cmd, const BenchArgs& a) {
+int measure_and_report(const cli::Command& cmd, const BenchArgs& a) {
   auto scene = cli::load_scene_or_default(a.scene);
   if (!scene) return cmd.fail(scene.error(), cli::scene_exit_code(scene.error()));
   auto live = cli::apply_live_loop(a.live);  // before the context and the haptic thread
@@ -255,7 +247,7 @@ int bench(const cli::Command& cmd, const BenchArgs& a) {
 }  // namespace
 
 int run_bench_haptics(int argc, char** argv) {
-  return cli::run_command<BenchArgs>(argc, argv, "bench-haptics", kDescription, declare, bench);
+  return cli::run_command<BenchArgs>(argc, argv, "bench-haptics", kDescription, declare, measure_and_report);
 }
 
 }  // namespace ps

@@ -42,10 +42,7 @@ struct Motion {
 // 90 degrees a second around the target, about the camera's up: a mouse drag's orbit.
 FrameInput orbit_input(const Scene& s, int i) {
   FrameInput in = probe_frame_input(s.probe.position, s.probe.velocity);
-  Camera c = s.camera;
-  const glm::dmat4 turn = glm::rotate(glm::dmat4(1.0), glm::radians(1.5 * i), c.up);
-  c.position = c.target + glm::dvec3(turn * glm::dvec4(c.position - c.target, 0.0));
-  in.camera = c;
+  in.camera = orbited(s.camera, 1.5 * i);
   return in;
 }
 
@@ -210,6 +207,13 @@ Result<MovingRow> run_case(const MovingOptions& o, const Motion& m, glm::ivec2 s
 }
 
 }  // namespace
+
+Camera orbited(const Camera& camera, double degrees) {
+  Camera c = camera;
+  const glm::dmat4 turn = glm::rotate(glm::dmat4(1.0), glm::radians(degrees), camera.up);
+  c.position = camera.target + glm::dvec3(turn * glm::dvec4(camera.position - camera.target, 0.0));
+  return c;
+}
 
 Result<std::vector<MovingRow>> run_moving(const MovingOptions& o) {
   std::vector<MovingRow> rows;

@@ -15,6 +15,7 @@
 #include <glm/glm.hpp>
 
 #include "core/result.h"
+#include "scene/scene.h"
 
 namespace ps::bench {
 
@@ -41,6 +42,10 @@ struct MovingRow {
   std::vector<std::pair<std::string, double>> full_passes, adaptive_passes;
   std::vector<double> full_frames, adaptive_frames, scales;  // per moving frame (the plot)
 };
+
+// The camera turned `degrees` about its target, around its up: a mouse drag's orbit (the
+// scripted motion of `bench --moving` and of `bench-haptics --orbit`).
+Camera orbited(const Camera& camera, double degrees);
 
 Result<std::vector<MovingRow>> run_moving(const MovingOptions& o);
 // Markdown: the frame table, then the per-pass split.
