@@ -91,19 +91,62 @@ struct RunState {
   std::uint64_t observer_seed = 0;
 };
 
-ojson threshold_trial(RunState& s, const Slot& slot, int k) {
-  const ThresholdSpec& t = s.e.threshold;
-  const double level = slot.practice ? t.level_max : s.tracks[static_cast<std::size_t>(slot.condition)].next();
-  std::mt19937_64 rng(trial_seed(s.plan.seed, static_cast<std::uint64_t>(k), kInterval));
-  const int interval = uniform01(rng) < 0.5 ? 1 : 2;  // which interval shows the comparison
-  SimulatedObserver o(s.spec.observer.shape, s.spec.observer.truth, trial_seed(s.observer_seed, static_cast<std::uint64_t>(k), kObserver));
-  const bool correct = o.respond(level);
-  const int response = correct ? interval : 3 - interval;
-  if (!slot.practice) s.tracks[static_cast<std::size_t>(slot.condition)].update(level, correct);
-  return {{"type", "trial"}, {"trial", k + 1}, {"practice", slot.practice}, {"block", slot.block},
-          {"condition", s.e.conditions[static_cast<std::size_t>(slot.condition)].name}, {"level", level},
-          {"reference", t.reference}, {"comparison", t.reference + level}, {"interval", interval},
-          {"response", response}, {"key", s.e.response_keys[static_cast<std::size_t>(response - 1)]}, {"correct", correct}};
+// The trial's stimulus: threshold, the level (the track's next; practice at level_max) and which
+// interval holds the comparison; identification, the material shown (material_of).
+int material_of(const RunState& s, const Slot& slot);
+
+TrialStimulus stimulus_of(RunState& s, const Slot& slot, int k) {
+  TrialStimulus t;
+  t.trial = k + 1;
+  t.total = total_trials(s.e);
+  t.practice = slot.practice;
+  t.block = slot.block;
+  t.condition = slot.condition;
+  if (s.e.task == Task::kThreshold) {
+    const ThresholdSpec& th = s.e.threshold;
+    t.level = slot.practice ? th.level_max : s.tracks[static_cast<std::size_t>(slot.condition)].next();
+    t.reference = th.reference;
+    t.comparison = th.reference + t.level;
+    std::mt19937_64 rng(trial_seed(s.plan.seed, static_cast<std::uint64_t>(k), kInterval));
+    t.interval = uniform01(rng) < 0.5 ? 1 : 2;  // which interval shows the comparison
+  } else {
+    t.shown = material_of(s, slot);
+  }
+  return t;
+}
+
+// The simulated participant's answer to trial k: its own draws, from its seed and k alone.
+int simulated_answer(const RunState& s, const TrialStimulus& t, int k) {
+  if (s.e.task == Task::kThreshold) {
+    SimulatedObserver o(s.spec.observer.shape, s.spec.observer.truth,
+                        trial_seed(s.observer_seed, static_cast<std::uint64_t>(k), kObserver));
+    return o.respond(t.level) ? t.interval : 3 - t.interval;
+  }
+  const int K = static_cast<int>(s.e.materials.size());
+  std::mt19937_64 rng(trial_seed(s.observer_seed, static_cast<std::uint64_t>(k), kObserver));
+  int answered = t.shown;
+  if (uniform01(rng) >= s.spec.observer.p_correct) {
+    answered = static_cast<int>(uniform01(rng) * (K - 1));  // one of the others, each alike
+    if (answered >= t.shown) ++answered;
+  }
+  return answered;
+}
+
+// The trial's log line, with the answer; a threshold trial's answer also moves its track.
+ojson trial_line(RunState& s, const TrialStimulus& t, int answer) {
+  const std::string& condition = s.e.conditions[static_cast<std::size_t>(t.condition)].name;
+  if (s.e.task == Task::kThreshold) {
+    const bool correct = answer == t.interval;
+    if (!t.practice) s.tracks[static_cast<std::size_t>(t.condition)].update(t.level, correct);
+    return {{"type", "trial"}, {"trial", t.trial}, {"practice", t.practice}, {"block", t.block},
+            {"condition", condition}, {"level", t.level}, {"reference", t.reference}, {"comparison", t.comparison},
+            {"interval", t.interval}, {"response", answer},
+            {"key", s.e.response_keys[static_cast<std::size_t>(answer - 1)]}, {"correct", correct}};
+  }
+  return {{"type", "trial"}, {"trial", t.trial}, {"practice", t.practice}, {"block", t.block}, {"condition", condition},
+          {"shown", s.e.materials[static_cast<std::size_t>(t.shown)].name}, {"shown_index", t.shown},
+          {"answered", s.e.materials[static_cast<std::size_t>(answer)].name}, {"answered_index", answer},
+          {"key", s.e.response_keys[static_cast<std::size_t>(answer)]}, {"correct", t.shown == answer}};
 }
 
 // The material of a trial: each block and condition shows the materials in turn, shuffled in
@@ -120,22 +163,6 @@ int material_of(const RunState& s, const Slot& slot) {
   return order[static_cast<std::size_t>(slot.in_segment % K)];
 }
 
-ojson identification_trial(RunState& s, const Slot& slot, int k) {
-  const int K = static_cast<int>(s.e.materials.size());
-  const int shown = material_of(s, slot);
-  std::mt19937_64 rng(trial_seed(s.observer_seed, static_cast<std::uint64_t>(k), kObserver));
-  int answered = shown;
-  if (uniform01(rng) >= s.spec.observer.p_correct) {
-    answered = static_cast<int>(uniform01(rng) * (K - 1));  // one of the others, each alike
-    if (answered >= shown) ++answered;
-  }
-  return {{"type", "trial"}, {"trial", k + 1}, {"practice", slot.practice}, {"block", slot.block},
-          {"condition", s.e.conditions[static_cast<std::size_t>(slot.condition)].name},
-          {"shown", s.e.materials[static_cast<std::size_t>(shown)].name}, {"shown_index", shown},
-          {"answered", s.e.materials[static_cast<std::size_t>(answered)].name}, {"answered_index", answered},
-          {"key", s.e.response_keys[static_cast<std::size_t>(answered)]}, {"correct", shown == answered}};
-}
-
 ojson names(const std::vector<Variant>& v, const std::vector<int>& order = {}) {
   ojson a = ojson::array();
   if (order.empty())
@@ -149,9 +176,17 @@ std::string file_sha256(const std::string& path) {
   return sha256_hex(std::string((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>()));
 }
 
+// Who answers this run's trials: the responder's own description, or the simulated participant.
+ojson observer_of(const RunState& s) {
+  if (s.spec.responder) return ojson::parse(s.spec.responder->describe().dump());
+  const ObserverSpec& o = s.spec.observer;
+  return {{"kind", "simulated"}, {"seed", s.observer_seed}, {"shape", shape_name(o.shape)},
+          {"threshold", o.truth.threshold}, {"slope", o.truth.slope}, {"guess", o.truth.guess},
+          {"lapse", o.truth.lapse}, {"p_correct", o.p_correct}};
+}
+
 ojson session_start(const RunState& s) {
   const Experiment& e = s.e;
-  const ObserverSpec& o = s.spec.observer;
   ojson j = {{"type", "session_start"}, {"schema", kStudyLogSchema}, {"experiment", e.name},
              {"experiment_file", e.path}, {"experiment_sha256", file_sha256(e.path)}, {"task", task_name(e.task)}, {"scene", e.scene},
              {"participant", s.plan.participant}, {"seed", s.plan.seed}, {"conditions", names(e.conditions)},
@@ -164,14 +199,23 @@ ojson session_start(const RunState& s) {
                       {"criterion", e.threshold.criterion}, {"guess", 0.5}};
   else
     j["materials"] = names(e.materials);
-  j["observer"] = {{"kind", "simulated"}, {"seed", s.observer_seed}, {"shape", shape_name(o.shape)},
-                   {"threshold", o.truth.threshold}, {"slope", o.truth.slope}, {"guess", o.truth.guess},
-                   {"lapse", o.truth.lapse}, {"p_correct", o.p_correct}};
+  j["observer"] = observer_of(s);
   return j;
 }
 
-// A log goes on only with what began it: the same experiment, file unchanged, participant and
-// simulated participant; otherwise the trials after the break would not be the unbroken run's.
+// Who answered the log's last part: session_start's "observer", or the last `resumed` line's
+// when a part was answered by someone else (a person's trials, then a simulated tail).
+nlohmann::json last_observer(const TrialLog& log) {
+  nlohmann::json o = log.lines.front().json.value("observer", nlohmann::json::object());
+  for (const LogLine& l : log.lines)
+    if (l.json.value("type", "") == "resumed" && l.json.contains("observer")) o = l.json.at("observer");
+  return o;
+}
+
+// A log goes on only with what began it: the same experiment, file unchanged, and participant;
+// a simulated participant after a simulated part only with the same options, otherwise the
+// trials after the break would not be the unbroken run's. A person may take over from a
+// simulated participant and the other way round (the `resumed` line says who answers on).
 Status check_same_session(const RunState& s, const TrialLog& log) {
   const nlohmann::json& start = log.lines.front().json;
   const std::string where = log.lines.front().json.value("participant", "") + "/trials.jsonl: ";
@@ -180,7 +224,8 @@ Status check_same_session(const RunState& s, const TrialLog& log) {
                       "', participant '" + start.value("participant", "") + "': give another --out");
   if (start.value("experiment_sha256", "") != file_sha256(s.e.path))
     return make_error(s.spec.out_dir + "/" + where + s.e.path + " changed since this participant started: resume with the file the run began with");
-  if (nlohmann::json::parse(session_start(s).at("observer").dump()) != start.at("observer"))
+  const nlohmann::json now = nlohmann::json::parse(observer_of(s).dump()), before = last_observer(log);
+  if (now.value("kind", "") == "simulated" && before.value("kind", "") == "simulated" && now != before)
     return make_error(s.spec.out_dir + "/" + where + "the simulated participant's options differ from the run's first part "
                       "(its session_start line's \"observer\"): give the same ones");
   return ok_status();
@@ -206,11 +251,13 @@ Result<int> replay(RunState& s, const TrialLog& log, bool& complete, std::string
   return done;
 }
 
-// An existing log read and checked, its trials replayed (replay); r's counts and torn warning set.
-Status read_existing(RunState& s, RunReport& r, std::string& last) {
+// An existing log read and checked, its trials replayed (replay); r's counts and torn warning set,
+// `observer` who answered its last part.
+Status read_existing(RunState& s, RunReport& r, std::string& last, nlohmann::json& observer) {
   Result<TrialLog> log = read_trial_log(r.log_path);
   if (!log) return log.error();
   r.torn = log.value().torn;
+  observer = last_observer(log.value());
   Result<int> done = replay(s, log.value(), r.complete, last);
   if (!done) return done.error();
   r.done_before = done.value();
@@ -268,16 +315,35 @@ Result<RunReport> run_participant(const Experiment& e, const RunSpec& spec) {
   const bool exists = std::filesystem::exists(r.log_path);
   if (!exists && spec.resume_only)
     return make_error(r.log_path + ": no trial log to resume (start the participant with `study run`)");
+  nlohmann::json observer_before;
   if (exists)
-    if (Status st = read_existing(s, r, last); !st) return st.error();
+    if (Status st = read_existing(s, r, last, observer_before); !st) return st.error();
   if (r.complete) return r;
   Result<maze::SessionLog> log = exists ? maze::SessionLog::open_existing(r.log_path) : maze::SessionLog::open(r.log_path);
   if (!log) return log.error();
-  Status st = exists ? append(log.value(), {{"type", "resumed"}, {"at_trial", r.done_before + 1}}, last)
-                     : append(log.value(), session_start(s), last);
-  for (int k = r.done_before; st && k < r.total && (spec.stop_after <= 0 || r.written < spec.stop_after); ++k, ++r.written) {
-    const Slot slot = slot_of(e, s.plan, k);
-    st = append(log.value(), e.task == Task::kThreshold ? threshold_trial(s, slot, k) : identification_trial(s, slot, k), last);
+  ojson resumed = {{"type", "resumed"}, {"at_trial", r.done_before + 1}};
+  if (exists && nlohmann::json::parse(observer_of(s).dump()) != observer_before) resumed["observer"] = observer_of(s);
+  Status st = exists ? append(log.value(), resumed, last) : append(log.value(), session_start(s), last);
+  for (int k = r.done_before; st && k < r.total && (spec.stop_after <= 0 || r.written < spec.stop_after); ++k) {
+    const TrialStimulus t = stimulus_of(s, slot_of(e, s.plan, k), k);
+    int answer = 0;
+    if (!spec.responder) {
+      answer = simulated_answer(s, t, k);
+    } else {
+      Result<std::optional<int>> a = spec.responder->answer(t);
+      if (!a) return a.error();  // every trial before it is on disk already
+      if (!a.value()) {
+        r.stopped = true;
+        break;
+      }
+      answer = *a.value();
+      const int n = e.task == Task::kThreshold ? 2 : static_cast<int>(e.materials.size());
+      const int first = e.task == Task::kThreshold ? 1 : 0;
+      if (answer < first || answer >= first + n)
+        return make_error("study: the answer " + std::to_string(answer) + " to trial " + std::to_string(t.trial) + " names no choice");
+    }
+    st = append(log.value(), trial_line(s, t, answer), last);
+    ++r.written;
   }
   if (st && r.done_before + r.written == r.total) {
     st = append(log.value(), {{"type", "session_end"}, {"trials", r.total}}, last);

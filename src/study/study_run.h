@@ -8,7 +8,10 @@
 #pragma once
 
 #include <cstdint>
+#include <optional>
 #include <string>
+
+#include <nlohmann/json.hpp>
 
 #include "core/result.h"
 #include "study/experiment.h"
@@ -26,10 +29,37 @@ struct ObserverSpec {
   std::uint64_t seed = 0;  // 0: the participant's own seed
 };
 
+// What one trial shows, chosen (from the procedure and the seeds) before anyone answers it.
+struct TrialStimulus {
+  int trial = 0;           // from 1
+  int total = 0;           // trials in the experiment, practice included
+  bool practice = false;
+  int block = 0;           // from 1 (0: practice)
+  int condition = 0;       // index into Experiment::conditions
+  // threshold: the difference shown, the two values and where the comparison is (interval 1 or 2)
+  double level = 0.0, reference = 0.0, comparison = 0.0;
+  int interval = 0;
+  int shown = -1;          // identification: the material shown (index into Experiment::materials)
+};
+
+// Who answers the trials: the simulated participant (RunSpec::observer) when none is given, or
+// a person at the window (app/study/study_window.h).
+class Responder {
+ public:
+  virtual ~Responder() = default;
+  // The answer: threshold, the interval named (1 or 2); identification, the material named
+  // (its index). None: the person stopped (Esc, a signal); the run ends there, every trial
+  // answered before it kept, and `study resume` goes on from it.
+  virtual Result<std::optional<int>> answer(const TrialStimulus& t) = 0;
+  // Who answered, for the log's "observer" member: {"kind": "person", ...}.
+  virtual nlohmann::json describe() const = 0;
+};
+
 struct RunSpec {
   std::string participant;  // P01, ...
   std::string out_dir;      // the study's directory: the log goes to out_dir/participant/trials.jsonl
-  ObserverSpec observer;
+  ObserverSpec observer;    // the simulated participant, when `responder` is null
+  Responder* responder = nullptr;
   int stop_after = 0;       // > 0: stop after this many new trials (a break; run again to go on)
   bool resume_only = false; // `study resume`: an error when there is no log to go on from
 };
@@ -40,6 +70,7 @@ struct RunReport {
   int done_before = 0;   // whole trials already in the log
   int written = 0;       // trials this run added
   bool complete = false; // session_end written (now or before)
+  bool stopped = false;  // the responder stopped before the end (Esc, a signal)
   std::string torn;      // the warning for a cut-off last line, when there was one
 };
 

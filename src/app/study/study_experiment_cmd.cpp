@@ -1,12 +1,15 @@
 #include "app/study/study_experiment_cmd.h"
 
 #include <cstdio>
+#include <memory>
 #include <string>
 #include <string_view>
 #include <vector>
 
 #include "app/cli/cli.h"
 #include "app/cli/cli_groups.h"
+#include "app/cli/stop_signal.h"
+#include "app/study/study_window.h"
 #include "core/file_io.h"
 #include "study/experiment_scene.h"
 #include "study/study_events.h"
@@ -66,7 +69,7 @@ void declare_run(cli::Command& cmd, RunArgs& a) {
   app.add_option("--participant", a.participant, "the participant's ID, as `study plan` lists them (P01, ...)")
       ->required()->type_name("ID");
   app.add_option("--out", a.out, "the study's folder: the log goes to DIR/ID/trials.jsonl")->required()->type_name("DIR");
-  app.add_flag("--simulate", a.simulate, "a simulated participant answers (the window run is not built yet)");
+  app.add_flag("--simulate", a.simulate, "a simulated participant answers, headless (without it: a person, in a window)");
   cli::add_choice(app, "--shape", "weibull|logistic|normal", a.shape, {"weibull", "logistic", "normal"}, "weibull",
                   "the simulated participant's psychometric function (default weibull)");
   cli::add_positive(app, "--threshold", "ALPHA", a.threshold, 1e9, "0.1", "its threshold alpha, a difference (default 0.1)");
@@ -78,25 +81,54 @@ void declare_run(cli::Command& cmd, RunArgs& a) {
                "its answers' seed (default 0: the participant's seed)");
   cli::add_int(app, "--stop-after", "N", a.stop_after, 0LL, 1'000'000LL, "stop after N new trials (a break; run again to go on)");
   cli::add_quiet_option(app, a.quiet);
-  cmd.usage("pseudoshadow study run EXPERIMENT --participant P01 --simulate [observer options] --out DIR");
+  cmd.usage("pseudoshadow study run EXPERIMENT --participant P01 --out DIR [--simulate [observer options]]");
+  app.footer(std::string(cli::kExitStatusHelp) + " (0 also when Esc stops the window: `study resume` goes on)" +
+             cli::kExitSignalHelp);
+}
+
+// "pseudoshadow study resume EXPERIMENT --participant P01 --out DIR": how a stopped run goes on.
+std::string resume_command(const RunArgs& a) {
+  return "pseudoshadow study resume " + a.experiment + " --participant " + a.participant + " --out " + a.out;
 }
 
 int run_main(const cli::Command& cmd, const RunArgs& a) {
-  if (!a.simulate)
-    return cmd.usage_error(make_error("the window run is not built yet: give --simulate for a simulated participant "
-                                      "(docs/study.md, \"Running\")"));
   if (Result<int> id = study::participant_index(a.participant); !id) return cmd.usage_error(id.error());
   study::Experiment e;
   if (int rc = load(cmd, a.experiment, e); rc != cli::kExitOk) return rc;
-  study::RunSpec spec{a.participant, a.out, {}, static_cast<int>(a.stop_after), cmd.name() == "study resume"};
+  study::RunSpec spec;
+  spec.participant = a.participant;
+  spec.out_dir = a.out;
+  spec.stop_after = static_cast<int>(a.stop_after);
+  spec.resume_only = cmd.name() == "study resume";
   spec.observer.shape = a.shape == "logistic" ? study::Shape::kLogistic
                         : a.shape == "normal" ? study::Shape::kCumulativeNormal
                                               : study::Shape::kWeibull;
   spec.observer.truth = {a.threshold, a.slope, 0.5, a.lapse};
   spec.observer.p_correct = a.p_correct;
   spec.observer.seed = static_cast<std::uint64_t>(a.observer_seed);
+  // Without --simulate a person answers in the window (docs/study.md, "In the window").
+  const cli::StopSignals stop;  // SIGTERM, SIGINT, SIGHUP: the run ends as Esc ends it
+  std::unique_ptr<StudyWindow> window;
+  if (!a.simulate) {
+    Result<std::unique_ptr<StudyWindow>> w = StudyWindow::open(e, {stop.predicate()});
+    if (!w) return cmd.fail(w.error());
+    window = std::move(w.value());
+    spec.responder = window.get();
+  }
   Result<study::RunReport> r = study::run_participant(e, spec);
+  window.reset();  // the window closes before the lines below
   if (!r) return cmd.fail(r.error());
+  if (r->stopped) {
+    const int logged = r->done_before + r->written;
+    if (stop.requested()) {
+      std::fprintf(stderr, "%s\n",
+                   cli::stop_line("study", stop, "trial log", r->log_path, "resume with: " + resume_command(a)).c_str());
+      return stop.exit_code();
+    }
+    std::fprintf(stderr, "study: stopped after %d of %d trials; the log is %s; resume with: %s\n", logged, r->total,
+                 r->log_path.c_str(), resume_command(a).c_str());
+    return cli::kExitOk;
+  }
   if (!r->torn.empty()) std::fprintf(stderr, "pseudoshadow %s: warning: %s\n", cmd.name().c_str(), r->torn.c_str());
   if (!a.quiet)
     std::printf("%s: %d of %d trials logged (%d before this run, %d now)%s\n", r->log_path.c_str(),
@@ -161,9 +193,10 @@ constexpr const char* kPlanDescription =
     "Each participant's ID, seed and condition order (a balanced Latin square of the experiment's conditions)\n"
     "as CSV (docs/study.md, \"Planning\").";
 constexpr const char* kRunDescription =
-    "One participant through an experiment, headless: a simulated participant answers every trial, each\n"
-    "appended to DIR/ID/trials.jsonl with its SHA-256 and fsync'd. Run again on the same DIR (or use\n"
-    "`study resume`), it goes on after the last whole trial (docs/study.md, \"Running\").";
+    "One participant through an experiment: a person in a window, answering with the keys (docs/study.md,\n"
+    "\"In the window\"), or with --simulate a simulated participant, headless. Each trial is appended to\n"
+    "DIR/ID/trials.jsonl with its SHA-256 and fsync'd. Run again on the same DIR (or use `study resume`),\n"
+    "it goes on after the last whole trial (docs/study.md, \"Running\").";
 constexpr const char* kSummarizeDescription =
     "Checks every trial log's checksums, fits each participant and condition (threshold, slope, 95 % bootstrap\n"
     "intervals, Weber fraction; or the confusion matrix and information transfer) and writes the tables,\n"
