@@ -164,7 +164,11 @@ Result<SessionEvents> session_events(const TrialLog& log, const std::string& log
 Result<EventsFiles> write_session_events(const std::string& log_path) {
   Result<TrialLog> log = read_trial_log(log_path);
   if (!log) return log.error();
-  Result<SessionEvents> ev = session_events(log.value(), log_path);
+  return write_session_events(log.value(), log_path);
+}
+
+Result<EventsFiles> write_session_events(const TrialLog& log, const std::string& log_path) {
+  Result<SessionEvents> ev = session_events(log, log_path);
   if (!ev) return ev.error();
   const std::filesystem::path dir = std::filesystem::path(log_path).parent_path();
   EventsFiles f{(dir / (ev->stem + ".tsv")).string(), (dir / (ev->stem + ".json")).string()};

@@ -38,5 +38,7 @@ struct EventsFiles {
 // Reads and checks the log at `log_path` (read_trial_log), then writes its events files beside
 // it, each atomically. A log that does not check is that error and writes nothing.
 Result<EventsFiles> write_session_events(const std::string& log_path);
+// The same from a log already read and checked (`study summarize` reads each log once).
+Result<EventsFiles> write_session_events(const TrialLog& log, const std::string& log_path);
 
 }  // namespace ps::study

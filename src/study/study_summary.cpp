@@ -98,11 +98,15 @@ void fit_condition(ConditionResult& c, const ParticipantResult& p, const std::ve
 Result<ParticipantResult> summarize_participant(const std::string& log_path, const SummaryOptions& o) {
   Result<TrialLog> log = read_trial_log(log_path);
   if (!log) return log.error();
+  return summarize_participant(log.value(), log_path, o);
+}
+
+Result<ParticipantResult> summarize_participant(const TrialLog& log, const std::string& log_path, const SummaryOptions& o) {
   ParticipantResult p;
   p.log = log_path;
-  p.torn = log.value().torn;
+  p.torn = log.torn;
   std::vector<std::vector<TrialResult>> trials;
-  for (const LogLine& l : log.value().lines) {
+  for (const LogLine& l : log.lines) {
     try {
       const std::string type = l.json.at("type");
       if (l.number == 1) read_start(p, l.json);

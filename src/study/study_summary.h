@@ -13,6 +13,7 @@
 #include "core/result.h"
 #include "study/fit.h"
 #include "study/identification.h"
+#include "study/study_log.h"
 
 namespace ps::study {
 
@@ -52,7 +53,10 @@ struct SummaryOptions {
 // The trials.jsonl files under each argument: a log itself, a participant's folder, or a study's
 // folder (each subfolder's log, in name order).
 Result<std::vector<std::string>> find_trial_logs(const std::vector<std::string>& args);
+// One participant's log, read and checked (read_trial_log), fitted per condition.
 Result<ParticipantResult> summarize_participant(const std::string& log_path, const SummaryOptions& o);
+// The same from a log already read and checked; `log_path` names it in errors and the result.
+Result<ParticipantResult> summarize_participant(const TrialLog& log, const std::string& log_path, const SummaryOptions& o);
 
 // participants.csv, groups.csv, summary.md and (gnuplot found) psychometric.png or
 // confusion.png in `dir` (created); `notes` get the plots skipped and why.

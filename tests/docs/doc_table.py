@@ -94,7 +94,8 @@ def lookup(table, cmd):
 
 def needs_window(cmd):
     """None: headless. "xvfb": runs as written (it starts its own X server). "esc": opens a
-    window and waits for a person (run; calibrate without --observer; maze with the mouse)."""
+    window and waits for a person (run; calibrate without --observer; maze with the mouse;
+    study run or resume without --simulate)."""
     if cmd.key.startswith("xvfb-run"):
         return "xvfb"
     words = program_words(cmd)
@@ -104,6 +105,8 @@ def needs_window(cmd):
     if sub == "run":
         return "esc"
     if sub == "calibrate" and "--observer" not in rest:
+        return "esc"
+    if sub == "study" and rest and rest[0] in ("run", "resume") and "--simulate" not in rest:
         return "esc"
     if sub == "maze" and not (rest and rest[0] in ("script", "plan", "summarize")) and \
             not any(w.startswith("--device") or w == "--resume" for w in rest):

@@ -1,6 +1,7 @@
 #include "app/study/study_experiment_cmd.h"
 
 #include <cstdio>
+#include <filesystem>
 #include <memory>
 #include <string>
 #include <string_view>
@@ -13,6 +14,7 @@
 #include "core/file_io.h"
 #include "study/experiment_scene.h"
 #include "study/study_events.h"
+#include "study/study_log.h"
 #include "study/study_plan.h"
 #include "study/study_run.h"
 #include "study/study_summary.h"
@@ -91,6 +93,15 @@ std::string resume_command(const RunArgs& a) {
   return "pseudoshadow study resume " + a.experiment + " --participant " + a.participant + " --out " + a.out;
 }
 
+// Whether a participant's log has ended (its last line session_end): then there is nothing to
+// open a window for, and run_participant says the log is complete. A log that does not read is
+// left to run_participant's message.
+bool ended(const std::string& log_path) {
+  if (!std::filesystem::exists(log_path)) return false;
+  const Result<study::TrialLog> log = study::read_trial_log(log_path);
+  return log && !log->lines.empty() && log->lines.back().json.value("type", "") == "session_end";
+}
+
 int run_main(const cli::Command& cmd, const RunArgs& a) {
   if (Result<int> id = study::participant_index(a.participant); !id) return cmd.usage_error(id.error());
   study::Experiment e;
@@ -109,7 +120,7 @@ int run_main(const cli::Command& cmd, const RunArgs& a) {
   // Without --simulate a person answers in the window (docs/study.md, "In the window").
   const cli::StopSignals stop;  // SIGTERM, SIGINT, SIGHUP: the run ends as Esc ends it
   std::unique_ptr<StudyWindow> window;
-  if (!a.simulate) {
+  if (!a.simulate && !ended(a.out + "/" + a.participant + "/trials.jsonl")) {
     Result<std::unique_ptr<StudyWindow>> w = StudyWindow::open(e, {stop.predicate()});
     if (!w) return cmd.fail(w.error());
     window = std::move(w.value());
@@ -159,10 +170,13 @@ int summarize_main(const cli::Command& cmd, const SummarizeArgs& a) {
   Result<std::vector<std::string>> logs = study::find_trial_logs(a.logs);
   if (!logs) return cmd.fail(logs.error());
   std::vector<study::ParticipantResult> people;
+  std::vector<study::TrialLog> read;  // each log read and checked once: for its fit, then its events
   std::vector<std::string> notes;
   for (const std::string& log : logs.value()) {
-    Result<study::ParticipantResult> p =
-        study::summarize_participant(log, {static_cast<int>(a.resamples), static_cast<std::uint64_t>(a.seed)});
+    Result<study::TrialLog> lines = study::read_trial_log(log);
+    if (!lines) return cmd.fail(lines.error());
+    Result<study::ParticipantResult> p = study::summarize_participant(
+        lines.value(), log, {static_cast<int>(a.resamples), static_cast<std::uint64_t>(a.seed)});
     if (!p) return cmd.fail(p.error());
     if (!people.empty() && (p->experiment != people[0].experiment || p->task != people[0].task))
       return cmd.usage_error(make_error(log + ": of experiment '" + p->experiment + "', not '" + people[0].experiment +
@@ -173,15 +187,17 @@ int summarize_main(const cli::Command& cmd, const SummarizeArgs& a) {
                                           ": give each participant once"));
     if (!p->torn.empty()) notes.push_back(p->torn);
     people.push_back(std::move(p.value()));
+    read.push_back(std::move(lines.value()));
   }
   // Each ended session's events.tsv and sidecar, beside its log, from the log just checked; a
   // session not ended (or cut off) gets none, with a note.
-  for (const study::ParticipantResult& p : people) {
+  for (std::size_t i = 0; i < people.size(); ++i) {
+    const study::ParticipantResult& p = people[i];
     if (!p.complete || !p.torn.empty()) {
       notes.push_back(p.participant + ": no events.tsv written: the session has not ended (resume it, then summarize again)");
       continue;
     }
-    if (Result<study::EventsFiles> f = study::write_session_events(p.log); !f) return cmd.fail(f.error());
+    if (Result<study::EventsFiles> f = study::write_session_events(read[i], p.log); !f) return cmd.fail(f.error());
   }
   if (Status s = study::write_study_summary(a.out, people, notes); !s) return cmd.fail(s.error());
   for (const std::string& n : notes) std::fprintf(stderr, "pseudoshadow %s: %s\n", cmd.name().c_str(), n.c_str());
