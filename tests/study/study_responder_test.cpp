@@ -83,7 +83,9 @@ TEST(StudyResponderTest, TheLogHoldsExactlyTheAnswersGivenForTheStimuliShown) {
     EXPECT_EQ(trials[i].at("correct"), person.answers[i] == t.interval);
     EXPECT_EQ(trials[i].at("practice"), i < 4);
     // Practice is shown at the largest difference; the trials that count at Psi's choices.
-    if (i < 4) EXPECT_DOUBLE_EQ(t.level, e.threshold.level_max);
+    if (i < 4) {
+      EXPECT_DOUBLE_EQ(t.level, e.threshold.level_max);
+    }
   }
 }
 
