@@ -18,7 +18,9 @@
 
 namespace ps::study {
 
-const char* task_name(Task t) { return t == Task::kThreshold ? "threshold" : "identification"; }
+const char* task_name(Task t) {
+  return t == Task::kThreshold ? "threshold" : t == Task::kIdentification ? "identification" : "targeting";
+}
 const char* method_name(Method m) { return m == Method::kPsi ? "psi" : "staircase"; }
 
 namespace {
@@ -33,6 +35,7 @@ class Reader {
  public:
   explicit Reader(std::string source) : source_(std::move(source)) {}
   int line(const toml::node& n) const { return std::max(1, static_cast<int>(n.source().begin.line)); }
+  std::string where(int line) const { return source_ + ":" + std::to_string(line) + ": "; }
   [[noreturn]] void fail(const toml::node& n, const std::string& what) const {
     throw BadFile(source_ + ":" + std::to_string(line(n)) + ": " + what);
   }
@@ -70,8 +73,10 @@ class Reader {
     for (const toml::node& e : *a) out.push_back(text(e, key + "[]"));
     return out;
   }
+  // An empty array is allowed: a condition that is the scene as it stands (a baseline).
   std::vector<Override> overrides(const toml::node& n, const std::string& key) const {
     std::vector<Override> out;
+    if (const toml::array* a = n.as_array(); a != nullptr && a->empty()) return out;
     for (const std::string& s : strings(n, key)) {
       if (s.find('=') == std::string::npos || s.front() == '=')
         fail(n, "'" + key + "' holds --set-style overrides KEY=VALUE, e.g. \"materials.wood.a_max=0.5\" (got \"" + s + "\")");
@@ -103,15 +108,18 @@ class Reader {
   std::string source_;
 };
 
-void read_experiment_table(const Reader& r, const toml::node& n, Experiment& e) {
+void read_experiment_table(const Reader& r, const toml::node& n, Experiment& e, int& trials_line) {
   r.keys(r.table(n, "experiment"), "experiment",
          {{"name", [&](const toml::node& v) { e.name = r.text(v, "name"); }},
           {"task", [&](const toml::node& v) {
-             e.task = r.choice(v, "task", {"threshold", "identification"}) == "threshold" ? Task::kThreshold
-                                                                                         : Task::kIdentification;
+             const std::string t = r.choice(v, "task", {"threshold", "identification", "targeting"});
+             e.task = t == "threshold" ? Task::kThreshold : t == "identification" ? Task::kIdentification : Task::kTargeting;
            }},
           {"instructions", [&](const toml::node& v) { e.instructions = r.text(v, "instructions"); }},
-          {"trials", [&](const toml::node& v) { e.trials = r.whole(v, "trials", 1, 10000); }},
+          {"trials", [&](const toml::node& v) {
+             e.trials = r.whole(v, "trials", 1, 10000);
+             trials_line = r.line(v);
+           }},
           {"blocks", [&](const toml::node& v) { e.blocks = r.whole(v, "blocks", 1, 100); }},
           {"practice_trials", [&](const toml::node& v) { e.practice = r.whole(v, "practice_trials", 0, 1000); }},
           {"first_seed", [&](const toml::node& v) {
@@ -171,13 +179,45 @@ std::vector<Variant> read_variants(const Reader& r, const toml::node& n, const s
   return out;
 }
 
+// Numbers in [lo, hi], at least one.
+std::vector<double> numbers(const Reader& r, const toml::node& n, const std::string& key, double lo, double hi) {
+  const toml::array* a = n.as_array();
+  if (a == nullptr || a->empty()) r.fail(n, "'" + key + "' must be an array of numbers, e.g. [40.0, 80.0]");
+  std::vector<double> out;
+  for (const toml::node& x : *a) out.push_back(r.number(x, key, lo, hi));
+  return out;
+}
+
+std::array<double, 3> vec3(const Reader& r, const toml::node& n, const std::string& key) {
+  const toml::array* a = n.as_array();
+  if (a == nullptr || a->size() != 3) r.fail(n, "'" + key + "' must be [x, y, z] in mm");
+  return {r.number(*a->get(0), key, -1e6, 1e6), r.number(*a->get(1), key, -1e6, 1e6), r.number(*a->get(2), key, -1e6, 1e6)};
+}
+
+void read_targeting_table(const Reader& r, const toml::node& n, TargetingSpec& t) {
+  r.keys(r.table(n, "targeting"), "targeting",
+         {{"distances_mm", [&](const toml::node& v) { t.distances_mm = numbers(r, v, "distances_mm", 1e-3, 1e5); }},
+          {"widths_mm", [&](const toml::node& v) { t.widths_mm = numbers(r, v, "widths_mm", 1e-3, 1e5); }},
+          {"targets", [&](const toml::node& v) {
+             t.targets = r.whole(v, "targets", 3, 63);
+             if (t.targets % 2 == 0)
+               r.fail(v, "'targets' must be odd (ISO 9241-9): selecting across an even ring visits only two targets");
+           }},
+          {"sequences", [&](const toml::node& v) { t.sequences = r.whole(v, "sequences", 1, 100); }},
+          {"centre", [&](const toml::node& v) { t.centre = vec3(r, v, "centre"); }},
+          {"normal", [&](const toml::node& v) {
+             t.normal = vec3(r, v, "normal");
+             if (t.normal[0] == 0.0 && t.normal[1] == 0.0 && t.normal[2] == 0.0) r.fail(v, "'normal' must not be [0, 0, 0]");
+           }}});
+}
+
 void read_identification_table(const Reader& r, const toml::node& n, Experiment& e) {
   r.keys(r.table(n, "identification"), "identification",
          {{"materials", [&](const toml::node& v) { e.materials = read_variants(r, v, "identification.materials"); }}});
 }
 
 // What the tables cannot say alone: the levels' order, the task's own tables and keys.
-void check_whole(const Reader& r, const toml::table& root, Experiment& e) {
+void check_whole(const Reader& r, const toml::table& root, Experiment& e, int trials_line) {
   const auto need = [&](bool ok, const std::string& what) {
     if (!ok) r.fail(root, what);
   };
@@ -188,6 +228,19 @@ void check_whole(const Reader& r, const toml::table& root, Experiment& e) {
     need(e.threshold.level_min < e.threshold.level_max, "[threshold] level_min must be below level_max");
     if (e.response_keys.empty()) e.response_keys = {"1", "2"};
     need(e.response_keys.size() == 2, "[experiment] response_keys: a 2AFC threshold takes 2 keys (interval 1, interval 2)");
+  } else if (e.task == Task::kTargeting) {
+    const TargetingSpec& t = e.targeting;
+    const int derived = t.sequences * static_cast<int>(t.distances_mm.size() * t.widths_mm.size()) * t.targets;
+    if (trials_line > 0)
+      throw BadFile(r.where(trials_line) + "a targeting task derives its trials ([targeting] sequences x distances x widths x targets = " +
+                    std::to_string(derived) + "): leave 'trials' out");
+    e.trials = derived;
+    need(e.response_keys.empty(), "[experiment] response_keys: a targeting task is answered by touching, not by keys");
+    for (const double d : t.distances_mm)
+      for (const double w : t.widths_mm)
+        need(w < d * std::sin(3.14159265358979323846 / t.targets),
+             "[targeting] a target of width " + std::to_string(w) + " mm overlaps its neighbours on the ring of " + std::to_string(d) +
+                 " mm: each W must be below D sin(pi / targets)");
   } else {
     need(e.materials.size() >= 2, "an identification task needs at least 2 [[identification.materials]]");
     if (e.response_keys.empty())
@@ -209,14 +262,16 @@ Result<Experiment> parse_experiment(const std::string& text, const std::string& 
   Experiment e;
   e.path = source_name;
   const Reader r(source_name);
+  int trials_line = 0;
   try {
     r.keys(parsed.value(), "the file's top level",
-           {{"experiment", [&](const toml::node& n) { read_experiment_table(r, n, e); }},
+           {{"experiment", [&](const toml::node& n) { read_experiment_table(r, n, e, trials_line); }},
+            {"targeting", [&](const toml::node& n) { read_targeting_table(r, n, e.targeting); }},
             {"scene", [&](const toml::node& n) { read_scene_table(r, n, e); }},
             {"threshold", [&](const toml::node& n) { read_threshold_table(r, n, e.threshold); }},
             {"identification", [&](const toml::node& n) { read_identification_table(r, n, e); }},
             {"conditions", [&](const toml::node& n) { e.conditions = read_variants(r, n, "conditions"); }}});
-    check_whole(r, parsed.value(), e);
+    check_whole(r, parsed.value(), e, trials_line);
   } catch (const BadFile& bad) {
     return make_error(bad.what());
   }
@@ -247,6 +302,13 @@ std::vector<std::string> threshold_overrides(const Experiment& e, const Variant&
   std::string value = e.threshold.value;
   value.replace(value.find("{}"), 2, std::string(number, end));
   for (const std::string& k : e.threshold.keys) out.push_back(k + "=" + value);
+  return out;
+}
+
+std::vector<std::string> condition_overrides(const Experiment& e, const Variant& condition) {
+  std::vector<std::string> out;
+  append(out, e.scene_set);
+  append(out, condition.set);
   return out;
 }
 

@@ -7,6 +7,7 @@
 // keys exist in the scene is checked by experiment_scene.h.
 #pragma once
 
+#include <array>
 #include <cstdint>
 #include <string>
 #include <vector>
@@ -16,9 +17,9 @@
 
 namespace ps::study {
 
-enum class Task { kThreshold, kIdentification };
+enum class Task { kThreshold, kIdentification, kTargeting };
 enum class Method { kPsi, kStaircase };
-const char* task_name(Task t);      // "threshold", "identification"
+const char* task_name(Task t);      // "threshold", "identification", "targeting"
 const char* method_name(Method m);  // "psi", "staircase"
 
 // `--set`-style overrides ("KEY=VALUE"), each with the line of the file that gave it.
@@ -48,6 +49,18 @@ struct ThresholdSpec {
   double lapse = 0.02;            // the lapse rate Psi assumes
 };
 
+// The targeting task's design (docs/study.md, "Targeting"): ISO 9241-9's multidirectional task,
+// `targets` round targets of diameter W on a ring of diameter D lying on a plane of the scene,
+// selected across the ring one after another; each (D, W) is a sequence of `targets` movements.
+struct TargetingSpec {
+  std::vector<double> distances_mm{40.0, 80.0, 160.0};  // ring diameters D
+  std::vector<double> widths_mm{5.0, 10.0};             // target diameters W
+  int targets = 9;        // per ring; odd, so that selecting across visits every target
+  int sequences = 1;      // each (D, W) per condition and block
+  std::array<double, 3> centre{0.0, 0.0, 0.0};  // the ring's centre on the surface, mm
+  std::array<double, 3> normal{0.0, 0.0, 1.0};  // the plane's normal (the ring lies across it)
+};
+
 struct Experiment {
   std::string path;        // the file, as given
   std::string name;        // [experiment] name
@@ -63,6 +76,7 @@ struct Experiment {
   ThresholdSpec threshold;
   std::vector<Variant> conditions;  // at least one ("main" when the file names none)
   std::vector<Variant> materials;   // identification: the K stimuli
+  TargetingSpec targeting;          // targeting: trials = sequences x |D| x |W| x targets (derived)
 };
 
 // Parses experiment text; `source_name` names the file in messages and anchors [scene] path.
@@ -73,5 +87,7 @@ Result<Experiment> load_experiment(const std::string& path);
 // `level` (threshold: reference or reference + a difference) or the material's.
 std::vector<std::string> threshold_overrides(const Experiment& e, const Variant& condition, double level);
 std::vector<std::string> material_overrides(const Experiment& e, const Variant& condition, const Variant& material);
+// A targeting condition's overrides: the scene's, then the condition's.
+std::vector<std::string> condition_overrides(const Experiment& e, const Variant& condition);
 
 }  // namespace ps::study

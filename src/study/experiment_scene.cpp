@@ -28,6 +28,10 @@ Status check_experiment_scene(const Experiment& e) {
         return s;
       continue;
     }
+    if (e.task == Task::kTargeting) {
+      if (Status s = try_load(e, std::max(1, c.line), in, condition_overrides(e, c)); !s) return s;
+      continue;
+    }
     for (const Variant& m : e.materials)
       if (Status s = try_load(e, m.line, in + " and material '" + m.name + "'", material_overrides(e, c, m)); !s) return s;
   }

@@ -101,6 +101,16 @@ std::vector<Column> columns_of(const json& start) {
     cols.push_back({"interval", "interval", describe("Comparison interval", "The interval that showed the comparison.", "", intervals)});
     cols.push_back({"response", "response", describe("Response", "The interval the participant named.", "", intervals)});
     cols.push_back({"key", "key", describe("Response key", "The key of the response.", "", key_levels)});
+  } else if (task == "targeting") {
+    cols.push_back({"sequence", "sequence", describe("Sequence", "The (D, W) sequence of the block and condition the movement belongs to, from 1.")});
+    cols.push_back({"ring_diameter", "ring_diameter", describe("Ring diameter", "D: the diameter of the ring of targets.", "mm")});
+    cols.push_back({"distance", "distance", describe("Movement distance", "The centre-to-centre distance from the target left to the one selected (the ring's chord).", "mm")});
+    cols.push_back({"width", "width", describe("Target width", "W: the targets' diameter.", "mm")});
+    cols.push_back({"from", "from", describe("Target left", "The index on the ring of the target the movement started from.")});
+    cols.push_back({"target", "target", describe("Target", "The index on the ring of the target to select.")});
+    cols.push_back({"movement_time_s", "movement_time_s", describe("Movement time", "From leaving the last target to the selection.", "s")});
+    cols.push_back({"hit", "hit", describe("Hit", "Whether the selection was inside the target.", "", {{"1", "inside"}, {"0", "a miss"}})});
+    return cols;  // no "correct": a selection is a hit or a miss
   } else {
     const json& materials = start.at("materials");
     ojson names = ojson::object(), indices = ojson::object(), key_levels = ojson::object();

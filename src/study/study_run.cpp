@@ -19,6 +19,7 @@
 #include "study/simulate.h"
 #include "study/study_log.h"
 #include "study/study_plan.h"
+#include "study/targeting.h"
 
 namespace ps::study {
 
@@ -33,7 +34,7 @@ std::uint64_t trial_seed(std::uint64_t seed, std::uint64_t trial, std::uint64_t 
 
 namespace {
 
-enum Stream : std::uint64_t { kInterval = 1, kObserver = 2, kMaterials = 3 };
+enum Stream : std::uint64_t { kInterval = 1, kObserver = 2, kMaterials = 3, kCells = 4 };
 
 // Where trial k (from 0) stands: practice first, then each block runs the participant's
 // conditions in order, `trials` each.
@@ -89,6 +90,7 @@ struct RunState {
   PlanEntry plan;
   std::vector<Track> tracks;  // one per condition
   std::uint64_t observer_seed = 0;
+  std::optional<Point3> last_end;  // targeting: the last selection, where the next movement begins
 };
 
 // The trial's stimulus: threshold, the level (the track's next; practice at level_max) and which
@@ -163,6 +165,56 @@ int material_of(const RunState& s, const Slot& slot) {
   return order[static_cast<std::size_t>(slot.in_segment % K)];
 }
 
+// A fair shuffle of 0..n-1 from the engine's bits (fit.h's uniform01), as material_of's.
+std::vector<int> shuffled(int n, std::mt19937_64& rng) {
+  std::vector<int> order(static_cast<std::size_t>(n));
+  for (int i = 0; i < n; ++i) order[static_cast<std::size_t>(i)] = i;
+  for (int i = n - 1; i > 0; --i)
+    std::swap(order[static_cast<std::size_t>(i)], order[static_cast<std::size_t>(uniform01(rng) * (i + 1))]);
+  return order;
+}
+
+ojson point_json(const Point3& p) { return ojson::array({p.x, p.y, p.z}); }
+
+// A targeting trial: one movement of a sequence. Each block and condition runs every (D, W)
+// `sequences` times, in an order shuffled from the participant's seed; a sequence is `targets`
+// movements across its ring (targeting.h). Practice runs the first condition's order of block 1.
+// The simulated participant moves from where its last selection was (the previous target's
+// centre at a sequence's start) and selects where its Fitts law and scatter put it.
+ojson targeting_trial(RunState& s, const Slot& slot, int k) {
+  const TargetingSpec& t = s.e.targeting;
+  const int n = t.targets, nw = static_cast<int>(t.widths_mm.size());
+  const int cells = t.sequences * static_cast<int>(t.distances_mm.size()) * nw;
+  const auto u = [](int v) { return static_cast<std::uint64_t>(v); };
+  const int block = slot.practice ? 1 : slot.block;
+  const int condition = slot.practice ? s.plan.order[0] : slot.condition;
+  std::mt19937_64 rng(trial_seed(trial_seed(s.plan.seed, u(block), kCells), u(condition), kCells));
+  const std::vector<int> order = shuffled(cells, rng);
+  const int sequence = (slot.in_segment / n) % cells, step = slot.in_segment % n;
+  const int cell = order[static_cast<std::size_t>(sequence)] % (cells / t.sequences);
+  const double diameter = t.distances_mm[static_cast<std::size_t>(cell / nw)], width = t.widths_mm[static_cast<std::size_t>(cell % nw)];
+  const Ring ring = make_ring(t, diameter);
+  const int from = target_at_step(n, step + n - 1), to = target_at_step(n, step);
+  const Point3 start = target_centre(ring, from), target = target_centre(ring, to);
+  const double chord = movement_distance(diameter, n);
+  if (step == 0) s.last_end.reset();  // a sequence starts on its first target
+  const Point3 began = s.last_end.value_or(start);
+  // The simulated movement: its time from the law at the nominal distance and width (the truth
+  // the summary recovers); its end point scattered about the target along the axis from where
+  // it began and across it (the pointer's frame: target at the distance along +x).
+  SimulatedPointer pointer(s.spec.observer.pointer, trial_seed(s.observer_seed, static_cast<std::uint64_t>(k), kObserver));
+  const PointingTrial p = pointer.point(chord, width);
+  const Point3 end = on_axis(ring, began, target, distance(began, target) + (p.end.x - chord), p.end.y);
+  const bool hit = distance(end, target) <= 0.5 * width;
+  s.last_end = end;
+  ojson j = {{"type", "trial"}, {"trial", k + 1}, {"practice", slot.practice}, {"block", slot.block},
+             {"condition", s.e.conditions[static_cast<std::size_t>(condition)].name}, {"sequence", sequence + 1},
+             {"ring_diameter", diameter}, {"distance", chord}, {"width", width}, {"from", from}, {"target", to},
+             {"start", point_json(start)}, {"target_centre", point_json(target)}, {"began", point_json(began)},
+             {"end", point_json(end)}, {"movement_time_s", p.movement_time_s}, {"hit", hit}};
+  return j;
+}
+
 ojson names(const std::vector<Variant>& v, const std::vector<int>& order = {}) {
   ojson a = ojson::array();
   if (order.empty())
@@ -180,9 +232,13 @@ std::string file_sha256(const std::string& path) {
 ojson observer_of(const RunState& s) {
   if (s.spec.responder) return ojson::parse(s.spec.responder->describe().dump());
   const ObserverSpec& o = s.spec.observer;
-  return {{"kind", "simulated"}, {"seed", s.observer_seed}, {"shape", shape_name(o.shape)},
-          {"threshold", o.truth.threshold}, {"slope", o.truth.slope}, {"guess", o.truth.guess},
-          {"lapse", o.truth.lapse}, {"p_correct", o.p_correct}};
+  ojson j = {{"kind", "simulated"}, {"seed", s.observer_seed}, {"shape", shape_name(o.shape)},
+             {"threshold", o.truth.threshold}, {"slope", o.truth.slope}, {"guess", o.truth.guess},
+             {"lapse", o.truth.lapse}, {"p_correct", o.p_correct}};
+  if (s.e.task == Task::kTargeting)  // its Fitts law and scatter (pointing_sim.h)
+    j["pointer"] = {{"a_s", o.pointer.a_s}, {"b_s_per_bit", o.pointer.b_s_per_bit}, {"mt_sd_s", o.pointer.mt_sd_s},
+                    {"lognormal_mt", o.pointer.lognormal_mt}, {"spread", o.pointer.spread}, {"lateral", o.pointer.lateral}};
+  return j;
 }
 
 ojson session_start(const RunState& s) {
@@ -197,6 +253,10 @@ ojson session_start(const RunState& s) {
                       {"reference", e.threshold.reference}, {"level_min", e.threshold.level_min},
                       {"level_max", e.threshold.level_max}, {"shape", shape_name(e.threshold.shape)},
                       {"criterion", e.threshold.criterion}, {"guess", 0.5}};
+  else if (e.task == Task::kTargeting)
+    j["targeting"] = {{"distances_mm", e.targeting.distances_mm}, {"widths_mm", e.targeting.widths_mm},
+                      {"targets", e.targeting.targets}, {"sequences", e.targeting.sequences},
+                      {"centre", e.targeting.centre}, {"normal", e.targeting.normal}};
   else
     j["materials"] = names(e.materials);
   j["observer"] = observer_of(s);
@@ -246,6 +306,10 @@ Result<int> replay(RunState& s, const TrialLog& log, bool& complete, std::string
     const Slot slot = slot_of(s.e, s.plan, done - 1);
     if (s.e.task == Task::kThreshold && !slot.practice)
       s.tracks[static_cast<std::size_t>(slot.condition)].update(l.json.at("level"), l.json.at("correct"));
+    if (s.e.task == Task::kTargeting) {  // where the next movement begins
+      const nlohmann::json& p = l.json.at("end");
+      s.last_end = Point3{p.at(0), p.at(1), p.at(2)};
+    }
   }
   last = log.lines.back().checksum;
   return done;
@@ -297,7 +361,10 @@ class DirLock {
 Result<RunReport> run_participant(const Experiment& e, const RunSpec& spec) {
   Result<int> index = participant_index(spec.participant);
   if (!index) return index.error();
-  RunState s{e, spec, plan_entry(e, index.value()), {}, 0};
+  if (e.task == Task::kTargeting && spec.responder)
+    return make_error(e.path + ": the targeting task runs with a simulated participant only so far (--simulate): "
+                      "its window run is not built yet");
+  RunState s{e, spec, plan_entry(e, index.value()), {}, 0, std::nullopt};
   s.plan.participant = spec.participant;
   s.observer_seed = spec.observer.seed != 0 ? spec.observer.seed : s.plan.seed;
   if (e.task == Task::kThreshold) s.tracks.assign(e.conditions.size(), Track(e.threshold));
@@ -325,6 +392,11 @@ Result<RunReport> run_participant(const Experiment& e, const RunSpec& spec) {
   if (exists && nlohmann::json::parse(observer_of(s).dump()) != observer_before) resumed["observer"] = observer_of(s);
   Status st = exists ? append(log.value(), resumed, last) : append(log.value(), session_start(s), last);
   for (int k = r.done_before; st && k < r.total && (spec.stop_after <= 0 || r.written < spec.stop_after); ++k) {
+    if (e.task == Task::kTargeting) {
+      st = append(log.value(), targeting_trial(s, slot_of(e, s.plan, k), k), last);
+      ++r.written;
+      continue;
+    }
     const TrialStimulus t = stimulus_of(s, slot_of(e, s.plan, k), k);
     int answer = 0;
     if (!spec.responder) {

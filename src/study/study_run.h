@@ -15,17 +15,19 @@
 
 #include "core/result.h"
 #include "study/experiment.h"
+#include "study/pointing_sim.h"
 #include "study/psychometric.h"
 
 namespace ps::study {
 
 // The simulated participant: a psychometric function for threshold tasks (the level is the
 // difference shown), a probability of naming the shown material for identification (a wrong
-// answer names one of the others, each alike).
+// answer names one of the others, each alike), a Fitts law and end-point scatter for targeting.
 struct ObserverSpec {
   Shape shape = Shape::kWeibull;
   PsychometricParams truth{0.1, 3.0, 0.5, 0.02};
   double p_correct = 0.6;
+  PointerParams pointer;
   std::uint64_t seed = 0;  // 0: the participant's own seed
 };
 
@@ -43,7 +45,8 @@ struct TrialStimulus {
 };
 
 // Who answers the trials: the simulated participant (RunSpec::observer) when none is given, or
-// a person at the window (app/study/study_window.h).
+// a person at the window (app/study/study_window.h). Threshold and identification tasks only:
+// a targeting run is simulated (its window run is not built yet).
 class Responder {
  public:
   virtual ~Responder() = default;

@@ -55,6 +55,18 @@ void read_start(ParticipantResult& p, const json& s) {
     p.truth = PsychometricParams{o.at("threshold"), o.at("slope"), o.at("guess"), o.at("lapse")};
     p.truth_shape = shape_named(o.at("shape"));
   }
+  if (const json o = s.value("observer", json::object()); o.value("kind", "") == "simulated" && p.task == "targeting") {
+    const json& q = o.at("pointer");
+    PointerParams t;
+    t.a_s = q.at("a_s");
+    t.b_s_per_bit = q.at("b_s_per_bit");
+    t.mt_sd_s = q.at("mt_sd_s");
+    t.lognormal_mt = q.at("lognormal_mt");
+    t.spread = q.at("spread");
+    t.lateral = q.at("lateral");
+    p.pointer_truth = t;
+  }
+  if (p.task == "targeting") return;
   if (p.task == "threshold") {
     const json& t = s.at("threshold");
     p.shape = shape_named(t.at("shape"));
@@ -65,6 +77,23 @@ void read_start(ParticipantResult& p, const json& s) {
     const std::size_t K = p.materials.size();
     for (ConditionResult& c : p.conditions) c.confusion.assign(K, std::vector<int>(K, 0));
   }
+}
+
+Point3 point_of(const json& a) { return {a.at(0), a.at(1), a.at(2)}; }
+
+// A targeting trial line as fitts.h reads it: the nominal distance and width, the axis from the
+// target it left to the one it selected, where the movement began and ended, its time and hit.
+PointingTrial pointing_trial(const json& l) {
+  PointingTrial t;
+  t.distance = l.at("distance");
+  t.width = l.at("width");
+  t.start = point_of(l.at("start"));
+  t.target = point_of(l.at("target_centre"));
+  t.end = point_of(l.at("end"));
+  t.began = point_of(l.at("began"));
+  t.movement_time_s = l.at("movement_time_s");
+  t.hit = l.at("hit");
+  return t;
 }
 
 std::size_t condition_index(const ParticipantResult& p, const std::string& name) {
@@ -116,6 +145,7 @@ Result<ParticipantResult> summarize_participant(const TrialLog& log, const std::
       const std::size_t c = condition_index(p, l.json.at("condition"));
       ++p.conditions[c].trials;
       if (p.task == "threshold") trials[c].push_back({l.json.at("level"), l.json.at("correct")});
+      else if (p.task == "targeting") p.conditions[c].pointing.push_back(pointing_trial(l.json));
       else ++p.conditions[c].confusion.at(l.json.at("shown_index")).at(l.json.at("answered_index"));
     } catch (const std::exception& e) {
       return make_error(log_path + ":" + std::to_string(l.number) + ": not a study log line (" + e.what() +
@@ -124,6 +154,7 @@ Result<ParticipantResult> summarize_participant(const TrialLog& log, const std::
   }
   for (std::size_t c = 0; c < p.conditions.size(); ++c) {
     if (p.task == "threshold") fit_condition(p.conditions[c], p, trials[c], o);
+    else if (p.task == "targeting") p.conditions[c].fitts = fitts_participant(p.conditions[c].pointing);
     else if (p.conditions[c].trials > 0) p.conditions[c].ident = identification_stats(ConfusionMatrix(p.conditions[c].confusion));
   }
   return p;

@@ -2,7 +2,8 @@
 // (study_log.h: a changed line is refused naming file:line), then fitted: a threshold task by
 // maximum likelihood per condition (threshold, slope, bootstrap 95 % intervals, Weber fraction),
 // an identification task as a confusion matrix per condition (percent correct, information
-// transfer, 2^IT). Practice trials are left out. The tables go to CSV, the summary to
+// transfer, 2^IT), a targeting task by ISO 9241-9 per condition (fitts.h: effective width,
+// throughput, the Fitts regressions). Practice trials are left out. The tables go to CSV, the summary to
 // summary.md, the psychometric curves to a gnuplot plot.
 #pragma once
 
@@ -12,7 +13,9 @@
 
 #include "core/result.h"
 #include "study/fit.h"
+#include "study/fitts.h"
 #include "study/identification.h"
+#include "study/pointing_sim.h"
 #include "study/study_log.h"
 
 namespace ps::study {
@@ -29,6 +32,9 @@ struct ConditionResult {
   // identification
   std::vector<std::vector<int>> confusion;
   IdentificationStats ident;
+  // targeting: the movements and their ISO 9241-9 reduction (fitts.h)
+  std::vector<PointingTrial> pointing;
+  FittsParticipant fitts;
 };
 
 struct ParticipantResult {
@@ -40,6 +46,7 @@ struct ParticipantResult {
   // The simulated participant's own function (session_start's "observer"); none for a person.
   std::optional<PsychometricParams> truth;
   Shape truth_shape = Shape::kWeibull;
+  std::optional<PointerParams> pointer_truth;  // targeting: the simulated participant's law
   bool complete = false;
   std::string torn;  // a cut-off last line's warning
   std::vector<ConditionResult> conditions;  // in the experiment's order

@@ -24,17 +24,44 @@ std::string num(double v) {
 }
 
 bool is_threshold(const std::vector<ParticipantResult>& people) { return !people.empty() && people[0].task == "threshold"; }
+bool is_targeting(const std::vector<ParticipantResult>& people) { return !people.empty() && people[0].task == "targeting"; }
+
+// A targeting condition's row: ISO 9241-9's measures over its cells, and the Fitts regression of
+// the cells' mean movement time on the nominal ID with its 95 % t interval.
+void targeting_row(std::ostringstream& o, const ConditionResult& c) {
+  int trials = 0, misses = 0;
+  double mt = 0.0, we = 0.0;
+  int with_we = 0;
+  for (const FittsCell& cell : c.fitts.cells) {
+    trials += cell.trials;
+    misses += cell.misses;
+    mt += cell.mean_mt_s * cell.trials;
+    if (std::isfinite(cell.effective_width)) {
+      we += cell.effective_width / cell.width;
+      ++with_we;
+    }
+  }
+  const LinearFit& f = c.fitts.on_id;
+  o << num(trials ? 100.0 * misses / trials : NAN) << "," << num(trials ? mt / trials : NAN) << ","
+    << num(with_we ? we / with_we : NAN) << "," << num(c.fitts.throughput_bps) << "," << c.fitts.cells_used << ","
+    << num(f.intercept) << "," << num(f.intercept_ci.low) << "," << num(f.intercept_ci.high) << "," << num(f.slope) << ","
+    << num(f.slope_ci.low) << "," << num(f.slope_ci.high) << "," << num(f.r_squared) << "\n";
+}
 
 std::string participants_csv(const std::vector<ParticipantResult>& people) {
   std::ostringstream o;
-  const bool th = is_threshold(people);
+  const bool th = is_threshold(people), tg = is_targeting(people);
   o << "participant,condition,trials,complete,"
-    << (th ? "threshold,threshold_low,threshold_high,slope,slope_low,slope_high,alpha,beta,lapse,weber,weber_low,weber_high,criterion\n"
-           : "percent_correct,information_bits,miller_madow_bits,corrected_bits,distinguishable\n");
+    << (th   ? "threshold,threshold_low,threshold_high,slope,slope_low,slope_high,alpha,beta,lapse,weber,weber_low,weber_high,criterion\n"
+        : tg ? "error_percent,movement_time_s,we_over_w,throughput_bps,cells_used,fitts_a_s,fitts_a_low,fitts_a_high,"
+               "fitts_b_s_per_bit,fitts_b_low,fitts_b_high,fitts_r2\n"
+             : "percent_correct,information_bits,miller_madow_bits,corrected_bits,distinguishable\n");
   for (const ParticipantResult& p : people)
     for (const ConditionResult& c : p.conditions) {
       o << p.participant << "," << c.condition << "," << c.trials << "," << (p.complete ? "yes" : "no") << ",";
-      if (th)
+      if (tg)
+        targeting_row(o, c);
+      else if (th)
         o << num(c.boot.threshold) << "," << num(c.boot.threshold_ci.low) << "," << num(c.boot.threshold_ci.high) << ","
           << num(c.boot.slope) << "," << num(c.boot.slope_ci.low) << "," << num(c.boot.slope_ci.high) << ","
           << num(c.fit.params.threshold) << "," << num(c.fit.params.slope) << "," << num(c.fit.params.lapse) << ","
@@ -58,8 +85,32 @@ struct Quantity {
   const char* name;
   double (*get)(const ConditionResult&);
 };
-std::vector<Quantity> quantities(bool threshold) {
-  if (threshold)
+// The movement time, error rate and We / W of a targeting condition, over its cells' trials.
+double mean_mt(const ConditionResult& c) {
+  double t = 0.0;
+  int n = 0;
+  for (const FittsCell& cell : c.fitts.cells) {
+    t += cell.mean_mt_s * cell.trials;
+    n += cell.trials;
+  }
+  return n ? t / n : NAN;
+}
+double error_percent(const ConditionResult& c) {
+  int m = 0, n = 0;
+  for (const FittsCell& cell : c.fitts.cells) {
+    m += cell.misses;
+    n += cell.trials;
+  }
+  return n ? 100.0 * m / n : NAN;
+}
+
+std::vector<Quantity> quantities(const std::string& task) {
+  if (task == "targeting")
+    return {{"throughput_bps", [](const ConditionResult& c) { return c.fitts.throughput_bps; }},
+            {"movement_time_s", mean_mt},
+            {"error_percent", error_percent},
+            {"fitts_b_s_per_bit", [](const ConditionResult& c) { return c.fitts.on_id.computable ? c.fitts.on_id.slope : NAN; }}};
+  if (task == "threshold")
     return {{"threshold", [](const ConditionResult& c) { return c.data.size() < 2 ? NAN : c.boot.threshold; }},
             {"slope", [](const ConditionResult& c) { return c.data.size() < 2 ? NAN : c.boot.slope; }},
             {"weber", [](const ConditionResult& c) { return c.data.size() < 2 ? NAN : c.weber; }}};
@@ -73,7 +124,7 @@ std::string groups_csv(const std::vector<ParticipantResult>& people) {
   o << "condition,quantity,n,mean,ci95_low,ci95_high\n";
   if (people.empty()) return o.str();
   for (std::size_t c = 0; c < people[0].conditions.size(); ++c)
-    for (const Quantity& q : quantities(is_threshold(people))) {
+    for (const Quantity& q : quantities(people[0].task)) {
       const maze::MeanCi m = maze::mean_ci(values(people, c, q.get));
       o << people[0].conditions[c].condition << "," << q.name << "," << m.n << "," << num(m.mean) << ","
         << num(m.mean - m.half) << "," << num(m.mean + m.half) << "\n";
@@ -90,6 +141,14 @@ std::string summary_md(const std::vector<ParticipantResult>& people, const std::
   if (is_threshold(people))
     o << "; thresholds at " << first.criterion << " correct (maximum likelihood, lapse free in [0, 0.06]), 95 % "
       << "bootstrap intervals; Weber fractions against the reference " << first.reference;
+  if (is_targeting(people)) {
+    o << "; ISO 9241-9 per Soukoreff & MacKenzie (2004): effective width We = 4.133 SDx of the end points along "
+      << "each movement's axis, throughput as the mean over the (D, W) cells of IDe / MT; the Fitts regression "
+      << "MT = a + b ID of the cells' mean times on the nominal ID";
+    if (first.pointer_truth)
+      o << ". The simulated participants' own law: a = " << first.pointer_truth->a_s << " s, b = " << first.pointer_truth->b_s_per_bit
+        << " s/bit, end-point spread " << first.pointer_truth->spread << " (We = W on average at 1)";
+  }
   o << ".\n\n## Each condition over participants (mean, 95 % CI: Student's t)\n\n```\n" << groups << "```\n\n";
   if (people.size() == 1) o << "With one participant the intervals over participants are empty: a t interval needs two.\n\n";
   o << "## Participants\n\nparticipants.csv: one row per participant and condition.\n\n";
@@ -139,6 +198,44 @@ void psychometric_script(std::ostringstream& gp, const std::string& png, const s
   gp << plot << "\n";
 }
 
+// Each participant's cells, mean movement time against the nominal ID, a colour per condition,
+// the conditions' mean regression lines, and the simulated law when the participants share one.
+void fitts_script(std::ostringstream& gp, const std::string& png, const std::vector<ParticipantResult>& people) {
+  gp << "set terminal pngcairo noenhanced size 900,600 font ',10'\nset output '" << png << "'\n"
+     << "set title 'Movement time by index of difficulty (points: the (D, W) cells of every participant; lines: the mean fits)'\n"
+     << "set xlabel 'ID = log2(D / W + 1), bits'\nset ylabel 'mean movement time, s'\nset key outside right\nset grid\n";
+  std::string plot;
+  for (std::size_t c = 0; c < people.front().conditions.size(); ++c) {
+    gp << "$c" << c << " << EOD\n";
+    double a = 0.0, b = 0.0;
+    int n = 0;
+    for (const ParticipantResult& p : people) {
+      if (c >= p.conditions.size()) continue;
+      for (const FittsCell& cell : p.conditions[c].fitts.cells)
+        if (cell.trials > 0) gp << cell.id_bits << " " << cell.mean_mt_s << "\n";
+      if (p.conditions[c].fitts.on_id.computable) {
+        a += p.conditions[c].fitts.on_id.intercept;
+        b += p.conditions[c].fitts.on_id.slope;
+        ++n;
+      }
+    }
+    gp << "EOD\n";
+    const std::string colour = std::to_string(c + 1), name = people.front().conditions[c].condition;
+    plot += (plot.empty() ? "plot " : ", ") + std::string("$c") + std::to_string(c) + " using 1:2 with points pt 7 lc " + colour +
+            " title '" + name + "'";
+    if (n > 0)
+      plot += ", " + num(a / n) + " + " + num(b / n) + " * x lc " + colour + " lw 2 title '" + name + " mean fit'";
+  }
+  bool same = people.front().pointer_truth.has_value();
+  for (const ParticipantResult& p : people)
+    same = same && p.pointer_truth && p.pointer_truth->a_s == people.front().pointer_truth->a_s &&
+           p.pointer_truth->b_s_per_bit == people.front().pointer_truth->b_s_per_bit;
+  if (same && !plot.empty())
+    plot += ", " + num(people.front().pointer_truth->a_s) + " + " + num(people.front().pointer_truth->b_s_per_bit) +
+            " * x lc black lw 3 dt 2 title 'true (simulated)'";
+  gp << plot << "\n";
+}
+
 void confusion_script(std::ostringstream& gp, const std::string& png, const std::vector<ParticipantResult>& people) {
   const std::vector<std::string>& m = people.front().materials;
   gp << "set terminal pngcairo noenhanced size 700,600 font ',10'\nset output '" << png << "'\n"
@@ -167,14 +264,15 @@ Status write_study_summary(const std::string& dir, const std::vector<Participant
   std::error_code ec;
   std::filesystem::create_directories(dir, ec);
   if (ec) return make_error(dir + ": cannot create the summary's folder: " + ec.message());
-  const bool th = is_threshold(people);
-  const std::string plot = th ? "psychometric.png" : "confusion.png";
+  const bool th = is_threshold(people), tg = is_targeting(people);
+  const std::string plot = th ? "psychometric.png" : tg ? "fitts.png" : "confusion.png";
   if (std::system("command -v gnuplot > /dev/null 2>&1") != 0)
     notes.push_back(plot + " skipped: gnuplot not found (install gnuplot-nox); the CSV files have the data");
   else if (dir.find('\'') != std::string::npos)
     notes.push_back(plot + " skipped: a folder name with a single quote cannot be handed to gnuplot");
   else if (Status s = maze::draw_plot(dir, plot, [&](std::ostringstream& gp, const std::string& png) {
              if (th) psychometric_script(gp, png, people);
+             else if (tg) fitts_script(gp, png, people);
              else confusion_script(gp, png, people);
            });
            !s)

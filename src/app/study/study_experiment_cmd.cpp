@@ -62,6 +62,7 @@ struct RunArgs {
   std::string experiment, participant, out, shape = "weibull";
   bool simulate = false, quiet = false;
   double threshold = 0.1, slope = 3.0, lapse = 0.02, p_correct = 0.6;
+  double fitts_a = 0.2, fitts_b = 0.15, mt_sd = 0.05, spread = 1.0;
   long long observer_seed = 0, stop_after = 0;
 };
 
@@ -79,6 +80,14 @@ void declare_run(cli::Command& cmd, RunArgs& a) {
   app.add_option("--lapse", a.lapse, "its lapse rate (default 0.02)")->check(CLI::Range(0.0, 0.49))->type_name("L");
   app.add_option("--p-correct", a.p_correct, "identification: its probability of naming the material shown (default 0.6)")
       ->check(CLI::Range(0.0, 1.0))->type_name("P");
+  app.add_option("--fitts-a", a.fitts_a, "targeting: its Fitts intercept a, seconds (default 0.2)")
+      ->check(CLI::Range(0.0, 60.0))->type_name("S");
+  app.add_option("--fitts-b", a.fitts_b, "targeting: its Fitts slope b, seconds per bit (default 0.15)")
+      ->check(CLI::Range(0.0, 60.0))->type_name("S");
+  app.add_option("--mt-sd", a.mt_sd, "targeting: the SD of its movement times about a + b ID, seconds (default 0.05)")
+      ->check(CLI::Range(0.0, 60.0))->type_name("S");
+  cli::add_positive(app, "--spread", "K", a.spread, 100.0, "1",
+                    "targeting: its end points' scatter, as the expected We / W (default 1: ISO 9241-9's 4 % misses)");
   cli::add_int(app, "--observer-seed", "N", a.observer_seed, 0LL, 9'007'199'254'740'991LL,
                "its answers' seed (default 0: the participant's seed)");
   cli::add_int(app, "--stop-after", "N", a.stop_after, 0LL, 1'000'000LL, "stop after N new trials (a break; run again to go on)");
@@ -117,6 +126,13 @@ int run_main(const cli::Command& cmd, const RunArgs& a) {
   spec.observer.truth = {a.threshold, a.slope, 0.5, a.lapse};
   spec.observer.p_correct = a.p_correct;
   spec.observer.seed = static_cast<std::uint64_t>(a.observer_seed);
+  spec.observer.pointer.a_s = a.fitts_a;
+  spec.observer.pointer.b_s_per_bit = a.fitts_b;
+  spec.observer.pointer.mt_sd_s = a.mt_sd;
+  spec.observer.pointer.spread = a.spread;
+  if (e.task == study::Task::kTargeting && !a.simulate)
+    return cmd.usage_error(make_error(a.experiment + ": the targeting task runs with a simulated participant only so far: "
+                                      "give --simulate (its window run is not built yet; docs/study.md, \"Targeting\")"));
   // Without --simulate a person answers in the window (docs/study.md, "In the window").
   const cli::StopSignals stop;  // SIGTERM, SIGINT, SIGHUP: the run ends as Esc ends it
   std::unique_ptr<StudyWindow> window;

@@ -1,0 +1,38 @@
+// The targeting task's geometry (docs/study.md, "Targeting"): ISO 9241-9's multidirectional
+// ring. `targets` round targets of diameter W sit evenly on a ring of diameter D lying on a plane
+// of the scene (TargetingSpec: its centre and normal); the participant selects them across the
+// ring, target 0 first, then the one (targets + 1) / 2 steps on, and so on, which with an odd
+// count visits every target once a sequence and makes every movement the same chord,
+// D sin(pi (targets - 1) / (2 targets)): 0.985 D for 9 targets.
+#pragma once
+
+#include <array>
+
+#include "study/experiment.h"
+#include "study/fitts.h"
+
+namespace ps::study {
+
+struct Ring {
+  Point3 centre;
+  std::array<double, 3> u{1.0, 0.0, 0.0}, v{0.0, 1.0, 0.0}, normal{0.0, 0.0, 1.0};  // orthonormal; u, v span the plane
+  double diameter = 0.0;
+  int targets = 9;
+};
+
+// The ring of diameter `diameter` on the spec's plane. u is the plane's direction nearest world
+// +x (world +y when the normal is along x), so target 0 lies on the ring's +x side.
+Ring make_ring(const TargetingSpec& spec, double diameter);
+// Target `index`'s centre: at angle 2 pi index / targets from u towards v.
+Point3 target_centre(const Ring& ring, int index);
+// The target selected at `step` of a sequence (from 0): step (targets + 1) / 2 mod targets.
+int target_at_step(int targets, int step);
+// Every movement's centre-to-centre distance on a ring: D sin(pi (targets - 1) / (2 targets)).
+double movement_distance(double diameter, int targets);
+
+// A point `along` the task axis from `from` towards `to` and `aside` across it in the plane.
+Point3 on_axis(const Ring& ring, const Point3& from, const Point3& to, double along, double aside);
+// The distance between two points.
+double distance(const Point3& a, const Point3& b);
+
+}  // namespace ps::study
