@@ -29,7 +29,7 @@ std::string error_of(const std::string& text) {
 }
 
 TEST(ExperimentFileTest, ShippedExperimentsLoadAndTheirStimuliAreScenes) {
-  for (const char* name : {"lambda_threshold", "theta_threshold", "distance_threshold", "identification"}) {
+  for (const char* name : {"lambda_threshold", "theta_threshold", "distance_threshold", "identification", "targeting"}) {
     const Result<Experiment> e = load_experiment(kStudies + name + ".toml");
     ASSERT_TRUE(e) << e.error().message;
     EXPECT_EQ(e->name, name);
@@ -45,6 +45,10 @@ TEST(ExperimentFileTest, ShippedExperimentsLoadAndTheirStimuliAreScenes) {
   EXPECT_EQ(lambda.practice, 4);
   EXPECT_EQ(load_experiment(kStudies + "theta_threshold.toml")->threshold.method, Method::kStaircase);
   EXPECT_EQ(load_experiment(kStudies + "identification.toml")->materials.size(), 4u);
+  const Experiment targeting = load_experiment(kStudies + "targeting.toml").value();
+  EXPECT_EQ(targeting.task, Task::kTargeting);
+  EXPECT_EQ(targeting.conditions.size(), 5u);
+  EXPECT_EQ(targeting.trials, 3 * 2 * 9);  // derived: sequences x distances x widths x targets
 }
 
 TEST(ExperimentFileTest, TheVariedValueIsWrittenAsASetOverride) {

@@ -94,7 +94,7 @@ TEST(ExperimentFuzzTest, MangledFilesLoadOrNameALine) {
   std::mt19937_64 rng(47);
   const std::regex located("^fuzz\\.toml:[0-9]+: [^\n]+$");
   int refused = 0, loaded = 0;
-  for (const char* name : {"lambda_threshold", "theta_threshold", "distance_threshold", "identification"}) {
+  for (const char* name : {"lambda_threshold", "theta_threshold", "distance_threshold", "identification", "targeting"}) {
     const std::string text = read_text(kStudies + name + ".toml");
     for (int i = 0; i < 500; ++i) {
       std::string t = text;

@@ -1,0 +1,245 @@
+// The targeting task (src/study/targeting.h, study_run.h, study_summary.h; docs/study.md,
+// "Targeting"): the ring's geometry against closed forms, the design's file:line errors, a
+// simulated run's sequences (every movement leaves the target the last one selected, every
+// (D, W) once a block and condition), a run broken off and resumed writing the unbroken run's
+// trials, and simulated participants with a known Fitts law recovered by the summary.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <fstream>
+#include <map>
+#include <numbers>
+#include <sstream>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "study/experiment.h"
+#include "study/study_events.h"
+#include "study/study_log.h"
+#include "study/study_run.h"
+#include "study/study_summary.h"
+#include "study/targeting.h"
+
+#include "study/study_test_files.h"
+
+namespace ps::study {
+namespace {
+
+using test_files::fresh_dir;
+using test_files::read_text;
+
+// Six (D, W) cells whose IDs all differ (D / W = 3, 6, 7.5, 12, 15, 30).
+const std::string kDesign = R"([experiment]
+name = "targeting_test"
+task = "targeting"
+practice_trials = 9
+first_seed = 701
+[scene]
+path = ")" + std::string(PS_SOURCE_DIR) + R"(/scenes/default.toml"
+[targeting]
+distances_mm = [30.0, 60.0, 120.0]
+widths_mm = [4.0, 10.0]
+targets = 9
+[[conditions]]
+name = "as_is"
+set = []
+[[conditions]]
+name = "no_texture"
+set = ["materials.wood.a_min=0.0", "materials.wood.a_max=0.0"]
+)";
+
+Experiment design_in(const std::string& dir, const std::string& text = kDesign) {
+  const std::string path = dir + "/targeting_test.toml";
+  std::ofstream(path) << text;
+  Result<Experiment> e = load_experiment(path);
+  EXPECT_TRUE(e) << e.error().message;
+  return e.value();
+}
+
+std::vector<nlohmann::json> trial_lines(const std::string& log) {
+  std::vector<nlohmann::json> out;
+  std::istringstream in(read_text(log));
+  for (std::string l; std::getline(in, l);) {
+    nlohmann::json j = nlohmann::json::parse(l);
+    j.erase("sha256");
+    if (j["type"] == "trial") out.push_back(j);
+  }
+  return out;
+}
+
+RunSpec spec_for(const std::string& dir, const std::string& participant, double a, double b) {
+  RunSpec s;
+  s.participant = participant;
+  s.out_dir = dir;
+  s.observer.pointer.a_s = a;
+  s.observer.pointer.b_s_per_bit = b;
+  return s;
+}
+
+TEST(TargetingTest, TheRingLiesOnItsPlaneAndEveryMovementIsTheSameChord) {
+  TargetingSpec spec;
+  spec.centre = {5.0, -3.0, 2.0};
+  spec.normal = {0.0, 1.0, 1.0};  // a plane at 45 degrees
+  spec.targets = 9;
+  const Ring ring = make_ring(spec, 80.0);
+  const double s = 1.0 / std::sqrt(2.0);
+  // D sin(pi (n - 1) / (2 n)) with n = 9: 80 sin(80 degrees).
+  const double chord = 80.0 * std::sin(80.0 * std::numbers::pi / 180.0);
+  EXPECT_NEAR(movement_distance(80.0, 9), chord, 1e-12);
+  std::vector<int> visits(9, 0);
+  for (int step = 0; step < 9; ++step) {
+    const int to = target_at_step(9, step), from = target_at_step(9, step + 8);
+    ++visits[static_cast<std::size_t>(to)];
+    const Point3 c = target_centre(ring, to);
+    const double dx = c.x - 5.0, dy = c.y + 3.0, dz = c.z - 2.0;
+    EXPECT_NEAR(std::sqrt(dx * dx + dy * dy + dz * dz), 40.0, 1e-9) << "on the circle";
+    EXPECT_NEAR(s * dy + s * dz, 0.0, 1e-9) << "in the plane";
+    EXPECT_NEAR(distance(target_centre(ring, from), c), chord, 1e-9) << "step " << step;
+  }
+  for (const int v : visits) EXPECT_EQ(v, 1) << "every target once a sequence";
+  EXPECT_NEAR(target_centre(ring, 0).x, 45.0, 1e-9) << "target 0 on the ring's +x side";
+}
+
+TEST(TargetingTest, TheDesignsMistakesNameTheirLine) {
+  const std::string dir = fresh_dir("targeting", "errors");
+  const auto error_of = [&](const std::string& from, const std::string& to) {
+    std::string text = kDesign;
+    text.replace(text.find(from), from.size(), to);
+    const std::string path = dir + "/bad.toml";
+    std::ofstream(path) << text;
+    const Result<Experiment> e = load_experiment(path);
+    return e ? std::string("loaded") : e.error().message;
+  };
+  EXPECT_NE(error_of("practice_trials = 9", "trials = 40").find("bad.toml:4: a targeting task derives its trials"),
+            std::string::npos);
+  EXPECT_NE(error_of("targets = 9", "targets = 8").find("bad.toml:11: 'targets' must be odd"), std::string::npos);
+  EXPECT_NE(error_of("widths_mm = [4.0, 10.0]", "widths_mm = [4.0, 12.0]").find("overlaps its neighbours"), std::string::npos);
+  EXPECT_NE(error_of("first_seed = 701", "response_keys = [\"1\"]").find("answered by touching, not by keys"), std::string::npos);
+  EXPECT_EQ(design_in(dir).trials, 54) << "1 sequence x 3 distances x 2 widths x 9 targets";
+}
+
+TEST(TargetingTest, EachMovementLeavesTheTargetTheLastOneSelected) {
+  const std::string dir = fresh_dir("targeting", "sequences");
+  const Experiment e = design_in(dir);
+  const Result<RunReport> r = run_participant(e, spec_for(dir, "P01", 0.2, 0.15));
+  ASSERT_TRUE(r) << r.error().message;
+  EXPECT_EQ(r->total, 9 + 2 * 54);
+  const std::vector<nlohmann::json> trials = trial_lines(r->log_path);
+  ASSERT_EQ(trials.size(), 117u);
+  std::map<std::string, int> cells;  // condition D W -> movements
+  for (std::size_t i = 0; i < trials.size(); ++i) {
+    const nlohmann::json& t = trials[i];
+    const double d = t.at("ring_diameter"), w = t.at("width");
+    EXPECT_NEAR(t.at("distance").get<double>(), movement_distance(d, 9), 1e-12);
+    if (!t.at("practice").get<bool>()) ++cells[t.at("condition").get<std::string>() + " " + std::to_string(d) + " " + std::to_string(w)];
+    const bool first = i == 0 || t.at("sequence") != trials[i - 1].at("sequence") || t.at("practice") != trials[i - 1].at("practice") ||
+                       t.at("condition") != trials[i - 1].at("condition");
+    if (first) {
+      EXPECT_EQ(t.at("target"), 0) << "a sequence starts at target 0, trial " << i + 1;
+      EXPECT_EQ(t.at("began"), t.at("start")) << "from its first target's centre";
+    } else {
+      EXPECT_EQ(t.at("from"), trials[i - 1].at("target")) << "trial " << i + 1;
+      EXPECT_EQ(t.at("began"), trials[i - 1].at("end")) << "where the last selection was, trial " << i + 1;
+    }
+    // The hit flag against the end point's distance from the target's centre.
+    const nlohmann::json& c = t.at("target_centre");
+    const nlohmann::json& p = t.at("end");
+    const double miss = std::hypot(p[0].get<double>() - c[0].get<double>(), p[1].get<double>() - c[1].get<double>(),
+                                   p[2].get<double>() - c[2].get<double>());
+    EXPECT_EQ(t.at("hit").get<bool>(), miss <= 0.5 * w);
+  }
+  EXPECT_EQ(cells.size(), 12u) << "2 conditions x 6 (D, W)";
+  for (const auto& [cell, n] : cells) EXPECT_EQ(n, 9) << cell;
+}
+
+TEST(TargetingTest, AResumedRunWritesTheUnbrokenRunsTrials) {
+  const std::string dir = fresh_dir("targeting", "resume");
+  const Experiment e = design_in(dir);
+  ASSERT_TRUE(run_participant(e, spec_for(dir + "/whole", "P02", 0.2, 0.15)));
+  RunSpec s = spec_for(dir + "/broken", "P02", 0.2, 0.15);
+  s.stop_after = 31;  // mid-sequence: the next movement begins at trial 31's end
+  ASSERT_TRUE(run_participant(e, s));
+  s.stop_after = 0;
+  const Result<RunReport> r = run_participant(e, s);
+  ASSERT_TRUE(r) << r.error().message;
+  EXPECT_TRUE(r->complete);
+  EXPECT_EQ(trial_lines(r->log_path), trial_lines(dir + "/whole/P02/trials.jsonl"));
+}
+
+// Twenty simulated participants with a = 0.3 s and b = 0.2 s/bit: each one's regression interval
+// for b holds the truth in most of them (95 % intervals: 17 or more of 20 has probability 0.98),
+// and the group's mean b and throughput lie where the law puts them.
+TEST(TargetingTest, TheSummaryRecoversTheSimulatedLaw) {
+  const std::string dir = fresh_dir("targeting", "recover");
+  const Experiment e = design_in(dir);
+  std::vector<ParticipantResult> people;
+  int covered = 0, fits = 0;
+  for (int i = 1; i <= 20; ++i) {
+    char id[8];
+    std::snprintf(id, sizeof id, "P%02d", i);
+    const Result<RunReport> r = run_participant(e, spec_for(dir, id, 0.3, 0.2));
+    ASSERT_TRUE(r) << r.error().message;
+    const Result<ParticipantResult> p = summarize_participant(r->log_path, {});
+    ASSERT_TRUE(p) << p.error().message;
+    ASSERT_TRUE(p->pointer_truth);
+    EXPECT_DOUBLE_EQ(p->pointer_truth->b_s_per_bit, 0.2);
+    for (const ConditionResult& c : p->conditions) {
+      ASSERT_EQ(c.fitts.cells.size(), 6u);
+      ASSERT_TRUE(c.fitts.on_id.computable);
+      ++fits;
+      covered += c.fitts.on_id.slope_ci.low <= 0.2 && 0.2 <= c.fitts.on_id.slope_ci.high;
+    }
+    people.push_back(p.value());
+  }
+  EXPECT_GE(covered, fits * 17 / 20) << covered << " of " << fits;
+  // The law's own throughput with We = W on average: the mean over the cells of ID / (a + b ID).
+  double expected = 0.0, mean_b = 0.0, mean_tp = 0.0;
+  for (const double d : {30.0, 60.0, 120.0})
+    for (const double w : {4.0, 10.0}) {
+      const double id = std::log2(movement_distance(d, 9) / w + 1.0);
+      expected += id / (0.3 + 0.2 * id) / 6.0;
+    }
+  for (const ParticipantResult& p : people) {
+    mean_b += p.conditions[0].fitts.on_id.slope / 20.0;
+    mean_tp += p.conditions[0].fitts.throughput_bps / 20.0;
+  }
+  std::printf("b's interval holds 0.2 in %d of %d fits; mean b %.4f s/bit; mean throughput %.3f bit/s against the law's %.3f\n",
+              covered, fits, mean_b, mean_tp, expected);
+  EXPECT_NEAR(mean_b, 0.2, 0.01);  // 20 slopes of SD about 0.015 each: the mean's SD is 0.004
+  // IDe differs from ID by the sampling of SDx (9 end points a cell): a few per cent either way.
+  EXPECT_NEAR(mean_tp / expected, 1.0, 0.06) << mean_tp << " against " << expected;
+}
+
+TEST(TargetingTest, ItsEventsHaveOneRowPerMovementWithItsHit) {
+  const std::string dir = fresh_dir("targeting", "events");
+  const Experiment e = design_in(dir);
+  const Result<RunReport> r = run_participant(e, spec_for(dir, "P03", 0.2, 0.15));
+  ASSERT_TRUE(r) << r.error().message;
+  const Result<EventsFiles> f = write_session_events(r->log_path);
+  ASSERT_TRUE(f) << f.error().message;
+  std::istringstream tsv(read_text(f->tsv));
+  std::string header;
+  std::getline(tsv, header);
+  EXPECT_NE(header.find("\tmovement_time_s\thit"), std::string::npos) << header;
+  int rows = 0;
+  for (std::string l; std::getline(tsv, l);) ++rows;
+  EXPECT_EQ(rows, 117);
+}
+
+// A person cannot answer a targeting run yet: its window run is not built.
+TEST(TargetingTest, APersonIsRefusedUntilItsWindowRunExists) {
+  struct Nobody final : Responder {
+    Result<std::optional<int>> answer(const TrialStimulus&) override { return std::optional<int>(0); }
+    nlohmann::json describe() const override { return {{"kind", "person"}}; }
+  } nobody;
+  const std::string dir = fresh_dir("targeting", "person");
+  RunSpec s = spec_for(dir, "P01", 0.2, 0.15);
+  s.responder = &nobody;
+  const Result<RunReport> r = run_participant(design_in(dir), s);
+  ASSERT_FALSE(r);
+  EXPECT_NE(r.error().message.find("simulated participant only"), std::string::npos) << r.error().message;
+}
+
+}  // namespace
+}  // namespace ps::study
