@@ -3,7 +3,8 @@
 # X key events (xdotool, XTest): the instructions, the practice, the "practice over" screen and a
 # few trials answered with keys, then Esc; the printed `study resume` line finishes the session
 # with a simulated tail; the log holds exactly the answers sent, and `study summarize` takes it.
-# Then identification: two materials named, Esc.
+# Then identification: two materials named, Esc; theta and distance: two answers each, Esc, and a
+# simulated tail.
 # usage: study_window.sh PSEUDOSHADOW STUDIES_DIR OUT_DIR
 set -euo pipefail
 exe=$1 studies=$2 out=$3
@@ -69,4 +70,22 @@ press Escape
 wait "$pid" || fail "identification: exit $? after Esc"
 got=$(grep '"type":"trial"' id/P01/trials.jsonl | sed -E 's/.*"answered_index":([0-9]+).*/\1/' | tr '\n' ' ')
 [ "$got" = "2 0 " ] || fail "identification: the log's answers are '$got', want '2 0 ' (keys 3 and 1)"
-echo "study_window: ok (threshold: 7 answers by key, then a simulated tail to 124; identification: 2 answers)"
+# The other two threshold experiments: two practice answers each, Esc, then a simulated tail.
+for name in theta_threshold distance_threshold; do
+  start_window "pseudoshadow study" "console_$name.txt" "$exe" study run "$studies/$name.toml" --participant P02 --out "$name"
+  title_is "pseudoshadow study: instructions"
+  press space
+  title_is "pseudoshadow study: practice trial 1 of 4, answer"
+  press 2
+  title_is "pseudoshadow study: practice trial 2 of 4, answer"
+  press 1
+  title_is "pseudoshadow study: practice trial 3 of 4, answer"
+  press Escape
+  wait "$pid" || fail "$name: exit $? after Esc"
+  got=$(grep '"type":"trial"' "$name/P02/trials.jsonl" | sed -E 's/.*"response":([0-9]+).*/\1/' | tr '\n' ' ')
+  [ "$got" = "2 1 " ] || fail "$name: the log's answers are '$got', want '2 1 '"
+  "$exe" study resume "$studies/$name.toml" --participant P02 --out "$name" --simulate -q || fail "$name: the simulated tail failed"
+  tail -n 1 "$name/P02/trials.jsonl" | grep -q '"type":"session_end"' || fail "$name: no session_end after the tail"
+done
+echo "study_window: ok (lambda: 7 answers by key, then a simulated tail to 124; identification: 2 answers;" \
+  "theta and distance: 2 answers each, then a simulated tail)"
