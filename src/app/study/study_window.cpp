@@ -187,15 +187,22 @@ bool StudyWindow::wait_for_space(const std::string& title, const std::string& te
 
 // Stimulus `which` of a trial: threshold, interval 1 or 2 (the comparison where t.interval says);
 // identification, the material shown.
-Result<std::unique_ptr<Renderer>> StudyWindow::stimulus(const study::TrialStimulus& t, int which) const {
+Result<Renderer*> StudyWindow::stimulus(const study::TrialStimulus& t, int which) {
   const study::Variant& c = e_.conditions[static_cast<std::size_t>(t.condition)];
+  const bool reference = e_.task == study::Task::kThreshold && which != t.interval;
+  if (reference)
+    if (const auto it = references_.find(t.condition); it != references_.end()) return it->second.get();
   const std::vector<std::string> overrides =
       e_.task == study::Task::kThreshold
-          ? study::threshold_overrides(e_, c, which == t.interval ? t.comparison : t.reference)
+          ? study::threshold_overrides(e_, c, reference ? t.reference : t.comparison)
           : study::material_overrides(e_, c, e_.materials[static_cast<std::size_t>(t.shown)]);
   Result<Scene> scene = load_scene(e_.scene, overrides);
   if (!scene) return scene.error();
-  return Renderer::create(scene.value(), {});
+  auto r = Renderer::create(scene.value(), {});
+  if (!r) return r.error();
+  std::unique_ptr<Renderer>& slot = reference ? references_[t.condition] : fresh_[which - 1];
+  slot = std::move(r.value());
+  return slot.get();
 }
 
 Result<std::optional<int>> StudyWindow::answer(const study::TrialStimulus& t) {
@@ -218,11 +225,11 @@ Result<std::optional<int>> StudyWindow::answer(const study::TrialStimulus& t) {
   present(*win_, nullptr, head + "(preparing...)");
   const double blank_until = glfwGetTime() + kStudyBlankS;
   const bool pair = e_.task == study::Task::kThreshold;
-  std::unique_ptr<Renderer> shown[2];
+  Renderer* shown[2] = {nullptr, nullptr};
   for (int i = 0; i < (pair ? 2 : 1); ++i) {
     auto r = stimulus(t, i + 1);
     if (!r) return r.error();
-    shown[i] = std::move(r.value());
+    shown[i] = r.value();
   }
   while (glfwGetTime() < blank_until) {
     win_->poll_events();
@@ -256,13 +263,13 @@ Result<std::optional<int>> StudyWindow::answer(const study::TrialStimulus& t) {
     double into = now;
     std::string text = head;
     if (!pair) {
-      r = shown[0].get();
+      r = shown[0];
       text += "Name the texture.";
     } else if (now < kStrokeS) {
-      r = shown[0].get();
+      r = shown[0];
       text += "First";
     } else if (now >= second && now < end) {
-      r = shown[1].get();
+      r = shown[1];
       into = now - second;
       text += "Second";
     } else if (now >= end) {

@@ -15,6 +15,7 @@
 #pragma once
 
 #include <functional>
+#include <map>
 #include <memory>
 #include <optional>
 #include <string>
@@ -75,13 +76,18 @@ class StudyWindow final : public study::Responder {
   StudyWindow(const study::Experiment& e, StudyWindowParams p, std::unique_ptr<LiveWindow> win);
   // A screen of text until Space or Enter; false: stopped.
   bool wait_for_space(const std::string& title, const std::string& text);
-  Result<std::unique_ptr<Renderer>> stimulus(const study::TrialStimulus& t, int which) const;
+  // Stimulus `which` of a trial, drawn by a renderer of its own. A threshold task's reference is
+  // the same in every trial of a condition: its renderer is kept (a software renderer takes about
+  // 0.9 s to make one), the comparison's is made afresh.
+  Result<Renderer*> stimulus(const study::TrialStimulus& t, int which);
   bool stopping();
 
   const study::Experiment& e_;
   StudyWindowParams p_;
   std::unique_ptr<LiveWindow> win_;
   std::unique_ptr<Keys> keys_;
+  std::map<int, std::unique_ptr<Renderer>> references_;  // by condition
+  std::unique_ptr<Renderer> fresh_[2];                   // this trial's other stimuli
   bool started_ = false, by_person_ = false;
 };
 
