@@ -171,7 +171,7 @@ std::string curve(Shape shape, const PsychometricParams& p) {
 
 void psychometric_script(std::ostringstream& gp, const std::string& png, const std::vector<ParticipantResult>& people) {
   gp << "set terminal pngcairo noenhanced size 900,600 font ',10'\nset output '" << png << "'\n"
-     << "set title 'Proportion correct by level (points: the data, size by trials; lines: the fits)'\n"
+     << "set title 'Proportion correct by level: data (size by trials), fits, thresholds with 95 % intervals (bars)'\n"
      << "set xlabel 'level (difference from the reference)'\nset ylabel 'proportion correct'\nset yrange [0.3:1.05]\n"
      << "set key outside right\nset grid\nset samples 400\n"
      << (people.front().shape == Shape::kWeibull ? "set logscale x\n" : "");  // Weibull: levels judged in ratio
@@ -186,6 +186,12 @@ void psychometric_script(std::ostringstream& gp, const std::string& png, const s
       const std::string name = p.participant + " " + c.condition;
       plot += (plot.empty() ? "plot " : ", ") + std::string("$d") + std::to_string(i) + " using 1:2:(0.4 + sqrt($3) / 3) with points pt 7 ps variable lc " +
               std::to_string(i) + " notitle, " + curve(p.shape, c.fit.params) + " lc " + std::to_string(i) + " title '" + name + "'";
+      // The threshold at the criterion with its 95 % bootstrap interval, a bar across the curve.
+      if (std::isfinite(c.boot.threshold) && std::isfinite(c.boot.threshold_ci.low) && std::isfinite(c.boot.threshold_ci.high)) {
+        gp << "$t" << i << " << EOD\n"
+           << c.boot.threshold << " " << p.criterion << " " << c.boot.threshold_ci.low << " " << c.boot.threshold_ci.high << "\nEOD\n";
+        plot += ", $t" + std::to_string(i) + " using 1:2:3:4 with xerrorbars pt 9 ps 1.5 lc " + std::to_string(i) + " notitle";
+      }
     }
   // The simulated participants' own function, when they share one: the truth the fits estimate.
   bool same = people.front().truth.has_value();
