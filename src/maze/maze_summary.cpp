@@ -9,6 +9,7 @@
 #include <nlohmann/json.hpp>
 
 #include "core/json_int.h"
+#include "core/student_t.h"
 #include "maze/maze_log.h"
 
 namespace ps::maze {
@@ -130,13 +131,10 @@ Status check_no_duplicates(const std::vector<ParticipantSummary>& people) {
 
 namespace {
 
-// Student's t at 0.975 for df degrees of freedom (two-sided 95 %); 1.96 past 30 (within 2 %).
-double t975(int df) {
-  static constexpr double kT[30] = {12.706, 4.303, 3.182, 2.776, 2.571, 2.447, 2.365, 2.306, 2.262, 2.228,
-                                    2.201,  2.179, 2.160, 2.145, 2.131, 2.120, 2.110, 2.101, 2.093, 2.086,
-                                    2.080,  2.074, 2.069, 2.064, 2.060, 2.056, 2.052, 2.048, 2.045, 2.042};
-  return df >= 1 && df <= 30 ? kT[df - 1] : 1.96;
-}
+// Student's t at 0.975 for df degrees of freedom: the two-sided 95 % interval's factor, exact
+// (core/student_t.h; a 3-decimal table with 1.96 past 30 degrees of freedom before, which made
+// intervals of more than 31 participants up to 4 % too narrow).
+double t975(int df) { return student_t_quantile(0.975, df); }
 
 GroupSummary& group_of(std::vector<GroupSummary>& groups, const ParticipantSummary& p) {
   auto it = std::find_if(groups.begin(), groups.end(),

@@ -13,6 +13,7 @@
 #include <string_view>
 #include <vector>
 
+#include "core/student_t.h"
 #include "study/fit.h"  // Interval
 
 namespace ps::study {
@@ -130,10 +131,6 @@ MeanInterval mean_interval(std::span<const double> values, double confidence = 0
 // Throughput across participants: mean_interval of their throughput_bps.
 MeanInterval throughput_across(std::span<const FittsParticipant> participants, double confidence = 0.95);
 
-// Student's t: the CDF and its quantile for `df` >= 1 degrees of freedom (through the regularized
-// incomplete beta function, inverted by bisection to double precision); NaN for df < 1 or p
-// outside (0, 1).
-double student_t_cdf(double t, double df);
-double student_t_quantile(double p, double df);
+// Student's t (its CDF and quantile): core/student_t.h, shared with the maze's summaries.
 
 }  // namespace ps::study

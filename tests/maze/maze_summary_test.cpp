@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <numbers>
 #include <fstream>
 
 #include "maze/maze_summary.h"
@@ -138,7 +139,10 @@ TEST(MazeSummaryTest, RetestComparesSessionTwoWithSessionOne) {
 // Five cues-on sessions' worth of rules: P1 (criterion), P3 (cut short: crashed), P4 (quit), P5
 // (resumed once, then criterion). By default the aborted P3 and P4 are left out of the means:
 // N = 2 (P1, P5). 95 % CI half width for two values a, b: t(0.975, 1) sd / sqrt(2) with
-// sd = |a - b| / sqrt(2), i.e. 12.706 |a - b| / 2.
+// sd = |a - b| / sqrt(2), i.e. t |a - b| / 2 with t = tan(0.475 pi) = 12.7062: one degree of
+// freedom's t is Cauchy, whose quantile is tan(pi (p - 1/2)).
+const double kT1 = std::tan(0.475 * std::numbers::pi);
+
 TEST(MazeSummaryTest, AbortedSessionsLeaveTheMeansAndEndReasonsAreReported) {
   std::vector<ParticipantSummary> people;
   for (const char* f : {"p1_cues_on.jsonl", "p3_cues_on_cut.jsonl", "p4_cues_on_quit.jsonl", "p5_cues_on_resumed.jsonl"}) {
@@ -160,11 +164,11 @@ TEST(MazeSummaryTest, AbortedSessionsLeaveTheMeansAndEndReasonsAreReported) {
   EXPECT_EQ(g.reached_criterion, 2);
   EXPECT_DOUBLE_EQ(g.mean_trials_to_criterion, 1.5);  // (2 + 1) / 2
   EXPECT_DOUBLE_EQ(g.mean_total_time_s, 35.0);       // (40 + 30) / 2
-  EXPECT_NEAR(g.ci_total_time_s, 12.706 * 10.0 / 2.0, 1e-9);
+  EXPECT_NEAR(g.ci_total_time_s, kT1 * 10.0 / 2.0, 1e-9);
   EXPECT_DOUBLE_EQ(g.mean_errors[kTexture], 0.5);  // (1 + 0) / 2
-  EXPECT_NEAR(g.ci_errors[kTexture], 12.706 * 1.0 / 2.0, 1e-9);
+  EXPECT_NEAR(g.ci_errors[kTexture], kT1 * 1.0 / 2.0, 1e-9);
   EXPECT_EQ(g.mean_pass_time_s, (std::vector<double>{24.0, 16.0}));  // (20 + 28) / 2; P1 alone
-  EXPECT_NEAR(g.ci_pass_time_s[0], 12.706 * 8.0 / 2.0, 1e-9);
+  EXPECT_NEAR(g.ci_pass_time_s[0], kT1 * 8.0 / 2.0, 1e-9);
   EXPECT_TRUE(std::isnan(g.ci_pass_time_s[1])) << "one participant: no interval";
   EXPECT_EQ(g.pass_n, (std::vector<int>{2, 1}));
   const auto all = summarize_groups(people, true);
@@ -181,7 +185,7 @@ TEST(MazeSummaryTest, AbortedSessionsLeaveTheMeansAndEndReasonsAreReported) {
     EXPECT_EQ(pc[i + 1].substr(pc[i + 1].size() - std::string(ends[i]).size()), ends[i]) << pc[i + 1];
   const auto gc = test::read_lines(dir + "/groups.csv");
   EXPECT_EQ(gc[1].rfind("cues_on,1,2,2,1.500,35.000,", 0), 0u) << gc[1];
-  EXPECT_NE(gc[1].find(",2,63.530,"), std::string::npos) << "excluded, then the CI of the total time: " << gc[1];
+  EXPECT_NE(gc[1].find(",2,63.531,"), std::string::npos) << "excluded, then the CI of the total time (12.7062 x 5): " << gc[1];
   const auto rooms = test::read_lines(dir + "/rooms.csv");
   EXPECT_EQ(rooms.size(), 1u + 12 + 7 + 1 + 6);  // every branch line of the four logs
   EXPECT_EQ(rooms[0], "participant,condition,session,pass,room,cue,exit,correct,time_s,path_mm,contacts_floor,"
