@@ -14,11 +14,13 @@
 //           PS_GABOR_BAKED (the texture read from the material's baked tile), PS_GABOR_FILTER
 //           (1: the texture filtered over the pixel's footprint; 2: the filter skipped this
 //           frame, its need still measured).
-// The bodies' pseudo-shadows (lib/body_shadow.glsl) darken the colour target only, in every
-// variant; the AOVs and the normal stay the probe's.
+// The bodies' pseudo-shadows (lib/body_shadow.glsl) and the probe's cast shadow
+// (lib/cast_shadow.glsl, render.cast_shadow) darken the colour target only, in every variant;
+// the AOVs and the normal stay the probe's.
 #include "lib/surface_block.glsl"
 #include "lib/pseudo_shadow.glsl"
 #include "lib/body_shadow.glsl"
+#include "lib/cast_shadow.glsl"
 
 #ifndef PS_SHADOW
 #define PS_SHADOW 1
@@ -50,10 +52,16 @@ const float kFar = 1.0e30;
 // in 1e30). A function, not a constant: GLSL 4.50 has no NaN literal.
 float no_probe_distance() { return uintBitsToFloat(0x7fc00000u); }
 
+// render.cast_shadow: the probe's hard shadow removes the lit (Lambert) term where the light is
+// blocked and leaves the ambient one, as a real shadow does. A uniform branch (the derivatives
+// inside stay defined); off, lambert is untouched and the image keeps its bytes.
 vec3 shade_surface(vec3 n) {
   vec3 albedo = u_albedo.rgb * v_color;
   if (u_albedo.a > 0.5) albedo *= texture(u_albedo_tex, (v_world.xy - u_albedo_scale.yz) / u_albedo_scale.x).rgb;
   float lambert = max(dot(n, -u_light_dir.xyz), 0.0);
+  if (u_cast_sphere.w > 0.0)
+    lambert *= 1.0 - cast_shadow_coverage(u_cast_sphere, v_world, u_light_dir.xyz,
+                                          pixel_extent_across(v_world, u_light_dir.xyz));
   return albedo * u_light_color.rgb * (u_light_dir.w + (1.0 - u_light_dir.w) * lambert);
 }
 
@@ -332,8 +340,11 @@ void main() {
     s = tex_sigmas / u_modulation.w;
   }
 #endif
+  // render.pseudo_shadow = false: the shadow is still measured (intensity, d and the texture feed
+  // the AOVs, and through them the reductions and the haptic side), only not composited. A
+  // uniform, not the PS_SHADOW=0 variant: that variant writes no AOVs, which the reductions read.
   float darkening = pseudo_shadow_darkening(curve, d, hc.y, u_modulation.y, u_modulation.x, s);
-  rgb = composite_pseudo_shadow(rgb, darkening);
+  if (u_feedback.x > 0.5) rgb = composite_pseudo_shadow(rgb, darkening);
 #endif
   // The bodies' pseudo-shadows, in every variant (also with the probe out of reach); colour only.
   rgb *= body_shadow_light(IntensityCurve(u_intensity.x, u_intensity.y, u_intensity.z, u_intensity.w),

@@ -30,4 +30,7 @@ layout(std140, binding = 0) uniform SurfaceBlock {
                          // form against this capsule, 0 = marched through the depth map (mesh probe)
   vec4 u_eye;            // xyz: the camera position mm (perspective) or its view direction
                          // (orthographic); w: 1 perspective, 0 orthographic
+  vec4 u_cast_sphere;    // render.cast_shadow: the probe's bounding sphere, world centre mm, radius
+                         // mm in w (0: no cast shadow; lib/cast_shadow.glsl)
+  vec4 u_feedback;       // x: 1 = the probe's pseudo-shadow is composited into the colour (render.pseudo_shadow)
 };

@@ -31,6 +31,8 @@ void set_frame(SurfaceBlock& b, const SurfaceFrame& fr) {
     b.probe_a = v4(to_plane(fr.plane, c.a), c.radius);
     b.probe_b = v4(to_plane(fr.plane, c.b), 1.0);
   }
+  if (fr.cast_caster) b.cast_sphere = v4(fr.cast_caster->centre, fr.cast_caster->radius_mm);
+  b.feedback = glm::vec4(fr.pseudo_shadow_color ? 1.0f : 0.0f, 0.0f, 0.0f, 0.0f);
 }
 
 // The band of w that counts as the probe's sheet is 15 % of the surface's w range: wide enough for

@@ -62,8 +62,12 @@ struct SurfaceBlock {
   // it (0: marched through the probe depth map, a mesh probe).
   glm::vec4 probe_a{0.0f}, probe_b{0.0f};
   glm::vec4 eye{0.0f};
+  // The feedback keys of [render]: the probe's cast shadow, its bounding sphere (world centre mm,
+  // radius mm in w; w = 0: none), and x = 1 where the pseudo-shadow is composited into the colour.
+  glm::vec4 cast_sphere{0.0f};
+  glm::vec4 feedback{1.0f, 0.0f, 0.0f, 0.0f};
 };
-static_assert(sizeof(SurfaceBlock) == 64 + 10 * 16 + sizeof(GaborBlock) + (kMaxSceneBodies + 6) * 16,
+static_assert(sizeof(SurfaceBlock) == 64 + 10 * 16 + sizeof(GaborBlock) + (kMaxSceneBodies + 8) * 16,
               "SurfaceBlock must match std140 layout");
 
 // The distance AOV's value (aov().y) wherever no probe is above the pixel: outside the probe's
@@ -90,6 +94,10 @@ struct SurfaceFrame {
   // (capsule_column_distance); unset for a mesh probe, whose distances are marched through the
   // depth map.
   std::optional<CapsuleShape> probe_capsule;
+  // render.pseudo_shadow: false keeps the pseudo-shadow out of the colour only (AOVs unchanged).
+  bool pseudo_shadow_color = true;
+  // render.cast_shadow: the probe's bounding sphere casting an ordinary shadow along the light.
+  std::optional<SphereCaster> cast_caster;
 };
 
 // A surface embedded in 4D (docs/fourd.md) shows the pseudo-shadow on the probe's sheet only:

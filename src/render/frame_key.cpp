@@ -33,6 +33,11 @@ void add_plain_block(KeyWriter& w, const SurfaceBlock& b) {
   w.add(b.sheet);
   w.add(b.cutaway);
   w.add(b.eye);
+  // The cast shadow moves with the probe, outside the pseudo-shadow's rectangle: with it on, a
+  // moved probe changes the key and the frame is redrawn whole. feedback is read only inside
+  // PS_SHADOW, but it is constant per scene; keyed so that no reader has to know that.
+  w.add(b.cast_sphere);
+  w.add(b.feedback);
 }
 
 void add_draw(KeyWriter& w, const SurfaceDraw& d) {

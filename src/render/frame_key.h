@@ -5,7 +5,9 @@
 // the frame's actual inputs, never from a caller's promise:
 //   - every byte of each draw's SurfaceBlock that the plain (PS_SHADOW=0) variant reads: the
 //     camera (view_proj), light, reference normal (body shadows), material colours and
-//     intensity curve, body spheres, 4D sheet, cutaway and eye (surface.frag, surface.vert);
+//     intensity curve, body spheres, 4D sheet, cutaway and eye, the probe's cast shadow
+//     (render.cast_shadow: it moves with the probe, outside the rectangle) and the feedback
+//     flags (surface.frag, surface.vert);
 //   - each draw's mesh, its variant outside the rectangle, its textures and wireframe mode;
 //   - the mesh version (bumped by every deformation upload), the background, the image size,
 //     the Gabor tiles' bake progress.

@@ -201,6 +201,9 @@ class Renderer {
   Status prime_reference_plane();
   void upload_deformed();
   // Per frame.
+  // The probe itself is drawn (ProbeViewPass) where the view shows it (--show-probe, run's P) or
+  // the scene asks for it (render.draw_probe): either one draws it.
+  bool probe_drawn() const { return view_->show.probe || scene_.render.draw_probe; }
   BoundingSphere current_probe_bounds() const;
   ProbeInput probe_input() const;
   void run_probe_depth(const FramePlan& plan, const BoundingSphere& probe);

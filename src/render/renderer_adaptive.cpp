@@ -55,7 +55,7 @@ Status Renderer::draw_reduced(const std::vector<SurfaceDraw>& draws, const Frame
   if (!small) return small.error();
   if (Status s = small.value()->run(draws, nullptr, scene_.render.background, PixelRect{}); !s) return s;
   // The overlays are depth-tested against the surfaces: the depth is upsampled only for them.
-  const bool overlays = view_->show.probe || !world_view_.empty(scene_, *view_);
+  const bool overlays = probe_drawn() || !world_view_.empty(scene_, *view_);
   surface_.take_upsampled(*small.value(), overlays);
   std::int64_t drawn = static_cast<std::int64_t>(size.x) * size.y;
   if (!rect.empty()) {

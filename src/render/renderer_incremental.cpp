@@ -23,7 +23,7 @@ void Renderer::draw_overlays(PassTimer& timer) {
   const View& view = *view_;
   const glm::dmat4 view_proj =
       view_projection(view.camera, static_cast<double>(scene_.render.width) / scene_.render.height);
-  if (view.show.probe) {
+  if (probe_drawn()) {
     ProbeViewPass::Inputs in;
     in.view_proj = view_proj;
     in.light = &view.light;

@@ -20,6 +20,10 @@ SurfaceFrame surface_frame(const RenderSettings& rs, const Camera& camera, const
   fr.probe_height_lo_mm = glm::dot(probe.center, frame.n) - probe.radius;
   fr.probe_height_hi_mm = glm::dot(probe.center, frame.n) + probe.radius;
   if (p.shape != ProbeShape::kMesh && options.closed_form_normal_distance) fr.probe_capsule = capsule_of(p);
+  fr.pseudo_shadow_color = rs.pseudo_shadow;
+  // The bounding sphere for every shape: exact for the sphere probe (the experiment's), a little
+  // larger than a capsule or mesh (their shadow is a disc's, not their outline's).
+  if (rs.cast_shadow) fr.cast_caster = SphereCaster{probe.center, probe.radius};
   return fr;
 }
 

@@ -190,6 +190,13 @@ struct RenderSettings {
   double weight_exponent = 20.0;    // c in weight = (1 - d)^c (thesis §4.5.4)
   ShadowDistance shadow_distance = ShadowDistance::kSurfaceNormal;
   std::uint32_t seed = 1;           // Gabor impulse seed
+  // The visual feedback conditions of a targeting experiment (docs/scene-format.md, [render]):
+  // the probe's pseudo-shadow in the colour image (false: colour only; AOVs, reductions and the
+  // haptic side unchanged), the probe drawn opaque (as `--show-probe`; either draws it), an
+  // ordinary hard shadow of the probe's bounding sphere along [light] (colour only).
+  bool pseudo_shadow = true;
+  bool draw_probe = false;
+  bool cast_shadow = false;
 };
 
 // [[fields]]: forces of the haptic world that are not surfaces (docs/haptics.md, "Fields").

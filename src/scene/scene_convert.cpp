@@ -132,6 +132,9 @@ Status read_render(const ParseContext& ctx, const toml::table* table, RenderSett
   read_enum(r, "shadow_distance", out.shadow_distance, kShadowDistances);
   r.number("weight_exponent", out.weight_exponent, Range::positive(1000.0));
   r.seed("seed", out.seed);
+  r.boolean("pseudo_shadow", out.pseudo_shadow);
+  r.boolean("draw_probe", out.draw_probe);
+  r.boolean("cast_shadow", out.cast_shadow);
   return r.status();
 }
 

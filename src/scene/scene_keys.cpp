@@ -25,7 +25,8 @@ constexpr std::array kProbeKeys = {"shape"sv,     "radius_mm"sv,  "length_mm"sv,
                                    "position"sv,  "velocity"sv};
 constexpr std::array kRenderKeys = {"size"sv,         "frames"sv,          "depth_map_size"sv,
                                     "background"sv,   "displacement"sv,    "weight_exponent"sv,
-                                    "seed"sv,         "shadow_distance"sv};
+                                    "seed"sv,         "shadow_distance"sv,
+                                    "pseudo_shadow"sv, "draw_probe"sv,       "cast_shadow"sv};
 constexpr std::array kMaterialKeys = {
     "albedo"sv,          "albedo_texture"sv,        "albedo_texture_scale_mm"sv, "albedo_texture_offset_mm"sv,
     "textured"sv,        "a_min"sv,                 "a_max"sv,

@@ -105,6 +105,8 @@ TEST(UniformLayoutTest, SurfaceBlockMatches) {
   EXPECT_MEMBER(o, "u_probe_a", SurfaceBlock, probe_a);
   EXPECT_MEMBER(o, "u_probe_b", SurfaceBlock, probe_b);
   EXPECT_MEMBER(o, "u_eye", SurfaceBlock, eye);
+  EXPECT_MEMBER(o, "u_cast_sphere", SurfaceBlock, cast_sphere);
+  EXPECT_MEMBER(o, "u_feedback", SurfaceBlock, feedback);
 }
 
 // The bodies' casters are read in every variant, also with the probe's shadow compiled out

@@ -41,6 +41,28 @@ TEST(SceneErrorTest, WrongTypes) {
   EXPECT_EQ(error_of("camera = 3\n" + with("")), "s.toml:1: 'camera' must be a table");
 }
 
+// The feedback keys of [render] (render.pseudo_shadow, draw_probe, cast_shadow): booleans, read
+// from the file and from --set; a wrong type names the file:line (or the --set) and the key.
+TEST(SceneErrorTest, FeedbackKeysAreBooleans) {
+  EXPECT_EQ(error_of(with("[render]\npseudo_shadow = 0\n")), "s.toml:8: 'pseudo_shadow' must be true or false");
+  EXPECT_EQ(error_of(with("[render]\nsize = [64, 64]\ndraw_probe = \"yes\"\n")),
+            "s.toml:9: 'draw_probe' must be true or false");
+  EXPECT_EQ(error_of(with("[render]\ncast_shadow = [true]\n")), "s.toml:8: 'cast_shadow' must be true or false");
+  EXPECT_NE(error_of(with(""), {"render.cast_shadow=1"}).find("'cast_shadow' must be true or false"),
+            std::string::npos);
+  const Result<Scene> defaults = test::parse(with(""));
+  ASSERT_TRUE(defaults) << defaults.error().message;
+  EXPECT_TRUE(defaults.value().render.pseudo_shadow);
+  EXPECT_FALSE(defaults.value().render.draw_probe);
+  EXPECT_FALSE(defaults.value().render.cast_shadow);
+  const Result<Scene> set = test::parse(with("[render]\npseudo_shadow = false\ndraw_probe = true\n"),
+                                        {"render.cast_shadow=true"});
+  ASSERT_TRUE(set) << set.error().message;
+  EXPECT_FALSE(set.value().render.pseudo_shadow);
+  EXPECT_TRUE(set.value().render.draw_probe);
+  EXPECT_TRUE(set.value().render.cast_shadow);
+}
+
 TEST(SceneErrorTest, ArraysOfTheWrongLength) {
   EXPECT_EQ(error_of(with("[probe]\nvelocity = [1, 2]\n")),
             "s.toml:8: 'velocity' must be an array of 3 numbers (got 2 elements)");
