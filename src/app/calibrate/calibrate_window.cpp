@@ -12,7 +12,6 @@
 
 #include "app/window/live_window.h"
 #include "core/file_io.h"
-#include "gl/gl.h"
 #include "haptics/live_heap.h"
 #include "render/renderer.h"
 
@@ -92,12 +91,7 @@ FrameInput placed_probe(calibrate::CurveKind kind, double x, double t_s) {
 // target (none: a blank between trials, or the first frame while the stimuli are prepared),
 // and the question and the progress above them.
 void present(LiveWindow& win, const Pair* pair, const char* question, const std::string& progress) {
-  const glm::ivec2 fb = win.framebuffer_size();
-  glBindFramebuffer(GL_FRAMEBUFFER, 0);
-  glViewport(0, 0, fb.x, fb.y);
-  glClearColor(0.0f, 0.0f, 0.0f, 1.0f);
-  glClear(GL_COLOR_BUFFER_BIT);
-  win.begin_frame();
+  win.begin_frame_on_black();
   if (pair) {
     const ImVec2 d = ImGui::GetIO().DisplaySize;
     win.draw_frame_image(*pair->left, UiRect{0.f, 0.f, 0.5f * d.x, d.y});

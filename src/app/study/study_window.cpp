@@ -11,7 +11,6 @@
 #include <utility>
 
 #include "app/window/live_window.h"
-#include "gl/gl.h"
 #include "haptics/live_heap.h"
 #include "render/renderer.h"
 #include "scene/scene_io.h"
@@ -109,12 +108,7 @@ namespace {
 
 // One frame: `r`'s last frame over the whole window (none: black) and the text above it.
 void present(LiveWindow& win, const Renderer* r, const std::string& text) {
-  const glm::ivec2 fb = win.framebuffer_size();
-  glBindFramebuffer(GL_FRAMEBUFFER, 0);
-  glViewport(0, 0, fb.x, fb.y);
-  glClearColor(0.0f, 0.0f, 0.0f, 1.0f);
-  glClear(GL_COLOR_BUFFER_BIT);
-  win.begin_frame();
+  win.begin_frame_on_black();
   if (r) {
     const ImVec2 d = ImGui::GetIO().DisplaySize;
     win.draw_frame_image(*r, UiRect{0.f, 0.f, d.x, d.y});

@@ -120,6 +120,15 @@ std::optional<glm::dvec2> LiveWindow::pointer_in_window() const {
 
 void LiveWindow::set_title(const std::string& title) { glfwSetWindowTitle(window_, title.c_str()); }
 
+void LiveWindow::begin_frame_on_black() {
+  const glm::ivec2 fb = framebuffer_size();
+  glBindFramebuffer(GL_FRAMEBUFFER, 0);
+  glViewport(0, 0, fb.x, fb.y);
+  glClearColor(0.0f, 0.0f, 0.0f, 1.0f);
+  glClear(GL_COLOR_BUFFER_BIT);
+  begin_frame();
+}
+
 void LiveWindow::begin_frame() {
   ImGui_ImplOpenGL3_NewFrame();
   ImGuiIO& io = ImGui::GetIO();

@@ -67,6 +67,9 @@ class LiveWindow {
 
   // The frame over the picture the program put on the back buffer (a blit, draw_frame_image).
   void begin_frame();
+  // The back buffer cleared to black, then begin_frame(): for programs whose pictures do not
+  // cover the window (calibrate's pair, the study's stimuli, screens of text).
+  void begin_frame_on_black();
   // `renderer`'s last frame into `dst` (window coordinates), straight from its colour target,
   // behind every ImGui window; a window showing more than one renderer (calibrate's pair).
   // Its colour target holds alpha 1 where no probe is drawn see-through (calibrate draws none).
