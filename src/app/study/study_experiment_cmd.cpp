@@ -87,7 +87,7 @@ void declare_run(cli::Command& cmd, RunArgs& a) {
   app.add_option("--mt-sd", a.mt_sd, "targeting: the SD of its movement times about a + b ID, seconds (default 0.05)")
       ->check(CLI::Range(0.0, 60.0))->type_name("S");
   cli::add_positive(app, "--spread", "K", a.spread, 100.0, "1",
-                    "targeting: its end points' scatter, as the expected We / W (default 1: ISO 9241-9's 4 % misses)");
+                    "targeting: its end points' scatter, as the expected We / W (default 1: We = W, as ISO 9241-9 assumes)");
   cli::add_int(app, "--observer-seed", "N", a.observer_seed, 0LL, 9'007'199'254'740'991LL,
                "its answers' seed (default 0: the participant's seed)");
   cli::add_int(app, "--stop-after", "N", a.stop_after, 0LL, 1'000'000LL, "stop after N new trials (a break; run again to go on)");
