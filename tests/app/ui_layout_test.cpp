@@ -156,7 +156,8 @@ TEST(UiLayoutTest, ShadowInTheTopLeftSendsTheReadoutsToAnotherCorner) {
 TEST(UiLayoutTest, LastPlacementIsKeptWhileItStaysClear) {
   const UiRect shadow{200, 200, 300, 300};  // both sides and all corners are clear
   UiLayoutInput in = default_scene(shadow);
-  in.last = {PanelSide::kLeft, Corner::kBottomRight};
+  in.last.panel_side = PanelSide::kLeft;
+  in.last.hud_corner = Corner::kBottomRight;
   const UiLayout l = layout_ui(in);
   EXPECT_EQ(l.placement.panel_side, PanelSide::kLeft) << "no jump to the preferred right side";
   EXPECT_EQ(l.placement.hud_corner, Corner::kBottomRight);

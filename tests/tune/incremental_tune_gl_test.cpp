@@ -12,7 +12,10 @@ namespace {
 class IncrementalTuneGLTest : public test::GlTest {};
 
 TEST_P(IncrementalTuneGLTest, MaterialEditRedrawsEverything) {
-  auto opened = TuneSession::open({PS_SOURCE_DIR "/scenes/table4_1_a.toml", {"render.size=[96,96]"}, {}, {}});
+  TuneSource src;
+  src.scene_path = PS_SOURCE_DIR "/scenes/table4_1_a.toml";
+  src.overrides = {"render.size=[96,96]"};
+  auto opened = TuneSession::open(src);
   ASSERT_TRUE(opened) << opened.error().message;
   TuneSession& s = *opened.value();
   auto step = [&s](double dx) {

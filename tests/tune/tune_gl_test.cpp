@@ -57,7 +57,9 @@ class TuneGLTest : public test::GlTest {
   static constexpr const char* kBaked = "materials.table4_1_a.gabor_strategy=baked";
   std::unique_ptr<TuneSession> open_session(std::vector<std::string> sets = {}) {
     sets.insert(sets.begin(), "render.size=[64,64]");
-    TuneSource src{scene_.string(), sets, {}};
+    TuneSource src;
+    src.scene_path = scene_.string();
+    src.overrides = sets;
     src.renderer.glsl_root = (dir_ / "glsl").string();
     auto s = TuneSession::open(src);
     EXPECT_TRUE(s) << (s ? "" : s.error().message);
@@ -239,7 +241,9 @@ TEST_P(TuneGLTest, SetSharesTheBakedTileUnlessTheTextureChanges) {
   ASSERT_TRUE(s->set("light.ambient", "0.5"));
   EXPECT_EQ(s->renderer().stats().bake_ms, 0.0);
   const Image shared = frame(*s);
-  auto fresh_src = TuneSource{scene_.string(), {"render.size=[64,64]", kBaked, "light.ambient=0.5"}, {}};
+  TuneSource fresh_src;
+  fresh_src.scene_path = scene_.string();
+  fresh_src.overrides = {"render.size=[64,64]", kBaked, "light.ambient=0.5"};
   fresh_src.renderer.glsl_root = (dir_ / "glsl").string();
   auto fresh = TuneSession::open(fresh_src);
   ASSERT_TRUE(fresh) << fresh.error().message;
