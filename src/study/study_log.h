@@ -20,6 +20,24 @@ inline constexpr const char* kStudyLogSchema = "pseudoshadow-study/1";
 
 // The SHA-256 of `data`, 64 lowercase hex digits.
 std::string sha256_hex(std::string_view data);
+// The SHA-256 of a file's bytes (an experiment file's, written into its logs); that of no bytes
+// when it cannot be read.
+std::string file_sha256(const std::string& path);
+
+// A participant's folder locked (flock) while a run writes its log: a second run of the same
+// participant (a resume started while the first still writes) is refused instead of
+// interleaving its trials. The kernel drops the lock when the process ends, however it ends.
+class DirLock {
+ public:
+  explicit DirLock(const std::string& dir);
+  ~DirLock();
+  DirLock(const DirLock&) = delete;
+  DirLock& operator=(const DirLock&) = delete;
+  bool held() const { return fd_ >= 0; }
+
+ private:
+  int fd_;
+};
 
 // `payload` (a JSON object's text, "{...}") with its checksum member appended, chained to `prev`
 // (the previous line's checksum; "" for the first line).

@@ -1,11 +1,6 @@
 #include "study/study_run.h"
 
 #include <filesystem>
-#include <fcntl.h>
-#include <sys/file.h>
-#include <unistd.h>
-#include <fstream>
-#include <iterator>
 #include <memory>
 #include <optional>
 #include <random>
@@ -223,11 +218,6 @@ ojson names(const std::vector<Variant>& v, const std::vector<int>& order = {}) {
   return a;
 }
 
-std::string file_sha256(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  return sha256_hex(std::string((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>()));
-}
-
 // Who answers this run's trials: the responder's own description, or the simulated participant.
 ojson observer_of(const RunState& s) {
   if (s.spec.responder) return ojson::parse(s.spec.responder->describe().dump());
@@ -333,28 +323,6 @@ Status append(maze::SessionLog& log, const ojson& j, std::string& last) {
   last = line.substr(line.size() - 66, 64);
   return log.append_line(line);
 }
-
-// The participant's folder locked (flock) for the run: a second run of the same participant
-// (a resume started while the first still writes) is refused instead of interleaving its trials.
-// The kernel drops the lock when the process ends, however it ends.
-class DirLock {
- public:
-  explicit DirLock(const std::string& dir) : fd_(::open(dir.c_str(), O_RDONLY | O_DIRECTORY | O_CLOEXEC)) {
-    if (fd_ >= 0 && ::flock(fd_, LOCK_EX | LOCK_NB) != 0) {
-      ::close(fd_);
-      fd_ = -1;
-    }
-  }
-  ~DirLock() {
-    if (fd_ >= 0) ::close(fd_);
-  }
-  DirLock(const DirLock&) = delete;
-  DirLock& operator=(const DirLock&) = delete;
-  bool held() const { return fd_ >= 0; }
-
- private:
-  int fd_;
-};
 
 }  // namespace
 
