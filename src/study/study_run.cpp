@@ -146,6 +146,15 @@ ojson trial_line(RunState& s, const TrialStimulus& t, int answer) {
           {"key", s.e.response_keys[static_cast<std::size_t>(answer)]}, {"correct", t.shown == answer}};
 }
 
+// A fair shuffle of 0..n-1: Fisher-Yates from the engine's bits (fit.h's uniform01).
+std::vector<int> shuffled(int n, std::mt19937_64& rng) {
+  std::vector<int> order(static_cast<std::size_t>(n));
+  for (int i = 0; i < n; ++i) order[static_cast<std::size_t>(i)] = i;
+  for (int i = n - 1; i > 0; --i)
+    std::swap(order[static_cast<std::size_t>(i)], order[static_cast<std::size_t>(uniform01(rng) * (i + 1))]);
+  return order;
+}
+
 // The material of a trial: each block and condition shows the materials in turn, shuffled in
 // rounds of K from the participant's seed, so every material is shown equally often.
 int material_of(const RunState& s, const Slot& slot) {
@@ -153,20 +162,7 @@ int material_of(const RunState& s, const Slot& slot) {
   const auto u = [](int v) { return static_cast<std::uint64_t>(v); };
   const std::uint64_t segment = trial_seed(trial_seed(s.plan.seed, u(slot.block), kMaterials), u(slot.condition), kMaterials);
   std::mt19937_64 rng(trial_seed(segment, u(slot.in_segment / K), kMaterials));
-  std::vector<int> order(static_cast<std::size_t>(K));
-  for (int i = 0; i < K; ++i) order[static_cast<std::size_t>(i)] = i;
-  for (int i = K - 1; i > 0; --i)  // Fisher-Yates from the engine's bits (fit.h's uniform01)
-    std::swap(order[static_cast<std::size_t>(i)], order[static_cast<std::size_t>(uniform01(rng) * (i + 1))]);
-  return order[static_cast<std::size_t>(slot.in_segment % K)];
-}
-
-// A fair shuffle of 0..n-1 from the engine's bits (fit.h's uniform01), as material_of's.
-std::vector<int> shuffled(int n, std::mt19937_64& rng) {
-  std::vector<int> order(static_cast<std::size_t>(n));
-  for (int i = 0; i < n; ++i) order[static_cast<std::size_t>(i)] = i;
-  for (int i = n - 1; i > 0; --i)
-    std::swap(order[static_cast<std::size_t>(i)], order[static_cast<std::size_t>(uniform01(rng) * (i + 1))]);
-  return order;
+  return shuffled(K, rng)[static_cast<std::size_t>(slot.in_segment % K)];
 }
 
 ojson point_json(const Point3& p) { return ojson::array({p.x, p.y, p.z}); }
@@ -357,7 +353,8 @@ Result<RunReport> run_participant(const Experiment& e, const RunSpec& spec) {
   Result<maze::SessionLog> log = exists ? maze::SessionLog::open_existing(r.log_path) : maze::SessionLog::open(r.log_path);
   if (!log) return log.error();
   ojson resumed = {{"type", "resumed"}, {"at_trial", r.done_before + 1}};
-  if (exists && nlohmann::json::parse(observer_of(s).dump()) != observer_before) resumed["observer"] = observer_of(s);
+  const ojson who = observer_of(s);
+  if (exists && nlohmann::json::parse(who.dump()) != observer_before) resumed["observer"] = who;
   Status st = exists ? append(log.value(), resumed, last) : append(log.value(), session_start(s), last);
   for (int k = r.done_before; st && k < r.total && (spec.stop_after <= 0 || r.written < spec.stop_after); ++k) {
     if (e.task == Task::kTargeting) {
