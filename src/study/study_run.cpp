@@ -170,40 +170,58 @@ ojson point_json(const Point3& p) { return ojson::array({p.x, p.y, p.z}); }
 // A targeting trial: one movement of a sequence. Each block and condition runs every (D, W)
 // `sequences` times, in an order shuffled from the participant's seed; a sequence is `targets`
 // movements across its ring (targeting.h). Practice runs the first condition's order of block 1.
-// The simulated participant moves from where its last selection was (the previous target's
-// centre at a sequence's start) and selects where its Fitts law and scatter put it.
-ojson targeting_trial(RunState& s, const Slot& slot, int k) {
+TrialStimulus targeting_stimulus(const RunState& s, const Slot& slot, int k) {
   const TargetingSpec& t = s.e.targeting;
   const int n = t.targets, nw = static_cast<int>(t.widths_mm.size());
   const int cells = t.sequences * static_cast<int>(t.distances_mm.size()) * nw;
   const auto u = [](int v) { return static_cast<std::uint64_t>(v); };
   const int block = slot.practice ? 1 : slot.block;
-  const int condition = slot.practice ? s.plan.order[0] : slot.condition;
-  std::mt19937_64 rng(trial_seed(trial_seed(s.plan.seed, u(block), kCells), u(condition), kCells));
+  TrialStimulus m;
+  m.trial = k + 1;
+  m.total = total_trials(s.e);
+  m.practice = slot.practice;
+  m.block = slot.block;
+  m.condition = slot.practice ? s.plan.order[0] : slot.condition;
+  std::mt19937_64 rng(trial_seed(trial_seed(s.plan.seed, u(block), kCells), u(m.condition), kCells));
   const std::vector<int> order = shuffled(cells, rng);
-  const int sequence = (slot.in_segment / n) % cells, step = slot.in_segment % n;
+  const int sequence = (slot.in_segment / n) % cells;
+  m.sequence = sequence + 1;
+  m.step = slot.in_segment % n;
   const int cell = order[static_cast<std::size_t>(sequence)] % (cells / t.sequences);
-  const double diameter = t.distances_mm[static_cast<std::size_t>(cell / nw)], width = t.widths_mm[static_cast<std::size_t>(cell % nw)];
-  const Ring ring = make_ring(t, diameter);
-  const int from = target_at_step(n, step + n - 1), to = target_at_step(n, step);
-  const Point3 start = target_centre(ring, from), target = target_centre(ring, to);
-  const double chord = movement_distance(diameter, n);
-  if (step == 0) s.last_end.reset();  // a sequence starts on its first target
-  const Point3 began = s.last_end.value_or(start);
-  // The simulated movement: its time from the law at the nominal distance and width (the truth
-  // the summary recovers); its end point scattered about the target along the axis from where
-  // it began and across it (the pointer's frame: target at the distance along +x).
+  m.ring_diameter = t.distances_mm[static_cast<std::size_t>(cell / nw)];
+  m.width = t.widths_mm[static_cast<std::size_t>(cell % nw)];
+  const Ring ring = make_ring(t, m.ring_diameter);
+  m.from = target_at_step(n, m.step + n - 1);
+  m.to = target_at_step(n, m.step);
+  m.start = target_centre(ring, m.from);
+  m.target = target_centre(ring, m.to);
+  m.distance = movement_distance(m.ring_diameter, n);
+  return m;
+}
+
+// The simulated participant's movement: it moves from where its last selection was (the
+// previous target's centre at a sequence's start); its time from the law at the nominal
+// distance and width (the truth the summary recovers); its end point scattered about the target
+// along the axis from where it began and across it (the pointer's frame: target at the distance
+// along +x).
+Pointed simulated_movement(const RunState& s, const TrialStimulus& m, int k) {
+  const Ring ring = make_ring(s.e.targeting, m.ring_diameter);
+  const Point3 began = m.step == 0 ? m.start : s.last_end.value_or(m.start);
   SimulatedPointer pointer(s.spec.observer.pointer, trial_seed(s.observer_seed, static_cast<std::uint64_t>(k), kObserver));
-  const PointingTrial p = pointer.point(chord, width);
-  const Point3 end = on_axis(ring, began, target, distance(began, target) + (p.end.x - chord), p.end.y);
-  const bool hit = distance(end, target) <= 0.5 * width;
-  s.last_end = end;
-  ojson j = {{"type", "trial"}, {"trial", k + 1}, {"practice", slot.practice}, {"block", slot.block},
-             {"condition", s.e.conditions[static_cast<std::size_t>(condition)].name}, {"sequence", sequence + 1},
-             {"ring_diameter", diameter}, {"distance", chord}, {"width", width}, {"from", from}, {"target", to},
-             {"start", point_json(start)}, {"target_centre", point_json(target)}, {"began", point_json(began)},
-             {"end", point_json(end)}, {"movement_time_s", p.movement_time_s}, {"hit", hit}};
-  return j;
+  const PointingTrial p = pointer.point(m.distance, m.width);
+  const Point3 end = on_axis(ring, began, m.target, distance(began, m.target) + (p.end.x - m.distance), p.end.y);
+  return {began, end, p.movement_time_s};
+}
+
+// A targeting trial's log line; the movement's end is where the next one begins.
+ojson targeting_line(RunState& s, const TrialStimulus& m, const Pointed& p) {
+  s.last_end = p.end;
+  return {{"type", "trial"}, {"trial", m.trial}, {"practice", m.practice}, {"block", m.block},
+          {"condition", s.e.conditions[static_cast<std::size_t>(m.condition)].name}, {"sequence", m.sequence},
+          {"ring_diameter", m.ring_diameter}, {"distance", m.distance}, {"width", m.width}, {"from", m.from},
+          {"target", m.to}, {"start", point_json(m.start)}, {"target_centre", point_json(m.target)},
+          {"began", point_json(p.began)}, {"end", point_json(p.end)}, {"movement_time_s", p.movement_time_s},
+          {"hit", distance(p.end, m.target) <= 0.5 * m.width}};
 }
 
 ojson names(const std::vector<Variant>& v, const std::vector<int>& order = {}) {
@@ -325,9 +343,6 @@ Status append(maze::SessionLog& log, const ojson& j, std::string& last) {
 Result<RunReport> run_participant(const Experiment& e, const RunSpec& spec) {
   Result<int> index = participant_index(spec.participant);
   if (!index) return index.error();
-  if (e.task == Task::kTargeting && spec.responder)
-    return make_error(e.path + ": the targeting task runs with a simulated participant only so far (--simulate): "
-                      "its window run is not built yet");
   RunState s{e, spec, plan_entry(e, index.value()), {}, 0, std::nullopt};
   s.plan.participant = spec.participant;
   s.observer_seed = spec.observer.seed != 0 ? spec.observer.seed : s.plan.seed;
@@ -358,7 +373,20 @@ Result<RunReport> run_participant(const Experiment& e, const RunSpec& spec) {
   Status st = exists ? append(log.value(), resumed, last) : append(log.value(), session_start(s), last);
   for (int k = r.done_before; st && k < r.total && (spec.stop_after <= 0 || r.written < spec.stop_after); ++k) {
     if (e.task == Task::kTargeting) {
-      st = append(log.value(), targeting_trial(s, slot_of(e, s.plan, k), k), last);
+      const TrialStimulus m = targeting_stimulus(s, slot_of(e, s.plan, k), k);
+      Pointed p;
+      if (!spec.responder) {
+        p = simulated_movement(s, m, k);
+      } else {
+        Result<std::optional<Pointed>> made = spec.responder->point(m);
+        if (!made) return made.error();  // every trial before it is on disk already
+        if (!made.value()) {
+          r.stopped = true;
+          break;
+        }
+        p = *made.value();
+      }
+      st = append(log.value(), targeting_line(s, m, p), last);
       ++r.written;
       continue;
     }

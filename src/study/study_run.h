@@ -42,11 +42,23 @@ struct TrialStimulus {
   double level = 0.0, reference = 0.0, comparison = 0.0;
   int interval = 0;
   int shown = -1;          // identification: the material shown (index into Experiment::materials)
+  // targeting: one movement of a sequence across a ring (study/targeting.h), from target `from`
+  // (centre `start`) to target `to` (centre `target`); `step` from 0 (0: the sequence's first
+  // movement), `sequence` from 1 in its block and condition.
+  int sequence = 0, step = 0, from = 0, to = 0;
+  double ring_diameter = 0.0, distance = 0.0, width = 0.0;  // D, the chord moved, W (mm)
+  Point3 start, target;
+};
+
+// A targeting movement as made: where it began (the last selection), where the selection was
+// made (on the ring's plane) and the time between the two selections.
+struct Pointed {
+  Point3 began, end;
+  double movement_time_s = 0.0;
 };
 
 // Who answers the trials: the simulated participant (RunSpec::observer) when none is given, or
-// a person at the window (app/study/study_window.h). Threshold and identification tasks only:
-// a targeting run is simulated (its window run is not built yet).
+// a person at the window (app/study/study_window.h).
 class Responder {
  public:
   virtual ~Responder() = default;
@@ -54,6 +66,8 @@ class Responder {
   // (its index). None: the person stopped (Esc, a signal); the run ends there, every trial
   // answered before it kept, and `study resume` goes on from it.
   virtual Result<std::optional<int>> answer(const TrialStimulus& t) = 0;
+  // A targeting trial's movement, as answer()'s none: the person stopped.
+  virtual Result<std::optional<Pointed>> point(const TrialStimulus& t) = 0;
   // Who answered, for the log's "observer" member: {"kind": "person", ...}.
   virtual nlohmann::json describe() const = 0;
 };

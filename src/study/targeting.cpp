@@ -51,6 +51,16 @@ Point3 on_axis(const Ring& ring, const Point3& from, const Point3& to, double al
   return {from.x + along * a[0] + aside * l[0], from.y + along * a[1] + aside * l[1], from.z + along * a[2] + aside * l[2]};
 }
 
+bool TouchSelector::tick(bool in_contact, double gap_mm) {
+  if (in_contact) {
+    const bool selected = armed_;
+    armed_ = false;
+    return selected;
+  }
+  if (gap_mm > rearm_mm_) armed_ = true;
+  return false;
+}
+
 double distance(const Point3& a, const Point3& b) { return std::hypot(a.x - b.x, a.y - b.y, a.z - b.z); }
 
 }  // namespace ps::study

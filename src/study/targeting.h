@@ -30,6 +30,24 @@ int target_at_step(int targets, int step);
 // Every movement's centre-to-centre distance on a ring: D sin(pi (targets - 1) / (2 targets)).
 double movement_distance(double diameter, int targets);
 
+// Selections made by touching (the targeting task in the window, docs/study.md, "Targeting in
+// the window"): a selection is the haptic tick on which the probe comes into contact; the next
+// one counts only after the probe has been lifted more than `rearm_mm` off the plane, so contact
+// that flickers at the surface (a probe resting on it, the filter's rounding) selects once.
+// It starts unarmed: a probe already down when a ring appears selects nothing until lifted.
+class TouchSelector {
+ public:
+  explicit TouchSelector(double rearm_mm = 0.25) : rearm_mm_(rearm_mm) {}
+  // One tick: in contact or not, and the gap between the probe and the plane (mm; <= 0 pressed
+  // in). True: this tick is a selection.
+  bool tick(bool in_contact, double gap_mm);
+  bool armed() const { return armed_; }
+
+ private:
+  double rearm_mm_;
+  bool armed_ = false;
+};
+
 // A point `along` the task axis from `from` towards `to` and `aside` across it in the plane.
 Point3 on_axis(const Ring& ring, const Point3& from, const Point3& to, double along, double aside);
 // The distance between two points.

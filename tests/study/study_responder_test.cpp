@@ -47,6 +47,7 @@ struct ScriptedPerson final : Responder {
     asked.push_back(t);
     return std::optional<int>(answers[asked.size() - 1]);
   }
+  Result<std::optional<Pointed>> point(const TrialStimulus&) override { return make_error("not a targeting run"); }
   nlohmann::json describe() const override { return {{"kind", "person"}, {"answered_in", "test"}}; }
 };
 

@@ -101,6 +101,23 @@ TEST(TargetingTest, TheRingLiesOnItsPlaneAndEveryMovementIsTheSameChord) {
   EXPECT_NEAR(target_centre(ring, 0).x, 45.0, 1e-9) << "target 0 on the ring's +x side";
 }
 
+// A touch selects once: at contact's first tick, not again while the probe rests on the
+// surface or flickers in and out of contact there, and again only after a lift past 0.25 mm.
+TEST(TargetingTest, ATouchSelectsOnceAndAgainOnlyAfterALift) {
+  TouchSelector sel(0.25);
+  EXPECT_FALSE(sel.tick(true, -0.1)) << "down when the ring appeared: unarmed";
+  EXPECT_FALSE(sel.tick(false, 0.2)) << "not yet lifted past 0.25 mm";
+  EXPECT_FALSE(sel.tick(true, 0.0));
+  EXPECT_FALSE(sel.tick(false, 1.0));  // lifted: armed
+  EXPECT_TRUE(sel.armed());
+  EXPECT_TRUE(sel.tick(true, 0.0)) << "contact's first tick selects";
+  int more = 0;
+  for (int k = 0; k < 100; ++k) more += sel.tick(k % 3 != 0, k % 3 != 0 ? -0.05 : 0.1);  // flicker at the surface
+  EXPECT_EQ(more, 0) << "resting and flickering at the surface select nothing more";
+  EXPECT_FALSE(sel.tick(false, 0.5));
+  EXPECT_TRUE(sel.tick(true, -0.2)) << "lifted 0.5 mm and down again: the next selection";
+}
+
 TEST(TargetingTest, TheDesignsMistakesNameTheirLine) {
   const std::string dir = fresh_dir("targeting", "errors");
   const auto error_of = [&](const std::string& from, const std::string& to) {
@@ -227,18 +244,52 @@ TEST(TargetingTest, ItsEventsHaveOneRowPerMovementWithItsHit) {
   EXPECT_EQ(rows, 117);
 }
 
-// A person cannot answer a targeting run yet: its window run is not built.
-TEST(TargetingTest, APersonIsRefusedUntilItsWindowRunExists) {
-  struct Nobody final : Responder {
-    Result<std::optional<int>> answer(const TrialStimulus&) override { return std::optional<int>(0); }
-    nlohmann::json describe() const override { return {{"kind", "person"}}; }
-  } nobody;
-  const std::string dir = fresh_dir("targeting", "person");
+// A person's movements (the window's, app/study/study_window.h) are logged as made, for the
+// stimuli chosen before they were made: the same targets, widths and rings as a simulated run
+// of the same participant. Stopping keeps them; a simulated tail finishes the run.
+TEST(TargetingTest, APersonsMovementsAreLoggedAsMadeForTheStimuliShown) {
+  struct Pointer final : Responder {
+    std::vector<TrialStimulus> asked;
+    Result<std::optional<int>> answer(const TrialStimulus&) override { return make_error("not a targeting answer"); }
+    Result<std::optional<Pointed>> point(const TrialStimulus& t) override {
+      if (asked.size() == 12) return std::optional<Pointed>();  // Esc after 12 movements
+      asked.push_back(t);
+      // Lands 0.3 W to the side of the centre on odd trials (a hit), 0.7 W on even ones (a miss).
+      const double off = (asked.size() % 2 ? 0.3 : 0.7) * t.width;
+      const Point3 began{t.start.x + 1.0, t.start.y, t.start.z};
+      return std::optional<Pointed>(Pointed{began, {t.target.x + off, t.target.y, t.target.z}, 0.25 * static_cast<double>(asked.size())});
+    }
+    nlohmann::json describe() const override { return {{"kind", "person"}, {"answered_in", "test"}}; }
+  } person;
+  const std::string dir = fresh_dir("targeting", "person"), sim_dir = fresh_dir("targeting", "person_sim");
+  const Experiment e = design_in(dir);
   RunSpec s = spec_for(dir, "P01", 0.2, 0.15);
-  s.responder = &nobody;
-  const Result<RunReport> r = run_participant(design_in(dir), s);
-  ASSERT_FALSE(r);
-  EXPECT_NE(r.error().message.find("simulated participant only"), std::string::npos) << r.error().message;
+  s.responder = &person;
+  const Result<RunReport> r = run_participant(e, s);
+  ASSERT_TRUE(r) << r.error().message;
+  EXPECT_TRUE(r->stopped);
+  EXPECT_EQ(r->written, 12);
+  const Result<RunReport> sim = run_participant(design_in(sim_dir), spec_for(sim_dir, "P01", 0.2, 0.15));
+  ASSERT_TRUE(sim) << sim.error().message;
+  const std::vector<nlohmann::json> made = trial_lines(r->log_path), unbroken = trial_lines(sim->log_path);
+  ASSERT_EQ(made.size(), 12u);
+  for (std::size_t i = 0; i < made.size(); ++i) {
+    const TrialStimulus& t = person.asked[i];
+    for (const char* k : {"trial", "condition", "sequence", "ring_diameter", "distance", "width", "from", "target", "start", "target_centre"})
+      EXPECT_EQ(made[i].at(k), unbroken[i].at(k)) << "trial " << i + 1 << " " << k;
+    EXPECT_DOUBLE_EQ(made[i].at("movement_time_s").get<double>(), 0.25 * static_cast<double>(i + 1));
+    EXPECT_DOUBLE_EQ(made[i].at("end").at(0).get<double>(), t.target.x + (i % 2 ? 0.7 : 0.3) * t.width);
+    EXPECT_DOUBLE_EQ(made[i].at("began").at(0).get<double>(), t.start.x + 1.0);
+    EXPECT_EQ(made[i].at("hit"), i % 2 == 0) << "a hit within W / 2 of the centre, a miss beyond";
+  }
+  // The simulated tail goes on from the person's last selection and finishes the run.
+  const Result<RunReport> tail = run_participant(e, spec_for(dir, "P01", 0.2, 0.15));
+  ASSERT_TRUE(tail) << tail.error().message;
+  EXPECT_TRUE(tail->complete);
+  EXPECT_EQ(tail->done_before, 12);
+  const std::vector<nlohmann::json> all = trial_lines(r->log_path);
+  ASSERT_EQ(all.size(), unbroken.size());
+  EXPECT_EQ(all[12].at("began"), made[11].at("end")) << "trial 13 is a sequence's 4th movement: it begins where the person's last ended";
 }
 
 }  // namespace

@@ -130,9 +130,6 @@ int run_main(const cli::Command& cmd, const RunArgs& a) {
   spec.observer.pointer.b_s_per_bit = a.fitts_b;
   spec.observer.pointer.mt_sd_s = a.mt_sd;
   spec.observer.pointer.spread = a.spread;
-  if (e.task == study::Task::kTargeting && !a.simulate)
-    return cmd.usage_error(make_error(a.experiment + ": the targeting task runs with a simulated participant only so far: "
-                                      "give --simulate (its window run is not built yet; docs/study.md, \"Targeting\")"));
   // Without --simulate a person answers in the window (docs/study.md, "In the window").
   const cli::StopSignals stop;  // SIGTERM, SIGINT, SIGHUP: the run ends as Esc ends it
   std::unique_ptr<StudyWindow> window;

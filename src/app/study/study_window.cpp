@@ -10,6 +10,7 @@
 #include <string>
 #include <utility>
 
+#include "app/study/targeting_screen.h"
 #include "app/window/live_window.h"
 #include "haptics/live_heap.h"
 #include "render/renderer.h"
@@ -82,6 +83,7 @@ struct StudyWindow::Keys final : WindowListener {
   std::vector<int> choices;  // indexes into names, in the order typed
   bool quit = false;         // Esc
   bool go = false;           // Space or Enter (the text screens)
+  HeightInput height;        // the targeting task's probe height (PageUp/PageDown, Up/Down, wheel)
   explicit Keys(const std::vector<std::string>& n) : names(n) {}
   void clear() {
     choices.clear();
@@ -91,6 +93,8 @@ struct StudyWindow::Keys final : WindowListener {
     if (action != GLFW_PRESS) return;
     if (key == GLFW_KEY_ESCAPE) quit = true;
     if (key == GLFW_KEY_SPACE || key == GLFW_KEY_ENTER || key == GLFW_KEY_KP_ENTER) go = true;
+    if (key == GLFW_KEY_PAGE_UP || key == GLFW_KEY_UP) ++height.steps;
+    if (key == GLFW_KEY_PAGE_DOWN || key == GLFW_KEY_DOWN) --height.steps;
     const char* name = key == GLFW_KEY_LEFT    ? "left"
                        : key == GLFW_KEY_RIGHT ? "right"
                        : key == GLFW_KEY_UP    ? "up"
@@ -99,6 +103,7 @@ struct StudyWindow::Keys final : WindowListener {
     if (name)
       if (std::optional<int> c = named_key_choice(names, name)) choices.push_back(*c);
   }
+  void on_scroll(double dy, bool /*shift*/) override { height.scroll += dy; }
   void on_char(unsigned int codepoint) override {
     if (std::optional<int> c = key_choice(names, codepoint)) choices.push_back(*c);
   }
@@ -123,8 +128,11 @@ std::string progress(const study::Experiment& e, const study::TrialStimulus& t) 
   return "trial " + std::to_string(t.trial - e.practice) + " of " + std::to_string(t.total - e.practice);
 }
 
-// The keys and what each answers: "1 = first, 2 = second" / "1 = fine, 2 = coarse, ...".
+// The keys and what each answers: "1 = first, 2 = second" / "1 = fine, 2 = coarse, ..."; the
+// targeting task's controls.
 std::string key_help(const study::Experiment& e) {
+  if (e.task == study::Task::kTargeting)
+    return "the mouse moves the probe; the wheel, PageUp/PageDown or Up/Down lift and lower it";
   std::string s;
   for (std::size_t i = 0; i < e.response_keys.size(); ++i) {
     if (i) s += ", ";
@@ -147,13 +155,19 @@ Result<std::unique_ptr<StudyWindow>> StudyWindow::open(const study::Experiment& 
   // As calibrate's window: a session runs for tens of minutes; no haptic thread (the strokes are
   // scripted), so llvmpipe keeps every core for the stimulus.
   keep_large_blocks_mapped();
-  const Result<Scene> scene = load_scene(e.scene, e.task == study::Task::kThreshold
-                                                      ? study::threshold_overrides(e, e.conditions[0], e.threshold.reference)
-                                                      : study::material_overrides(e, e.conditions[0], e.materials[0]));
+  const Result<Scene> scene = load_scene(e.scene, e.task == study::Task::kThreshold ? study::threshold_overrides(e, e.conditions[0], e.threshold.reference)
+                                                  : e.task == study::Task::kTargeting ? study::condition_overrides(e, e.conditions[0])
+                                                                                      : study::material_overrides(e, e.conditions[0], e.materials[0]));
   if (!scene) return scene.error();
   auto win = LiveWindow::open({scene->render.width, scene->render.height, "pseudoshadow study: " + e.name});
   if (!win) return win.error();
-  return std::unique_ptr<StudyWindow>(new StudyWindow(e, std::move(p), std::move(win.value())));
+  std::unique_ptr<StudyWindow> w(new StudyWindow(e, std::move(p), std::move(win.value())));
+  if (e.task == study::Task::kTargeting) {  // the probe moved by the mouse, a haptic loop (targeting_screen.h)
+    auto t = TargetingScreen::open(e, *w->win_, w->keys_->height);
+    if (!t) return t.error();
+    w->targeting_ = std::move(t.value());
+  }
+  return w;
 }
 
 nlohmann::json StudyWindow::describe() const { return {{"kind", "person"}, {"answered_in", "window"}}; }
@@ -199,19 +213,30 @@ Result<Renderer*> StudyWindow::stimulus(const study::TrialStimulus& t, int which
   return slot.get();
 }
 
-Result<std::optional<int>> StudyWindow::answer(const study::TrialStimulus& t) {
-  by_person_ = false;
+bool StudyWindow::begin(const study::TrialStimulus& t) {
   const std::string esc = "Esc stops; every answer given is kept and `study resume` goes on.";
   if (!started_) {
     const std::string where = t.trial > 1 ? "Going on from " + progress(e_, t) + ".\n\n" : "";
     if (!wait_for_space("instructions", e_.instructions + "\n\n" + where + "Keys: " + key_help(e_) +
                                             "\nPress Space to begin. " + esc))
-      return std::optional<int>();
+      return false;
     started_ = true;
   }
-  if (e_.practice > 0 && t.trial == e_.practice + 1 &&
-      !wait_for_space("practice over", "The practice is over; from now on every answer counts.\nPress Space to go on."))
-    return std::optional<int>();
+  return !(e_.practice > 0 && t.trial == e_.practice + 1 &&
+           !wait_for_space("practice over", "The practice is over; from now on every answer counts.\nPress Space to go on."));
+}
+
+Result<std::optional<study::Pointed>> StudyWindow::point(const study::TrialStimulus& t) {
+  by_person_ = false;
+  if (!targeting_) return make_error("study: " + e_.path + " is not a targeting task: its trials are answered, not pointed");
+  if (!begin(t)) return std::optional<study::Pointed>();
+  return targeting_->point(t, progress(e_, t) + "\n", "pseudoshadow study: " + progress(e_, t), [this] { return stopping(); });
+}
+
+Result<std::optional<int>> StudyWindow::answer(const study::TrialStimulus& t) {
+  by_person_ = false;
+  if (targeting_) return make_error("study: " + e_.path + " is a targeting task: its trials are pointed, not answered");
+  if (!begin(t)) return std::optional<int>();
   const std::string head = progress(e_, t) + "    Keys: " + key_help(e_) + "\n";
   win_->set_title("pseudoshadow study: " + progress(e_, t));
   // A blank while the stimuli are prepared (a software renderer takes a moment for each): the

@@ -10,6 +10,9 @@
 // participants is theirs, not their hands'. Threshold: interval 1, a blank, interval 2, then the
 // question; identification: the one stimulus stroked back and forth until it is named.
 //
+// Targeting: the person touches the ring's targets with the probe, moved by the mouse
+// (app/study/targeting_screen.h).
+//
 // The window's title says where the run stands ("pseudoshadow study: trial 5 of 64, answer" while
 // an answer is taken), which a test driving it with X events waits on.
 #pragma once
@@ -32,6 +35,7 @@ namespace ps {
 
 class LiveWindow;
 class Renderer;
+class TargetingScreen;
 
 struct StudyWindowParams {
   // Asked every frame: true ends the run as Esc does (the CLI's SIGTERM/SIGINT/SIGHUP or a lost
@@ -65,6 +69,8 @@ class StudyWindow final : public study::Responder {
   StudyWindow& operator=(const StudyWindow&) = delete;
 
   Result<std::optional<int>> answer(const study::TrialStimulus& t) override;
+  // The targeting task (app/study/targeting_screen.h).
+  Result<std::optional<study::Pointed>> point(const study::TrialStimulus& t) override;
   nlohmann::json describe() const override;
 
   // Why the last answer() gave none: the person pressed Esc (or closed the window) rather than
@@ -74,6 +80,9 @@ class StudyWindow final : public study::Responder {
  private:
   struct Keys;
   StudyWindow(const study::Experiment& e, StudyWindowParams p, std::unique_ptr<LiveWindow> win);
+  // The instructions before the first trial shown, the "practice over" screen before the first
+  // that counts; false: stopped.
+  bool begin(const study::TrialStimulus& t);
   // A screen of text until Space or Enter; false: stopped.
   bool wait_for_space(const std::string& title, const std::string& text);
   // Stimulus `which` of a trial, drawn by a renderer of its own. A threshold task's reference is
@@ -88,6 +97,7 @@ class StudyWindow final : public study::Responder {
   std::unique_ptr<Keys> keys_;
   std::map<int, std::unique_ptr<Renderer>> references_;  // by condition
   std::unique_ptr<Renderer> fresh_[2];                   // this trial's other stimuli
+  std::unique_ptr<TargetingScreen> targeting_;           // the targeting task's (after win_: it uses it)
   bool started_ = false, by_person_ = false;
 };
 

@@ -1,0 +1,162 @@
+#include "app/study/targeting_screen.h"
+
+#define GLFW_INCLUDE_NONE
+#include <GLFW/glfw3.h>
+#include <imgui.h>
+
+#include <cmath>
+#include <numbers>
+#include <utility>
+#include <vector>
+
+#include "app/session/session.h"
+#include "app/window/live_window.h"
+#include "app/window/text_box.h"
+#include "haptics/session_driver.h"
+#include "prepare/prepare.h"
+#include "scene/scene_io.h"
+#include "world/haptic_scene.h"
+
+namespace ps {
+
+namespace {
+
+// Ticks the selection feed holds between two frames: 16 s at 1 kHz (a frame takes tens of
+// milliseconds on llvmpipe; a loop switch or a stall longer than that loses ticks, and a touch
+// in them is missed rather than misplaced).
+constexpr std::size_t kFeedTicks = std::size_t{1} << 14;
+
+glm::dvec3 vec(const study::Point3& p) { return {p.x, p.y, p.z}; }
+glm::dvec3 vec(const std::array<double, 3>& a) { return {a[0], a[1], a[2]}; }
+
+// Where a contact point lies on the ring's plane (the selection's place).
+study::Point3 on_ring_plane(const study::Ring& ring, const glm::dvec3& p) {
+  const glm::dvec3 c = vec(ring.centre), n = vec(ring.normal);
+  const glm::dvec3 q = p - glm::dot(p - c, n) * n;
+  return {q.x, q.y, q.z};
+}
+
+// A target's outline in the window: its circle on the ring's plane, projected.
+std::vector<ImVec2> outline(const PointerView& view, const study::Ring& ring, int index, double width_mm) {
+  const glm::dvec3 c = vec(study::target_centre(ring, index)), u = vec(ring.u), v = vec(ring.v);
+  std::vector<ImVec2> pts;
+  constexpr int kSegments = 40;
+  for (int i = 0; i < kSegments; ++i) {
+    const double a = 2.0 * std::numbers::pi * i / kSegments;
+    const glm::dvec2 w = project_to_window(view, c + 0.5 * width_mm * (std::cos(a) * u + std::sin(a) * v));
+    pts.emplace_back(static_cast<float>(w.x), static_cast<float>(w.y));
+  }
+  return pts;
+}
+
+}  // namespace
+
+TargetingScreen::TargetingScreen(const study::Experiment& e, LiveWindow& win, HeightInput& height)
+    : e_(e), win_(win), height_(height) {}
+
+TargetingScreen::~TargetingScreen() {
+  if (loop_) loop_->loop().stop();
+}
+
+Result<std::unique_ptr<TargetingScreen>> TargetingScreen::open(const study::Experiment& e, LiveWindow& win,
+                                                               HeightInput& height) {
+  if (Status s = win.open_device(DeviceSpec{}); !s) return s.error();  // the mouse
+  // Only the condition's feedback shows where the probe is: the pointer is hidden over the window.
+  glfwSetInputMode(win.glfw(), GLFW_CURSOR, GLFW_CURSOR_HIDDEN);
+  return std::unique_ptr<TargetingScreen>(new TargetingScreen(e, win, height));
+}
+
+Status TargetingScreen::use_condition(int condition) {
+  if (condition == condition_) return ok_status();
+  if (loop_) loop_->loop().stop();
+  loop_.reset();
+  const study::Variant& c = e_.conditions[static_cast<std::size_t>(condition)];
+  Result<Scene> scene = load_scene(e_.scene, study::condition_overrides(e_, c));
+  if (!scene) return scene.error();
+  auto r = open_renderer(std::move(scene.value()), RendererOptions{});
+  if (!r) return r.error();
+  renderer_ = std::move(r.value());
+  auto haptic = world::HapticScene::build(renderer_->scene());
+  if (!haptic) return haptic.error();
+  haptic_ = std::make_shared<const world::HapticScene>(std::move(haptic.value()));
+  axes_ = pointer_plane(*renderer_);
+  loop_ = std::make_unique<RecordedLoop>(win_.device(), clock_, HapticLoopParams{}, haptic_, "", kFeedTicks);
+  loop_->loop().surface().publish(initial_surface_model(axes_, renderer_->probe().radius_mm));
+  poll_device();  // the first tick already has a sample
+  loop_->loop().start();
+  condition_ = condition;
+  selector_ = study::TouchSelector();
+  last_.reset();  // a new condition's ring starts with a touch
+  return ok_status();
+}
+
+void TargetingScreen::poll_device() {
+  GlfwInputDevice* const device = win_.input();
+  if (!device) return;
+  device->add_height_steps(std::exchange(height_.steps, 0));
+  device->add_scroll(std::exchange(height_.scroll, 0.0));
+  const PointerView view = pointer_view(*renderer_, axes_, glm::dvec2(win_.window_size()));
+  device->poll(loop_ ? loop_->loop().state().read().time_s : 0.0, view);
+}
+
+std::optional<TargetingScreen::Selection> TargetingScreen::take_selection() {
+  const study::Ring ring = study::make_ring(e_.targeting, 1.0);  // its plane: the centre and normal
+  const glm::dvec3 c = vec(ring.centre), n = vec(ring.normal);
+  const double radius = renderer_->probe().radius_mm;
+  std::optional<Selection> first;
+  loop_->feed()->drain([&](const TickSample& s) {
+    const double gap = glm::dot(s.proxy_centre_mm - c, n) - radius;
+    if (selector_.tick(s.in_contact, gap) && !first) first = Selection{on_ring_plane(ring, s.proxy_mm), s.time_s};
+  });
+  return first;
+}
+
+void TargetingScreen::draw(const study::TrialStimulus& t, const std::string& text) {
+  win_.begin_frame_on_black();
+  const ImVec2 d = ImGui::GetIO().DisplaySize;
+  win_.draw_frame_image(*renderer_, UiRect{0.f, 0.f, d.x, d.y});
+  const PointerView view = pointer_view(*renderer_, axes_, glm::dvec2(win_.window_size()));
+  const study::Ring ring = study::make_ring(e_.targeting, t.ring_diameter);
+  ImDrawList* dl = ImGui::GetBackgroundDrawList();  // over the picture, under the text
+  for (int i = 0; i < ring.targets; ++i) {
+    const std::vector<ImVec2> pts = outline(view, ring, i, t.width);
+    const int n = static_cast<int>(pts.size());
+    const bool start = !last_ && i == t.from, goal = last_ && i == t.to;
+    // Translucent fills, so the feedback under a target stays visible.
+    if (start) dl->AddConvexPolyFilled(pts.data(), n, IM_COL32(60, 200, 90, 110));
+    if (goal) dl->AddConvexPolyFilled(pts.data(), n, IM_COL32(255, 150, 30, 110));
+    dl->AddPolyline(pts.data(), n, start ? IM_COL32(60, 220, 90, 255) : goal ? IM_COL32(255, 160, 40, 255) : IM_COL32(230, 230, 230, 170),
+                    ImDrawFlags_Closed, start || goal ? 2.0f : 1.0f);
+  }
+  draw_text_box("study", ImVec2(10, 10), text, 1.0f);
+  win_.end_frame();
+}
+
+Result<std::optional<study::Pointed>> TargetingScreen::point(const study::TrialStimulus& t, const std::string& head,
+                                                             const std::string& title,
+                                                             const std::function<bool()>& stopping) {
+  if (Status s = use_condition(t.condition); !s) return s.error();
+  if (t.step == 0) last_.reset();  // a new ring: it starts with a touch
+  std::string shown;
+  for (;;) {
+    win_.poll_events();
+    if (stopping()) return std::optional<study::Pointed>();
+    poll_device();
+    if (std::optional<Selection> s = take_selection()) {
+      if (last_) {
+        const study::Pointed made{last_->at, s->at, s->time_s - last_->time_s};
+        last_ = s;
+        return std::optional<study::Pointed>(made);
+      }
+      last_ = s;  // the ring's start: the clock runs from here
+    }
+    if (const std::string now = title + (last_ ? ", touch the target" : ", touch to start"); now != shown)
+      win_.set_title(shown = now);
+    HapticState st;
+    if (Status s = drive_frame(*renderer_, loop_->loop(), frame_++, st); !s) return s.error();
+    draw(t, head + (last_ ? "Touch the orange target." : "Touch the green target to start the ring.") +
+                "\nMove with the mouse; the wheel or PageUp/PageDown lift and lower the probe.");
+  }
+}
+
+}  // namespace ps
