@@ -27,7 +27,7 @@ readonly kPackages=(
 # and input, the compilers for sanitizer and fuzz builds, Python test tools, packaging checks.
 readonly kTestPackages=(
   xvfb xauth xdotool clang libclang-rt-14-dev dpkg-dev file
-  python3-pytest python3-matplotlib parallel
+  python3-pytest python3-matplotlib python3-pil parallel  # python3-pil: window tests find targets in screenshots
   r-base-core  # R's glm(): the outside check of the study's psychometric fit (docs/study.md)
 )
 
