@@ -51,13 +51,19 @@ Point3 on_axis(const Ring& ring, const Point3& from, const Point3& to, double al
   return {from.x + along * a[0] + aside * l[0], from.y + along * a[1] + aside * l[1], from.z + along * a[2] + aside * l[2]};
 }
 
-bool TouchSelector::tick(bool in_contact, double gap_mm) {
+bool TouchSelector::tick(double time_s, bool in_contact, double gap_mm) {
   if (in_contact) {
     const bool selected = armed_;
     armed_ = false;
+    lifted_since_ = -1.0;
     return selected;
   }
-  if (gap_mm > rearm_mm_) armed_ = true;
+  if (gap_mm <= rearm_mm_) {
+    lifted_since_ = -1.0;
+  } else {
+    if (lifted_since_ < 0.0) lifted_since_ = time_s;
+    if (time_s - lifted_since_ >= rearm_s_) armed_ = true;
+  }
   return false;
 }
 

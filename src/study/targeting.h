@@ -32,20 +32,25 @@ double movement_distance(double diameter, int targets);
 
 // Selections made by touching (the targeting task in the window, docs/study.md, "Targeting in
 // the window"): a selection is the haptic tick on which the probe comes into contact; the next
-// one counts only after the probe has been lifted more than `rearm_mm` off the plane, so contact
-// that flickers at the surface (a probe resting on it, the filter's rounding) selects once.
+// one counts only after the probe has been lifted more than `rearm_mm` off the plane for
+// `rearm_s` without a break. So contact that flickers at the surface (a probe resting on it)
+// selects once, and so does the hand filter's ringing when the height steps: lifted through
+// the contact height, the filtered probe was seen to rise 0.29 mm for 7 ms and fall back into
+// contact (a second selection without the time condition). A person's lift between two touches
+// lasts far longer than 60 ms.
 // It starts unarmed: a probe already down when a ring appears selects nothing until lifted.
 class TouchSelector {
  public:
-  explicit TouchSelector(double rearm_mm = 0.25) : rearm_mm_(rearm_mm) {}
-  // One tick: in contact or not, and the gap between the probe and the plane (mm; <= 0 pressed
-  // in). True: this tick is a selection.
-  bool tick(bool in_contact, double gap_mm);
+  explicit TouchSelector(double rearm_mm = 0.25, double rearm_s = 0.06) : rearm_mm_(rearm_mm), rearm_s_(rearm_s) {}
+  // One tick at `time_s`: in contact or not, and the gap between the probe and the plane (mm;
+  // <= 0 pressed in). True: this tick is a selection.
+  bool tick(double time_s, bool in_contact, double gap_mm);
   bool armed() const { return armed_; }
 
  private:
-  double rearm_mm_;
+  double rearm_mm_, rearm_s_;
   bool armed_ = false;
+  double lifted_since_ = -1.0;  // < 0: not lifted past rearm_mm now
 };
 
 // A point `along` the task axis from `from` towards `to` and `aside` across it in the plane.

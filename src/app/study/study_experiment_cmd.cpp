@@ -59,7 +59,7 @@ int plan_main(const cli::Command& cmd, const PlanArgs& a) {
 }
 
 struct RunArgs {
-  std::string experiment, participant, out, shape = "weibull";
+  std::string experiment, participant, out, shape = "weibull", device = "mouse";
   bool simulate = false, quiet = false;
   double threshold = 0.1, slope = 3.0, lapse = 0.02, p_correct = 0.6;
   double fitts_a = 0.2, fitts_b = 0.15, mt_sd = 0.05, spread = 1.0;
@@ -73,6 +73,9 @@ void declare_run(cli::Command& cmd, RunArgs& a) {
       ->required()->type_name("ID");
   app.add_option("--out", a.out, "the study's folder: the log goes to DIR/ID/trials.jsonl")->required()->type_name("DIR");
   app.add_flag("--simulate", a.simulate, "a simulated participant answers, headless (without it: a person, in a window)");
+  cli::add_choice(app, "--device", "mouse|gamepad", a.device, {"mouse", "gamepad"}, "mouse",
+                  "targeting in the window: what moves the probe (default mouse; gamepad: the left stick moves it, "
+                  "the triggers lift and lower it)");
   cli::add_choice(app, "--shape", "weibull|logistic|normal", a.shape, {"weibull", "logistic", "normal"}, "weibull",
                   "the simulated participant's psychometric function (default weibull)");
   cli::add_positive(app, "--threshold", "ALPHA", a.threshold, 1e9, "0.1", "its threshold alpha, a difference (default 0.1)");
@@ -134,7 +137,9 @@ int run_main(const cli::Command& cmd, const RunArgs& a) {
   const cli::StopSignals stop;  // SIGTERM, SIGINT, SIGHUP: the run ends as Esc ends it
   std::unique_ptr<StudyWindow> window;
   if (!a.simulate && !ended(a.out + "/" + a.participant + "/trials.jsonl")) {
-    Result<std::unique_ptr<StudyWindow>> w = StudyWindow::open(e, {stop.predicate()});
+    StudyWindowParams params{stop.predicate(), {}};
+    params.device.kind = a.device == "gamepad" ? DeviceKind::kGamepad : DeviceKind::kMouse;
+    Result<std::unique_ptr<StudyWindow>> w = StudyWindow::open(e, std::move(params));
     if (!w) return cmd.fail(w.error());
     window = std::move(w.value());
     spec.responder = window.get();

@@ -132,7 +132,8 @@ std::string progress(const study::Experiment& e, const study::TrialStimulus& t) 
 // targeting task's controls.
 std::string key_help(const study::Experiment& e) {
   if (e.task == study::Task::kTargeting)
-    return "the mouse moves the probe; the wheel, PageUp/PageDown or Up/Down lift and lower it";
+    return "the mouse (a gamepad's left stick) moves the probe; the wheel, PageUp/PageDown or Up/Down (its triggers) "
+           "lift and lower it";
   std::string s;
   for (std::size_t i = 0; i < e.response_keys.size(); ++i) {
     if (i) s += ", ";
@@ -163,7 +164,7 @@ Result<std::unique_ptr<StudyWindow>> StudyWindow::open(const study::Experiment& 
   if (!win) return win.error();
   std::unique_ptr<StudyWindow> w(new StudyWindow(e, std::move(p), std::move(win.value())));
   if (e.task == study::Task::kTargeting) {  // the probe moved by the mouse, a haptic loop (targeting_screen.h)
-    auto t = TargetingScreen::open(e, *w->win_, w->keys_->height);
+    auto t = TargetingScreen::open(e, *w->win_, w->keys_->height, w->p_.device);
     if (!t) return t.error();
     w->targeting_ = std::move(t.value());
   }

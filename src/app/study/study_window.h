@@ -28,6 +28,7 @@
 #include <nlohmann/json.hpp>
 
 #include "core/result.h"
+#include "devices/device_spec.h"
 #include "study/experiment.h"
 #include "study/study_run.h"
 
@@ -41,6 +42,8 @@ struct StudyWindowParams {
   // Asked every frame: true ends the run as Esc does (the CLI's SIGTERM/SIGINT/SIGHUP or a lost
   // display, app/cli/stop_signal.h). Empty: never.
   std::function<bool()> stop;
+  // The targeting task's device: the mouse (the default) or a gamepad (app/study/targeting_screen.h).
+  DeviceSpec device;
 };
 
 // The seconds of one stroke (one interval), and of the blank between intervals and trials.

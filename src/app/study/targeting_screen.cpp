@@ -12,6 +12,7 @@
 #include "app/session/session.h"
 #include "app/window/live_window.h"
 #include "app/window/text_box.h"
+#include "devices/glfw_input.h"
 #include "haptics/session_driver.h"
 #include "prepare/prepare.h"
 #include "scene/scene_io.h"
@@ -59,8 +60,8 @@ TargetingScreen::~TargetingScreen() {
 }
 
 Result<std::unique_ptr<TargetingScreen>> TargetingScreen::open(const study::Experiment& e, LiveWindow& win,
-                                                               HeightInput& height) {
-  if (Status s = win.open_device(DeviceSpec{}); !s) return s.error();  // the mouse
+                                                               HeightInput& height, const DeviceSpec& device) {
+  if (Status s = win.open_device(device); !s) return s.error();
   // Only the condition's feedback shows where the probe is: the pointer is hidden over the window.
   glfwSetInputMode(win.glfw(), GLFW_CURSOR, GLFW_CURSOR_HIDDEN);
   return std::unique_ptr<TargetingScreen>(new TargetingScreen(e, win, height));
@@ -106,7 +107,7 @@ std::optional<TargetingScreen::Selection> TargetingScreen::take_selection() {
   std::optional<Selection> first;
   loop_->feed()->drain([&](const TickSample& s) {
     const double gap = glm::dot(s.proxy_centre_mm - c, n) - radius;
-    if (selector_.tick(s.in_contact, gap) && !first) first = Selection{on_ring_plane(ring, s.proxy_mm), s.time_s};
+    if (selector_.tick(s.time_s, s.in_contact, gap) && !first) first = Selection{on_ring_plane(ring, s.proxy_mm), s.time_s};
   });
   return first;
 }
@@ -155,7 +156,9 @@ Result<std::optional<study::Pointed>> TargetingScreen::point(const study::TrialS
     HapticState st;
     if (Status s = drive_frame(*renderer_, loop_->loop(), frame_++, st); !s) return s.error();
     draw(t, head + (last_ ? "Touch the orange target." : "Touch the green target to start the ring.") +
-                "\nMove with the mouse; the wheel or PageUp/PageDown lift and lower the probe.");
+                (win_.input() && win_.input()->kind() == GlfwInputDevice::Kind::kGamepad
+                    ? "\nThe left stick moves the probe; the triggers lift and lower it."
+                    : "\nMove with the mouse; the wheel or PageUp/PageDown lift and lower the probe."));
   }
 }
 

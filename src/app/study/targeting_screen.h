@@ -1,13 +1,14 @@
 // The targeting task in the study window (docs/study.md, "Targeting in the window"): a person
 // touches the targets of ISO 9241-9's ring with the probe, under the condition's feedback.
 //
-// What the person does: the mouse moves the probe over the surface (the absolute mapping of
+// What the person does (a gamepad instead: its left stick moves the probe and its triggers lift
+// and lower it, devices/glfw_input.h): the mouse moves the probe over the surface (the absolute mapping of
 // `run`: the probe's shadow centre under the pointer, devices/glfw_input.h); the pointer itself
 // is hidden over the window, so only the condition's feedback (the pseudo-shadow, the probe
 // drawn, its cast shadow, or nothing) shows where the probe is. The wheel, PageUp/PageDown and
 // the Up/Down arrows set its height as in `run` (start 1 mm, 0.5 mm a step). A selection is the
 // haptic tick on which the probe touches the surface (study::TouchSelector); the next one counts
-// after a lift of more than 0.25 mm. Each ring begins with a touch anywhere (the start target
+// after a lift of more than 0.25 mm held for 60 ms. Each ring begins with a touch anywhere (the start target
 // is shown green): that touch starts the clock and is where the first movement begins; each
 // movement's time is from one selection's tick to the next one's.
 //
@@ -23,6 +24,7 @@
 #include <string>
 
 #include "core/result.h"
+#include "devices/device_spec.h"
 #include "devices/pointer_map.h"
 #include "haptics/clock.h"
 #include "study/experiment.h"
@@ -46,8 +48,9 @@ struct HeightInput {
 
 class TargetingScreen {
  public:
-  // Opens the window's mouse and hides the pointer over the window.
-  static Result<std::unique_ptr<TargetingScreen>> open(const study::Experiment& e, LiveWindow& win, HeightInput& height);
+  // Opens the window's device (the mouse or a gamepad) and hides the pointer over the window.
+  static Result<std::unique_ptr<TargetingScreen>> open(const study::Experiment& e, LiveWindow& win, HeightInput& height,
+                                                       const DeviceSpec& device);
   ~TargetingScreen();
   TargetingScreen(const TargetingScreen&) = delete;
   TargetingScreen& operator=(const TargetingScreen&) = delete;
