@@ -7,18 +7,11 @@
 
 #include <nlohmann/json.hpp>
 
-#include "calibrate/staircase.h"
 #include "maze/maze_log.h"
-#include "study/fit.h"
-#include "study/psi.h"
-#include "study/simulate.h"
 #include "study/study_log.h"
-#include "study/study_plan.h"
-#include "study/targeting.h"
+#include "study/study_trials.h"
 
 namespace ps::study {
-
-using ojson = nlohmann::ordered_json;  // members in the order written
 
 std::uint64_t trial_seed(std::uint64_t seed, std::uint64_t trial, std::uint64_t stream) {
   std::uint64_t z = seed + 0x9E3779B97F4A7C15ull * (trial + 1) + 0xBF58476D1CE4E5B9ull * (stream + 1);
@@ -28,201 +21,6 @@ std::uint64_t trial_seed(std::uint64_t seed, std::uint64_t trial, std::uint64_t 
 }
 
 namespace {
-
-enum Stream : std::uint64_t { kInterval = 1, kObserver = 2, kMaterials = 3, kCells = 4 };
-
-// Where trial k (from 0) stands: practice first, then each block runs the participant's
-// conditions in order, `trials` each.
-struct Slot {
-  bool practice = false;
-  int block = 0;      // from 1 (0: practice)
-  int condition = 0;  // index into Experiment::conditions
-  int in_segment = 0; // the trial's place in its block and condition
-};
-
-Slot slot_of(const Experiment& e, const PlanEntry& plan, int k) {
-  if (k < e.practice) return {true, 0, plan.order[0], k};
-  const int m = k - e.practice, per_block = e.trials * static_cast<int>(plan.order.size());
-  return {false, m / per_block + 1, plan.order[static_cast<std::size_t>((m % per_block) / e.trials)], m % e.trials};
-}
-
-int total_trials(const Experiment& e) { return e.practice + e.blocks * static_cast<int>(e.conditions.size()) * e.trials; }
-
-// One condition's adaptive procedure: Psi or calibrate's staircase, over [level_min, level_max].
-class Track {
- public:
-  explicit Track(const ThresholdSpec& t) {
-    if (t.method == Method::kPsi) {
-      SimulationSpec s;  // only what simulation_grid reads: the shape, the guess, the levels, the lapse
-      s.shape = t.shape;
-      s.level_min = t.level_min;
-      s.level_max = t.level_max;
-      s.psi_lapse = t.lapse;
-      psi_.emplace(simulation_grid(s, false));
-    } else {
-      calibrate::StaircaseParams p;
-      p.start_delta = t.level_max / 2.0;  // an easy start, inside the range: the coarse steps find the threshold
-      p.min_delta = t.level_min;
-      p.max_delta = t.level_max;
-      p.max_trials = 1 << 30;  // the experiment's trial count ends it
-      stairs_.emplace(p);
-    }
-  }
-  double next() { return psi_ ? psi_->next_level() : stairs_->delta(); }
-  void update(double level, bool correct) {
-    if (psi_) psi_->update(level, correct);
-    else stairs_->record(correct);
-  }
-
- private:
-  std::optional<PsiMethod> psi_;
-  std::optional<calibrate::Staircase> stairs_;
-};
-
-struct RunState {
-  const Experiment& e;
-  const RunSpec& spec;
-  PlanEntry plan;
-  std::vector<Track> tracks;  // one per condition
-  std::uint64_t observer_seed = 0;
-  std::optional<Point3> last_end;  // targeting: the last selection, where the next movement begins
-};
-
-// The trial's stimulus: threshold, the level (the track's next; practice at level_max) and which
-// interval holds the comparison; identification, the material shown (material_of).
-int material_of(const RunState& s, const Slot& slot);
-
-TrialStimulus stimulus_of(RunState& s, const Slot& slot, int k) {
-  TrialStimulus t;
-  t.trial = k + 1;
-  t.total = total_trials(s.e);
-  t.practice = slot.practice;
-  t.block = slot.block;
-  t.condition = slot.condition;
-  if (s.e.task == Task::kThreshold) {
-    const ThresholdSpec& th = s.e.threshold;
-    t.level = slot.practice ? th.level_max : s.tracks[static_cast<std::size_t>(slot.condition)].next();
-    t.reference = th.reference;
-    t.comparison = th.reference + t.level;
-    std::mt19937_64 rng(trial_seed(s.plan.seed, static_cast<std::uint64_t>(k), kInterval));
-    t.interval = uniform01(rng) < 0.5 ? 1 : 2;  // which interval shows the comparison
-  } else {
-    t.shown = material_of(s, slot);
-  }
-  return t;
-}
-
-// The simulated participant's answer to trial k: its own draws, from its seed and k alone.
-int simulated_answer(const RunState& s, const TrialStimulus& t, int k) {
-  if (s.e.task == Task::kThreshold) {
-    SimulatedObserver o(s.spec.observer.shape, s.spec.observer.truth,
-                        trial_seed(s.observer_seed, static_cast<std::uint64_t>(k), kObserver));
-    return o.respond(t.level) ? t.interval : 3 - t.interval;
-  }
-  const int K = static_cast<int>(s.e.materials.size());
-  std::mt19937_64 rng(trial_seed(s.observer_seed, static_cast<std::uint64_t>(k), kObserver));
-  int answered = t.shown;
-  if (uniform01(rng) >= s.spec.observer.p_correct) {
-    answered = static_cast<int>(uniform01(rng) * (K - 1));  // one of the others, each alike
-    if (answered >= t.shown) ++answered;
-  }
-  return answered;
-}
-
-// The trial's log line, with the answer; a threshold trial's answer also moves its track.
-ojson trial_line(RunState& s, const TrialStimulus& t, int answer) {
-  const std::string& condition = s.e.conditions[static_cast<std::size_t>(t.condition)].name;
-  if (s.e.task == Task::kThreshold) {
-    const bool correct = answer == t.interval;
-    if (!t.practice) s.tracks[static_cast<std::size_t>(t.condition)].update(t.level, correct);
-    return {{"type", "trial"}, {"trial", t.trial}, {"practice", t.practice}, {"block", t.block},
-            {"condition", condition}, {"level", t.level}, {"reference", t.reference}, {"comparison", t.comparison},
-            {"interval", t.interval}, {"response", answer},
-            {"key", s.e.response_keys[static_cast<std::size_t>(answer - 1)]}, {"correct", correct}};
-  }
-  return {{"type", "trial"}, {"trial", t.trial}, {"practice", t.practice}, {"block", t.block}, {"condition", condition},
-          {"shown", s.e.materials[static_cast<std::size_t>(t.shown)].name}, {"shown_index", t.shown},
-          {"answered", s.e.materials[static_cast<std::size_t>(answer)].name}, {"answered_index", answer},
-          {"key", s.e.response_keys[static_cast<std::size_t>(answer)]}, {"correct", t.shown == answer}};
-}
-
-// A fair shuffle of 0..n-1: Fisher-Yates from the engine's bits (fit.h's uniform01).
-std::vector<int> shuffled(int n, std::mt19937_64& rng) {
-  std::vector<int> order(static_cast<std::size_t>(n));
-  for (int i = 0; i < n; ++i) order[static_cast<std::size_t>(i)] = i;
-  for (int i = n - 1; i > 0; --i)
-    std::swap(order[static_cast<std::size_t>(i)], order[static_cast<std::size_t>(uniform01(rng) * (i + 1))]);
-  return order;
-}
-
-// The material of a trial: each block and condition shows the materials in turn, shuffled in
-// rounds of K from the participant's seed, so every material is shown equally often.
-int material_of(const RunState& s, const Slot& slot) {
-  const int K = static_cast<int>(s.e.materials.size());
-  const auto u = [](int v) { return static_cast<std::uint64_t>(v); };
-  const std::uint64_t segment = trial_seed(trial_seed(s.plan.seed, u(slot.block), kMaterials), u(slot.condition), kMaterials);
-  std::mt19937_64 rng(trial_seed(segment, u(slot.in_segment / K), kMaterials));
-  return shuffled(K, rng)[static_cast<std::size_t>(slot.in_segment % K)];
-}
-
-ojson point_json(const Point3& p) { return ojson::array({p.x, p.y, p.z}); }
-
-// A targeting trial: one movement of a sequence. Each block and condition runs every (D, W)
-// `sequences` times, in an order shuffled from the participant's seed; a sequence is `targets`
-// movements across its ring (targeting.h). Practice runs the first condition's order of block 1.
-TrialStimulus targeting_stimulus(const RunState& s, const Slot& slot, int k) {
-  const TargetingSpec& t = s.e.targeting;
-  const int n = t.targets, nw = static_cast<int>(t.widths_mm.size());
-  const int cells = t.sequences * static_cast<int>(t.distances_mm.size()) * nw;
-  const auto u = [](int v) { return static_cast<std::uint64_t>(v); };
-  const int block = slot.practice ? 1 : slot.block;
-  TrialStimulus m;
-  m.trial = k + 1;
-  m.total = total_trials(s.e);
-  m.practice = slot.practice;
-  m.block = slot.block;
-  m.condition = slot.practice ? s.plan.order[0] : slot.condition;
-  std::mt19937_64 rng(trial_seed(trial_seed(s.plan.seed, u(block), kCells), u(m.condition), kCells));
-  const std::vector<int> order = shuffled(cells, rng);
-  const int sequence = (slot.in_segment / n) % cells;
-  m.sequence = sequence + 1;
-  m.step = slot.in_segment % n;
-  const int cell = order[static_cast<std::size_t>(sequence)] % (cells / t.sequences);
-  m.ring_diameter = t.distances_mm[static_cast<std::size_t>(cell / nw)];
-  m.width = t.widths_mm[static_cast<std::size_t>(cell % nw)];
-  const Ring ring = make_ring(t, m.ring_diameter);
-  m.from = target_at_step(n, m.step + n - 1);
-  m.to = target_at_step(n, m.step);
-  m.start = target_centre(ring, m.from);
-  m.target = target_centre(ring, m.to);
-  m.distance = movement_distance(m.ring_diameter, n);
-  return m;
-}
-
-// The simulated participant's movement: it moves from where its last selection was (the
-// previous target's centre at a sequence's start); its time from the law at the nominal
-// distance and width (the truth the summary recovers); its end point scattered about the target
-// along the axis from where it began and across it (the pointer's frame: target at the distance
-// along +x).
-Pointed simulated_movement(const RunState& s, const TrialStimulus& m, int k) {
-  const Ring ring = make_ring(s.e.targeting, m.ring_diameter);
-  const Point3 began = m.step == 0 ? m.start : s.last_end.value_or(m.start);
-  SimulatedPointer pointer(s.spec.observer.pointer, trial_seed(s.observer_seed, static_cast<std::uint64_t>(k), kObserver));
-  const PointingTrial p = pointer.point(m.distance, m.width);
-  const Point3 end = on_axis(ring, began, m.target, distance(began, m.target) + (p.end.x - m.distance), p.end.y);
-  return {began, end, p.movement_time_s};
-}
-
-// A targeting trial's log line; the movement's end is where the next one begins.
-ojson targeting_line(RunState& s, const TrialStimulus& m, const Pointed& p) {
-  s.last_end = p.end;
-  return {{"type", "trial"}, {"trial", m.trial}, {"practice", m.practice}, {"block", m.block},
-          {"condition", s.e.conditions[static_cast<std::size_t>(m.condition)].name}, {"sequence", m.sequence},
-          {"ring_diameter", m.ring_diameter}, {"distance", m.distance}, {"width", m.width}, {"from", m.from},
-          {"target", m.to}, {"start", point_json(m.start)}, {"target_centre", point_json(m.target)},
-          {"began", point_json(p.began)}, {"end", point_json(p.end)}, {"movement_time_s", p.movement_time_s},
-          {"hit", distance(p.end, m.target) <= 0.5 * m.width}};
-}
 
 ojson names(const std::vector<Variant>& v, const std::vector<int>& order = {}) {
   ojson a = ojson::array();
@@ -372,42 +170,13 @@ Result<RunReport> run_participant(const Experiment& e, const RunSpec& spec) {
   if (exists && nlohmann::json::parse(who.dump()) != observer_before) resumed["observer"] = who;
   Status st = exists ? append(log.value(), resumed, last) : append(log.value(), session_start(s), last);
   for (int k = r.done_before; st && k < r.total && (spec.stop_after <= 0 || r.written < spec.stop_after); ++k) {
-    if (e.task == Task::kTargeting) {
-      const TrialStimulus m = targeting_stimulus(s, slot_of(e, s.plan, k), k);
-      Pointed p;
-      if (!spec.responder) {
-        p = simulated_movement(s, m, k);
-      } else {
-        Result<std::optional<Pointed>> made = spec.responder->point(m);
-        if (!made) return made.error();  // every trial before it is on disk already
-        if (!made.value()) {
-          r.stopped = true;
-          break;
-        }
-        p = *made.value();
-      }
-      st = append(log.value(), targeting_line(s, m, p), last);
-      ++r.written;
-      continue;
+    Result<std::optional<ojson>> line = trial_of(s, k);
+    if (!line) return line.error();  // every trial before it is on disk already
+    if (!line.value()) {
+      r.stopped = true;
+      break;
     }
-    const TrialStimulus t = stimulus_of(s, slot_of(e, s.plan, k), k);
-    int answer = 0;
-    if (!spec.responder) {
-      answer = simulated_answer(s, t, k);
-    } else {
-      Result<std::optional<int>> a = spec.responder->answer(t);
-      if (!a) return a.error();  // every trial before it is on disk already
-      if (!a.value()) {
-        r.stopped = true;
-        break;
-      }
-      answer = *a.value();
-      const int n = e.task == Task::kThreshold ? 2 : static_cast<int>(e.materials.size());
-      const int first = e.task == Task::kThreshold ? 1 : 0;
-      if (answer < first || answer >= first + n)
-        return make_error("study: the answer " + std::to_string(answer) + " to trial " + std::to_string(t.trial) + " names no choice");
-    }
-    st = append(log.value(), trial_line(s, t, answer), last);
+    st = append(log.value(), *line.value(), last);
     ++r.written;
   }
   if (st && r.done_before + r.written == r.total) {
