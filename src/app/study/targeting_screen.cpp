@@ -37,17 +37,38 @@ study::Point3 on_ring_plane(const study::Ring& ring, const glm::dvec3& p) {
   return {q.x, q.y, q.z};
 }
 
-// A target's outline in the window: its circle on the ring's plane, projected.
-std::vector<ImVec2> outline(const PointerView& view, const study::Ring& ring, int index, double width_mm) {
-  const glm::dvec3 c = vec(study::target_centre(ring, index)), u = vec(ring.u), v = vec(ring.v);
-  std::vector<ImVec2> pts;
+// A target's outline: its circle on the ring's plane, in the world and projected into the window.
+struct Outline {
+  std::vector<glm::dvec3> world;
+  std::vector<ImVec2> window;
+  glm::dvec3 centre{0.0};
+};
+
+Outline outline(const PointerView& view, const study::Ring& ring, int index, double width_mm) {
+  Outline o;
+  o.centre = vec(study::target_centre(ring, index));
+  const glm::dvec3 u = vec(ring.u), v = vec(ring.v);
   constexpr int kSegments = 40;
   for (int i = 0; i < kSegments; ++i) {
     const double a = 2.0 * std::numbers::pi * i / kSegments;
-    const glm::dvec2 w = project_to_window(view, c + 0.5 * width_mm * (std::cos(a) * u + std::sin(a) * v));
-    pts.emplace_back(static_cast<float>(w.x), static_cast<float>(w.y));
+    o.world.push_back(o.centre + 0.5 * width_mm * (std::cos(a) * u + std::sin(a) * v));
+    const glm::dvec2 w = project_to_window(view, o.world.back());
+    o.window.emplace_back(static_cast<float>(w.x), static_cast<float>(w.y));
   }
-  return pts;
+  return o;
+}
+
+// Whether the drawn probe (a sphere: `centre`, `radius`) hides world point `p` from `eye`: the
+// targets are drawn over the picture, so where the probe is drawn opaque they are cut where it
+// stands in front of them, as if they were painted on the plank.
+bool hidden(const glm::dvec3& eye, const glm::dvec3& p, const glm::dvec3& centre, double radius) {
+  const glm::dvec3 d = p - eye, f = eye - centre;
+  if (glm::dot(p - centre, p - centre) < radius * radius) return true;  // under the probe
+  const double a = glm::dot(d, d), b = 2.0 * glm::dot(f, d), c = glm::dot(f, f) - radius * radius;
+  const double disc = b * b - 4.0 * a * c;
+  if (disc < 0.0) return false;
+  const double t = (-b - std::sqrt(disc)) / (2.0 * a);
+  return t > 0.0 && t < 1.0;
 }
 
 }  // namespace
@@ -119,15 +140,32 @@ void TargetingScreen::draw(const study::TrialStimulus& t, const std::string& tex
   const PointerView view = pointer_view(*renderer_, axes_, glm::dvec2(win_.window_size()));
   const study::Ring ring = study::make_ring(e_.targeting, t.ring_diameter);
   ImDrawList* dl = ImGui::GetBackgroundDrawList();  // over the picture, under the text
+  // The probe drawn opaque (render.draw_probe) hides what is behind it: its bounding sphere, where
+  // the frame drew it (after its displacement).
+  const bool probe_drawn = renderer_->scene().render.draw_probe;
+  const glm::dvec3 eye = view.camera.position, probe = renderer_->stats().probe_position;
+  const double radius = renderer_->probe().radius_mm;
+  const auto visible = [&](const glm::dvec3& p) { return !probe_drawn || !hidden(eye, p, probe, radius); };
   for (int i = 0; i < ring.targets; ++i) {
-    const std::vector<ImVec2> pts = outline(view, ring, i, t.width);
-    const int n = static_cast<int>(pts.size());
+    const Outline o = outline(view, ring, i, t.width);
+    const std::size_t n = o.world.size();
     const bool start = !last_ && i == t.from, goal = last_ && i == t.to;
-    // Translucent fills, so the feedback under a target stays visible.
-    if (start) dl->AddConvexPolyFilled(pts.data(), n, IM_COL32(60, 200, 90, 110));
-    if (goal) dl->AddConvexPolyFilled(pts.data(), n, IM_COL32(255, 150, 30, 110));
-    dl->AddPolyline(pts.data(), n, start ? IM_COL32(60, 220, 90, 255) : goal ? IM_COL32(255, 160, 40, 255) : IM_COL32(230, 230, 230, 170),
-                    ImDrawFlags_Closed, start || goal ? 2.0f : 1.0f);
+    const glm::dvec2 cw = project_to_window(view, o.centre);
+    const ImVec2 c(static_cast<float>(cw.x), static_cast<float>(cw.y));
+    // Translucent fills, so the feedback under a target stays visible; a fan of triangles, each
+    // left out where the probe hides a corner of it.
+    const ImU32 fill = start ? IM_COL32(60, 200, 90, 110) : IM_COL32(255, 150, 30, 110);
+    const ImU32 line = start ? IM_COL32(60, 220, 90, 255) : goal ? IM_COL32(255, 160, 40, 255) : IM_COL32(230, 230, 230, 170);
+    std::vector<bool> seen(n);
+    bool all = visible(o.centre);
+    for (std::size_t k = 0; k < n; ++k) all &= (seen[k] = visible(o.world[k]));
+    if ((start || goal) && all) dl->AddConvexPolyFilled(o.window.data(), static_cast<int>(n), fill);
+    for (std::size_t k = 0; k < n; ++k) {
+      const std::size_t next = (k + 1) % n;
+      if (!seen[k] || !seen[next]) continue;
+      if ((start || goal) && !all && visible(o.centre)) dl->AddTriangleFilled(c, o.window[k], o.window[next], fill);
+      dl->AddLine(o.window[k], o.window[next], line, start || goal ? 2.0f : 1.0f);
+    }
   }
   draw_text_box("study", ImVec2(10, 10), text, 1.0f);
   win_.end_frame();
