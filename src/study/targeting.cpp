@@ -67,6 +67,17 @@ bool TouchSelector::tick(double time_s, bool in_contact, double gap_mm) {
   return false;
 }
 
+bool hidden_by_sphere(const Point3& eye, const Point3& p, const Point3& centre, double radius) {
+  const V d{p.x - eye.x, p.y - eye.y, p.z - eye.z}, f{eye.x - centre.x, eye.y - centre.y, eye.z - centre.z};
+  const V q{p.x - centre.x, p.y - centre.y, p.z - centre.z};
+  if (dot(q, q) < radius * radius) return true;  // under the probe
+  const double a = dot(d, d), b = 2.0 * dot(f, d), c = dot(f, f) - radius * radius;
+  const double disc = b * b - 4.0 * a * c;
+  if (disc < 0.0) return false;
+  const double t = (-b - std::sqrt(disc)) / (2.0 * a);  // where the segment enters the sphere
+  return t > 0.0 && t < 1.0;
+}
+
 double distance(const Point3& a, const Point3& b) { return std::hypot(a.x - b.x, a.y - b.y, a.z - b.z); }
 
 }  // namespace ps::study

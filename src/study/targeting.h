@@ -53,6 +53,12 @@ class TouchSelector {
   double lifted_since_ = -1.0;  // < 0: not lifted past rearm_mm now
 };
 
+// Whether a sphere (`centre`, `radius`) hides point `p` from `eye`: the segment between them
+// passes through it, or `p` is inside it. The window draws the targets over the picture; where
+// the probe is drawn opaque they are cut where it stands in front of them (docs/study.md,
+// "Targeting in the window").
+bool hidden_by_sphere(const Point3& eye, const Point3& p, const Point3& centre, double radius);
+
 // A point `along` the task axis from `from` towards `to` and `aside` across it in the plane.
 Point3 on_axis(const Ring& ring, const Point3& from, const Point3& to, double along, double aside);
 // The distance between two points.

@@ -128,6 +128,18 @@ TEST(TargetingTest, ATouchSelectsOnceAndAgainOnlyAfterALift) {
   EXPECT_TRUE(tick(true, -0.2)) << "lifted 0.5 mm for 80 ms and down again: the next selection";
 }
 
+// The probe drawn opaque hides the targets behind it: seen from above, a point under the sphere
+// and one whose line of sight passes through it are hidden; one beside it, and one in front of
+// it (between the eye and the sphere), and one far behind whose sight line passes above it, are not.
+TEST(TargetingTest, TheProbeHidesOnlyWhatIsBehindIt) {
+  const Point3 eye{0.0, -100.0, 100.0}, centre{0.0, 0.0, 8.0};
+  EXPECT_TRUE(hidden_by_sphere(eye, {0.0, 0.0, 0.0}, centre, 8.0)) << "the contact point, under it";
+  EXPECT_TRUE(hidden_by_sphere(eye, {0.0, 12.0, 0.0}, centre, 8.0)) << "behind it along the line of sight";
+  EXPECT_FALSE(hidden_by_sphere(eye, {12.0, 0.0, 0.0}, centre, 8.0)) << "beside it";
+  EXPECT_FALSE(hidden_by_sphere(eye, {0.0, -12.0, 0.0}, centre, 8.0)) << "in front of it";
+  EXPECT_FALSE(hidden_by_sphere(eye, {0.0, 40.0, 0.0}, centre, 8.0)) << "far behind it: its sight line passes 16.7 mm from the centre";
+}
+
 TEST(TargetingTest, TheDesignsMistakesNameTheirLine) {
   const std::string dir = fresh_dir("targeting", "errors");
   const auto error_of = [&](const std::string& from, const std::string& to) {

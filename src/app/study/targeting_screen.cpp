@@ -29,6 +29,7 @@ constexpr std::size_t kFeedTicks = std::size_t{1} << 14;
 
 glm::dvec3 vec(const study::Point3& p) { return {p.x, p.y, p.z}; }
 glm::dvec3 vec(const std::array<double, 3>& a) { return {a[0], a[1], a[2]}; }
+study::Point3 as_point(const glm::dvec3& p) { return {p.x, p.y, p.z}; }
 
 // Where a contact point lies on the ring's plane (the selection's place).
 study::Point3 on_ring_plane(const study::Ring& ring, const glm::dvec3& p) {
@@ -56,19 +57,6 @@ Outline outline(const PointerView& view, const study::Ring& ring, int index, dou
     o.window.emplace_back(static_cast<float>(w.x), static_cast<float>(w.y));
   }
   return o;
-}
-
-// Whether the drawn probe (a sphere: `centre`, `radius`) hides world point `p` from `eye`: the
-// targets are drawn over the picture, so where the probe is drawn opaque they are cut where it
-// stands in front of them, as if they were painted on the plank.
-bool hidden(const glm::dvec3& eye, const glm::dvec3& p, const glm::dvec3& centre, double radius) {
-  const glm::dvec3 d = p - eye, f = eye - centre;
-  if (glm::dot(p - centre, p - centre) < radius * radius) return true;  // under the probe
-  const double a = glm::dot(d, d), b = 2.0 * glm::dot(f, d), c = glm::dot(f, f) - radius * radius;
-  const double disc = b * b - 4.0 * a * c;
-  if (disc < 0.0) return false;
-  const double t = (-b - std::sqrt(disc)) / (2.0 * a);
-  return t > 0.0 && t < 1.0;
 }
 
 }  // namespace
@@ -143,9 +131,9 @@ void TargetingScreen::draw(const study::TrialStimulus& t, const std::string& tex
   // The probe drawn opaque (render.draw_probe) hides what is behind it: its bounding sphere, where
   // the frame drew it (after its displacement).
   const bool probe_drawn = renderer_->scene().render.draw_probe;
-  const glm::dvec3 eye = view.camera.position, probe = renderer_->stats().probe_position;
+  const study::Point3 eye = as_point(view.camera.position), probe = as_point(renderer_->stats().probe_position);
   const double radius = renderer_->probe().radius_mm;
-  const auto visible = [&](const glm::dvec3& p) { return !probe_drawn || !hidden(eye, p, probe, radius); };
+  const auto visible = [&](const glm::dvec3& p) { return !probe_drawn || !study::hidden_by_sphere(eye, as_point(p), probe, radius); };
   for (int i = 0; i < ring.targets; ++i) {
     const Outline o = outline(view, ring, i, t.width);
     const std::size_t n = o.world.size();
