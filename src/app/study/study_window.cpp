@@ -153,8 +153,9 @@ StudyWindow::StudyWindow(const study::Experiment& e, StudyWindowParams p, std::u
 StudyWindow::~StudyWindow() = default;
 
 Result<std::unique_ptr<StudyWindow>> StudyWindow::open(const study::Experiment& e, StudyWindowParams p) {
-  // As calibrate's window: a session runs for tens of minutes; no haptic thread (the strokes are
-  // scripted), so llvmpipe keeps every core for the stimulus.
+  // As calibrate's window: a session runs for tens of minutes. The threshold and identification
+  // tasks have no haptic thread (the strokes are scripted), so llvmpipe keeps every core for the
+  // stimulus; the targeting task's screen runs one (targeting_screen.h).
   keep_large_blocks_mapped();
   const Result<Scene> scene = load_scene(e.scene, e.task == study::Task::kThreshold ? study::threshold_overrides(e, e.conditions[0], e.threshold.reference)
                                                   : e.task == study::Task::kTargeting ? study::condition_overrides(e, e.conditions[0])

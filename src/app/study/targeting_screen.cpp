@@ -145,13 +145,14 @@ void TargetingScreen::draw(const study::TrialStimulus& t, const std::string& tex
     const ImU32 fill = start ? IM_COL32(60, 200, 90, 110) : IM_COL32(255, 150, 30, 110);
     const ImU32 line = start ? IM_COL32(60, 220, 90, 255) : goal ? IM_COL32(255, 160, 40, 255) : IM_COL32(230, 230, 230, 170);
     std::vector<bool> seen(n);
-    bool all = visible(o.centre);
+    const bool centre_seen = visible(o.centre);
+    bool all = centre_seen;
     for (std::size_t k = 0; k < n; ++k) all &= (seen[k] = visible(o.world[k]));
     if ((start || goal) && all) dl->AddConvexPolyFilled(o.window.data(), static_cast<int>(n), fill);
     for (std::size_t k = 0; k < n; ++k) {
       const std::size_t next = (k + 1) % n;
       if (!seen[k] || !seen[next]) continue;
-      if ((start || goal) && !all && visible(o.centre)) dl->AddTriangleFilled(c, o.window[k], o.window[next], fill);
+      if ((start || goal) && !all && centre_seen) dl->AddTriangleFilled(c, o.window[k], o.window[next], fill);
       dl->AddLine(o.window[k], o.window[next], line, start || goal ? 2.0f : 1.0f);
     }
   }

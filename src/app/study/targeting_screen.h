@@ -1,18 +1,18 @@
 // The targeting task in the study window (docs/study.md, "Targeting in the window"): a person
 // touches the targets of ISO 9241-9's ring with the probe, under the condition's feedback.
 //
-// What the person does (a gamepad instead: its left stick moves the probe and its triggers lift
-// and lower it, devices/glfw_input.h): the mouse moves the probe over the surface (the absolute mapping of
+// What the person does: the mouse moves the probe over the surface (the absolute mapping of
 // `run`: the probe's shadow centre under the pointer, devices/glfw_input.h); the pointer itself
 // is hidden over the window, so only the condition's feedback (the pseudo-shadow, the probe
 // drawn, its cast shadow, or nothing) shows where the probe is. The wheel, PageUp/PageDown and
-// the Up/Down arrows set its height as in `run` (start 1 mm, 0.5 mm a step). A selection is the
-// haptic tick on which the probe touches the surface (study::TouchSelector); the next one counts
-// after a lift of more than 0.25 mm held for 60 ms. Each ring begins with a touch anywhere (the start target
-// is shown green): that touch starts the clock and is where the first movement begins; each
-// movement's time is from one selection's tick to the next one's.
+// the Up/Down arrows set its height as in `run` (start 1 mm, 0.5 mm a step). A gamepad instead:
+// its left stick moves the probe, its triggers lift and lower it. A selection is the haptic tick
+// on which the probe touches the surface (study::TouchSelector); the next one counts after a
+// lift of more than 0.25 mm held for 60 ms. Each ring begins with a touch anywhere (the start
+// target is shown green): that touch starts the clock and is where the first movement begins;
+// each movement's time is from one selection's tick to the next one's.
 //
-// The haptic loop runs on its own thread at 1 kHz on the window's mouse, as in `run`: contact
+// The haptic loop runs on its own thread at 1 kHz on the window's device, as in `run`: contact
 // is the haptic scene's, not the picture's. A condition's renderer and haptic scene are kept
 // while its trials last (the next condition's replace them).
 #pragma once
