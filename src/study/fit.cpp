@@ -14,24 +14,10 @@ namespace {
 // The optimiser's coordinates: a = threshold (Weibull: log threshold), b = log slope and, with
 // the lapse free, u with lapse = lapse_max sin^2 u (the bound 0 is reachable, and it is where the
 // maximum often lies). The box keeps a and b where a fit means something.
-struct Coordinates {
+struct Coordinates : FitBox {
   const FitOptions& options;
-  double a_lo, a_hi, b_lo, b_hi;
 
-  Coordinates(std::span<const LevelCounts> data, const FitOptions& o) : options(o) {
-    const double lo = data.front().level, hi = data.back().level, span = hi - lo;
-    assert(span > 0.0 && "fit_psychometric: the data need at least two levels");
-    if (o.shape == Shape::kWeibull) {
-      double lo_pos = hi;
-      for (const auto& d : data) if (d.level > 0.0) lo_pos = std::min(lo_pos, d.level);
-      assert(hi > 0.0 && "fit_psychometric: a Weibull needs positive levels");
-      a_lo = std::log(lo_pos) - std::log(10.0), a_hi = std::log(hi) + std::log(10.0);
-      b_lo = std::log(0.2), b_hi = std::log(50.0);
-    } else {
-      a_lo = lo - span, a_hi = hi + span;
-      b_lo = std::log(0.2 / span), b_hi = std::log(2000.0 / span);
-    }
-  }
+  Coordinates(std::span<const LevelCounts> data, const FitOptions& o) : FitBox(fit_box(data, o)), options(o) {}
   bool inside(const std::vector<double>& v) const {
     return v[0] >= a_lo && v[0] <= a_hi && v[1] >= b_lo && v[1] <= b_hi;
   }
@@ -86,6 +72,23 @@ PsychometricFit refit(std::span<const LevelCounts> data, const FitOptions& optio
 }
 
 }  // namespace
+
+FitBox fit_box(std::span<const LevelCounts> data, const FitOptions& o) {
+  const double lo = data.front().level, hi = data.back().level, span = hi - lo;
+  assert(span > 0.0 && "fit_psychometric: the data need at least two levels");
+  FitBox b;
+  if (o.shape == Shape::kWeibull) {
+    double lo_pos = hi;
+    for (const auto& d : data) if (d.level > 0.0) lo_pos = std::min(lo_pos, d.level);
+    assert(hi > 0.0 && "fit_psychometric: a Weibull needs positive levels");
+    b.a_lo = std::log(lo_pos) - std::log(10.0), b.a_hi = std::log(hi) + std::log(10.0);
+    b.b_lo = std::log(0.2), b.b_hi = std::log(50.0);
+  } else {
+    b.a_lo = lo - span, b.a_hi = hi + span;
+    b.b_lo = std::log(0.2 / span), b.b_hi = std::log(2000.0 / span);
+  }
+  return b;
+}
 
 std::vector<LevelCounts> group_by_level(std::span<const TrialResult> trials) {
   std::map<double, LevelCounts> by_level;

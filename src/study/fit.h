@@ -40,13 +40,20 @@ struct PsychometricFit {
   bool converged = false;
 };
 
+// The box the fit searches, in the optimiser's coordinates: a = threshold (Weibull: log
+// threshold), b = log slope. Threshold within the levels' range widened by its span on each side
+// (Weibull: a factor 10 in log), slope within [0.2, 2000] / span (Weibull: [0.2, 50]).
+struct FitBox {
+  double a_lo = 0.0, a_hi = 0.0, b_lo = 0.0, b_hi = 0.0;
+};
+FitBox fit_box(std::span<const LevelCounts> data, const FitOptions& options);
+
 // log L = sum_i k_i log psi(x_i) + (n_i - k_i) log(1 - psi(x_i)).
 double log_likelihood(Shape shape, const PsychometricParams& p, std::span<const LevelCounts> data);
 
 // The maximum-likelihood parameters: a coarse grid over threshold, slope and lapse picks the
-// start (the likelihood can have shallow ridges), Nelder-Mead polishes it. Threshold within the
-// levels' range widened by its span on each side (Weibull: a factor 10 in log), slope within
-// [0.2, 2000] / span (Weibull: [0.2, 50]); `data` needs at least two levels.
+// start (the likelihood can have shallow ridges), Nelder-Mead polishes it, inside fit_box();
+// `data` needs at least two levels.
 PsychometricFit fit_psychometric(std::span<const LevelCounts> data, const FitOptions& options);
 // The same from a known start (the bootstrap's refits start at the fit they resample).
 PsychometricFit fit_psychometric_from(std::span<const LevelCounts> data, const FitOptions& options,

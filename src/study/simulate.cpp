@@ -66,6 +66,12 @@ std::string_view procedure_name(Procedure p) {
   return "?";
 }
 
+SlopeRange psi_slope_range(Shape shape, double level_min, double level_max) {
+  if (shape == Shape::kWeibull) return {1.0, 8.0};
+  const double span = level_max - level_min;
+  return {2.0 / span, 200.0 / span};
+}
+
 PsiGrid simulation_grid(const SimulationSpec& spec, bool threshold_only) {
   PsiGrid g;
   g.shape = spec.shape;
@@ -73,8 +79,8 @@ PsiGrid simulation_grid(const SimulationSpec& spec, bool threshold_only) {
   const bool log_axis = spec.shape == Shape::kWeibull;
   g.levels = log_axis ? log_spaced(spec.level_min, spec.level_max, 30) : lin_spaced(spec.level_min, spec.level_max, 30);
   g.thresholds = log_axis ? log_spaced(spec.level_min, spec.level_max, 40) : lin_spaced(spec.level_min, spec.level_max, 40);
-  const double span = spec.level_max - spec.level_min;
-  g.slopes = log_axis ? log_spaced(1.0, 8.0, 12) : log_spaced(2.0 / span, 200.0 / span, 12);
+  const SlopeRange slopes = psi_slope_range(spec.shape, spec.level_min, spec.level_max);
+  g.slopes = log_spaced(slopes.low, slopes.high, 12);
   g.lapses = {spec.psi_lapse};
   g.threshold_only = threshold_only;
   return g;

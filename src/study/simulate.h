@@ -37,8 +37,16 @@ struct ProcedureRun {
   BootstrapResult boot;        // threshold and slope at the criterion, with 95 % intervals
 };
 
+// The slopes Psi allows, the prior every threshold experiment assumes (the summary's credible
+// intervals too, posterior.h): Weibull beta in [1, 8] (2AFC slopes in the literature lie in
+// 1-5, Strasburger 2001), the logistic's and normal's in [2, 200] / (level_max - level_min).
+struct SlopeRange {
+  double low = 0.0, high = 0.0;
+};
+SlopeRange psi_slope_range(Shape shape, double level_min, double level_max);
+
 // The grid Psi uses for a spec: levels and thresholds evenly in log over [level_min, level_max]
-// (linear for the logistic and normal), slopes over a range fit for the shape.
+// (linear for the logistic and normal), 12 slopes evenly in log over psi_slope_range().
 PsiGrid simulation_grid(const SimulationSpec& spec, bool threshold_only);
 
 ProcedureRun simulate_procedure(Procedure procedure, const SimulationSpec& spec);

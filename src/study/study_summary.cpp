@@ -6,6 +6,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "study/simulate.h"
 #include "study/study_log.h"
 
 namespace ps::study {
@@ -72,6 +73,8 @@ void read_start(ParticipantResult& p, const json& s) {
     p.shape = shape_named(t.at("shape"));
     p.criterion = t.at("criterion");
     p.reference = t.at("reference");
+    p.level_min = t.at("level_min");
+    p.level_max = t.at("level_max");
   } else {
     for (const auto& m : s.at("materials")) p.materials.push_back(m);
     const std::size_t K = p.materials.size();
@@ -116,6 +119,12 @@ void fit_condition(ConditionResult& c, const ParticipantResult& p, const std::ve
   b.criterion = p.criterion;
   b.seed = o.seed;
   c.boot = bootstrap(c.data, f, c.fit, b);
+  PosteriorOptions post;
+  post.criterion = p.criterion;
+  const SlopeRange slopes = psi_slope_range(p.shape, p.level_min, p.level_max);
+  post.slope_min = slopes.low;
+  post.slope_max = slopes.high;
+  c.posterior = posterior_intervals(c.data, f, post);
   if (p.reference != 0.0) {
     c.weber = weber_fraction(c.boot.threshold, p.reference);
     c.weber_ci = {c.boot.threshold_ci.low / p.reference, c.boot.threshold_ci.high / p.reference};

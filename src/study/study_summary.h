@@ -1,8 +1,8 @@
 // `study summarize` (docs/study.md, "Summarizing"): every participant's trial log checked
 // (study_log.h: a changed line is refused naming file:line), then fitted: a threshold task by
-// maximum likelihood per condition (threshold, slope, bootstrap 95 % intervals, Weber fraction),
-// an identification task as a confusion matrix per condition (percent correct, information
-// transfer, 2^IT), a targeting task by ISO 9241-9 per condition (fitts.h: effective width,
+// maximum likelihood per condition (threshold, slope, bootstrap and posterior 95 % intervals,
+// Weber fraction), an identification task as a confusion matrix per condition (percent correct,
+// information transfer, 2^IT), a targeting task by ISO 9241-9 per condition (fitts.h: effective width,
 // throughput, the Fitts regressions). Practice trials are left out. The tables go to CSV, the summary to
 // summary.md, the psychometric curves to a gnuplot plot.
 #pragma once
@@ -13,6 +13,7 @@
 
 #include "core/result.h"
 #include "study/fit.h"
+#include "study/posterior.h"
 #include "study/fitts.h"
 #include "study/identification.h"
 #include "study/pointing_sim.h"
@@ -27,6 +28,7 @@ struct ConditionResult {
   std::vector<LevelCounts> data;
   PsychometricFit fit;
   BootstrapResult boot;
+  PosteriorResult posterior;  // the credible intervals (posterior.h): these hold the truth at 95 %
   double weber = 0.0;
   Interval weber_ci;
   // identification
@@ -42,6 +44,7 @@ struct ParticipantResult {
   std::string experiment, task;
   Shape shape = Shape::kWeibull;
   double criterion = 0.75, reference = 0.0;
+  double level_min = 0.0, level_max = 0.0;  // the levels the procedure could show
   std::vector<std::string> materials;
   // The simulated participant's own function (session_start's "observer"); none for a person.
   std::optional<PsychometricParams> truth;

@@ -52,7 +52,8 @@ std::string participants_csv(const std::vector<ParticipantResult>& people) {
   std::ostringstream o;
   const bool th = is_threshold(people), tg = is_targeting(people);
   o << "participant,condition,trials,complete,"
-    << (th   ? "threshold,threshold_low,threshold_high,slope,slope_low,slope_high,alpha,beta,lapse,weber,weber_low,weber_high,criterion\n"
+    << (th   ? "threshold,threshold_low,threshold_high,slope,slope_low,slope_high,alpha,beta,lapse,weber,weber_low,weber_high,criterion,"
+               "threshold_cred_low,threshold_cred_high,slope_cred_low,slope_cred_high\n"
         : tg ? "error_percent,movement_time_s,we_over_w,throughput_bps,cells_used,fitts_a_s,fitts_a_low,fitts_a_high,"
                "fitts_b_s_per_bit,fitts_b_low,fitts_b_high,fitts_r2\n"
              : "percent_correct,information_bits,miller_madow_bits,corrected_bits,distinguishable\n");
@@ -65,7 +66,9 @@ std::string participants_csv(const std::vector<ParticipantResult>& people) {
         o << num(c.boot.threshold) << "," << num(c.boot.threshold_ci.low) << "," << num(c.boot.threshold_ci.high) << ","
           << num(c.boot.slope) << "," << num(c.boot.slope_ci.low) << "," << num(c.boot.slope_ci.high) << ","
           << num(c.fit.params.threshold) << "," << num(c.fit.params.slope) << "," << num(c.fit.params.lapse) << ","
-          << num(c.weber) << "," << num(c.weber_ci.low) << "," << num(c.weber_ci.high) << "," << p.criterion << "\n";
+          << num(c.weber) << "," << num(c.weber_ci.low) << "," << num(c.weber_ci.high) << "," << p.criterion << ","
+          << num(c.posterior.threshold_ci.low) << "," << num(c.posterior.threshold_ci.high) << ","
+          << num(c.posterior.slope_ci.low) << "," << num(c.posterior.slope_ci.high) << "\n";
       else
         o << num(c.ident.percent_correct) << "," << num(c.ident.information_bits) << "," << num(c.ident.miller_madow_bits)
           << "," << num(c.ident.corrected_bits) << "," << num(c.ident.distinguishable) << "\n";
@@ -140,7 +143,10 @@ std::string summary_md(const std::vector<ParticipantResult>& people, const std::
     << (people.size() == 1 ? " participant" : " participants") << ", task " << first.task;
   if (is_threshold(people))
     o << "; thresholds at " << first.criterion << " correct (maximum likelihood, lapse free in [0, 0.06]), 95 % "
-      << "bootstrap intervals; Weber fractions against the reference " << first.reference;
+      << "bootstrap intervals and 95 % credible intervals (participants.csv's *_cred_* columns: the posterior with "
+      << "flat priors over the fit's range, the slope within the range Psi assumes; an adaptive run's bootstrap "
+      << "intervals run narrow, these hold the truth at their nominal rate); Weber fractions against the reference "
+      << first.reference;
   if (is_targeting(people)) {
     o << "; ISO 9241-9 per Soukoreff & MacKenzie (2004): effective width We = 4.133 SDx of the end points along "
       << "each movement's axis, throughput as the mean over the (D, W) cells of IDe / MT; the Fitts regression "
@@ -186,10 +192,12 @@ void psychometric_script(std::ostringstream& gp, const std::string& png, const s
       const std::string name = p.participant + " " + c.condition;
       plot += (plot.empty() ? "plot " : ", ") + std::string("$d") + std::to_string(i) + " using 1:2:(0.4 + sqrt($3) / 3) with points pt 7 ps variable lc " +
               std::to_string(i) + " notitle, " + curve(p.shape, c.fit.params) + " lc " + std::to_string(i) + " title '" + name + "'";
-      // The threshold at the criterion with its 95 % bootstrap interval, a bar across the curve.
-      if (std::isfinite(c.boot.threshold) && std::isfinite(c.boot.threshold_ci.low) && std::isfinite(c.boot.threshold_ci.high)) {
+      // The threshold at the criterion with its 95 % credible interval (the one that holds the
+      // truth at its rate, posterior.h), a bar across the curve.
+      const Interval& ci = c.posterior.threshold_ci;
+      if (std::isfinite(c.boot.threshold) && std::isfinite(ci.low) && std::isfinite(ci.high) && ci.high > ci.low) {
         gp << "$t" << i << " << EOD\n"
-           << c.boot.threshold << " " << p.criterion << " " << c.boot.threshold_ci.low << " " << c.boot.threshold_ci.high << "\nEOD\n";
+           << c.boot.threshold << " " << p.criterion << " " << ci.low << " " << ci.high << "\nEOD\n";
         plot += ", $t" + std::to_string(i) + " using 1:2:3:4 with xerrorbars pt 9 ps 1.5 lc " + std::to_string(i) + " notitle";
       }
     }
