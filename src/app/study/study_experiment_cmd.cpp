@@ -233,9 +233,10 @@ constexpr const char* kRunDescription =
     "it goes on after the last whole trial (docs/study.md, \"Running\").";
 constexpr const char* kSummarizeDescription =
     "Checks every trial log's checksums, fits each participant and condition (threshold, slope, 95 % bootstrap\n"
-    "intervals, Weber fraction; or the confusion matrix and information transfer) and writes the tables,\n"
-    "summary.md and a plot (docs/study.md, \"Summarizing\"); beside each ended session's log, its BIDS-style\n"
-    "sub-ID_task-NAME_events.tsv and .json (docs/study.md, \"events.tsv (BIDS)\").";
+    "and credible intervals, Weber fraction; or the confusion matrix and information transfer; or the\n"
+    "Fitts statistics) and writes the tables, summary.md and a plot (docs/study.md, \"Summarizing\");\n"
+    "beside each ended session's log, its BIDS-style sub-ID_task-NAME_events.tsv and .json (docs/study.md,\n"
+    "\"events.tsv (BIDS)\").";
 
 }  // namespace
 
