@@ -103,6 +103,12 @@ ProcedureRun simulate_procedure(Procedure procedure, const SimulationSpec& spec)
   b.criterion = spec.criterion;
   b.seed = spec.seed + 1;
   run.boot = bootstrap(data, fit_options(spec), run.fit, b);
+  PosteriorOptions post;
+  post.criterion = spec.criterion;
+  const SlopeRange slopes = psi_slope_range(spec.shape, spec.level_min, spec.level_max);
+  post.slope_min = slopes.low;
+  post.slope_max = slopes.high;
+  run.credible = posterior_intervals(data, fit_options(spec), post);
   return run;
 }
 
@@ -117,10 +123,11 @@ std::string format_simulation(const SimulationSpec& spec, const std::vector<Proc
   std::string out = line;
   for (const ProcedureRun& r : runs) {
     std::snprintf(line, sizeof line,
-                  "%-12s %4zu trials  threshold %s  slope %s  alpha %.4g beta %.4g lapse %.3f  own estimate "
-                  "(70.7 %%) %.4g",
+                  "%-12s %4zu trials  threshold %s credible [%.4g, %.4g]  slope %s  alpha %.4g beta %.4g lapse %.3f  "
+                  "own estimate (70.7 %%) %.4g",
                   std::string(procedure_name(r.procedure)).c_str(), r.trials.size(),
-                  interval(r.boot.threshold, r.boot.threshold_ci).c_str(), interval(r.boot.slope, r.boot.slope_ci).c_str(),
+                  interval(r.boot.threshold, r.boot.threshold_ci).c_str(), r.credible.threshold_ci.low,
+                  r.credible.threshold_ci.high, interval(r.boot.slope, r.boot.slope_ci).c_str(),
                   r.fit.params.threshold, r.fit.params.slope, r.fit.params.lapse, r.own_estimate);
     out += line;
     if (spec.reference > 0.0) {

@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "study/fit.h"
+#include "study/posterior.h"
 #include "study/psi.h"
 
 namespace ps::study {
@@ -35,6 +36,7 @@ struct ProcedureRun {
   double own_estimate = 0.0;   // Psi: posterior mean of the 1/sqrt 2 level; staircase: its threshold
   PsychometricFit fit;         // maximum likelihood over the run's trials (lapse free)
   BootstrapResult boot;        // threshold and slope at the criterion, with 95 % intervals
+  PosteriorResult credible;    // their 95 % credible intervals (posterior.h, Psi's slope prior)
 };
 
 // The slopes Psi allows, the prior every threshold experiment assumes (the summary's credible

@@ -1,8 +1,9 @@
 // `pseudoshadow study`: experiments on the thesis's open questions (docs/study.md). `plan`,
 // `run`, `resume` and `summarize` take an experiment file (study_experiment_cmd.cpp). `simulate`:
 // a simulated observer with a known psychometric function answers the Psi method and calibrate's
-// staircase, each run is fitted by maximum likelihood with bootstrap 95 %
-// intervals, and the recovered threshold and slope are printed beside the truth (study/simulate.h).
+// staircase, each run is fitted by maximum likelihood with bootstrap 95 % intervals (and the
+// threshold's credible one), and the recovered threshold and slope are printed beside the truth
+// (study/simulate.h).
 #include "app/study/study_cmd.h"
 
 #include <cstdio>
@@ -23,7 +24,7 @@ constexpr const char* kSimulateDescription =
     "method (Kontsevich & Tyler 1999), its threshold-only variant (Prins 2013) and the 1-up-2-down\n"
     "staircase of `calibrate`; each run is fitted by maximum likelihood (threshold, slope, lapse in\n"
     "[0, 0.06]) and bootstrapped: the threshold at --criterion and the slope there with 95 % intervals,\n"
-    "beside the truth (docs/study.md). Reproducible with --seed.";
+    "and the threshold's 95 % credible interval, beside the truth (docs/study.md). Reproducible with --seed.";
 
 struct SimulateArgs {
   std::string shape = "weibull", procedure = "all";
