@@ -7,6 +7,7 @@
 
 #include <gtest/gtest.h>
 
+#include "constant_stimuli.h"
 #include "study/fit.h"
 
 namespace ps::study {
@@ -78,27 +79,6 @@ double own_log_likelihood(const std::vector<LevelCounts>& data, double a, double
   }
   return ll;
 }
-
-std::vector<LevelCounts> constant_stimuli(SimulatedObserver& o, const std::vector<double>& levels, int per_level) {
-  std::vector<LevelCounts> data;
-  for (double x : levels) {
-    LevelCounts d{x, per_level, 0};
-    for (int t = 0; t < per_level; ++t) d.correct += o.respond(x) ? 1 : 0;
-    data.push_back(d);
-  }
-  return data;
-}
-
-FitOptions two_afc_weibull() {
-  FitOptions o;
-  o.shape = Shape::kWeibull;
-  o.guess = 0.5;
-  o.fit_lapse = true;
-  o.lapse_max = 0.06;
-  return o;
-}
-
-const std::vector<double> kLevels{0.04, 0.06, 0.08, 0.1, 0.12, 0.15, 0.2};  // x alpha / 0.1
 
 // A 2AFC Weibull with a free lapse: the fit's likelihood is at least the best of an exhaustive
 // 120 x 120 x 61 search of the test's own likelihood, and its parameters lie within a few grid

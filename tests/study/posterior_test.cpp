@@ -6,33 +6,13 @@
 
 #include <gtest/gtest.h>
 
+#include "constant_stimuli.h"
 #include "study/fit.h"
 #include "study/posterior.h"
 #include "study/simulate.h"
 
 namespace ps::study {
 namespace {
-
-FitOptions two_afc_weibull(bool free_lapse) {
-  FitOptions o;
-  o.shape = Shape::kWeibull;
-  o.guess = 0.5;
-  o.fit_lapse = free_lapse;
-  o.fixed_lapse = 0.02;
-  return o;
-}
-
-std::vector<LevelCounts> constant_stimuli(SimulatedObserver& o, const std::vector<double>& levels, int per_level) {
-  std::vector<LevelCounts> data;
-  for (double x : levels) {
-    LevelCounts d{x, per_level, 0};
-    for (int t = 0; t < per_level; ++t) d.correct += o.respond(x) ? 1 : 0;
-    data.push_back(d);
-  }
-  return data;
-}
-
-const std::vector<double> kLevels{0.04, 0.06, 0.08, 0.1, 0.12, 0.15, 0.2};
 
 // With the slope and lapse fixed the posterior is one-dimensional: flat in log alpha over the
 // fit's box times the likelihood. The test integrates it itself (200 000 midpoints, its own
