@@ -128,6 +128,7 @@ void fit_condition(ConditionResult& c, const ParticipantResult& p, const std::ve
   if (p.reference != 0.0) {
     c.weber = weber_fraction(c.boot.threshold, p.reference);
     c.weber_ci = {c.boot.threshold_ci.low / p.reference, c.boot.threshold_ci.high / p.reference};
+    c.weber_cred = {c.posterior.threshold_ci.low / p.reference, c.posterior.threshold_ci.high / p.reference};
   }
 }
 

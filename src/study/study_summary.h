@@ -31,6 +31,7 @@ struct ConditionResult {
   PosteriorResult posterior;  // the credible intervals (posterior.h): these hold the truth at 95 %
   double weber = 0.0;
   Interval weber_ci;
+  Interval weber_cred;  // the credible threshold interval over the reference
   // identification
   std::vector<std::vector<int>> confusion;
   IdentificationStats ident;

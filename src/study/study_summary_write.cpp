@@ -53,7 +53,7 @@ std::string participants_csv(const std::vector<ParticipantResult>& people) {
   const bool th = is_threshold(people), tg = is_targeting(people);
   o << "participant,condition,trials,complete,"
     << (th   ? "threshold,threshold_low,threshold_high,slope,slope_low,slope_high,alpha,beta,lapse,weber,weber_low,weber_high,criterion,"
-               "threshold_cred_low,threshold_cred_high,slope_cred_low,slope_cred_high\n"
+               "threshold_cred_low,threshold_cred_high,slope_cred_low,slope_cred_high,weber_cred_low,weber_cred_high\n"
         : tg ? "error_percent,movement_time_s,we_over_w,throughput_bps,cells_used,fitts_a_s,fitts_a_low,fitts_a_high,"
                "fitts_b_s_per_bit,fitts_b_low,fitts_b_high,fitts_r2\n"
              : "percent_correct,information_bits,miller_madow_bits,corrected_bits,distinguishable\n");
@@ -68,7 +68,8 @@ std::string participants_csv(const std::vector<ParticipantResult>& people) {
           << num(c.fit.params.threshold) << "," << num(c.fit.params.slope) << "," << num(c.fit.params.lapse) << ","
           << num(c.weber) << "," << num(c.weber_ci.low) << "," << num(c.weber_ci.high) << "," << p.criterion << ","
           << num(c.posterior.threshold_ci.low) << "," << num(c.posterior.threshold_ci.high) << ","
-          << num(c.posterior.slope_ci.low) << "," << num(c.posterior.slope_ci.high) << "\n";
+          << num(c.posterior.slope_ci.low) << "," << num(c.posterior.slope_ci.high) << "," << num(c.weber_cred.low) << ","
+          << num(c.weber_cred.high) << "\n";
       else
         o << num(c.ident.percent_correct) << "," << num(c.ident.information_bits) << "," << num(c.ident.miller_madow_bits)
           << "," << num(c.ident.corrected_bits) << "," << num(c.ident.distinguishable) << "\n";

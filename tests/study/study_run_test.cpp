@@ -91,6 +91,8 @@ TEST(StudyRunTest, ASimulatedParticipantsThresholdLiesInItsInterval) {
     EXPECT_TRUE(c.boot.threshold_ci.contains(truth))
         << c.condition << ": " << c.boot.threshold << " [" << c.boot.threshold_ci.low << ", " << c.boot.threshold_ci.high << "]";
     EXPECT_NEAR(c.weber, c.boot.threshold / 1.3, 1e-12);
+    EXPECT_NEAR(c.weber_cred.low, c.posterior.threshold_ci.low / 1.3, 1e-12);
+    EXPECT_NEAR(c.weber_cred.high, c.posterior.threshold_ci.high / 1.3, 1e-12);
   }
 }
 

@@ -50,6 +50,9 @@ TEST(StudySummaryTest, ThresholdTablesSummaryAndPlot) {
   const std::string participants = read_text(out + "participants.csv");
   EXPECT_EQ(count_lines(participants), 1 + 3 * 2);  // header, 3 participants x 2 conditions
   EXPECT_EQ(participants.rfind("participant,condition,trials,complete,threshold,threshold_low,threshold_high,slope,", 0), 0u);
+  EXPECT_NE(participants.find(",criterion,threshold_cred_low,threshold_cred_high,slope_cred_low,slope_cred_high,"
+                              "weber_cred_low,weber_cred_high\n"),
+            std::string::npos);
   EXPECT_NE(participants.find("\nP03,stroke_17,60,yes,"), std::string::npos);
   const std::string groups = read_text(out + "groups.csv");
   EXPECT_EQ(count_lines(groups), 1 + 2 * 3);  // 2 conditions x threshold, slope, weber
