@@ -52,16 +52,17 @@ PosteriorResult posterior_intervals(std::span<const LevelCounts> data, const Fit
         best = std::max(best, ll);
       }
   PosteriorResult out;
-  out.grid_points = static_cast<int>(points.size());
   if (points.empty()) return out;
   std::vector<std::pair<double, double>> thresholds, slopes;
   double total = 0.0;
-  for (const Point& p : points) total += std::exp(p.log_likelihood - best);
   for (const Point& p : points) {
-    const double w = std::exp(p.log_likelihood - best) / total;
+    const double w = std::exp(p.log_likelihood - best);  // normalised below, once the total is known
+    total += w;
     thresholds.emplace_back(p.threshold, w);
     slopes.emplace_back(p.slope, w);
   }
+  for (auto* v : {&thresholds, &slopes})
+    for (auto& [value, w] : *v) w /= total;
   std::sort(thresholds.begin(), thresholds.end());
   std::sort(slopes.begin(), slopes.end());
   const double lo = (1.0 - o.confidence) / 2.0, hi = (1.0 + o.confidence) / 2.0;

@@ -29,7 +29,6 @@ struct PosteriorOptions {
 struct PosteriorResult {
   Interval threshold_ci, slope_ci;  // equal-tailed: the (1-c)/2 and (1+c)/2 posterior quantiles
   double threshold_median = 0.0;
-  int grid_points = 0;              // those whose function reaches the criterion
 };
 
 // `data` needs at least two levels (as fit_psychometric).

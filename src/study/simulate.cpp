@@ -72,6 +72,15 @@ SlopeRange psi_slope_range(Shape shape, double level_min, double level_max) {
   return {2.0 / span, 200.0 / span};
 }
 
+PosteriorOptions psi_prior(Shape shape, double level_min, double level_max, double criterion) {
+  PosteriorOptions o;
+  o.criterion = criterion;
+  const SlopeRange slopes = psi_slope_range(shape, level_min, level_max);
+  o.slope_min = slopes.low;
+  o.slope_max = slopes.high;
+  return o;
+}
+
 PsiGrid simulation_grid(const SimulationSpec& spec, bool threshold_only) {
   PsiGrid g;
   g.shape = spec.shape;
@@ -103,12 +112,7 @@ ProcedureRun simulate_procedure(Procedure procedure, const SimulationSpec& spec)
   b.criterion = spec.criterion;
   b.seed = spec.seed + 1;
   run.boot = bootstrap(data, fit_options(spec), run.fit, b);
-  PosteriorOptions post;
-  post.criterion = spec.criterion;
-  const SlopeRange slopes = psi_slope_range(spec.shape, spec.level_min, spec.level_max);
-  post.slope_min = slopes.low;
-  post.slope_max = slopes.high;
-  run.credible = posterior_intervals(data, fit_options(spec), post);
+  run.credible = posterior_intervals(data, fit_options(spec), psi_prior(spec.shape, spec.level_min, spec.level_max, spec.criterion));
   return run;
 }
 

@@ -46,6 +46,8 @@ struct SlopeRange {
   double low = 0.0, high = 0.0;
 };
 SlopeRange psi_slope_range(Shape shape, double level_min, double level_max);
+// The credible intervals' options at a criterion with that prior (study summarize and simulate).
+PosteriorOptions psi_prior(Shape shape, double level_min, double level_max, double criterion);
 
 // The grid Psi uses for a spec: levels and thresholds evenly in log over [level_min, level_max]
 // (linear for the logistic and normal), 12 slopes evenly in log over psi_slope_range().

@@ -119,12 +119,7 @@ void fit_condition(ConditionResult& c, const ParticipantResult& p, const std::ve
   b.criterion = p.criterion;
   b.seed = o.seed;
   c.boot = bootstrap(c.data, f, c.fit, b);
-  PosteriorOptions post;
-  post.criterion = p.criterion;
-  const SlopeRange slopes = psi_slope_range(p.shape, p.level_min, p.level_max);
-  post.slope_min = slopes.low;
-  post.slope_max = slopes.high;
-  c.posterior = posterior_intervals(c.data, f, post);
+  c.posterior = posterior_intervals(c.data, f, psi_prior(p.shape, p.level_min, p.level_max, p.criterion));
   if (p.reference != 0.0) {
     c.weber = weber_fraction(c.boot.threshold, p.reference);
     c.weber_ci = {c.boot.threshold_ci.low / p.reference, c.boot.threshold_ci.high / p.reference};
