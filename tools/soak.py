@@ -21,7 +21,7 @@ Measured per world (docs/hardening.md, "Hours of running"):
 The measures and targets are tools/soak_measures.py.
 Writes OUT/<scene>/{readouts.jsonl, rss.csv, result.json, soak.svg} and OUT/soak.md (one table).
 Exit 0 when every world meets the targets, 1 when one misses, 2 bad input, 77 skipped (no
-xvfb-run or xdotool). Standard library only.
+Xvfb or xdotool). Standard library only.
 """
 import argparse
 import json
@@ -325,7 +325,7 @@ def main():
     p.add_argument("--run-arg", action="append", default=[], metavar="ARG",
                    help="one more argument for `pseudoshadow run` (repeatable; e.g. --run-arg=--spare-cpu --run-arg=off)")
     p.add_argument("--table", metavar="OUT", help="only write OUT/soak.md from the scenes' OUT/<scene>/result.json")
-    p.add_argument("--inner", action="store_true", help=argparse.SUPPRESS)  # already under xvfb-run
+    p.add_argument("--inner", action="store_true", help=argparse.SUPPRESS)  # already under its X server
     args = p.parse_args()
     if args.table:
         return write_table(args.table, args.scenes, args.loop)

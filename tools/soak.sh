@@ -50,7 +50,7 @@ fi
 [[ -x "$bin" ]] || { echo "soak.sh: no program at $bin: build first (README.md)" >&2; exit 2; }
 # Checked here, not only in soak.py: xargs reports any child's non-zero status as 123, so a
 # skipped world (77) would read as a failed one.
-for tool in xvfb-run xdotool; do
+for tool in Xvfb xdotool; do
   command -v "$tool" > /dev/null || { echo "soak.sh: skipped, $tool is not installed (tools/bootstrap.sh installs it)"; exit 77; }
 done
 mkdir -p "$out"

@@ -248,6 +248,28 @@ TEST(PointingTest, APathIsClearOnlyWhereTheSphereKeepsTheClearance) {
   EXPECT_FALSE(floor.path_clear({0.0, 0.0, z}, {0.0, 0.0, z}, kRadius, 3.1)) << "no move, too near";
 }
 
+// A proxy pressed against the block's side while the hand hovers beyond the block is stranded;
+// one the hand left on the same side, with nothing between, is not, however far. Closed forms:
+// the block's faces at x = +-20 mm and its top at 30 mm, the sphere's radius 8 mm; from the top
+// (0, 0, 39) to (60, 0, 8) the line is at z = 28.7 < 30 where it crosses the face x = 20.
+TEST(PointingTest, AProxyBehindTheBlockIsStrandedOneInTheOpenIsNot) {
+  FreeHeight floor;
+  floor.set_scene(felt(kBlockOnPlane));
+  const double hover = 1.0, reach = hover + 2.0;
+  const glm::dvec3 hand{-60.0, 0.0, kRadius + hover};
+  const glm::dvec3 against_side{kHalf + kRadius, 0.0, kRadius};  // touching the face x = 20
+  EXPECT_TRUE(proxy_stranded(floor, hand, against_side, reach)) << "the block between";
+  EXPECT_FALSE(proxy_stranded(floor, hand, {-kHalf - kRadius, 0.0, kRadius}, reach))
+      << "against the near face, on the hand's side: 31 mm away, nothing between";
+  EXPECT_FALSE(proxy_stranded(floor, hand, {-100.0, 0.0, kRadius}, reach)) << "on the floor, in the open";
+  EXPECT_FALSE(proxy_stranded(floor, hand, hand + glm::dvec3(0.0, 0.0, -hover), reach)) << "within reach";
+  EXPECT_FALSE(proxy_stranded(floor, {0.0, 0.0, kTop + kRadius + hover}, against_side, 100.0))
+      << "beyond a larger reach";
+  // Over the top instead of through the block: the hand above the top, the proxy on the far side.
+  EXPECT_TRUE(proxy_stranded(floor, {0.0, 0.0, kTop + kRadius + hover}, {60.0, 0.0, kRadius}, reach))
+      << "the straight way from the top down to the far floor cuts the block's edge";
+}
+
 // A sphere wider than the closest-point query (R + h = 70 mm > 64 mm) is lowered onto the block
 // as any other: the query reaches past the sphere. Closed form: over the block's centre the
 // sphere rests on its top; 0.02 mm as above.

@@ -12,8 +12,8 @@ and which commands run with the window are tables (doc_table.py), each entry wit
 test prints every command it ran or skipped. A command that fails (a non-zero exit, or longer
 than its time) fails the test, named by doc file and line with the last lines of its stderr; its
 doc's copy is kept (those of docs that passed are removed), and every command's output is in
-DIR/logs/. Group `window` runs itself under xvfb-run. Exit 0 pass, 1 a command failed, 2 bad
-input or a stale table, 77 skipped (group `window` without xvfb-run or xdotool). Standard
+DIR/logs/. Group `window` runs itself under its own Xvfb. Exit 0 pass, 1 a command failed, 2 bad
+input or a stale table, 77 skipped (group `window` without Xvfb or xdotool). Standard
 library only.
 """
 import argparse
@@ -113,7 +113,7 @@ def main():
     p.add_argument("--group", required=True, choices=sorted(doc_plan.GROUPS))
     p.add_argument("--timeout", type=float, default=180.0, help="seconds a command may take")
     p.add_argument("--list", action="store_true", help="print the plan, run nothing")
-    p.add_argument("--inner", action="store_true", help=argparse.SUPPRESS)  # already under xvfb-run
+    p.add_argument("--inner", action="store_true", help=argparse.SUPPRESS)  # already under its X server
     args = p.parse_args()
     plan, problems = doc_plan.plan(args.source, args.group)
     if problems:

@@ -6,7 +6,7 @@ controller has measured no redraw before them), is drawn below scale 1, and the 
 frame after the last move draws a haptic state at most 100 ms newer than that move's (the
 issue's rest requirement). --frame-budget 1 makes every machine reduce, a GPU's too.
 
-    adaptive_scale_test.py EXE SOURCE_ROOT OUT_DIR      (exit 77: xvfb-run missing)"""
+    adaptive_scale_test.py EXE SOURCE_ROOT OUT_DIR      (exit 77: Xvfb missing)"""
 import json
 import os
 import shutil
@@ -18,12 +18,13 @@ REST_LIMIT_S = 0.100
 
 def main():
     exe, root, out = sys.argv[1:4]
-    if shutil.which("xvfb-run") is None:
-        print("adaptive scale: xvfb-run missing, skipped")
+    if shutil.which("Xvfb") is None:
+        print("adaptive scale: Xvfb missing, skipped")
         return 77
     os.makedirs(out, exist_ok=True)
     log = os.path.join(out, "readouts.jsonl")
-    cmd = ["xvfb-run", "-a", exe, "run", "--scene", os.path.join(root, "scenes/universe/field.toml"),
+    xvfb_run = os.path.join(root, "tests/support/xvfb_run.sh")  # Xvfb choosing its own display number
+    cmd = ["bash", xvfb_run, exe, "run", "--scene", os.path.join(root, "scenes/universe/field.toml"),
            "--device", "trajectory:" + os.path.join(root, "tests/haptics/data/universe_field_navigate.traj"),
            "--size", "640x360", "--frame-budget", "1", "--quit-after", "6", "--readouts-log", log,
            "--mute", "--no-watch", "-q"]

@@ -8,7 +8,7 @@ turn rebuilds the renderer) made while the view was rolled: the rebuilt renderer
 camera as its own, the pose was carried onto it twice, and from then on the loops came to rest
 87 to 1119 mm apart, the probe out of reach with Home no help.
 
-    rolling_home_test.py EXE SCENE OUT_DIR      (exit 77: xvfb-run or xdotool missing)"""
+    rolling_home_test.py EXE SCENE OUT_DIR      (exit 77: Xvfb or xdotool missing)"""
 import json
 import math
 import os

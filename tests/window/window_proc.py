@@ -3,8 +3,8 @@ output in a console file, driven with xdotool, followed through its `--readouts-
 it ends before its first frames, a failure that says why (the console's last lines).
 
 A window that could not open its display is started once more after 1 s: on a busy machine an
-X server can refuse a connection for a moment (a server resetting as its last client leaves, a
-display number two `xvfb-run -a` raced for), and that is the machine's, not the program's, fault.
+X server can refuse a connection for a moment (a server resetting as its last client leaves),
+and that is the machine's, not the program's, fault.
 Standard library only.
 """
 import json
@@ -23,17 +23,22 @@ RETRY_WAIT_S = 1.0
 SKIP = 77  # ctest's skip status
 
 
+# The tests' X server wrapper: `xvfb-run -a`'s interface, the display number chosen by Xvfb
+# itself, so any number of windows can start at once (tests/support/xvfb_run.sh).
+XVFB_RUN = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "support", "xvfb_run.sh")
+
+
 def under_xvfb(script, argv, screen, who, call=subprocess.call):
-    """Runs `python3 script --inner argv` under its own X server (xvfb-run -a, SCREEN as
-    "WxHxD") and returns its status; SKIP, with a line saying why, where xvfb-run or xdotool is
-    not installed. -noreset: an X server regenerates when its last client leaves, and a
-    connection made meanwhile fails ("X11: Failed to open display"): before a window connects,
-    each `xdotool search` poll is that last client."""
-    missing = [t for t in ("xvfb-run", "xdotool") if shutil.which(t) is None]
+    """Runs `python3 script --inner argv` under its own X server (XVFB_RUN, SCREEN as "WxHxD")
+    and returns its status; SKIP, with a line saying why, where Xvfb or xdotool is not
+    installed. -noreset: an X server regenerates when its last client leaves, and a connection
+    made meanwhile fails ("X11: Failed to open display"): before a window connects, each
+    `xdotool search` poll is that last client."""
+    missing = [t for t in ("Xvfb", "xdotool") if shutil.which(t) is None]
     if missing:
         print(f"{who}: skipped, {' and '.join(missing)} not installed")
         return SKIP
-    return call(["xvfb-run", "-a", "-s", f"-screen 0 {screen} -noreset", sys.executable, os.path.abspath(script),
+    return call(["bash", XVFB_RUN, "-s", f"-screen 0 {screen} -noreset", sys.executable, os.path.abspath(script),
                  "--inner", *argv])
 
 

@@ -186,7 +186,16 @@ void poll_device(const LiveWindow& win, const Renderer& r, LiveHaptics& h, doubl
   const auto cuts = [&] {
     return hover > 0.25 && !h.floor.path_clear(before, after + 0.5 * (after - before), view.probe_radius_mm, 0.5 * hover);
   };
-  if (h.loop() && hover >= 0.0 && (rose_or_fell || device->parallax_jump_mm() > 1.0 || cuts()))
+  // So is a pointer at rest whose proxy was left behind a raised part (proxy_stranded: readings
+  // 100+ ms apart skipped its top, the hand went below it, and the proxy stayed pressed against
+  // its side, 90 mm from the pointer, until the pointer came back). At rest the proxy of a
+  // hovering hand has reached it unless something holds it: 2 mm past the hover height.
+  const auto stranded = [&] {
+    if (glm::length(after - before) > 0.25 || st.proxy_catching_up || !st.have_sample) return false;
+    const glm::dvec3 proxy = glm::transpose(st.view_rotation) * (st.proxy_mm - st.view_offset_mm);
+    return proxy_stranded(h.floor, after, proxy, hover + 2.0);
+  };
+  if (h.loop() && hover >= 0.0 && (rose_or_fell || device->parallax_jump_mm() > 1.0 || cuts() || stranded()))
     h.loop()->place_hand(after, view.plane.n, h.floor.last_normal());
 }
 

@@ -171,4 +171,12 @@ double buried_mm(const world::HapticScene& scene, const glm::dvec3& centre_mm) {
   return c.hit ? std::max(0.0, r - c.distance_mm) : 0.0;
 }
 
+bool proxy_stranded(const FreeHeight& floor, const glm::dvec3& hand_mm, const glm::dvec3& proxy_mm, double reach_mm) {
+  constexpr double kShortOfProxyMm = 1.0;  // the proxy itself touches a surface: stop before it
+  const glm::dvec3 d = proxy_mm - hand_mm;
+  const double length = glm::length(d);
+  if (!(length > reach_mm) || !(length > kShortOfProxyMm)) return false;  // NaN: not stranded either
+  return !floor.path_clear(hand_mm, hand_mm + d * ((length - kShortOfProxyMm) / length), 0.0, 0.0);  // a line
+}
+
 }  // namespace ps

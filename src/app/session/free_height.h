@@ -118,4 +118,13 @@ class FreeHeight final : public SurfaceFloor {
 // geometry, mm: R - the distance to the nearest surface; 0 when free.
 double buried_mm(const world::HapticScene& scene, const glm::dvec3& centre_mm);
 
+// A hovering hand's proxy left behind a raised surface: further than `reach_mm` from the hand,
+// with a surface between their centres (the straight line from the hand to 1 mm short of the
+// proxy passes through one). A mouse read by slow frames (4-10 a second: a dense texture, a
+// loaded machine) can skip the readings over a raised part's top: the hand then goes from one
+// side to the other below the top, and the proxy, which cannot pass through, stays pressed
+// against the side while the pointer points elsewhere. Both positions in the workspace, as
+// path_clear's.
+bool proxy_stranded(const FreeHeight& floor, const glm::dvec3& hand_mm, const glm::dvec3& proxy_mm, double reach_mm);
+
 }  // namespace ps
