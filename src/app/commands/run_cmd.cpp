@@ -107,8 +107,8 @@ void declare(cli::Command& cmd, RunArgs& a) {
   cli::add_positive(app, "--frame-budget", "MS", a.frame_budget_ms, 1000.0, "16.7",
                     "the frame time adaptive resolution holds while the view moves");
   cli::add_int(app, "--max-fps", "N", a.max_fps, 0, 1000,
-               "draw at most N frames a second (default 60, a display's rate; 0: as many as the machine draws, "
-               "with no vertical sync under software GL)");
+               "draw at most N frames a second (default: the display's refresh rate, 60 where it is unknown; "
+               "0: as many as the machine draws, as software GL has no vertical sync)");
   app.add_flag_callback("--no-watch", [&a] { a.watch = false; },
                         "do not reload the scene, its textures and glsl/ when they change");
   cli::add_int(app, "--realtime", "PRIO", a.realtime, 1, 99,
@@ -224,11 +224,14 @@ Status window_loop(const RunArgs& a, RunState& s, const cli::StopSignals& stop) 
   // --max-fps: a frame starts no sooner than one period after the last one started; the wait
   // comes before the input is polled, so what a frame draws is as fresh as without it, and it
   // is not part of the frame's time (the readouts, adaptive resolution).
+  constexpr int kUnknownRefreshHz = 60;
+  const int display_hz = s.io.window->refresh_hz();
+  const long long fps = a.max_fps >= 0 ? a.max_fps : (display_hz > 0 ? display_hz : kUnknownRefreshHz);
   const auto period = std::chrono::duration_cast<std::chrono::steady_clock::duration>(
-      std::chrono::duration<double>(a.max_fps > 0 ? 1.0 / static_cast<double>(a.max_fps) : 0.0));
+      std::chrono::duration<double>(fps > 0 ? 1.0 / static_cast<double>(fps) : 0.0));
   auto next_start = t0;
   for (std::uint64_t frame = 0;; ++frame) {
-    if (a.max_fps > 0) std::this_thread::sleep_until(next_start);
+    if (fps > 0) std::this_thread::sleep_until(next_start);
     const auto f0 = std::chrono::steady_clock::now();
     next_start = f0 + period;
     const double now_s = std::chrono::duration<double>(f0 - t0).count();

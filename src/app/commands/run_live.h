@@ -43,10 +43,11 @@ struct RunArgs {
   // frame time it holds, --frame-budget.
   bool adaptive = true;
   double frame_budget_ms = 16.7;
-  // At most this many frames a second (--max-fps; 0: as many as the machine draws). Software GL
-  // and Xvfb have no vertical sync, so a still view was redrawn 80-120 times a second on 2 cores:
-  // a display shows 60, and the rest took CPU from the haptic thread and everything else.
-  long long max_fps = 60;
+  // At most this many frames a second (--max-fps; 0: as many as the machine draws; -1, the
+  // default: the display's refresh rate, 60 where it is unknown). Software GL and Xvfb have no
+  // vertical sync, so a still view was redrawn 80-120 times a second on 2 cores: a display
+  // shows 60, and the rest took CPU from the haptic thread and everything else.
+  long long max_fps = -1;
   RunEventsDesc events;  // --events, --mute, --audio-device (docs/sound.md)
 };
 

@@ -7,6 +7,7 @@
 #include <backends/imgui_impl_glfw.h>
 #include <backends/imgui_impl_opengl3.h>
 
+#include <algorithm>
 #include <cstdint>
 
 #include "app/session/session.h"
@@ -90,6 +91,13 @@ void LiveWindow::wait_events(double timeout_s) { glfwWaitEventsTimeout(timeout_s
 bool LiveWindow::should_close() const { return glfwWindowShouldClose(window_) != 0; }
 bool LiveWindow::hovered() const {
   return !gl::display_lost() && glfwGetWindowAttrib(window_, GLFW_HOVERED) == GLFW_TRUE;
+}
+
+int LiveWindow::refresh_hz() const {
+  if (gl::display_lost()) return 0;
+  GLFWmonitor* const monitor = glfwGetPrimaryMonitor();
+  const GLFWvidmode* const mode = monitor ? glfwGetVideoMode(monitor) : nullptr;
+  return mode ? std::max(mode->refreshRate, 0) : 0;
 }
 
 // Once the display is gone (gl::display_lost; the very call that finds it so may be this one)

@@ -60,6 +60,7 @@ class LiveWindow {
   void wait_events(double timeout_s);  // nothing moves on screen: sleep until an event or the timeout
   bool should_close() const;           // the window's close button (Esc is each program's own)
   bool hovered() const;                // the pointer is over the window now
+  int refresh_hz() const;              // the primary display's refresh rate; 0 where unknown
   glm::ivec2 window_size() const;      // screen coordinates (ImGui's units)
   glm::ivec2 framebuffer_size() const; // pixels
   std::optional<glm::dvec2> pointer_in_window() const;  // screen coordinates; none: outside
