@@ -13,6 +13,8 @@ import shutil
 import subprocess
 import sys
 
+import window_proc
+
 REST_LIMIT_S = 0.100
 
 
@@ -23,8 +25,7 @@ def main():
         return 77
     os.makedirs(out, exist_ok=True)
     log = os.path.join(out, "readouts.jsonl")
-    xvfb_run = os.path.join(root, "tests/support/xvfb_run.sh")  # Xvfb choosing its own display number
-    cmd = ["bash", xvfb_run, exe, "run", "--scene", os.path.join(root, "scenes/universe/field.toml"),
+    cmd = ["bash", window_proc.XVFB_RUN, exe, "run", "--scene", os.path.join(root, "scenes/universe/field.toml"),
            "--device", "trajectory:" + os.path.join(root, "tests/haptics/data/universe_field_navigate.traj"),
            "--size", "640x360", "--frame-budget", "1", "--quit-after", "6", "--readouts-log", log,
            "--mute", "--no-watch", "-q"]
