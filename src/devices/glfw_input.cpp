@@ -33,8 +33,16 @@ void GlfwInputDevice::poll(double now_s, const PointerView& view) {
   } else {
     s.valid = poll_gamepad(now_s, view, s);  // false: no gamepad connected
   }
-  latest_.publish(s);
+  latest_.publish(next_stroke(latest_.read(), s, now_s, last_poll_s_, kMaxStrokeS));  // its own last publish
   last_poll_s_ = now_s;
+}
+
+DeviceSample GlfwInputDevice::read(double now_s) { return latest_.read().read(now_s); }
+
+void GlfwInputDevice::snap() {
+  PollStroke k = latest_.read();
+  k.snap();
+  latest_.publish(k);
 }
 
 glm::dvec3 GlfwInputDevice::poll_mouse(const PointerView& view) {

@@ -1,6 +1,7 @@
 // Mouse+keyboard and gamepad through GLFW. GLFW input may only be polled on the main thread,
-// so poll() runs there once per frame and publishes a DeviceSample through a single-writer
-// Snapshot; read() on the haptic thread returns the newest one (sample-and-hold).
+// so poll() runs there once per frame and publishes its reading through a single-writer Snapshot;
+// read() on the haptic thread gives the hand on its way from the last reading to the newest one
+// (devices/poll_stroke.h: one frame behind, never past a reading).
 //   mouse:   the probe is where the pointer is (PointerMap's absolute mapping through the
 //            current camera, devices/pointer_map.h): its shadow's centre sits under the pointer.
 //            Until the pointer first moves, the window centre stands in for it (a pointer
@@ -22,6 +23,7 @@
 #include "core/snapshot.h"
 #include "devices/device.h"
 #include "devices/pointer_map.h"
+#include "devices/poll_stroke.h"
 
 struct GLFWwindow;
 
@@ -44,7 +46,16 @@ class GlfwInputDevice final : public Device {
   // Main thread, once per frame: polls GLFW state (after glfwPollEvents), maps it with the
   // current view (camera, window, plane) and publishes.
   void poll(double now_s, const PointerView& view);
-  DeviceSample read(double now_s) override { return latest_.read(); }
+  // Haptic thread: the hand at now_s on its way to the newest reading (time_s = now_s).
+  DeviceSample read(double now_s) override;
+  // Any thread: the newest poll's reading, where the hand is heading (time_s: the poll's time).
+  DeviceSample newest() const { return latest_.read().to; }
+  // Main thread, after a poll: the hand is at the newest reading from now on, no way between (the
+  // haptic loop is told to place it there: HapticLoop::place_hand).
+  void snap();
+  // The longest way between two readings, s: a slower frame's hand waits at the reading for the
+  // rest of it (10 frames a second and fewer), so the hand lags the pointer by at most this.
+  static constexpr double kMaxStrokeS = 0.1;
   std::string name() const override { return kind_ == Kind::kMouse ? "mouse" : "gamepad"; }
   Kind kind() const { return kind_; }
   void add_scroll(double notches) { height_.scroll(notches); }
@@ -84,7 +95,7 @@ class GlfwInputDevice final : public Device {
   glm::dvec2 first_cursor_{0.0}, last_cursor_{0.0};
   bool have_cursor_ = false, cursor_moved_ = false, captured_ = false;
   std::uint32_t placements_ = 0;
-  Snapshot<DeviceSample> latest_;
+  Snapshot<PollStroke> latest_;
 };
 
 }  // namespace ps

@@ -327,7 +327,7 @@ def walk(args):
             os.remove(os.path.join(args.out, name))
     cmd = [os.path.abspath(args.exe), "run", "--scene", os.path.abspath(args.scene), "--readouts-log", log,
            "--ui-report", os.path.join(args.out, "ui.json"), "--events", os.path.join(args.out, "events.jsonl"),
-           "--mute", "--quit-after", str(args.limit)]
+           "--mute", "--quit-after", str(args.limit)] + args.run_arg
     console = os.path.join(args.out, "console.txt")
     open(console, "w").close()  # this run's output only (a retry's follows the first try's)
     win = Window(None, log, console)
@@ -361,6 +361,9 @@ def main():
     # (ctest's TIMEOUT is above it); a walk that finishes sooner ends sooner.
     p.add_argument("--limit", type=float, default=400.0, help="the window quits after this many seconds regardless")
     p.add_argument("--start-timeout", type=float, default=60.0)
+    # A slow machine on demand: `--run-arg=--max-fps --run-arg=8` draws 8 frames a second, so the
+    # mouse is read 8 times a second, as on a loaded 2-core machine drawing a heavy scene.
+    p.add_argument("--run-arg", action="append", default=[], help="one more argument for `run` (repeat it)")
     p.add_argument("--inner", action="store_true", help=argparse.SUPPRESS)  # already under its X server
     args = p.parse_args()
     if not args.walk:

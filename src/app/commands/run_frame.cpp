@@ -167,19 +167,20 @@ void poll_device(const LiveWindow& win, const Renderer& r, LiveHaptics& h, doubl
   h.floor.set_pose(st.view_rotation, st.view_offset_mm);
   h.floor.set_top_mm(std::max(glm::dot(view.camera.position - view.plane.origin, view.plane.n), 60.0));
   view.floor = &h.floor;
-  const glm::dvec3 before = device->read(0.0).position_mm;
+  const glm::dvec3 before = device->newest().position_mm;
   device->poll(now_s, view);
   // The surface under a hovering pointer rose or fell (a slope, a silhouette: off a box's top
   // onto the floor): the hand is put at its new height rather than pulled there, so neither the
-  // filter's coasting between two readings (4-30 a second) nor the proxy's path cuts through
+  // hand's straight way between two readings (4-60 a second) nor the proxy's path cuts through
   // the surface. 0.25 mm: half a height step, so the keys' own steps are not placements. So is a
   // point under the pointer that jumped across a silhouette (off a bump onto what lies behind
   // it: pointing by ray), 1 mm: the surface's parallax is smooth elsewhere, so strokes over it
   // keep their speed.
-  // So is a hover whose straight way from the last reading to this one (and half as far again:
-  // the filter coasts on between readings) comes within half the hover height of a surface: over
-  // a curved surface the hovering places lie on a curve and the chord between two cuts it.
-  const glm::dvec3 after = device->read(0.0).position_mm;
+  // So is a hover whose straight way from the last reading to this one (the hand's way between
+  // them: GlfwInputDevice::read; and half as far again, a margin for the filter behind it) comes
+  // within half the hover height of a surface: over a curved surface the hovering places lie on a
+  // curve and the chord between two cuts it.
+  const glm::dvec3 after = device->newest().position_mm;
   const double hover = device->height_mm();
   const bool rose_or_fell = std::abs(glm::dot(after - before, view.plane.n)) > 0.25;
   // The cheap checks first: the path is traced only when they do not already place the hand.
@@ -195,8 +196,10 @@ void poll_device(const LiveWindow& win, const Renderer& r, LiveHaptics& h, doubl
     const glm::dvec3 proxy = glm::transpose(st.view_rotation) * (st.proxy_mm - st.view_offset_mm);
     return proxy_stranded(h.floor, after, proxy, hover + 2.0);
   };
-  if (h.loop() && hover >= 0.0 && (rose_or_fell || device->parallax_jump_mm() > 1.0 || cuts() || stranded()))
+  if (h.loop() && hover >= 0.0 && (rose_or_fell || device->parallax_jump_mm() > 1.0 || cuts() || stranded())) {
+    device->snap();  // else the hand would go on along the way from `before` the loop places it off
     h.loop()->place_hand(after, view.plane.n, h.floor.last_normal());
+  }
 }
 
 // The geometry felt changed (a scene switch, a reload, a panel edit, a 4D turn): the hand goes
@@ -209,7 +212,8 @@ std::optional<glm::dvec3> place_hand(const LiveWindow& win, const Renderer& r, L
   if (!win.input()) return std::nullopt;
   win.input()->reset_height();
   poll_device(win, r, h, h.loop()->state().read().time_s, true, new_view);
-  return win.input()->read(0.0).position_mm;
+  win.input()->snap();  // the hand is put there, not led there from the old scene's place
+  return win.input()->newest().position_mm;
 }
 
 // The Gabor tile bakes between frames, a band of ~40 ms each (about one 512^2 frame with the
