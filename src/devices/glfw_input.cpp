@@ -37,7 +37,10 @@ void GlfwInputDevice::poll(double now_s, const PointerView& view) {
   last_poll_s_ = now_s;
 }
 
-DeviceSample GlfwInputDevice::read(double now_s) { return latest_.read().read(now_s); }
+DeviceSample GlfwInputDevice::read(double now_s) {
+  const PollStroke k = latest_.read();
+  return strokes_ ? k.read(now_s) : k.to;
+}
 
 void GlfwInputDevice::snap() {
   PollStroke k = latest_.read();
