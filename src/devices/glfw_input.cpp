@@ -38,8 +38,7 @@ void GlfwInputDevice::poll(double now_s, const PointerView& view) {
 }
 
 DeviceSample GlfwInputDevice::read(double now_s) {
-  const PollStroke k = latest_.read();
-  return strokes_ ? k.read(now_s) : k.to;
+  return latest_.read().read(now_s);
 }
 
 void GlfwInputDevice::snap() {

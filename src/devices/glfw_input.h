@@ -46,13 +46,9 @@ class GlfwInputDevice final : public Device {
   // Main thread, once per frame: polls GLFW state (after glfwPollEvents), maps it with the
   // current view (camera, window, plane) and publishes.
   void poll(double now_s, const PointerView& view);
-  // Haptic thread: the hand at now_s on its way to the newest reading (time_s = now_s); without
-  // set_strokes(true), the newest reading itself, held until the next poll.
+  // Haptic thread: the hand at now_s on its way to the newest reading (time_s = now_s,
+  // devices/poll_stroke.h; docs/window.md, "Between two frames").
   DeviceSample read(double now_s) override;
-  // Before the haptic loop starts: read() gives the way between readings (run's window). The
-  // maze and the targeting screen keep held readings: with the way, window.maze_practice's hand
-  // did not move under load, not yet understood (docs/window.md, "Between two frames").
-  void set_strokes(bool on) { strokes_ = on; }
   // Any thread: the newest poll's reading, where the hand is heading (time_s: the poll's time).
   DeviceSample newest() const { return latest_.read().to; }
   // Main thread, after a poll: the hand is at the newest reading from now on, no way between (the
@@ -100,7 +96,6 @@ class GlfwInputDevice final : public Device {
   glm::dvec2 first_cursor_{0.0}, last_cursor_{0.0};
   bool have_cursor_ = false, cursor_moved_ = false, captured_ = false;
   std::uint32_t placements_ = 0;
-  bool strokes_ = false;
   Snapshot<PollStroke> latest_;
 };
 

@@ -13,6 +13,16 @@ wait_stream_file_past() {
   fail "$1 never reached $2 s"
 }
 
+# Waits (at most 30 s) until a sample in stream file $1 has x (its second column) past $2 mm:
+# the hand got to a motion sent, however long the frames that read it took.
+wait_stream_x_past() {
+  for _ in $(seq 300); do
+    [ -f "$1" ] && awk -v x="$2" '!/^#/ && $2 + 0 > x { found = 1 } END { exit !found }' "$1" && return 0
+    sleep 0.1
+  done
+  fail "$1: the hand never got past x = $2 mm"
+}
+
 # Session seconds of the first sample in stream file $1, once there is one (at most 30 s).
 stream_first_time_of() {
   for _ in $(seq 300); do

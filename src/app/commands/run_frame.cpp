@@ -242,7 +242,6 @@ Status open_haptics(const RunArgs& a, const LiveWindow& win, const Renderer& r, 
   h.floor.set_scene(h.scene);  // the first sample already hovers over what is under the pointer
   // The loop with the device stream's recording (--record; flushed once a second by a thread of
   // its own, frames or not: start_flushing).
-  if (win.input()) win.input()->set_strokes(true);  // before the loop reads it (docs/window.md, "Between two frames")
   h.recorded = std::make_unique<RecordedLoop>(win.device(), h.clock, params, h.scene, a.record, 0);
   fit_height_to_buttons(win, h, *h.scene);
   h.vibration = cli::open_live_vibration(a.live, r.scene(), *h.loop());
