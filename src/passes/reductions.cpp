@@ -8,12 +8,6 @@
 
 namespace ps {
 
-glm::dvec4 read_top_level(const gl::Texture& texture, int levels) {
-  float px[4] = {0, 0, 0, 0};
-  glGetTextureImage(texture.id(), levels - 1, GL_RGBA, GL_FLOAT, sizeof(px), px);
-  return {px[0], px[1], px[2], px[3]};
-}
-
 Status ReductionsPass::init(const std::string& glsl_root, const SurfacePass& surface) {
   auto max = gl::build_program({{"max_penetration.comp"}, {}}, glsl_root);
   if (!max) return max.error();
@@ -21,6 +15,10 @@ Status ReductionsPass::init(const std::string& glsl_root, const SurfacePass& sur
   if (!rows) return rows.error();
   auto weights = gl::build_program({{"displacement_weights.vert", "displacement_weights.frag"}, {}}, glsl_root);
   if (!weights) return weights.error();
+  auto normal_rows = gl::build_program({{"normal_rows.comp"}, {}}, glsl_root);
+  if (!normal_rows) return normal_rows.error();
+  normal_rows_ = std::move(normal_rows.value());
+  normal_ubo_ = gl::make_buffer(sizeof(ReduceBlock), nullptr, GL_DYNAMIC_STORAGE_BIT);
   max_ = std::move(max.value());
   rows_ = std::move(rows.value());
   weights_ = std::move(weights.value());
@@ -33,10 +31,30 @@ Status ReductionsPass::init(const std::string& glsl_root, const SurfacePass& sur
   return ok_status();
 }
 
+// Row sums on the GPU (glsl/normal_rows.comp), added here in double; divided by the padded
+// target's texel count, as the mip chain's top level was (normal_coverage: the fraction of the
+// padded target covered).
 ReductionResult ReductionsPass::mean_normal(const SurfacePass& surface) {
   ReductionResult r;
-  glGenerateTextureMipmap(surface.normal().id());
-  const glm::dvec4 n = read_top_level(surface.normal(), surface.mip_levels());
+  const int h = surface.height();
+  if (h > normal_rows_capacity_) {
+    normal_rows_capacity_ = h;
+    normal_rows_ssbo_ = gl::make_buffer(static_cast<GLsizeiptr>(h) * sizeof(glm::vec4), nullptr, GL_DYNAMIC_STORAGE_BIT);
+  }
+  const glm::ivec2 p = surface.padded_size();
+  const ReduceBlock block{{surface.width(), h, p.x, p.y}, {}, {}};
+  glNamedBufferSubData(normal_ubo_.id(), 0, sizeof(block), &block);
+  glBindBufferBase(GL_UNIFORM_BUFFER, 0, normal_ubo_.id());
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 2, normal_rows_ssbo_.id());
+  glBindTextureUnit(1, surface.normal().id());
+  glUseProgram(normal_rows_.id());
+  glDispatchCompute(static_cast<GLuint>((h + 63) / 64), 1, 1);
+  glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
+  std::vector<glm::vec4> rows(static_cast<size_t>(h));
+  glGetNamedBufferSubData(normal_rows_ssbo_.id(), 0, static_cast<GLsizeiptr>(rows.size() * sizeof(glm::vec4)), rows.data());
+  glm::dvec4 n(0.0);
+  for (const glm::vec4& row : rows) n += glm::dvec4(row);
+  n /= static_cast<double>(p.x) * static_cast<double>(p.y);
   r.normal_sum = glm::dvec3(n);
   r.normal_coverage = n.w;
   return r;

@@ -1,5 +1,5 @@
 // Reductions (thesis Table 4.2 steps 4-5) over the surface pass's targets:
-//   - reference normal: mean of the visible normals = top mip of the normal target (xyz / w);
+//   - reference normal: mean of the visible normals (xyz / w of the normal target's sum, by rows);
 //   - exact maximum penetration (compute, glsl/max_penetration.comp): max of -d, and of
 //     resistance * -d, over every pseudo-shadow fragment;
 //   - both compute passes read only the surface pass's shadow_rect(): outside it every pixel
@@ -9,8 +9,8 @@
 //     image row (sum w * disp, sum w), added here in double: sum(w * disp) / sum(w);
 //   - the `displacement` AOV, on request (displacement_aov): the same per-pixel (w * disp, w)
 //     drawn by glsl/displacement_weights.{vert,frag} into a texture made for the occasion.
-// The normal target is power-of-two RGBA32F: llvmpipe's mipmap is then the exact mean
-// (docs/gl-stack.md).
+// The normal target's rows are summed with Kahan's compensation and added in double: within a
+// float rounding of the exact mean, as the power-of-two mip chain it replaced was.
 #pragma once
 
 #include <cstdint>
@@ -67,8 +67,8 @@ struct ReductionsPass {
   };
 
   Status init(const std::string& glsl_root, const SurfacePass& surface);
-  // The mean visible normal: generates the normal target's mip chain and reads its top level.
-  // Fills normal_sum and normal_coverage only.
+  // The mean visible normal: the normal target's image region summed by rows on the GPU
+  // (glsl/normal_rows.comp), the rows in double here. Fills normal_sum and normal_coverage only.
   ReductionResult mean_normal(const SurfacePass& surface);
   // The pseudo-shadow's reductions over surface.shadow_rect(): maximum penetration, weighted
   // displacement, fragment counts (normal_sum and normal_coverage stay zero).
@@ -78,13 +78,13 @@ struct ReductionsPass {
   Result<gl::Texture> displacement_aov(const SurfacePass& surface) const;
 
  private:
-  gl::Program max_, rows_, weights_;
+  gl::Program max_, rows_, weights_, normal_rows_;
   gl::VertexArray empty_vao_;  // core profile draws need a bound VAO
   gl::Buffer ubo_, ssbo_, rows_ssbo_;
   int rows_capacity_ = 0;
+  gl::Buffer normal_ubo_, normal_rows_ssbo_;  // mean_normal's block and row sums
+  int normal_rows_capacity_ = 0;
 };
 
-// Reads the 1x1 top level of an RGBA32F mip chain.
-glm::dvec4 read_top_level(const gl::Texture& texture, int levels);
 
 }  // namespace ps

@@ -101,9 +101,8 @@ Status SurfacePass::init(const std::string& glsl_root, const Params& params) {
 
 Status SurfacePass::make_targets() {
   padded_ = {next_pow2(params_.width), next_pow2(params_.height)};
-  levels_ = 1 + std::bit_width(static_cast<unsigned>(std::max(padded_.x, padded_.y))) - 1;
   color_ = gl::make_texture_2d(padded_.x, padded_.y, GL_RGBA8);
-  normal_ = gl::make_texture_2d(padded_.x, padded_.y, GL_RGBA32F, levels_);
+  normal_ = gl::make_texture_2d(padded_.x, padded_.y, GL_RGBA32F);
   aov_ = gl::make_texture_2d(padded_.x, padded_.y, GL_RGBA32F);
   filter_need_ = gl::make_texture_2d(padded_.x, padded_.y, GL_R32F);
   for (const gl::Texture* t : {&color_, &normal_, &aov_, &filter_need_}) {

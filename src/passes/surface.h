@@ -4,15 +4,16 @@
 //            up to kMaxSceneBodies sphere casters per surface (their analytic pseudo-shadows
 //            darken the colour target only)
 //   outputs: color()  RGBA8    lit surface with the pseudo-shadow (gamma-encoded)
-//            normal() RGBA32F  (front-facing normal, 1) per covered pixel, full mip chain
+//            normal() RGBA32F  (front-facing normal, 1) per covered pixel (summed by rows for
+//                              the mean visible normal: ReductionsPass::mean_normal)
 //            aov()    RGBA32F  (intensity, distance d mm, texture in sigmas, resistance),
 //                              written inside shadow_rect() only (cleared there to
 //                              (0, NaN, 0, 0)); outside it the texture holds stale values and
 //                              the AOV is (0, NaN, 0, 0) by definition: d is NaN wherever no
 //                              probe is above the pixel (kNoProbeDistance)
-//   All targets are allocated at the next power of two of the image size (mipmap averages are
-//   exact only for power-of-two RGBA32F on llvmpipe, docs/gl-stack.md); the viewport covers the
-//   image, the padding stays cleared and drops out of every ratio computed from the mips.
+//   All targets are allocated at the next power of two of the image size (they were reduced by
+//   mipmaps, exact means only for power-of-two RGBA32F on llvmpipe, docs/gl-stack.md); the
+//   viewport covers the image and the padding stays cleared.
 // Shaders: glsl/surface.{vert,frag}; the PS_INTENSITY_LUT variant reads the material's
 // intensity_lut in IntensityLutBlock (uniform binding 1, make_intensity_lut_buffer).
 #pragma once
@@ -196,7 +197,6 @@ struct SurfacePass {
   int width() const { return params_.width; }
   int height() const { return params_.height; }
   glm::ivec2 padded_size() const { return padded_; }
-  int mip_levels() const { return levels_; }
 
  private:
   Result<const gl::Program*> program(SurfaceFlags variant);  // built on first use, then cached
@@ -204,7 +204,6 @@ struct SurfacePass {
   std::string glsl_root_;
   Params params_;
   glm::ivec2 padded_{1, 1};
-  int levels_ = 1;
   // Draws every surface (inside the caller's scissor box); shadow == false draws all of them
   // with their PS_SHADOW=0 variant.
   Status draw_all(const std::vector<SurfaceDraw>& draws, bool shadow);
