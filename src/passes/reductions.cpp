@@ -25,10 +25,24 @@ Status ReductionsPass::init(const std::string& glsl_root, const SurfacePass& sur
   empty_vao_ = gl::make_vertex_array();
   ubo_ = gl::make_buffer(sizeof(ReduceBlock), nullptr, GL_DYNAMIC_STORAGE_BIT);
   ssbo_ = gl::make_buffer(sizeof(MaxBlock), nullptr, GL_DYNAMIC_STORAGE_BIT);
-  rows_capacity_ = std::max(surface.height(), 1);
-  rows_ssbo_ = gl::make_buffer(static_cast<GLsizeiptr>(rows_capacity_) * sizeof(glm::vec4), nullptr,
-                               GL_DYNAMIC_STORAGE_BIT);
+  reserve_rows(std::max(surface.height(), 1));
   return ok_status();
+}
+
+void ReductionsPass::reserve_rows(int rows) {
+  if (rows <= rows_capacity_) return;
+  rows_capacity_ = rows;
+  rows_ssbo_ = gl::make_buffer(static_cast<GLsizeiptr>(rows) * sizeof(glm::vec4), nullptr, GL_DYNAMIC_STORAGE_BIT);
+}
+
+glm::dvec4 ReductionsPass::sum_rows(int first, int count) const {
+  std::vector<glm::vec4> rows(static_cast<size_t>(std::max(count, 0)));
+  if (!rows.empty())
+    glGetNamedBufferSubData(rows_ssbo_.id(), static_cast<GLintptr>(first) * sizeof(glm::vec4),
+                            static_cast<GLsizeiptr>(rows.size() * sizeof(glm::vec4)), rows.data());
+  glm::dvec4 sum(0.0);
+  for (const glm::vec4& row : rows) sum += glm::dvec4(row);
+  return sum;
 }
 
 // Row sums on the GPU (glsl/normal_rows.comp), added here in double; divided by the padded
@@ -37,24 +51,17 @@ Status ReductionsPass::init(const std::string& glsl_root, const SurfacePass& sur
 ReductionResult ReductionsPass::mean_normal(const SurfacePass& surface) {
   ReductionResult r;
   const int h = surface.height();
-  if (h > normal_rows_capacity_) {
-    normal_rows_capacity_ = h;
-    normal_rows_ssbo_ = gl::make_buffer(static_cast<GLsizeiptr>(h) * sizeof(glm::vec4), nullptr, GL_DYNAMIC_STORAGE_BIT);
-  }
+  reserve_rows(h);
   const glm::ivec2 p = surface.padded_size();
   const ReduceBlock block{{surface.width(), h, p.x, p.y}, {}, {}};
   glNamedBufferSubData(normal_ubo_.id(), 0, sizeof(block), &block);
   glBindBufferBase(GL_UNIFORM_BUFFER, 0, normal_ubo_.id());
-  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 2, normal_rows_ssbo_.id());
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 2, rows_ssbo_.id());
   glBindTextureUnit(1, surface.normal().id());
   glUseProgram(normal_rows_.id());
   glDispatchCompute(static_cast<GLuint>((h + 63) / 64), 1, 1);
   glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
-  std::vector<glm::vec4> rows(static_cast<size_t>(h));
-  glGetNamedBufferSubData(normal_rows_ssbo_.id(), 0, static_cast<GLsizeiptr>(rows.size() * sizeof(glm::vec4)), rows.data());
-  glm::dvec4 n(0.0);
-  for (const glm::vec4& row : rows) n += glm::dvec4(row);
-  n /= static_cast<double>(p.x) * static_cast<double>(p.y);
+  const glm::dvec4 n = sum_rows(0, h) / (static_cast<double>(p.x) * static_cast<double>(p.y));
   r.normal_sum = glm::dvec3(n);
   r.normal_coverage = n.w;
   return r;
@@ -93,12 +100,7 @@ ReductionResult ReductionsPass::run(const SurfacePass& surface, const Params& pa
   }
 
   // Rows y0 .. y1 - 1 of the row sums (the others were not written this frame).
-  std::vector<glm::vec4> rows(params.weighted ? static_cast<size_t>(std::max(0, std::min(rect.y1, rows_capacity_) - rect.y0)) : 0);
-  if (!rows.empty())
-    glGetNamedBufferSubData(rows_ssbo_.id(), static_cast<GLintptr>(rect.y0) * sizeof(glm::vec4),
-                            static_cast<GLsizeiptr>(rows.size() * sizeof(glm::vec4)), rows.data());
-  glm::dvec4 d(0.0);
-  for (const glm::vec4& row : rows) d += glm::dvec4(row);
+  const glm::dvec4 d = params.weighted ? sum_rows(rect.y0, std::min(rect.y1, rows_capacity_) - rect.y0) : glm::dvec4(0.0);
   if (d.w > 0.0) r.weighted_displacement = glm::dvec3(d) / d.w;
   MaxBlock m;
   glGetNamedBufferSubData(ssbo_.id(), 0, sizeof(m), &m);

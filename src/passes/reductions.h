@@ -78,12 +78,18 @@ struct ReductionsPass {
   Result<gl::Texture> displacement_aov(const SurfacePass& surface) const;
 
  private:
+  // Grows rows_ssbo_ to `rows` vec4s at least.
+  void reserve_rows(int rows);
+  // Rows first .. first + count - 1 of rows_ssbo_, as a compute pass wrote them, added in double.
+  glm::dvec4 sum_rows(int first, int count) const;
+
   gl::Program max_, rows_, weights_, normal_rows_;
   gl::VertexArray empty_vao_;  // core profile draws need a bound VAO
+  // rows_ssbo_: one vec4 per image row, written and read back within one call (run()'s
+  // displacement rows, mean_normal()'s normal rows).
   gl::Buffer ubo_, ssbo_, rows_ssbo_;
   int rows_capacity_ = 0;
-  gl::Buffer normal_ubo_, normal_rows_ssbo_;  // mean_normal's block and row sums
-  int normal_rows_capacity_ = 0;
+  gl::Buffer normal_ubo_;  // mean_normal's block (ubo_ keeps run()'s for displacement_aov)
 };
 
 
