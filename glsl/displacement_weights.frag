@@ -2,6 +2,7 @@
 // The `displacement` AOV (rendered on request only): per fragment (w * disp, w), the values
 // displacement_rows.comp sums for the frame's average (lib/displacement_weight.glsl).
 #include "lib/reduce_block.glsl"
+#include "lib/max_block.glsl"
 #include "lib/displacement_weight.glsl"
 
 layout(binding = 0) uniform sampler2D u_aov;     // (intensity, d, texture, resistance)

@@ -8,7 +8,19 @@
 
 namespace ps {
 
-Status ReductionsPass::init(const std::string& glsl_root, const SurfacePass& surface) {
+Status ReductionsPass::init(const std::string& glsl_root, const SurfacePass& surface, ReductionMethod method) {
+  method_ = method;
+  if (method == ReductionMethod::kFragment) {
+    auto max_rows = gl::build_program({{"displacement_weights.vert", "max_penetration_rows.frag"}, {}}, glsl_root);
+    if (!max_rows) return max_rows.error();
+    auto rows_frag = gl::build_program({{"displacement_weights.vert", "displacement_rows.frag"}, {}}, glsl_root);
+    if (!rows_frag) return rows_frag.error();
+    auto normal_frag = gl::build_program({{"displacement_weights.vert", "normal_rows.frag"}, {}}, glsl_root);
+    if (!normal_frag) return normal_frag.error();
+    max_rows_frag_ = std::move(max_rows.value());
+    rows_frag_ = std::move(rows_frag.value());
+    normal_rows_frag_ = std::move(normal_frag.value());
+  }
   auto max = gl::build_program({{"max_penetration.comp"}, {}}, glsl_root);
   if (!max) return max.error();
   auto rows = gl::build_program({{"displacement_rows.comp"}, {}}, glsl_root);
@@ -32,12 +44,50 @@ Status ReductionsPass::init(const std::string& glsl_root, const SurfacePass& sur
 void ReductionsPass::reserve_rows(int rows) {
   if (rows <= rows_capacity_) return;
   rows_capacity_ = rows;
-  rows_ssbo_ = gl::make_buffer(static_cast<GLsizeiptr>(rows) * sizeof(glm::vec4), nullptr, GL_DYNAMIC_STORAGE_BIT);
+  if (method_ == ReductionMethod::kCompute) {
+    rows_ssbo_ = gl::make_buffer(static_cast<GLsizeiptr>(rows) * sizeof(glm::vec4), nullptr, GL_DYNAMIC_STORAGE_BIT);
+    return;
+  }
+  for (gl::Texture& t : row_tex_) t = gl::make_texture_2d(1, rows, GL_RGBA32F);
+  max_rows_fbo_ = gl::make_framebuffer();
+  glNamedFramebufferTexture(max_rows_fbo_.id(), GL_COLOR_ATTACHMENT0, row_tex_[0].id(), 0);
+  glNamedFramebufferTexture(max_rows_fbo_.id(), GL_COLOR_ATTACHMENT1, row_tex_[1].id(), 0);
+  const GLenum both[2] = {GL_COLOR_ATTACHMENT0, GL_COLOR_ATTACHMENT1};
+  glNamedFramebufferDrawBuffers(max_rows_fbo_.id(), 2, both);
+  sums_fbo_ = gl::make_framebuffer();
+  glNamedFramebufferTexture(sums_fbo_.id(), GL_COLOR_ATTACHMENT0, row_tex_[0].id(), 0);
+}
+
+void ReductionsPass::draw_rows(const gl::Program& program, const gl::Framebuffer& fbo, int first, int count) const {
+  if (count <= 0) return;
+  // The scissor keeps the fragments to the rows asked for (one column: one fragment per row).
+  glBindFramebuffer(GL_FRAMEBUFFER, fbo.id());
+  glViewport(0, 0, 1, rows_capacity_);
+  glDisable(GL_DEPTH_TEST);
+  glDisable(GL_BLEND);
+  glEnable(GL_SCISSOR_TEST);
+  glScissor(0, first, 1, count);
+  glUseProgram(program.id());
+  glBindVertexArray(empty_vao_.id());
+  glDrawArrays(GL_TRIANGLES, 0, 3);
+  glBindVertexArray(0);
+  glDisable(GL_SCISSOR_TEST);
+  glBindFramebuffer(GL_FRAMEBUFFER, 0);
+}
+
+std::vector<glm::vec4> ReductionsPass::read_rows(int target, int first, int count) const {
+  std::vector<glm::vec4> rows(static_cast<size_t>(std::max(count, 0)));
+  if (!rows.empty())
+    glGetTextureSubImage(row_tex_[target].id(), 0, 0, first, 0, 1, count, 1, GL_RGBA, GL_FLOAT,
+                         static_cast<GLsizei>(rows.size() * sizeof(glm::vec4)), rows.data());
+  return rows;
 }
 
 glm::dvec4 ReductionsPass::sum_rows(int first, int count) const {
   std::vector<glm::vec4> rows(static_cast<size_t>(std::max(count, 0)));
-  if (!rows.empty())
+  if (method_ == ReductionMethod::kFragment)
+    rows = read_rows(0, first, count);
+  else if (!rows.empty())
     glGetNamedBufferSubData(rows_ssbo_.id(), static_cast<GLintptr>(first) * sizeof(glm::vec4),
                             static_cast<GLsizeiptr>(rows.size() * sizeof(glm::vec4)), rows.data());
   glm::dvec4 sum(0.0);
@@ -58,9 +108,13 @@ ReductionResult ReductionsPass::mean_normal(const SurfacePass& surface) {
   glBindBufferBase(GL_UNIFORM_BUFFER, 0, normal_ubo_.id());
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 2, rows_ssbo_.id());
   glBindTextureUnit(1, surface.normal().id());
-  glUseProgram(normal_rows_.id());
-  glDispatchCompute(static_cast<GLuint>((h + 63) / 64), 1, 1);
-  glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
+  if (method_ == ReductionMethod::kFragment) {
+    draw_rows(normal_rows_frag_, sums_fbo_, 0, h);
+  } else {
+    glUseProgram(normal_rows_.id());
+    glDispatchCompute(static_cast<GLuint>((h + 63) / 64), 1, 1);
+    glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
+  }
   const glm::dvec4 n = sum_rows(0, h) / (static_cast<double>(p.x) * static_cast<double>(p.y));
   r.normal_sum = glm::dvec3(n);
   r.normal_coverage = n.w;
@@ -88,7 +142,17 @@ ReductionResult ReductionsPass::run(const SurfacePass& surface, const Params& pa
   // One invocation per row of the rectangle (none when it is empty).
   const auto groups = static_cast<GLuint>((rect.height() + 63) / 64);
 
-  if (groups > 0) {
+  MaxBlock m;
+  if (method_ == ReductionMethod::kFragment) {
+    m = run_fragment_max(rect);
+    if (params.weighted && !rect.empty()) {
+      const glm::ivec4 box = params.penetrating_box ? m.penetrating_box
+                                                    : glm::ivec4(rect.x0, rect.y0, rect.x1 - 1, rect.y1 - 1);
+      glProgramUniform1f(rows_frag_.id(), 0, std::bit_cast<float>(m.max_penetration_bits));
+      glProgramUniform4i(rows_frag_.id(), 1, box.x, box.y, box.z, box.w);
+      draw_rows(rows_frag_, sums_fbo_, rect.y0, rect.height());
+    }
+  } else if (groups > 0) {
     glUseProgram(max_.id());
     glDispatchCompute(groups, 1, 1);
     glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_BUFFER_UPDATE_BARRIER_BIT);
@@ -102,14 +166,46 @@ ReductionResult ReductionsPass::run(const SurfacePass& surface, const Params& pa
   // Rows y0 .. y1 - 1 of the row sums (the others were not written this frame).
   const glm::dvec4 d = params.weighted ? sum_rows(rect.y0, std::min(rect.y1, rows_capacity_) - rect.y0) : glm::dvec4(0.0);
   if (d.w > 0.0) r.weighted_displacement = glm::dvec3(d) / d.w;
-  MaxBlock m;
-  glGetNamedBufferSubData(ssbo_.id(), 0, sizeof(m), &m);
+  if (method_ == ReductionMethod::kCompute) glGetNamedBufferSubData(ssbo_.id(), 0, sizeof(m), &m);
   r.max_penetration_mm = std::bit_cast<float>(m.max_penetration_bits);
   r.max_resisted_penetration_mm = std::bit_cast<float>(m.max_resisted_penetration_bits);
   r.penetrating_fragments = m.penetrating_fragments;
   r.covered_fragments = m.covered_fragments;
   r.max_filter_need = std::bit_cast<float>(m.max_filter_need_bits);
   return r;
+}
+
+// The rows of max_penetration_rows.frag reduced as the compute path's atomics reduce them: the
+// maxima are float maxima (the atomics' uint order of non-negative floats is the float order),
+// the counts sums, the box the columns' and rows' extremes over the rows with penetration.
+MaxBlock ReductionsPass::run_fragment_max(const PixelRect& rect) {
+  MaxBlock m;
+  if (!rect.empty()) {
+    draw_rows(max_rows_frag_, max_rows_fbo_, rect.y0, rect.height());
+    const std::vector<glm::vec4> maxima = read_rows(0, rect.y0, rect.height());
+    const std::vector<glm::vec4> spans = read_rows(1, rect.y0, rect.height());
+    float pen = 0.0f, res = 0.0f, need = 0.0f;
+    for (size_t i = 0; i < maxima.size(); ++i) {
+      const glm::vec4& a = maxima[i];
+      const glm::vec4& b = spans[i];
+      if (a.w == 0.0f) continue;  // no covered pixel in the row
+      m.covered_fragments += static_cast<std::uint32_t>(a.w);
+      need = std::max(need, a.z);
+      if (b.x == 0.0f) continue;  // no penetrating pixel
+      const int y = rect.y0 + static_cast<int>(i);
+      m.penetrating_fragments += static_cast<std::uint32_t>(b.x);
+      pen = std::max(pen, a.x);
+      res = std::max(res, a.y);
+      m.penetrating_box = {std::min(m.penetrating_box.x, static_cast<int>(b.y)), std::min(m.penetrating_box.y, y),
+                           std::max(m.penetrating_box.z, static_cast<int>(b.z)), std::max(m.penetrating_box.w, y)};
+    }
+    m.max_penetration_bits = std::bit_cast<std::uint32_t>(pen);
+    m.max_resisted_penetration_bits = std::bit_cast<std::uint32_t>(res);
+    m.max_filter_need_bits = std::bit_cast<std::uint32_t>(need);
+  }
+  // displacement_aov's pass reads the block from ssbo_ (desktop GL only, on request).
+  glNamedBufferSubData(ssbo_.id(), 0, sizeof(m), &m);
+  return m;
 }
 
 Result<gl::Texture> ReductionsPass::displacement_aov(const SurfacePass& surface) const {

@@ -11,10 +11,15 @@
 //     drawn by glsl/displacement_weights.{vert,frag} into a texture made for the occasion.
 // The normal target's rows are summed with Kahan's compensation and added in double: within a
 // float rounding of the exact mean, as the power-of-two mip chain it replaced was.
+// Two paths run the same per-row arithmetic (glsl/lib/reduce_rows.glsl) and give the same bits:
+// compute shaders with atomics and storage buffers (the default), and fragment shaders that write
+// one texel per row into one-texel-wide targets, reduced on the host (what WebGL2 can run: no
+// compute, no storage buffers, no atomics). ReductionPathsGLTest compares the two.
 #pragma once
 
 #include <cstdint>
 #include <string>
+#include <vector>
 
 #include <glm/glm.hpp>
 
@@ -57,6 +62,12 @@ struct ReductionResult {
   double max_filter_need = 0.0;
 };
 
+// How the rows are computed (both give the same bits).
+enum class ReductionMethod {
+  kCompute,   // glsl/*.comp: one invocation per row, atomics into a storage buffer
+  kFragment,  // glsl/*_rows.frag: one fragment per row into a one-texel-wide target, read back
+};
+
 struct ReductionsPass {
   struct Params {
     double weight_exponent = 20.0;  // c
@@ -66,7 +77,9 @@ struct ReductionsPass {
     bool penetrating_box = true;
   };
 
-  Status init(const std::string& glsl_root, const SurfacePass& surface);
+  Status init(const std::string& glsl_root, const SurfacePass& surface,
+              ReductionMethod method = ReductionMethod::kCompute);
+  ReductionMethod method() const { return method_; }
   // The mean visible normal: the normal target's image region summed by rows on the GPU
   // (glsl/normal_rows.comp), the rows in double here. Fills normal_sum and normal_coverage only.
   ReductionResult mean_normal(const SurfacePass& surface);
@@ -78,11 +91,21 @@ struct ReductionsPass {
   Result<gl::Texture> displacement_aov(const SurfacePass& surface) const;
 
  private:
-  // Grows rows_ssbo_ to `rows` vec4s at least.
+  // Grows rows_ssbo_ (compute) or the row targets (fragment) to `rows` rows at least.
   void reserve_rows(int rows);
-  // Rows first .. first + count - 1 of rows_ssbo_, as a compute pass wrote them, added in double.
+  // Rows first .. first + count - 1 of rows_ssbo_ (compute) or of row target 0 (fragment), as
+  // the last pass wrote them, added in double.
   glm::dvec4 sum_rows(int first, int count) const;
+  // The fragment path: `program` drawn into `fbo` over rows first .. first + count - 1 of the
+  // row targets (one fragment per row), and rows of row_tex_[target] read back.
+  void draw_rows(const gl::Program& program, const gl::Framebuffer& fbo, int first, int count) const;
+  std::vector<glm::vec4> read_rows(int target, int first, int count) const;
+  // The fragment path of run(): the rows of max_penetration_rows.frag reduced to the block the
+  // compute path's atomics give, then displacement_rows.frag. Also stores the block in ssbo_,
+  // for displacement_aov.
+  MaxBlock run_fragment_max(const PixelRect& rect);
 
+  ReductionMethod method_ = ReductionMethod::kCompute;
   gl::Program max_, rows_, weights_, normal_rows_;
   gl::VertexArray empty_vao_;  // core profile draws need a bound VAO
   // rows_ssbo_: one vec4 per image row, written and read back within one call (run()'s
@@ -90,6 +113,12 @@ struct ReductionsPass {
   gl::Buffer ubo_, ssbo_, rows_ssbo_;
   int rows_capacity_ = 0;
   gl::Buffer normal_ubo_;  // mean_normal's block (ubo_ keeps run()'s for displacement_aov)
+  // The fragment path: its programs, and one-texel-wide RGBA32F row targets (rows_capacity_
+  // high): max_rows_fbo_ draws (max, span) into row_tex_[0], row_tex_[1]; sums_fbo_ draws the
+  // displacement or normal rows into row_tex_[0].
+  gl::Program max_rows_frag_, rows_frag_, normal_rows_frag_;
+  gl::Texture row_tex_[2];
+  gl::Framebuffer max_rows_fbo_, sums_fbo_;
 };
 
 

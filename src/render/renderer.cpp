@@ -127,7 +127,7 @@ Status Renderer::init_passes() {
   const RenderSettings& rs = scene_.render;
   if (Status s = probe_depth_.init(options_.glsl_root, {rs.depth_map_size}); !s) return s;
   if (Status s = surface_.init(options_.glsl_root, {rs.width, rs.height}); !s) return s;
-  if (Status s = reductions_.init(options_.glsl_root, surface_); !s) return s;
+  if (Status s = reductions_.init(options_.glsl_root, surface_, options_.reductions); !s) return s;
   return probe_view_.init(options_.glsl_root, surface_);
 }
 

@@ -95,6 +95,10 @@ struct RendererOptions {
   // the rest of the last frame; the results are the same bits (tests compare). false: every
   // frame redraws every pixel (FrameStats::drawn_pixels tells which).
   bool incremental = true;
+  // The reductions' path (passes/reductions.h): compute shaders (the default), or fragment
+  // shaders with the rows reduced on the host, what WebGL2 can run. The same bits either way
+  // (ReductionPathsGLTest); `render --reductions fragment` draws with the second.
+  ReductionMethod reductions = ReductionMethod::kCompute;
   // The session's view (render/view.h): what each frame draws besides the scene, owned by the
   // session, which hands a rebuilt or switched renderer its view and copies nothing over; it must
   // be of this scene (make_view, rebuilt_view). create() reads only its deformable surfaces.

@@ -31,6 +31,7 @@ struct RenderArgs {
   std::string out = "render.png", stats_path;
   std::vector<std::pair<std::string, std::string>> aovs;
   bool quiet = false, show_probe = false;
+  std::string reductions = "compute";
 };
 
 void check_aov(const std::string& name, const std::string& file) {
@@ -75,6 +76,13 @@ void declare(cli::Command& cmd, RenderArgs& a) {
   app.add_flag("--show-probe", a.show_probe,
                "also draw the probe itself (where the haptic proxy is, after the push-out) over the "
                "pseudo-shadow; AOVs and stats are unchanged");
+  app.add_option("--reductions", a.reductions,
+                 "how the reductions (maximum penetration, displacement, mean normal) run: compute "
+                 "(default; compute shaders) or fragment (fragment shaders, the rows added on the "
+                 "host: the path a WebGL2 build has); the same image, AOVs and stats bit for bit")
+      ->check(CLI::IsMember({"compute", "fragment"}))
+      ->type_name("compute|fragment")
+      ->group(cli::kGlGroup);
   cli::add_quiet_option(app, a.quiet);
 }
 
@@ -127,6 +135,7 @@ int render(const cli::Command& cmd, const RenderArgs& a) {
   RendererOptions options;
   options.expected_frames = scene->render.frames;  // a short render skips a tile bake it would not repay
   options.view = view.value();
+  options.reductions = a.reductions == "fragment" ? ReductionMethod::kFragment : ReductionMethod::kCompute;
   auto renderer = open_renderer(scene.value(), options);
   if (!renderer) return cmd.fail(renderer.error());
   const int frames = scene->render.frames;
