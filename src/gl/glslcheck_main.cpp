@@ -1,6 +1,8 @@
 // ps_glslcheck: build-time GLSL validation with glslang, through the same preprocess_shader the
 // renderer uses at run time, so a shader that passes here compiles the same text on Mesa.
-//   ps_glslcheck --root DIR [--define NAME=VALUE]... [--variant "A=1 B=0"]... FILE...
+//   ps_glslcheck --root DIR [--es] [--define NAME=VALUE]... [--variant "A=1 B=0"]... FILE...
+// --es: each file rewritten to GLSL ES 3.00 (gl/shader_es.h, the browser build's text) and
+// checked under ES 3.00's rules instead.
 // Every file is checked once per variant (--define applies to all); the stages of one variant
 // that share a path stem (surface.vert + surface.frag) are linked together. Errors print as
 // "file:line: error: ..." and the exit status is 1 (2 for bad usage).
@@ -15,6 +17,7 @@
 #include <sstream>
 
 #include "gl/shader.h"
+#include "gl/shader_es.h"
 
 namespace {
 
@@ -26,6 +29,7 @@ struct Args {
   Defines defines;
   std::vector<Defines> variants;
   std::vector<std::string> files;
+  bool es = false;
 };
 
 bool parse_define(const std::string& text, Defines& out) {
@@ -66,6 +70,8 @@ bool parse_args(int argc, char** argv, Args& args) {
         std::cerr << "ps_glslcheck: bad --variant \"" << argv[i] << "\" (want \"A=1 B=0\")\n";
         return false;
       }
+    } else if (arg == "--es") {
+      args.es = true;
     } else if (arg.rfind("--", 0) == 0) {
       std::cerr << "ps_glslcheck: unknown option " << arg << "\n";
       return false;
@@ -74,7 +80,7 @@ bool parse_args(int argc, char** argv, Args& args) {
     }
   }
   if (args.files.empty()) {
-    std::cerr << "usage: ps_glslcheck --root DIR [--define N=V]... [--variant \"A=1 B=0\"]... FILE...\n";
+    std::cerr << "usage: ps_glslcheck --root DIR [--es] [--define N=V]... [--variant \"A=1 B=0\"]... FILE...\n";
     return false;
   }
   if (args.variants.empty()) args.variants.emplace_back();
@@ -105,9 +111,26 @@ bool parse_stage(glslang::TShader& shader, const std::string& path, const Args& 
     std::cout << source.error().message << variant_label(variant) << "\n";
     return false;
   }
-  const char* text = source->text.c_str();
-  shader.setStrings(&text, 1);
   const EShLanguage stage = *glslang_stage(path);
+  std::string es_text;
+  if (args.es) {
+    auto es = ps::gl::to_glsl_es(source.value(), ps::gl::stage_from_path(path));
+    if (!es) {
+      std::cout << es.error().message << variant_label(variant) << "\n";
+      return false;
+    }
+    es_text = std::move(es->text);
+  }
+  const char* text = args.es ? es_text.c_str() : source->text.c_str();
+  shader.setStrings(&text, 1);
+  if (args.es) {
+    // GLSL ES 3.00 as WebGL2 takes it: the #version 300 es line decides the rules.
+    const bool ok = shader.parse(GetDefaultResources(), 300, EEsProfile, false, false, EShMsgDefault);
+    const std::string log = ps::gl::map_shader_log(shader.getInfoLog(), source->files);
+    if (!log.empty() && log != "\n") std::cout << log;
+    if (!ok) std::cout << path << ": glslang rejected this shader as GLSL ES 3.00" << variant_label(variant) << "\n";
+    return ok;
+  }
   // OpenGL GLSL 450. The OpenGL client applies ARB_gl_spirv rules, under which loose uniforms
   // ("non-opaque uniform variables need a layout(location=L)") and unbound samplers are errors;
   // Mesa compiles this text as plain GLSL where they are legal, so let glslang assign them.
