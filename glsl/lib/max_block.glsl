@@ -1,4 +1,4 @@
-// Storage contract of the compute reductions (glsl/*.comp, displacement_weights.frag); mirrored
+// Storage contract of the compute reductions (glsl/max_penetration.comp, displacement_rows.comp); mirrored
 // in src/passes/reductions.h (MaxBlock). The fragment path (glsl/*_rows.frag) writes per-row
 // values instead and ReductionsPass reduces them on the host to the same block.
 #pragma once

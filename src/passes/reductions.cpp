@@ -167,6 +167,7 @@ ReductionResult ReductionsPass::run(const SurfacePass& surface, const Params& pa
   const glm::dvec4 d = params.weighted ? sum_rows(rect.y0, std::min(rect.y1, rows_capacity_) - rect.y0) : glm::dvec4(0.0);
   if (d.w > 0.0) r.weighted_displacement = glm::dvec3(d) / d.w;
   if (method_ == ReductionMethod::kCompute) glGetNamedBufferSubData(ssbo_.id(), 0, sizeof(m), &m);
+  last_max_penetration_ = std::bit_cast<float>(m.max_penetration_bits);
   r.max_penetration_mm = std::bit_cast<float>(m.max_penetration_bits);
   r.max_resisted_penetration_mm = std::bit_cast<float>(m.max_resisted_penetration_bits);
   r.penetrating_fragments = m.penetrating_fragments;
@@ -203,8 +204,6 @@ MaxBlock ReductionsPass::run_fragment_max(const PixelRect& rect) {
     m.max_resisted_penetration_bits = std::bit_cast<std::uint32_t>(res);
     m.max_filter_need_bits = std::bit_cast<std::uint32_t>(need);
   }
-  // displacement_aov's pass reads the block from ssbo_ (desktop GL only, on request).
-  glNamedBufferSubData(ssbo_.id(), 0, sizeof(m), &m);
   return m;
 }
 
@@ -215,9 +214,9 @@ Result<gl::Texture> ReductionsPass::displacement_aov(const SurfacePass& surface)
   glNamedFramebufferTexture(fbo.id(), GL_COLOR_ATTACHMENT0, tex.id(), 0);
   if (glCheckNamedFramebufferStatus(fbo.id(), GL_FRAMEBUFFER) != GL_FRAMEBUFFER_COMPLETE)
     return make_error("reductions: displacement AOV framebuffer incomplete (RGBA32F)");
-  // ubo_ and ssbo_ still hold the last run()'s size, exponent and maximum.
+  // ubo_ still holds the last run()'s size and exponent; its maximum is kept here.
   glBindBufferBase(GL_UNIFORM_BUFFER, 0, ubo_.id());
-  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, ssbo_.id());
+  glProgramUniform1f(weights_.id(), 0, last_max_penetration_);
   glBindTextureUnit(0, surface.aov().id());
   glBindTextureUnit(1, surface.normal().id());
   glBindFramebuffer(GL_FRAMEBUFFER, fbo.id());

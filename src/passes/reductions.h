@@ -101,8 +101,7 @@ struct ReductionsPass {
   void draw_rows(const gl::Program& program, const gl::Framebuffer& fbo, int first, int count) const;
   std::vector<glm::vec4> read_rows(int target, int first, int count) const;
   // The fragment path of run(): the rows of max_penetration_rows.frag reduced to the block the
-  // compute path's atomics give, then displacement_rows.frag. Also stores the block in ssbo_,
-  // for displacement_aov.
+  // compute path's atomics give, then displacement_rows.frag.
   MaxBlock run_fragment_max(const PixelRect& rect);
 
   ReductionMethod method_ = ReductionMethod::kCompute;
@@ -112,6 +111,7 @@ struct ReductionsPass {
   // displacement rows, mean_normal()'s normal rows).
   gl::Buffer ubo_, ssbo_, rows_ssbo_;
   int rows_capacity_ = 0;
+  float last_max_penetration_ = 0.0f;  // the last run()'s, for displacement_aov
   gl::Buffer normal_ubo_;  // mean_normal's block (ubo_ keeps run()'s for displacement_aov)
   // The fragment path: its programs, and one-texel-wide RGBA32F row targets (rows_capacity_
   // high): max_rows_fbo_ draws (max, span) into row_tex_[0], row_tex_[1]; sums_fbo_ draws the

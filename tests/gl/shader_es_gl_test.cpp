@@ -138,7 +138,8 @@ std::vector<Pair> programs() {
   p.push_back({"probe_depth_mesh.vert", "probe_depth_mesh.frag", {}});
   p.push_back({"probe_view.vert", "probe_view.frag", {}});
   p.push_back({"gabor_bake.vert", "gabor_bake.frag", {}});
-  for (const char* f : {"max_penetration_rows.frag", "displacement_rows.frag", "normal_rows.frag"})
+  for (const char* f : {"max_penetration_rows.frag", "displacement_rows.frag", "normal_rows.frag",
+                        "displacement_weights.frag"})
     p.push_back({"displacement_weights.vert", f, {}});
   return p;
 }

@@ -109,8 +109,7 @@ TEST_F(ShaderEsTest, OtherVersionIsRefused) {
   EXPECT_NE(es.error().message.find("expected #version 450 first"), std::string::npos) << es.error().message;
 }
 
-// Every shipped vertex and fragment shader but the displacement AOV's (it reads the compute
-// path's storage block) has an ES form; each recorded name is declared in the text, each
+// Every shipped vertex and fragment shader has an ES form; each recorded name is declared in the text, each
 // recorded unit or binding is the one the desktop source gave, and no layout(binding) is left.
 TEST(ShippedShadersEs, EveryRasterShaderHasAnEsFormWithItsRecords) {
   const std::string root = ps::gl::default_glsl_root();
@@ -121,10 +120,6 @@ TEST(ShippedShadersEs, EveryRasterShaderHasAnEsFormWithItsRecords) {
     auto src = preprocess_shader(entry.path().string(), {}, root);
     ASSERT_TRUE(src.ok()) << name << ": " << src.error().message;
     auto es = to_glsl_es(src.value(), ps::gl::stage_from_path(name));
-    if (name == "displacement_weights.frag") {
-      EXPECT_FALSE(es.ok()) << name << " reads a storage block; it has no ES form";
-      continue;
-    }
     ASSERT_TRUE(es.ok()) << name << ": " << es.error().message;
     EXPECT_EQ(es->text.find("binding"), std::string::npos) << name;
     for (const auto& [sampler, unit] : es->sampler_units) {
@@ -137,8 +132,8 @@ TEST(ShippedShadersEs, EveryRasterShaderHasAnEsFormWithItsRecords) {
       EXPECT_NE(es->text.find("layout(std140) uniform " + block), std::string::npos) << name << " " << block;
     ++converted;
   }
-  EXPECT_GE(converted, 14);  // 15 vertex and fragment shaders today, one without an ES form
-  EXPECT_GE(samplers, 8);
+  EXPECT_GE(converted, 15);  // 15 vertex and fragment shaders today
+  EXPECT_GE(samplers, 10);
 }
 
 }  // namespace

@@ -180,7 +180,7 @@ TEST(UniformLayoutTest, ProbeDepthBlockMatches) {
 }
 
 TEST(UniformLayoutTest, ReduceBlockMatches) {
-  const auto o = block_offsets("displacement_weights.frag", EShLangFragment);
+  const auto o = block_offsets("max_penetration.comp", EShLangCompute);
   ASSERT_FALSE(o.empty());
   EXPECT_MEMBER(o, "u_size", ReduceBlock, size);
   EXPECT_MEMBER(o, "u_params", ReduceBlock, params);
