@@ -1,0 +1,55 @@
+// The web core probe (tools/web_core_probe.sh): the default scene's haptic side, driven the way a
+// web page would drive it (CatchUpDriver, 90 animation frames of 16.7 ms), prints the final
+// state with every digit. Built twice, natively and with Emscripten to WebAssembly run by node;
+// the two lines must be equal. The scene's albedo texture is left out: the probe has no image
+// reader (images would be decoded by the page).
+#include <chrono>
+#include <cstdio>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "devices/sample_log.h"
+#include "haptics/catch_up.h"
+#include "haptics/haptic_loop.h"
+#include "scene/scene_io.h"
+#include "world/haptic_scene.h"
+
+using namespace ps;
+
+int main(int argc, char** argv) {
+  if (argc != 2) {
+    std::fprintf(stderr, "usage: probe SCENES_DIR\n");
+    return 2;
+  }
+  std::string text(default_scene_text()), kept;
+  for (size_t at = 0; at < text.size();) {
+    size_t end = text.find('\n', at);
+    if (end == std::string::npos) end = text.size();
+    const std::string line = text.substr(at, end - at);
+    if (line.rfind("albedo_texture", 0) != 0) kept += line + "\n";
+    at = end + 1;
+  }
+  auto scene = parse_scene(kept, "<default, untextured>", argv[1], {});
+  if (!scene) {
+    std::printf("scene: %s\n", scene.error().message.c_str());
+    return 1;
+  }
+  auto haptic = world::HapticScene::build(scene.value());
+  if (!haptic) {
+    std::printf("haptic scene: %s\n", haptic.error().message.c_str());
+    return 1;
+  }
+  // Down onto the plank, pressing 1 mm into it, then a stroke along x.
+  const std::vector<DeviceSample> stroke = {{0.0, {0, 0, 12}, 0, true}, {0.5, {5, 0, 6}, 0, true}, {1.5, {25, 3, 6}, 1, true}};
+  LogDevice device(stroke, true, "stroke");
+  FakeClock clock;
+  HapticLoop loop(device, clock, HapticLoopParams{}, std::make_shared<const world::HapticScene>(std::move(haptic.value())));
+  CatchUpDriver driver(loop, clock);
+  for (int i = 0; i < 90; ++i) driver.advance_to(std::chrono::nanoseconds(16'666'667LL * i));
+  const HapticState s = loop.state().read();
+  std::printf("tick %llu time %.17g proxy %.17g %.17g %.17g force %.17g %.17g %.17g\n",
+              static_cast<unsigned long long>(s.tick), s.time_s, s.proxy_mm.x, s.proxy_mm.y, s.proxy_mm.z, s.force_n.x,
+              s.force_n.y, s.force_n.z);
+  return 0;
+}
