@@ -5,7 +5,7 @@
 #   sudo apt-get install emscripten        # Debian 12: Emscripten 3.1.6, clang 14, node-acorn
 #   cmake --build build --target ps_haptics ps_world ps_scene ps_devices ps_fourd ps_image ps_file_io
 #   bash tools/web_core_probe.sh [OUT_DIR]  # default: build/web_core_probe
-# Prints the files that do not compile for WebAssembly, the two probes' lines, and exits 0 when
+# Prints the files that do not compile for WebAssembly, the two probes' outputs, and exits 0 when
 # they are equal to the last digit.
 set -euo pipefail
 root="$(cd "$(dirname "$0")/.." && pwd)"
@@ -46,11 +46,11 @@ g++ -std=c++20 -O2 -I src tools/web_core_probe/probe_main.cpp build/src/scene/de
   $libs/haptics/libps_haptics.a $libs/world/libps_world.a $libs/devices/libps_devices.a $libs/scene/libps_scene.a \
   $libs/fourd/libps_fourd.a $libs/image/libps_image.a $libs/core/libps_file_io.a \
   -ltomlplusplus -lembree3 -lassimp -lpng -ldbus-1 -lpthread -ldl
-wasm_line=$(node --no-experimental-fetch "$out/probe.js" "$root/scenes")
-native_line=$("$out/probe_native" "$root/scenes")
-echo "native:      $native_line"
-echo "WebAssembly: $wasm_line"
-if [[ "$wasm_line" == "$native_line" ]]; then
+wasm_out=$(node --no-experimental-fetch "$out/probe.js" "$root/scenes")
+native_out=$("$out/probe_native" "$root/scenes")
+echo "native:"; echo "$native_out"
+echo "WebAssembly:"; echo "$wasm_out"
+if [[ "$wasm_out" == "$native_out" ]]; then
   echo "web_core_probe: the same state to the last digit"
 else
   echo "web_core_probe: the states differ" >&2

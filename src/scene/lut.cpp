@@ -14,6 +14,10 @@
 #include <sstream>
 
 #include "core/file_io.h"
+#if defined(__EMSCRIPTEN__)
+#include <locale.h>
+#include <stdlib.h>
+#endif
 
 namespace ps {
 
@@ -48,8 +52,22 @@ std::vector<std::string_view> fields(std::string_view s) {
 }
 
 bool to_double(std::string_view s, double& out) {
+#if defined(__EMSCRIPTEN__)
+  // Emscripten 3.1.6's libc++ has no floating-point from_chars (docs/web.md): strtod in the "C"
+  // locale, both correctly rounded. The same text form only: no sign "+", hex or inf/nan, as
+  // from_chars's general format.
+  if (s.empty() || s.size() > 64 || s[0] == '+' || s.find_first_of("xXpPiInN") != std::string_view::npos) return false;
+  char buf[65];
+  s.copy(buf, s.size());
+  buf[s.size()] = '\0';
+  static const locale_t c_locale = newlocale(LC_ALL_MASK, "C", nullptr);
+  char* end = nullptr;
+  out = strtod_l(buf, &end, c_locale);
+  return end == buf + s.size() && std::isfinite(out);
+#else
   const auto [end, ec] = std::from_chars(s.data(), s.data() + s.size(), out);
   return ec == std::errc() && end == s.data() + s.size() && std::isfinite(out);
+#endif
 }
 
 std::string fmt(double v) {

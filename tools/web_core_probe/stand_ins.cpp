@@ -1,16 +1,13 @@
 // Stand-ins for what the WebAssembly probe leaves out (tools/web_core_probe.sh): the image reader
-// (libpng), mesh files (assimp), lookup-table files (scene/lut.cpp uses floating-point
-// std::from_chars, which Emscripten 3.1.6's libc++ lacks) and the Embree BVH. Each says so when
+// (libpng), mesh files (assimp) and the Embree BVH. Each says so when
 // reached; the probe's scene needs none of them (a plane and a sphere probe).
 #include "image/image.h"
-#include "scene/lut.h"
 #include "scene/mesh.h"
 #include "world/mesh_bvh.h"
 
 namespace ps {
 Result<Image> read_image(const std::string& p) { return make_error("web core probe: no image reader for " + p); }
 Result<Mesh> load_mesh_file(const std::string& p) { return make_error("web core probe: no mesh files (" + p + ")"); }
-Result<Lut> read_lut(const std::string& p, LutAxis) { return make_error("web core probe: no lookup tables (" + p + ")"); }
 namespace world {
 struct MeshBvh::Impl {};
 MeshBvh::MeshBvh() {}
