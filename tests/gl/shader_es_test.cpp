@@ -9,6 +9,7 @@
 
 #include "gl/shader.h"
 #include "gl/shader_es.h"
+#include "shader_dir_fixture.h"
 
 namespace {
 
@@ -17,22 +18,7 @@ using ps::gl::preprocess_shader;
 using ps::gl::Stage;
 using ps::gl::to_glsl_es;
 
-class ShaderEsTest : public ::testing::Test {
- protected:
-  void SetUp() override {
-    const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
-    dir_ = fs::temp_directory_path() / ("ps_gl_es_" + std::to_string(getpid()) + "_" + info->name());
-    fs::remove_all(dir_);
-    fs::create_directories(dir_ / "lib");
-  }
-  void TearDown() override { fs::remove_all(dir_); }
-  std::string write(const std::string& name, const std::string& text) {
-    const fs::path path = dir_ / name;
-    std::ofstream(path) << text;
-    return path.string();
-  }
-  fs::path dir_;
-};
+class ShaderEsTest : public ps::test::ShaderDirTest {};
 
 bool has_line(const std::string& text, const std::string& line) {
   return ("\n" + text).find("\n" + line + "\n") != std::string::npos;

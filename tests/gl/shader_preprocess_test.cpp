@@ -8,33 +8,14 @@
 
 #include "gl/context.h"
 #include "gl/shader.h"
+#include "shader_dir_fixture.h"
 
 namespace {
 
 namespace fs = std::filesystem;
 using ps::gl::preprocess_shader;
 
-// A fresh directory per test, removed afterwards.
-class ShaderPreprocessTest : public ::testing::Test {
- protected:
-  void SetUp() override {
-    const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
-    dir_ = fs::temp_directory_path() /
-           ("ps_gl_" + std::to_string(getpid()) + "_" + info->name());
-    fs::remove_all(dir_);
-    fs::create_directories(dir_ / "lib");
-  }
-  void TearDown() override { fs::remove_all(dir_); }
-
-  std::string write(const std::string& name, const std::string& text) {
-    const fs::path path = dir_ / name;
-    std::ofstream(path) << text;
-    return path.string();
-  }
-  std::string root() const { return dir_.string(); }
-
-  fs::path dir_;
-};
+class ShaderPreprocessTest : public ps::test::ShaderDirTest {};
 
 std::vector<std::string> lines_of(const std::string& text) {
   std::vector<std::string> lines;
