@@ -37,6 +37,14 @@ struct ShaderSource {
 Result<ShaderSource> preprocess_shader(const std::string& path, const Defines& defines,
                                        const std::string& glsl_root);
 
+// The file index (into ShaderSource::files) and that file's own line of a position numbered by
+// the #line directives above: a line number from kIncludeLineStride up carries the index itself,
+// which wins over `source` (Mesa may report source string 0).
+struct SourceLine {
+  unsigned long long file = 0, line = 0;
+};
+SourceLine decode_source_line(unsigned long long source, unsigned long long line);
+
 // Rewrites a driver/glslang info log so "0:12(3): error: ..." / "ERROR: 0:12: ..." read
 // "<file>:12: error: ..." using `files`.
 std::string map_shader_log(const std::string& log, const std::vector<std::string>& files);

@@ -7,24 +7,22 @@
 namespace ps::gl {
 namespace {
 
-// Where a line of preprocessed text came from: the #line directives say it (the file index is
-// carried in the line number too, see preprocess_shader).
+// Where a line of preprocessed text came from: the #line directives preprocess_shader wrote
+// say it (decode_source_line).
 struct Origin {
-  int file = 0, line = 0;
+  SourceLine at;
   void step(const std::string& text) {
     static const std::regex kLine(R"(^\s*#\s*line\s+(\d+)\s+(\d+)\s*$)");
     std::smatch m;
     if (std::regex_match(text, m, kLine)) {
-      const long n = std::stol(m[1].str());
-      file = static_cast<int>(n >= kIncludeLineStride ? n / kIncludeLineStride : std::stol(m[2].str()));
-      line = static_cast<int>(n % kIncludeLineStride) - 1;  // the next line is line n
+      at = decode_source_line(std::stoull(m[2].str()), std::stoull(m[1].str()));
+      --at.line;  // the next line is line n
     } else {
-      ++line;
+      ++at.line;
     }
   }
   std::string where(const std::vector<std::string>& files) const {
-    return (file >= 0 && static_cast<size_t>(file) < files.size() ? files[file] : std::string("<shader>")) + ":" +
-           std::to_string(line);
+    return (at.file < files.size() ? files[at.file] : std::string("<shader>")) + ":" + std::to_string(at.line);
   }
 };
 

@@ -175,6 +175,11 @@ Result<ShaderSource> preprocess_shader(const std::string& path, const Defines& d
   return std::move(pp.out);
 }
 
+SourceLine decode_source_line(unsigned long long source, unsigned long long line) {
+  const auto stride = static_cast<unsigned long long>(kIncludeLineStride);
+  return line >= stride ? SourceLine{line / stride, line % stride} : SourceLine{source, line};
+}
+
 std::string map_shader_log(const std::string& log, const std::vector<std::string>& files) {
   // Mesa: "0:12(3): error: x"; glslang: "ERROR: 0:12: x"; NVIDIA style: "0(12) : error x".
   static const std::regex kMesa(R"(^(\d+):(\d+)\(\d+\): (.*)$)");
@@ -190,13 +195,9 @@ std::string map_shader_log(const std::string& log, const std::vector<std::string
     const auto b = std::from_chars(line_text.data(), line_end, line);
     if (a.ec != std::errc() || a.ptr != src_end || b.ec != std::errc() || b.ptr != line_end)
       return source + ":" + line_text;
-    unsigned long long local = line;
-    if (line >= static_cast<unsigned long long>(kIncludeLineStride)) {  // the stride is authoritative: Mesa may report source 0
-      index = line / kIncludeLineStride;
-      local = line % kIncludeLineStride;
-    }
-    if (index >= files.size()) return source + ":" + line_text;  // not ours: leave it
-    return files[index] + ":" + std::to_string(local);
+    const SourceLine at = decode_source_line(index, line);
+    if (at.file >= files.size()) return source + ":" + line_text;  // not ours: leave it
+    return files[at.file] + ":" + std::to_string(at.line);
   };
   std::string out;
   for (const std::string& line : split_lines(log)) {

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <bit>
+#include <utility>
 #include <vector>
 
 #include "gl/shader.h"
@@ -10,30 +11,24 @@ namespace ps {
 
 Status ReductionsPass::init(const std::string& glsl_root, const SurfacePass& surface, ReductionMethod method) {
   method_ = method;
-  if (method == ReductionMethod::kFragment) {
-    auto max_rows = gl::build_program({{"displacement_weights.vert", "max_penetration_rows.frag"}, {}}, glsl_root);
-    if (!max_rows) return max_rows.error();
-    auto rows_frag = gl::build_program({{"displacement_weights.vert", "displacement_rows.frag"}, {}}, glsl_root);
-    if (!rows_frag) return rows_frag.error();
-    auto normal_frag = gl::build_program({{"displacement_weights.vert", "normal_rows.frag"}, {}}, glsl_root);
-    if (!normal_frag) return normal_frag.error();
-    max_rows_frag_ = std::move(max_rows.value());
-    rows_frag_ = std::move(rows_frag.value());
-    normal_rows_frag_ = std::move(normal_frag.value());
+  // Each path builds only its own programs (a WebGL2 host has no compute shaders to build); the
+  // displacement AOV's is common to both.
+  const char* vert = "displacement_weights.vert";
+  std::vector<std::pair<gl::Program*, gl::ProgramDesc>> programs = {{&weights_, {{vert, "displacement_weights.frag"}, {}}}};
+  if (method == ReductionMethod::kFragment)
+    programs.insert(programs.end(), {{&max_rows_frag_, {{vert, "max_penetration_rows.frag"}, {}}},
+                                     {&rows_frag_, {{vert, "displacement_rows.frag"}, {}}},
+                                     {&normal_rows_frag_, {{vert, "normal_rows.frag"}, {}}}});
+  else
+    programs.insert(programs.end(), {{&max_, {{"max_penetration.comp"}, {}}},
+                                     {&rows_, {{"displacement_rows.comp"}, {}}},
+                                     {&normal_rows_, {{"normal_rows.comp"}, {}}}});
+  for (const auto& [program, desc] : programs) {
+    auto built = gl::build_program(desc, glsl_root);
+    if (!built) return built.error();
+    *program = std::move(built.value());
   }
-  auto max = gl::build_program({{"max_penetration.comp"}, {}}, glsl_root);
-  if (!max) return max.error();
-  auto rows = gl::build_program({{"displacement_rows.comp"}, {}}, glsl_root);
-  if (!rows) return rows.error();
-  auto weights = gl::build_program({{"displacement_weights.vert", "displacement_weights.frag"}, {}}, glsl_root);
-  if (!weights) return weights.error();
-  auto normal_rows = gl::build_program({{"normal_rows.comp"}, {}}, glsl_root);
-  if (!normal_rows) return normal_rows.error();
-  normal_rows_ = std::move(normal_rows.value());
   normal_ubo_ = gl::make_buffer(sizeof(ReduceBlock), nullptr, GL_DYNAMIC_STORAGE_BIT);
-  max_ = std::move(max.value());
-  rows_ = std::move(rows.value());
-  weights_ = std::move(weights.value());
   empty_vao_ = gl::make_vertex_array();
   ubo_ = gl::make_buffer(sizeof(ReduceBlock), nullptr, GL_DYNAMIC_STORAGE_BIT);
   ssbo_ = gl::make_buffer(sizeof(MaxBlock), nullptr, GL_DYNAMIC_STORAGE_BIT);
