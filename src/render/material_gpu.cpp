@@ -170,9 +170,9 @@ Status MaterialSet::bake(const std::string& glsl_root, double slice_ms, const Ma
   return ok_status();
 }
 
-Status MaterialSet::advance(const std::string& glsl_root) {
+Status MaterialSet::advance(const std::string& glsl_root, double last_frame_ms) {
   if (tiles_.done()) return ok_status();
-  if (Status s = tiles_.bake_slice(glsl_root); !s) return s;
+  if (Status s = tiles_.bake_slice(glsl_root, last_frame_ms); !s) return s;
   collect();
   return ok_status();
 }

@@ -71,9 +71,10 @@ class MaterialSet {
   // `reuse`: an earlier renderer's set of the same seed, whose unchanged finished tiles are kept
   // (null: none).
   Status bake(const std::string& glsl_root, double slice_ms, const MaterialSet* reuse);
-  // One band of the queued tiles (nothing when done); a finished tile replaces its material's
-  // per-pixel sum from the next draw on.
-  Status advance(const std::string& glsl_root);
+  // One band of the queued tiles (nothing when done), about as long as the last frame
+  // (`last_frame_ms`; TileBaker::bake_slice); a finished tile replaces its material's per-pixel
+  // sum from the next draw on.
+  Status advance(const std::string& glsl_root, double last_frame_ms);
   const TileBaker& tiles() const { return tiles_; }
   // The filter's level of detail: each analytically filtered material's variant with the filter
   // skipped (PS_GABOR_FILTER=2), as the surfaces will draw it once its tile is there, built ahead

@@ -142,7 +142,7 @@ Status Renderer::bake_gabor_tiles() {
 
 Status Renderer::advance_bake() {
   if (materials_.tiles().done()) return ok_status();
-  if (Status s = materials_.advance(options_.glsl_root); !s) return s;
+  if (Status s = materials_.advance(options_.glsl_root, last_draw_ms_); !s) return s;
   note_bake();
   return ok_status();
 }
@@ -283,6 +283,7 @@ Status Renderer::draw() {
   upload_deformed();  // what the session stepped since the last frame
   stats_.deformation = deformation();
   if (Status s = advance_bake(); !s) return s;  // before the timer: a band is not the frame's work
+  const auto drawn_from = std::chrono::steady_clock::now();
   PassTimer timer(options_.time_passes, stats_, options_.gpu_timers ? &gpu_timers_ : nullptr);
   const BoundingSphere probe = current_probe_bounds();
   const FramePlan plan = make_plan(scene_, view.camera, bounds_of(geometry_.surfaces), probe, frame_,
@@ -305,6 +306,9 @@ Status Renderer::draw() {
   reduce(plan, timer);
   draw_overlays(timer);
   if (!materials_.tiles().done()) ++stats_.frames_before_tiles;
+  // The frame's wall time, the next band's budget (the reductions' read-back waited for the
+  // surfaces, so on llvmpipe this is the drawing itself).
+  last_draw_ms_ = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - drawn_from).count();
   if (stats_.first_frame_ms < 0.0) {
     glFinish();  // the frame is drawn, not only queued
     stats_.first_frame_ms = ms_since_creation();

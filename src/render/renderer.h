@@ -236,6 +236,7 @@ class Renderer {
   Geometry geometry_;
   MaterialSet materials_;  // GPU state of Scene::materials, in order (each points at its material)
   std::chrono::steady_clock::time_point created_at_;  // start of create(): the stats' time origin
+  double last_draw_ms_ = 0.0;  // the last draw()'s wall time, its band excluded: the next band's budget
   // The last mean visible normal and the camera it was reduced for. The normal target holds
   // the visible surfaces' normals, which depend on the camera alone (the surfaces are fixed for a
   // renderer's life; neither the probe, the reference plane nor the shader variant changes a

@@ -35,18 +35,24 @@ Status TileBaker::bake_all(const std::string& glsl_root) {
   return ok_status();
 }
 
-Status TileBaker::bake_slice(const std::string& glsl_root) {
+double slice_budget_ms(double slice_ms, double last_frame_ms) {
+  return std::clamp(last_frame_ms, slice_ms, kMaxSliceFactor * slice_ms);
+}
+
+Status TileBaker::bake_slice(const std::string& glsl_root, double last_frame_ms) {
   assert(params_.slice_ms > 0.0 && "TileBaker::bake_slice: slices need params.slice_ms > 0");
   if (jobs_.empty()) return ok_status();
+  // The band's rows from the last band's rate (bake_rows finished its GPU work, so its wall time
+  // is its time): the time per row is about constant within a tile. The first band is 16 rows.
+  const double budget = slice_budget_ms(params_.slice_ms, last_frame_ms);
+  if (rows_per_ms_ > 0.0)
+    slice_rows_ = std::clamp(static_cast<int>(std::lround(rows_per_ms_ * budget)), kMinSliceRows, 1 << 16);
   const auto t0 = std::chrono::steady_clock::now();
   const Job& job = jobs_.front();
   const int rows = std::min(slice_rows_, job.plan.level_texels(job.level) - job.rows_done);
   if (Status s = bake_rows(glsl_root, jobs_.front(), rows); !s) return s;
-  // Fit the next band to the budget from this one's time (bake_rows finished the GPU work):
-  // the time per row is about constant within a tile, so rows scale with budget / time.
   const double ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
-  const double fitted = rows * params_.slice_ms / std::max(ms, 1e-3);
-  slice_rows_ = std::clamp(static_cast<int>(std::lround(fitted)), kMinSliceRows, 1 << 16);
+  rows_per_ms_ = rows / std::max(ms, 1e-3);
   return ok_status();
 }
 

@@ -11,6 +11,7 @@
 
 #include "support/scenes.h"
 #include "render/renderer.h"
+#include "render/tile_bake.h"
 #include "support/gl_test.h"
 
 namespace ps {
@@ -196,6 +197,15 @@ TEST_P(TileBakeGLTest, SlicedBakeOfFilteredLevelsEndsOnTheHeadlessFrame) {
   // 0.109 sigma RMS apart at 2.6-6.4 px per wavelength (each is within ~0.05 sigma of the
   // supersampled reference at a single wavelength, GaborFilterGLTest). 0.15 bounds that.
   check_sliced_bake(s, 0.15);
+}
+
+// A band lasts about as long as the last frame, so the frames come at half rate and the tile is
+// ready in about twice its bake whatever the per-pixel frames cost; within [slice, 4 x slice].
+TEST(TileBakeBudget, ABandIsAsLongAsTheLastFrameWithinItsBounds) {
+  EXPECT_EQ(slice_budget_ms(40.0, 0.0), 40.0);     // before the first frame: the slice
+  EXPECT_EQ(slice_budget_ms(40.0, 12.0), 40.0);    // a fast frame: never below the slice
+  EXPECT_EQ(slice_budget_ms(40.0, 105.0), 105.0);  // Table 4.1 c's per-pixel frame at 512^2
+  EXPECT_EQ(slice_budget_ms(40.0, 900.0), kMaxSliceFactor * 40.0);  // a stalled frame: capped
 }
 
 PS_INSTANTIATE_HEADLESS_BACKENDS(TileBakeGLTest);

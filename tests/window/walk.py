@@ -125,13 +125,15 @@ class Window(window_proc.Window):
                 fx = float(a[0]) + t * (float(a[2]) - float(a[0]))
                 fy = float(a[1]) + t * (float(a[3]) - float(a[1]))
                 moved_at = self.line_count()
-                self.xdo("mousemove", *self.at(fx, fy))
+                sx, sy = self.at(fx, fy)
+                self.xdo("mousemove", sx, sy)
                 time.sleep(float(a[4]) / n)
-                # Every point of the sweep is read by the window: the frame drawing when the
-                # pointer moved may have read it before the move, the next one reads it after.
-                # Under load (70 ms frames) a sweep timed by the wall clock alone left points
-                # unread: the window saw a few readings 25 mm apart, not the path walked.
-                self.wait_lines(moved_at + 2, SWEEP_POINT_WAIT_S)
+                # Every point of the sweep is read by the window: a frame logs it as its pointer,
+                # or, failing that, two frames passed (the frame drawing when the pointer moved
+                # may have read it before the move, the next one reads it after). Under load
+                # (70 ms frames) a sweep timed by the wall clock alone left points unread: the
+                # window saw a few readings 25 mm apart, not the path walked.
+                self.wait_point_read(moved_at, (int(sx) - self.x, int(sy) - self.y), SWEEP_POINT_WAIT_S)
             if op == "drag":
                 time.sleep(0.1)
                 self.xdo("mouseup", "1")
@@ -229,11 +231,35 @@ def step_span(win, step, t0, t1):
     return span
 
 
+def nominal_s(step):
+    """How long a step takes by the walk file's own numbers (the sleeps walk.py does), before any
+    wait for the window's frames."""
+    op, a = step["op"], step["args"]
+    if op in ("wait", "sweep", "drag"):
+        return float(a[0] if op == "wait" else a[4]) + (0.2 if op == "drag" else 0.0)
+    if op == "key":
+        return (int(a[1]) if len(a) > 1 else 1) * (float(a[2]) if len(a) > 2 else 0.05)
+    if op == "hold":
+        return float(a[1]) / 1000.0
+    if op == "scroll":
+        return int(a[1]) * 0.03
+    return 0.5 if op == "save" else 0.0
+
+
+def add_time(report, op, took_s, nominal):
+    """report["time_s"]: per step kind, the wall time it took and its nominal time (nominal_s),
+    so a slow walk shows whether its steps waited on frames or its checks took the time."""
+    t = report.setdefault("time_s", {}).setdefault(op, [0.0, 0.0])
+    t[0] += took_s
+    t[1] += nominal
+
+
 def walk_steps(win, steps, shots, report, failures, panel_steps, save_steps, fired_steps):
     """Runs the steps with their checks: adds to the failures, and to the panel_still, checked
     save and fired= steps, judged after the window closed (what a step that raised left is kept)."""
     saved = 0
     for step in steps:
+        started = time.monotonic()
         if win.proc.poll() is not None:  # one failure that says why, not one per step left
             raise RuntimeError(f"the window ended (status {win.proc.returncode}) before walk line {step['line']}, "
                                f"{win.now_t():.0f} s into the session; it quits by itself after --limit "
@@ -241,8 +267,11 @@ def walk_steps(win, steps, shots, report, failures, panel_steps, save_steps, fir
         t0 = win.now_t()
         win.run_step(step, shots)
         t1 = win.now_t()
+        stepped = time.monotonic()
+        add_time(report, step["op"], stepped - started, nominal_s(step))
         win.wait_frames_after(t1)
         failures.extend(check_step(step, step_span(win, step, t0, t1), report))
+        add_time(report, "checks", time.monotonic() - stepped, 0.0)
         if step["fired"] is not None:
             fired_steps.append((step, t0, t1))
         if step["panel_still"]:  # every frame from the step's start (a flick's are few) to the one after it
@@ -275,8 +304,10 @@ def drive(args, win, cmd, steps, report):
     failures, panel_steps, save_steps, fired_steps = [], [], [], []
     shots = os.environ.get("WINDOW_SHOTS", "")
     try:
+        started = time.monotonic()
         window_proc.open_window(win, lambda: window_proc.start_process(cmd, args.out, win.console_path),
                                 args.start_timeout)
+        add_time(report, "start", time.monotonic() - started, 0.0)
         walk_steps(win, steps, shots, report, failures, panel_steps, save_steps, fired_steps)
         win.wait_frames_after(win.now_t())  # every key sent handled before the count
         keys_counted = sum(f["keys"] for f in win.frames())
@@ -311,6 +342,9 @@ def print_report(args, win, report, keys_counted, failures):
           + (f", shadow at most {report['max_pointer_shadow_px']:.1f} px from the pointer at rest"
              if "max_pointer_shadow_px" in report else "")
           + (f", panel still on {report['panel_frames_checked']} frames" if "panel_frames_checked" in report else ""))
+    if "time_s" in report:  # where the walk's time went: steps against their nominal time
+        print("time: " + ", ".join(f"{op} {t[0]:.1f} s" + (f" (nominal {t[1]:.1f})" if t[1] else "")
+                                   for op, t in sorted(report["time_s"].items(), key=lambda kv: -kv[1][0])))
     for f in failures:
         print(f"FAIL {f}")
     with open(os.path.join(args.out, "report.json"), "w", encoding="utf-8") as f:  # tools/walk_strips.sh

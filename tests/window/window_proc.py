@@ -69,6 +69,9 @@ def start_process(cmd, cwd, console_path):
         return subprocess.Popen(cmd, cwd=cwd, stdout=console, stderr=subprocess.STDOUT)
 
 
+POINTER_PX = re.compile(rb'"pointer_px": ?\[(-?\d+), ?(-?\d+)\]')
+
+
 class Window:
     """The running window: its X id and geometry, and xdotool to drive it."""
 
@@ -79,6 +82,7 @@ class Window:
         self.stem, self.window_shots = "", 0  # WINDOW_SHOTS: the scene's name, dumps taken
         self.torn_reads = 0  # consecutive reads that stopped at an unreadable line (frames())
         self.lines_read, self.lines_seen = 0, 0  # line_count(): bytes of the log counted, lines in them
+        self.pointers, self.partial = [], b""  # line_count(): each counted line's pointer_px; a torn tail
 
     def xdo(self, *args):
         subprocess.run(["xdotool", *args], check=True, stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
@@ -137,7 +141,24 @@ class Window:
             return 0
         self.lines_read += len(more)
         self.lines_seen += more.count(b"\n")
+        *lines, self.partial = (self.partial + more).split(b"\n")
+        for line in lines:  # only the pointer: a regular expression, not a whole JSON parse
+            m = POINTER_PX.search(line)
+            self.pointers.append((int(m.group(1)), int(m.group(2))) if m else None)
         return self.lines_seen
+
+    def wait_point_read(self, moved_at, px, timeout_s):
+        """Waits until the window has read the pointer at window pixel `px` (x, y): a frame logged
+        after line `moved_at` has it as its pointer_px, or two frames were logged after that line
+        (the second began after the move), or the window ended, or timeout_s passed. The frame
+        drawing when the pointer moved often reads the new place already, so this is about one
+        frame instead of two."""
+        end = time.monotonic() + timeout_s
+        while time.monotonic() < end and self.proc.poll() is None:
+            count = self.line_count()
+            if count >= moved_at + 2 or px in self.pointers[moved_at:]:
+                return
+            time.sleep(0.005)
 
     def wait_lines(self, count, timeout_s):
         """Waits until the log holds `count` frames, or the window ended, or timeout_s passed."""

@@ -216,9 +216,9 @@ std::optional<glm::dvec3> place_hand(const LiveWindow& win, const Renderer& r, L
   return win.input()->newest().position_mm;
 }
 
-// The Gabor tile bakes between frames, a band of ~40 ms each (about one 512^2 frame with the
-// per-pixel sum on llvmpipe: frames come at half rate and the tile is ready in about twice its
-// whole bake), so the first frame comes at once; until then the per-pixel sum is drawn.
+// The Gabor tile bakes between frames, a band as long as the last frame but at least ~40 ms
+// (render/tile_bake.h: frames come at half rate and the tile is ready in about twice its whole
+// bake), so the first frame comes at once; until then the per-pixel sum is drawn.
 constexpr double kWindowBakeSliceMs = 40.0;
 
 TuneSource window_tune_source(const RunArgs& a, std::string scene_path, std::vector<std::string> sets,
