@@ -125,15 +125,14 @@ class Window(window_proc.Window):
                 fx = float(a[0]) + t * (float(a[2]) - float(a[0]))
                 fy = float(a[1]) + t * (float(a[3]) - float(a[1]))
                 moved_at = self.line_count()
-                sx, sy = self.at(fx, fy)
-                self.xdo("mousemove", sx, sy)
+                self.xdo("mousemove", *self.at(fx, fy))
                 time.sleep(float(a[4]) / n)
                 # Every point of the sweep is read by the window: a frame logs it as its pointer,
                 # or, failing that, two frames passed (the frame drawing when the pointer moved
                 # may have read it before the move, the next one reads it after). Under load
                 # (70 ms frames) a sweep timed by the wall clock alone left points unread: the
                 # window saw a few readings 25 mm apart, not the path walked.
-                self.wait_point_read(moved_at, (int(sx) - self.x, int(sy) - self.y), SWEEP_POINT_WAIT_S)
+                self.wait_point_read(moved_at, self.px(fx, fy), SWEEP_POINT_WAIT_S)
             if op == "drag":
                 time.sleep(0.1)
                 self.xdo("mouseup", "1")

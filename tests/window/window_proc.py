@@ -160,12 +160,6 @@ class Window:
                 return
             time.sleep(0.005)
 
-    def wait_lines(self, count, timeout_s):
-        """Waits until the log holds `count` frames, or the window ended, or timeout_s passed."""
-        end = time.monotonic() + timeout_s
-        while self.line_count() < count and time.monotonic() < end and self.proc.poll() is None:
-            time.sleep(0.005)
-
     def frames(self):
         try:
             with open(self.log_path, encoding="utf-8", errors="replace") as f:
@@ -188,8 +182,14 @@ class Window:
         self.torn_reads = 0
         return out
 
+    def px(self, fx, fy):
+        """The window pixel at fractions (fx, fy) of the window: what its readouts call pointer_px."""
+        return int(float(fx) * (self.w - 1)), int(float(fy) * (self.h - 1))
+
     def at(self, fx, fy):
-        return str(self.x + int(float(fx) * (self.w - 1))), str(self.y + int(float(fy) * (self.h - 1)))
+        """The same place on the screen, as xdotool's arguments."""
+        x, y = self.px(fx, fy)
+        return str(self.x + x), str(self.y + y)
 
 
 def open_window(win, start, timeout_s):
