@@ -328,7 +328,7 @@ void main() {
 #endif
 #if PS_GABOR_BAKED && PS_GABOR_FILTER == 1
     tex_sigmas = gabor_noise_baked_filtered(u_gabor_tile, u_gabor.tile, u_gabor.filtering,
-                                            u_gabor.amplitude_lambda.zw, uv, duv) /
+                                            u_gabor.amplitude_lambda.zw, uv, duv, int(u_gabor.counts.w)) /
                  u_gabor.kernel.w;
 #elif PS_GABOR_BAKED
     tex_sigmas = gabor_noise_baked(u_gabor_tile, u_gabor.tile, uv) / u_gabor.kernel.w;

@@ -13,7 +13,7 @@ set -euo pipefail
 # What building and running the program needs (the first image, the window, sound, devices).
 readonly kPackages=(
   build-essential cmake pkg-config ccache
-  libglfw3-dev libx11-dev libglm-dev libosmesa6-dev libegl-dev libegl1-mesa-dev libgl1-mesa-dri libgl-dev
+  libglfw3-dev libx11-dev libglm-dev libosmesa6-dev libegl-dev libegl1-mesa-dev libgl1-mesa-dri libgl-dev libgles-dev
   glslang-dev glslang-tools spirv-tools
   libopenimageio-dev openimageio-tools libpng-dev  # the tools: OpenImageIO's CMake config checks oiiotool
   libgtest-dev libgmock-dev libbenchmark-dev

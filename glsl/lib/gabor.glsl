@@ -374,12 +374,13 @@ float gabor_tile_level(sampler2D tile_tex, vec4 tile, vec2 uv, int level) {
 // blended so that the blend attenuates the texture's mean frequency f0 = 2 / (lambda_min +
 // lambda_max) as a filter of variance s2 does, exp(-2 pi^2 s2 f0^2). (Blending linearly in
 // variance kept too much of the finer level: its unfiltered share aliases.) filtering:
-// GaborBlock::filtering (y: a level's sigma in its texels, kappa); lambda_mm: (min, max).
+// GaborBlock::filtering (y: a level's sigma in its texels, kappa); lambda_mm: (min, max); levels:
+// the tile's level count (GaborBlock::counts.w; not textureQueryLevels, which GLSL ES 3.00 lacks).
 float gabor_noise_baked_filtered(sampler2D tile_tex, vec4 tile, vec4 filtering, vec2 lambda_mm, vec2 uv,
-                                 mat2 duv) {
+                                 mat2 duv, int levels) {
   GaborPixelSplit p = gabor_pixel_split(duv, filtering);
   float s2 = 0.5 * (p.S.x + p.S.z);
-  int last = textureQueryLevels(tile_tex) - 1, lev = 0;
+  int last = levels - 1, lev = 0;
   float v_lo = 0.0, v_hi = 0.0;
   for (int L = 1; L <= last; ++L) {
     float sd = filtering.y * tile.x / float(textureSize(tile_tex, L).x);

@@ -12,7 +12,8 @@ struct GaborBlock {
   vec4 theta_density;     // x theta_min rad, y theta_max rad, z n_min, w n_max (impulses per kernel)
   vec4 kernel;            // x kernel periods, y cell mm, z trunc factor, w sigma_unit
   vec4 tile;              // baked tile: x period mm, y texel h mm, z texels, w period cells (0: none)
-  uvec4 counts;           // x seed, y max impulses per cell, z stratified impulses per cell, w unused
+  uvec4 counts;           // x seed, y max impulses per cell, z stratified impulses per cell, w the
+                          // baked tile's mip levels (0: none)
   vec4 filtering;         // analytic filter (PS_GABOR_FILTER): x pixel variance px^2, y tile level
                           // sigma in its texels, z footprint cap mm^2, w most sub-boxes per pixel
 };

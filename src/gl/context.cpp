@@ -87,6 +87,14 @@ Result<std::unique_ptr<Context>> create_context(const ContextDesc& desc) {
   const std::string prefix = "no OpenGL 4.5 context: ";
   using Kind = GpuChoice::Kind;
   assert(desc.gpu.kind != Kind::kList && "create_context: --gpu list is the CLI's, not a context");
+  if (desc.es) {
+    if (desc.backend != Backend::kEgl && desc.backend != Backend::kAuto)
+      return make_error(std::string("no OpenGL ES 3.0 context: ES needs the EGL backend (got ") +
+                        backend_name(desc.backend) + ")");
+    auto context = detail::create_egl_context(desc);
+    if (!context) return make_error("no OpenGL ES 3.0 context: egl: " + context.error().message);
+    return context;
+  }
   if (desc.gpu.kind != Kind::kDefault && desc.backend != Backend::kEgl && desc.backend != Backend::kAuto)
     return make_error(prefix + "--gpu needs the EGL backend (got " + backend_name(desc.backend) + ")");
   if (desc.gpu.kind == Kind::kAuto) return create_auto_gpu(desc);

@@ -40,6 +40,9 @@ struct ContextDesc {
   std::string window_title = "pseudoshadow";
   bool visible = true;
   GpuChoice gpu;  // EGL and auto only; OSMesa with a --gpu other than the default is an error
+  // An OpenGL ES 3.0 context instead of 4.5 core (EGL only): the API a WebGL2 page has. The host
+  // code's desktop calls then run through their ES stand-ins (gl/es30.h).
+  bool es = false;
 };
 
 class Context {
@@ -61,7 +64,8 @@ class Context {
   std::string renderer_, version_, egl_device_ = "none";
 };
 
-// Creates a 4.5 core context, makes it current and loads every GL entry point.
+// Creates a 4.5 core context (or ES 3.0 with desc.es), makes it current and loads every GL entry
+// point.
 // On failure with kAuto the message names each backend tried and its error, on one line:
 // "no OpenGL 4.5 context: egl: <why>; osmesa: <why>".
 Result<std::unique_ptr<Context>> create_context(const ContextDesc& desc);

@@ -42,7 +42,9 @@ void* egl_loader(const char* name) { return reinterpret_cast<void*>(eglGetProcAd
 
 class EglContext final : public Context {
  public:
-  EglContext(EGLDisplay display, std::string device) : display_(display) { egl_device_ = std::move(device); }
+  EglContext(EGLDisplay display, std::string device, bool es) : display_(display), es_(es) {
+    egl_device_ = std::move(device);
+  }
   ~EglContext() override {
     unload_gl();
     // Order: release current, destroy the context, then terminate the display (which would
@@ -64,9 +66,19 @@ class EglContext final : public Context {
  private:
   EGLDisplay display_;
   EGLContext context_ = EGL_NO_CONTEXT;
+  bool es_ = false;  // OpenGL ES 3.0 (ContextDesc::es)
 };
 
 Status EglContext::init() {
+  if (es_) {
+    if (!eglBindAPI(EGL_OPENGL_ES_API)) return egl_failure("eglBindAPI(EGL_OPENGL_ES_API)");
+    const EGLint attribs[] = {EGL_CONTEXT_MAJOR_VERSION, 3, EGL_CONTEXT_MINOR_VERSION, 0, EGL_NONE};
+    context_ = eglCreateContext(display_, EGL_NO_CONFIG_KHR, EGL_NO_CONTEXT, attribs);
+    if (context_ == EGL_NO_CONTEXT) return egl_failure("eglCreateContext(ES 3.0)");
+    if (!eglMakeCurrent(display_, EGL_NO_SURFACE, EGL_NO_SURFACE, context_))
+      return egl_failure("eglMakeCurrent(EGL_NO_SURFACE)");
+    return load_gles_and_query(egl_loader, renderer_, version_);
+  }
   if (!eglBindAPI(EGL_OPENGL_API)) return egl_failure("eglBindAPI(EGL_OPENGL_API)");
   // No config: surfaceless rendering needs none (EGL_KHR_no_config_context, Mesa supports it).
   const EGLint attribs[] = {EGL_CONTEXT_MAJOR_VERSION, 4,
@@ -139,7 +151,7 @@ Result<std::unique_ptr<Context>> create_egl_context(const ContextDesc& desc) {
   }
   if (!display) return display.error();
   // From here the context object owns the display: its destructor terminates it on failure.
-  auto context = std::make_unique<EglContext>(display.value(), device_name);
+  auto context = std::make_unique<EglContext>(display.value(), device_name, desc.es);
   if (Status s = context->init(); !s) return s.error();
   return std::unique_ptr<Context>(std::move(context));
 }

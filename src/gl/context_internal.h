@@ -17,6 +17,9 @@ using Loader = void* (*)(const char* name);
 // Fills the GL table with `loader`, then checks every core entry point resolved and that the
 // current context is 4.5 core; reads GL_RENDERER / GL_VERSION. Error text has no backend prefix.
 Status load_gl_and_query(Loader loader, std::string& renderer, std::string& version);
+// The same for an OpenGL ES 3.0 (or later) context: the table holds ES 3.0 entry points only, and
+// the desktop calls the host code makes get their stand-ins (gl/es30.h).
+Status load_gles_and_query(Loader loader, std::string& renderer, std::string& version);
 // Nulls the table; called by each context's destructor before the context goes away.
 void unload_gl();
 

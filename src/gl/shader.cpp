@@ -8,6 +8,8 @@
 #include "gl/shader.h"
 
 #include "core/install_layout.h"
+#include "gl/es30.h"
+#include "gl/shader_es.h"
 
 namespace ps::gl {
 namespace {
@@ -61,11 +63,27 @@ std::string error_first(const std::string& log) {
   return out;
 }
 
+// What an ES program's stages had as layout qualifiers, set through the API after the link.
+struct EsBindings {
+  std::vector<std::pair<std::string, int>> sampler_units, block_bindings, uniform_locations;
+};
+
 Result<Shader> compile_stage(const std::string& path, const Defines& defines,
-                             const std::string& glsl_root) {
+                             const std::string& glsl_root, EsBindings& es_bindings) {
   auto source = preprocess_shader(path, defines, glsl_root);
   if (!source) return source.error();
-  Shader shader(glCreateShader(gl_stage(stage_from_path(path))));
+  const Stage stage = stage_from_path(path);
+  if (dialect() == Dialect::kEs30) {  // the GLSL ES 3.00 text of the same source (gl/shader_es.h)
+    auto es = to_glsl_es(source.value(), stage);
+    if (!es) return es.error();
+    source->text = std::move(es->text);
+    source->files = std::move(es->files);
+    auto append = [](auto& to, const auto& from) { to.insert(to.end(), from.begin(), from.end()); };
+    append(es_bindings.sampler_units, es->sampler_units);
+    append(es_bindings.block_bindings, es->block_bindings);
+    append(es_bindings.uniform_locations, es->uniform_locations);
+  }
+  Shader shader(glCreateShader(gl_stage(stage)));
   const char* text = source->text.c_str();
   glShaderSource(shader.id(), 1, &text, nullptr);
   glCompileShader(shader.id());
@@ -76,6 +94,22 @@ Result<Shader> compile_stage(const std::string& path, const Defines& defines,
     return make_error(log.empty() ? path + ": compile failed (empty log)" : log);
   }
   return shader;
+}
+
+// ES 3.00 has no `binding =` or uniform `location =` qualifiers: the units and bindings the
+// desktop text names are set here, and the loose uniforms' names recorded for glProgramUniform*.
+void set_es_bindings(GLuint program, const EsBindings& es) {
+  GLint previous = 0;
+  glGetIntegerv(GL_CURRENT_PROGRAM, &previous);
+  glUseProgram(program);
+  for (const auto& [name, unit] : es.sampler_units) glUniform1i(glGetUniformLocation(program, name.c_str()), unit);
+  const auto p = static_cast<GLuint>(previous);
+  glUseProgram(p != 0 && glIsProgram(p) ? p : 0);
+  for (const auto& [name, binding] : es.block_bindings) {
+    const GLuint index = glGetUniformBlockIndex(program, name.c_str());
+    if (index != GL_INVALID_INDEX) glUniformBlockBinding(program, index, static_cast<GLuint>(binding));
+  }
+  es30_name_uniforms(program, es.uniform_locations);
 }
 
 }  // namespace
@@ -92,9 +126,10 @@ Result<Program> build_program(const ProgramDesc& desc, const std::string& glsl_r
   }
   std::vector<Shader> shaders;
   std::string names;
+  EsBindings es;
   for (const std::string& stage : desc.stages) {
     const fs::path path = fs::path(stage).is_absolute() ? fs::path(stage) : fs::path(glsl_root) / stage;
-    auto shader = compile_stage(path.string(), desc.defines, glsl_root);
+    auto shader = compile_stage(path.string(), desc.defines, glsl_root, es);
     if (!shader) return shader.error();
     shaders.push_back(std::move(shader.value()));
     names += (names.empty() ? "" : " + ") + stage;
@@ -109,6 +144,7 @@ Result<Program> build_program(const ProgramDesc& desc, const std::string& glsl_r
     // Link logs carry no file:line (Mesa: "error: ..."), so name the stages.
     return make_error(names + ": link failed: " + error_first(program_log(program.id())));
   }
+  if (dialect() == Dialect::kEs30) set_es_bindings(program.id(), es);
   return program;
 }
 

@@ -101,11 +101,11 @@ ReductionResult ReductionsPass::mean_normal(const SurfacePass& surface) {
   const ReduceBlock block{{surface.width(), h, p.x, p.y}, {}, {}};
   glNamedBufferSubData(normal_ubo_.id(), 0, sizeof(block), &block);
   glBindBufferBase(GL_UNIFORM_BUFFER, 0, normal_ubo_.id());
-  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 2, rows_ssbo_.id());
   glBindTextureUnit(1, surface.normal().id());
   if (method_ == ReductionMethod::kFragment) {
     draw_rows(normal_rows_frag_, sums_fbo_, 0, h);
-  } else {
+  } else {  // storage buffers: compute path only (ES 3.0 has none)
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 2, rows_ssbo_.id());
     glUseProgram(normal_rows_.id());
     glDispatchCompute(static_cast<GLuint>((h + 63) / 64), 1, 1);
     glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
@@ -129,8 +129,10 @@ ReductionResult ReductionsPass::run(const SurfacePass& surface, const Params& pa
   const MaxBlock zero{};
   glNamedBufferSubData(ssbo_.id(), 0, sizeof(zero), &zero);
   glBindBufferBase(GL_UNIFORM_BUFFER, 0, ubo_.id());
-  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, ssbo_.id());
-  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 1, rows_ssbo_.id());
+  if (method_ == ReductionMethod::kCompute) {  // storage buffers: compute path only (ES 3.0 has none)
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, ssbo_.id());
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 1, rows_ssbo_.id());
+  }
   glBindTextureUnit(0, surface.aov().id());
   glBindTextureUnit(1, surface.normal().id());
   glBindTextureUnit(2, surface.filter_need().id());

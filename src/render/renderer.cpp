@@ -6,6 +6,7 @@
 
 #include <glm/gtc/matrix_transform.hpp>
 
+#include "gl/es30.h"
 #include "gl/shader.h"
 #include "reference/modulation.h"
 #include "render/pass_timer.h"
@@ -37,6 +38,12 @@ Result<std::unique_ptr<Renderer>> Renderer::create(const Scene& scene, const Ren
   r->scene_ = scene;
   r->options_ = options;
   r->options_.view.reset();  // held once, in view_
+  if (gl::dialect() == gl::Dialect::kEs30) {
+    // ES 3.0 (WebGL2) has no compute shaders and no timer queries (gl/es30.h): the fragment
+    // reductions, tested against the compute ones to the bit (reduction_paths_gl_test.cpp).
+    r->options_.reductions = ReductionMethod::kFragment;
+    r->options_.gpu_timers = false;
+  }
   r->view_ = options.view;
   if (!r->view_) {
     auto view = make_view(r->scene_);
