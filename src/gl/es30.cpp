@@ -4,9 +4,6 @@
 
 #include <algorithm>
 #include <array>
-#include <climits>
-#include <cstdint>
-#include <map>
 #include <unordered_map>
 
 namespace ps::gl {
@@ -14,28 +11,8 @@ namespace {
 
 constexpr GLuint kScratchUnit = 15;
 
-struct AttribFormat {
-  bool has_format = false;
-  GLint size = 4;
-  GLenum type = GL_FLOAT;
-  GLboolean normalized = GL_FALSE;
-  GLuint relative_offset = 0;
-  GLuint binding = UINT_MAX;
-};
-struct VertexBinding {
-  bool set = false;
-  GLuint buffer = 0;
-  GLintptr offset = 0;
-  GLsizei stride = 0;
-};
-struct VertexArrayState {
-  std::map<GLuint, AttribFormat> attribs;
-  std::map<GLuint, VertexBinding> bindings;
-};
-
 struct EsState {
   Dialect dialect = Dialect::kCore45;
-  std::unordered_map<GLuint, VertexArrayState> vertex_arrays;
   std::unordered_map<GLuint, std::vector<GLenum>> draw_buffers;  // per framebuffer, as the host set them
   std::array<bool, 8> color_on{true, true, true, true, true, true, true, true};  // glColorMaski
   std::unordered_map<GLuint, std::pair<GLint, GLint>> texture_sizes;             // level 0
@@ -99,23 +76,6 @@ class FramebufferScope {  // both bindings saved; `target` bound to `fbo`
   GLint draw_, read_;
 };
 
-class VertexArrayScope {
- public:
-  explicit VertexArrayScope(GLuint vao)
-      : vao_(get_int(GL_VERTEX_ARRAY_BINDING)), array_buffer_(get_int(GL_ARRAY_BUFFER_BINDING)) {
-    glBindVertexArray(vao);
-  }
-  ~VertexArrayScope() {
-    glBindVertexArray(static_cast<GLuint>(vao_));
-    glBindBuffer(GL_ARRAY_BUFFER, static_cast<GLuint>(array_buffer_));
-  }
-  VertexArrayScope(const VertexArrayScope&) = delete;
-  VertexArrayScope& operator=(const VertexArrayScope&) = delete;
-
- private:
-  GLint vao_, array_buffer_;
-};
-
 class ProgramScope {
  public:
   explicit ProgramScope(GLuint program) : previous_(get_int(GL_CURRENT_PROGRAM)) { glUseProgram(program); }
@@ -141,20 +101,6 @@ void apply_draw_buffers(GLuint fbo) {
   for (size_t i = 0; i < list.size() && i < g.color_on.size(); ++i)
     if (!g.color_on[i]) list[i] = GL_NONE;
   glDrawBuffers(static_cast<GLsizei>(list.size()), list.data());
-}
-
-// glVertexAttribPointer once an attribute has its format, its binding and that binding's buffer.
-void apply_attrib(GLuint vao, GLuint index) {
-  const VertexArrayState& s = g.vertex_arrays[vao];
-  const auto a = s.attribs.find(index);
-  if (a == s.attribs.end() || !a->second.has_format) return;
-  const auto b = s.bindings.find(a->second.binding);
-  if (b == s.bindings.end() || !b->second.set) return;
-  const VertexArrayScope scope(vao);
-  glBindBuffer(GL_ARRAY_BUFFER, b->second.buffer);
-  const auto offset = static_cast<std::uintptr_t>(b->second.offset) + a->second.relative_offset;
-  glVertexAttribPointer(index, a->second.size, a->second.type, a->second.normalized, b->second.stride,
-                        reinterpret_cast<const void*>(offset));
 }
 
 // ---- the stand-ins, in the desktop slots ----
@@ -283,42 +229,6 @@ void APIENTRY named_renderbuffer_storage(GLuint rb, GLenum format, GLsizei w, GL
   glBindRenderbuffer(GL_RENDERBUFFER, static_cast<GLuint>(previous));
 }
 
-void APIENTRY create_vertex_arrays(GLsizei n, GLuint* vaos) {
-  glGenVertexArrays(n, vaos);
-  for (GLsizei i = 0; i < n; ++i) {
-    const VertexArrayScope scope(vaos[i]);
-    g.vertex_arrays[vaos[i]] = {};
-  }
-}
-void APIENTRY enable_vertex_array_attrib(GLuint vao, GLuint index) {
-  const VertexArrayScope scope(vao);
-  glEnableVertexAttribArray(index);
-}
-void APIENTRY vertex_array_attrib_format(GLuint vao, GLuint index, GLint size, GLenum type, GLboolean normalized,
-                                        GLuint relative_offset) {
-  AttribFormat& a = g.vertex_arrays[vao].attribs[index];
-  a.has_format = true;
-  a.size = size;
-  a.type = type;
-  a.normalized = normalized;
-  a.relative_offset = relative_offset;
-  apply_attrib(vao, index);
-}
-void APIENTRY vertex_array_attrib_binding(GLuint vao, GLuint index, GLuint binding) {
-  g.vertex_arrays[vao].attribs[index].binding = binding;
-  apply_attrib(vao, index);
-}
-void APIENTRY vertex_array_vertex_buffer(GLuint vao, GLuint binding, GLuint buffer, GLintptr offset, GLsizei stride) {
-  VertexArrayState& s = g.vertex_arrays[vao];
-  s.bindings[binding] = {true, buffer, offset, stride};
-  for (const auto& [index, a] : s.attribs)
-    if (a.binding == binding) apply_attrib(vao, index);
-}
-void APIENTRY vertex_array_element_buffer(GLuint vao, GLuint buffer) {
-  const VertexArrayScope scope(vao);
-  glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, buffer);
-}
-
 // The ES location of `program`'s uniform at desktop `location` (-1: unknown, the call is ignored
 // as GL ignores location -1).
 GLint es_location(GLuint program, GLint location) {
@@ -400,20 +310,18 @@ void install_es30() {
   ps_glColorMaski = color_mask_i;
   ps_glCreateRenderbuffers = create_renderbuffers;
   ps_glNamedRenderbufferStorage = named_renderbuffer_storage;
-  ps_glCreateVertexArrays = create_vertex_arrays;
-  ps_glEnableVertexArrayAttrib = enable_vertex_array_attrib;
-  ps_glVertexArrayAttribFormat = vertex_array_attrib_format;
-  ps_glVertexArrayAttribBinding = vertex_array_attrib_binding;
-  ps_glVertexArrayVertexBuffer = vertex_array_vertex_buffer;
-  ps_glVertexArrayElementBuffer = vertex_array_element_buffer;
   ps_glProgramUniform1f = program_uniform_1f;
   ps_glProgramUniform1i = program_uniform_1i;
   ps_glProgramUniform4i = program_uniform_4i;
   ps_glProgramUniform4f = program_uniform_4f;
   ps_glPolygonMode = polygon_mode;
+  install_es30_vertex_arrays();
 }
 
-void reset_es30() { g = EsState{}; }
+void reset_es30() {
+  g = EsState{};
+  reset_es30_vertex_arrays();
+}
 
 }  // namespace detail
 }  // namespace ps::gl

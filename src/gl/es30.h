@@ -11,7 +11,8 @@
 // What the stand-ins use:
 //   - texture unit 15 and GL_COPY_WRITE_BUFFER as scratch binding points (the passes use texture
 //     units 0-2 and never bind COPY_WRITE); left unbound afterwards;
-//   - framebuffer, vertex array, renderbuffer and program bindings saved and restored;
+//   - framebuffer, vertex array, renderbuffer and program bindings saved and restored (the
+//     vertex-array stand-ins are in es30_vertex.cpp);
 //   - glColorMaski(i, all false) as draw buffer i set to GL_NONE in the bound framebuffer's list
 //     (an attachment left out is not written, as a masked one is not); a mask with some channels
 //     on and some off is taken as on (the host code masks whole attachments only);
@@ -49,6 +50,9 @@ namespace detail {
 // and sets dialect() to kEs30. reset_es30() forgets every recorded object (the context is gone).
 void install_es30();
 void reset_es30();
+// The vertex-array part of both (gl/es30_vertex.cpp).
+void install_es30_vertex_arrays();
+void reset_es30_vertex_arrays();
 }  // namespace detail
 
 }  // namespace ps::gl

@@ -15,6 +15,18 @@ int fill_table(ProcLoader loader, const char** first_missing) {
   return missing;
 }
 
+// GL_RENDERER and GL_VERSION into the strings; returns major * 10 + minor.
+int read_version(std::string& renderer, std::string& version) {
+  GLint major = 0, minor = 0;
+  glGetIntegerv(GL_MAJOR_VERSION, &major);
+  glGetIntegerv(GL_MINOR_VERSION, &minor);
+  const auto* r = reinterpret_cast<const char*>(glGetString(GL_RENDERER));
+  const auto* v = reinterpret_cast<const char*>(glGetString(GL_VERSION));
+  renderer = r ? r : "";
+  version = v ? v : "";
+  return major * 10 + minor;
+}
+
 }  // namespace
 
 int load_gl(ProcLoader loader) {
@@ -34,15 +46,9 @@ Status load_gl_and_query(ProcLoader loader, std::string& renderer, std::string& 
     return make_error(std::to_string(missing) + " of " + std::to_string(kPsGlCoreEntryPoints) +
                       " core GL entry points did not resolve (first: " + first_missing + ")");
   }
-  GLint major = 0, minor = 0, profile = 0;
-  glGetIntegerv(GL_MAJOR_VERSION, &major);
-  glGetIntegerv(GL_MINOR_VERSION, &minor);
+  GLint profile = 0;
   glGetIntegerv(GL_CONTEXT_PROFILE_MASK, &profile);
-  const auto* r = reinterpret_cast<const char*>(glGetString(GL_RENDERER));
-  const auto* v = reinterpret_cast<const char*>(glGetString(GL_VERSION));
-  renderer = r ? r : "";
-  version = v ? v : "";
-  if (major * 10 + minor < 45 || (profile & GL_CONTEXT_CORE_PROFILE_BIT) == 0) {
+  if (read_version(renderer, version) < 45 || (profile & GL_CONTEXT_CORE_PROFILE_BIT) == 0) {
     unload_gl();
     return make_error("context is not 4.5 core (GL_VERSION \"" + version + "\")");
   }
@@ -68,14 +74,7 @@ Status load_gles_and_query(Loader loader, std::string& renderer, std::string& ve
     return make_error(std::to_string(missing) + " of the OpenGL ES 3.0 entry points did not resolve (first: " +
                       (first_missing ? first_missing : "glGetString") + ")");
   }
-  GLint major = 0, minor = 0;
-  glGetIntegerv(GL_MAJOR_VERSION, &major);
-  glGetIntegerv(GL_MINOR_VERSION, &minor);
-  const auto* r = reinterpret_cast<const char*>(glGetString(GL_RENDERER));
-  const auto* v = reinterpret_cast<const char*>(glGetString(GL_VERSION));
-  renderer = r ? r : "";
-  version = v ? v : "";
-  if (major * 10 + minor < 30 || version.rfind("OpenGL ES", 0) != 0) {
+  if (read_version(renderer, version) < 30 || version.rfind("OpenGL ES", 0) != 0) {
     unload_gl();
     return make_error("context is not OpenGL ES 3.0 or later (GL_VERSION \"" + version + "\")");
   }

@@ -5,17 +5,19 @@
 #include <utility>
 #include <vector>
 
+#include "gl/es30.h"
 #include "gl/shader.h"
 
 namespace ps {
 
 Status ReductionsPass::init(const std::string& glsl_root, const SurfacePass& surface, ReductionMethod method) {
-  method_ = method;
+  // ES 3.0 (WebGL2) has no compute shaders (gl/es30.h): the fragment path, the compute one's bits.
+  method_ = gl::dialect() == gl::Dialect::kEs30 ? ReductionMethod::kFragment : method;
   // Each path builds only its own programs (a WebGL2 host has no compute shaders to build); the
   // displacement AOV's is common to both.
   const char* vert = "displacement_weights.vert";
   std::vector<std::pair<gl::Program*, gl::ProgramDesc>> programs = {{&weights_, {{vert, "displacement_weights.frag"}, {}}}};
-  if (method == ReductionMethod::kFragment)
+  if (method_ == ReductionMethod::kFragment)
     programs.insert(programs.end(), {{&max_rows_frag_, {{vert, "max_penetration_rows.frag"}, {}}},
                                      {&rows_frag_, {{vert, "displacement_rows.frag"}, {}}},
                                      {&normal_rows_frag_, {{vert, "normal_rows.frag"}, {}}}});

@@ -38,12 +38,7 @@ Result<std::unique_ptr<Renderer>> Renderer::create(const Scene& scene, const Ren
   r->scene_ = scene;
   r->options_ = options;
   r->options_.view.reset();  // held once, in view_
-  if (gl::dialect() == gl::Dialect::kEs30) {
-    // ES 3.0 (WebGL2) has no compute shaders and no timer queries (gl/es30.h): the fragment
-    // reductions, tested against the compute ones to the bit (reduction_paths_gl_test.cpp).
-    r->options_.reductions = ReductionMethod::kFragment;
-    r->options_.gpu_timers = false;
-  }
+  if (gl::dialect() == gl::Dialect::kEs30) r->options_.gpu_timers = false;  // ES 3.0: no timer queries
   r->view_ = options.view;
   if (!r->view_) {
     auto view = make_view(r->scene_);
