@@ -39,8 +39,9 @@ done
 echo "compiled for WebAssembly: $compiled files; failed: ${#failed[@]}"
 for f in "${failed[@]}"; do echo "  $f"; done
 em++ -std=c++20 -O2 -I src -I "$out/inc" -c tools/web_core_probe/probe_main.cpp -o "$out/probe_main.o"
-em++ -std=c++20 -O2 -I src -I "$out/inc" -c tools/web_core_probe/stand_ins.cpp -o "$out/stand_ins.o"
-em++ -O2 "$out/probe_main.o" "$out/stand_ins.o" "$out"/obj/*.o -o "$out/probe.js" -sNODERAWFS=1 -sALLOW_MEMORY_GROWTH=1
+em++ -std=c++20 -O2 -I src -I "$out/inc" -c web/src/stand_ins.cpp -o "$out/stand_ins.o"
+em++ -std=c++20 -O2 -I src -I "$out/inc" -c tools/web_core_probe/no_images.cpp -o "$out/no_images.o"
+em++ -O2 "$out/probe_main.o" "$out/stand_ins.o" "$out/no_images.o" "$out"/obj/*.o -o "$out/probe.js" -sNODERAWFS=1 -sALLOW_MEMORY_GROWTH=1
 libs=build/src
 g++ -std=c++20 -O2 -I src tools/web_core_probe/probe_main.cpp build/src/scene/default_scene_text.cpp -o "$out/probe_native" \
   $libs/haptics/libps_haptics.a $libs/world/libps_world.a $libs/devices/libps_devices.a $libs/scene/libps_scene.a \

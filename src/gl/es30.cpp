@@ -51,14 +51,6 @@ class TextureScope {  // on the scratch unit
   GLint active_;
 };
 
-class BufferScope {  // on GL_COPY_WRITE_BUFFER
- public:
-  explicit BufferScope(GLuint buffer) { glBindBuffer(GL_COPY_WRITE_BUFFER, buffer); }
-  ~BufferScope() { glBindBuffer(GL_COPY_WRITE_BUFFER, 0); }
-  BufferScope(const BufferScope&) = delete;
-  BufferScope& operator=(const BufferScope&) = delete;
-};
-
 class FramebufferScope {  // both bindings saved; `target` bound to `fbo`
  public:
   FramebufferScope(GLenum target, GLuint fbo)
@@ -150,19 +142,6 @@ void APIENTRY get_texture_sub_image(GLuint texture, GLint level, GLint x, GLint 
   glReadBuffer(GL_COLOR_ATTACHMENT0);
   glReadPixels(x, y, w, h, format, type, pixels);
   glFramebufferTexture2D(GL_READ_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, 0, 0);
-}
-
-void APIENTRY create_buffers(GLsizei n, GLuint* buffers) {
-  glGenBuffers(n, buffers);
-  for (GLsizei i = 0; i < n; ++i) const BufferScope scope(buffers[i]);
-}
-void APIENTRY named_buffer_storage(GLuint buffer, GLsizeiptr size, const void* data, GLbitfield flags) {
-  const BufferScope scope(buffer);
-  glBufferData(GL_COPY_WRITE_BUFFER, size, data, (flags & GL_DYNAMIC_STORAGE_BIT) ? GL_DYNAMIC_DRAW : GL_STATIC_DRAW);
-}
-void APIENTRY named_buffer_sub_data(GLuint buffer, GLintptr offset, GLsizeiptr size, const void* data) {
-  const BufferScope scope(buffer);
-  glBufferSubData(GL_COPY_WRITE_BUFFER, offset, size, data);
 }
 
 void APIENTRY create_framebuffers(GLsizei n, GLuint* fbos) {
@@ -295,9 +274,6 @@ void install_es30() {
   ps_glBindTextureUnit = bind_texture_unit;
   ps_glGetTextureLevelParameteriv = get_texture_level_parameter_iv;
   ps_glGetTextureSubImage = get_texture_sub_image;
-  ps_glCreateBuffers = create_buffers;
-  ps_glNamedBufferStorage = named_buffer_storage;
-  ps_glNamedBufferSubData = named_buffer_sub_data;
   ps_glCreateFramebuffers = create_framebuffers;
   ps_glNamedFramebufferTexture = named_framebuffer_texture;
   ps_glNamedFramebufferRenderbuffer = named_framebuffer_renderbuffer;
@@ -316,11 +292,13 @@ void install_es30() {
   ps_glProgramUniform4f = program_uniform_4f;
   ps_glPolygonMode = polygon_mode;
   install_es30_vertex_arrays();
+  install_es30_buffers();
 }
 
 void reset_es30() {
   g = EsState{};
   reset_es30_vertex_arrays();
+  reset_es30_buffers();
 }
 
 }  // namespace detail

@@ -11,6 +11,10 @@
 // What the stand-ins use:
 //   - texture unit 15 and GL_COPY_WRITE_BUFFER as scratch binding points (the passes use texture
 //     units 0-2 and never bind COPY_WRITE); left unbound afterwards;
+//   - glCreateBuffers + glNamedBufferStorage as glGenBuffers, the data kept on the host until the
+//     buffer's first binding, which uploads it: WebGL2 fixes a buffer's kind (index or other data)
+//     at its first binding, and an index buffer must not have been bound elsewhere first
+//     (es30_buffer.cpp);
 //   - framebuffer, vertex array, renderbuffer and program bindings saved and restored (the
 //     vertex-array stand-ins are in es30_vertex.cpp);
 //   - glColorMaski(i, all false) as draw buffer i set to GL_NONE in the bound framebuffer's list
@@ -45,6 +49,11 @@ Dialect dialect();
 // recorded for the same program id before.
 void es30_name_uniforms(GLuint program, const std::vector<std::pair<std::string, int>>& locations);
 
+// ES only: how many bindings so far WebGL2 would have refused for the buffer's kind (an index
+// buffer bound to a target other than ELEMENT_ARRAY/COPY_*, another buffer bound as indices).
+// Mesa's ES 3.0 has no such rule; the tests check the renderer keeps it.
+int es30_webgl_buffer_conflicts();
+
 namespace detail {
 // After the table was filled with ES 3.0 entry points: puts the stand-ins in the desktop slots
 // and sets dialect() to kEs30. reset_es30() forgets every recorded object (the context is gone).
@@ -53,6 +62,9 @@ void reset_es30();
 // The vertex-array part of both (gl/es30_vertex.cpp).
 void install_es30_vertex_arrays();
 void reset_es30_vertex_arrays();
+// The buffer part (gl/es30_buffer.cpp).
+void install_es30_buffers();
+void reset_es30_buffers();
 }  // namespace detail
 
 }  // namespace ps::gl

@@ -1,7 +1,7 @@
 #include "passes/reductions.h"
 
 #include <algorithm>
-#include <bit>
+#include <cstring>
 #include <utility>
 #include <vector>
 
@@ -9,6 +9,18 @@
 #include "gl/shader.h"
 
 namespace ps {
+namespace {
+
+// std::bit_cast, which the libc++ of Debian's Emscripten (LLVM 14) lacks: the page builds this file.
+template <class To, class From>
+To bit_cast(const From& from) {
+  static_assert(sizeof(To) == sizeof(From));
+  To to;
+  std::memcpy(&to, &from, sizeof to);
+  return to;
+}
+
+}  // namespace
 
 Status ReductionsPass::init(const std::string& glsl_root, const SurfacePass& surface, ReductionMethod method) {
   // ES 3.0 (WebGL2) has no compute shaders (gl/es30.h): the fragment path, the compute one's bits.
@@ -147,7 +159,7 @@ ReductionResult ReductionsPass::run(const SurfacePass& surface, const Params& pa
     if (params.weighted && !rect.empty()) {
       const glm::ivec4 box = params.penetrating_box ? m.penetrating_box
                                                     : glm::ivec4(rect.x0, rect.y0, rect.x1 - 1, rect.y1 - 1);
-      glProgramUniform1f(rows_frag_.id(), 0, std::bit_cast<float>(m.max_penetration_bits));
+      glProgramUniform1f(rows_frag_.id(), 0, bit_cast<float>(m.max_penetration_bits));
       glProgramUniform4i(rows_frag_.id(), 1, box.x, box.y, box.z, box.w);
       draw_rows(rows_frag_, sums_fbo_, rect.y0, rect.height());
     }
@@ -166,12 +178,12 @@ ReductionResult ReductionsPass::run(const SurfacePass& surface, const Params& pa
   const glm::dvec4 d = params.weighted ? sum_rows(rect.y0, std::min(rect.y1, rows_capacity_) - rect.y0) : glm::dvec4(0.0);
   if (d.w > 0.0) r.weighted_displacement = glm::dvec3(d) / d.w;
   if (method_ == ReductionMethod::kCompute) glGetNamedBufferSubData(ssbo_.id(), 0, sizeof(m), &m);
-  last_max_penetration_ = std::bit_cast<float>(m.max_penetration_bits);
-  r.max_penetration_mm = std::bit_cast<float>(m.max_penetration_bits);
-  r.max_resisted_penetration_mm = std::bit_cast<float>(m.max_resisted_penetration_bits);
+  last_max_penetration_ = bit_cast<float>(m.max_penetration_bits);
+  r.max_penetration_mm = bit_cast<float>(m.max_penetration_bits);
+  r.max_resisted_penetration_mm = bit_cast<float>(m.max_resisted_penetration_bits);
   r.penetrating_fragments = m.penetrating_fragments;
   r.covered_fragments = m.covered_fragments;
-  r.max_filter_need = std::bit_cast<float>(m.max_filter_need_bits);
+  r.max_filter_need = bit_cast<float>(m.max_filter_need_bits);
   return r;
 }
 
@@ -199,9 +211,9 @@ MaxBlock ReductionsPass::run_fragment_max(const PixelRect& rect) {
       m.penetrating_box = {std::min(m.penetrating_box.x, static_cast<int>(b.y)), std::min(m.penetrating_box.y, y),
                            std::max(m.penetrating_box.z, static_cast<int>(b.z)), std::max(m.penetrating_box.w, y)};
     }
-    m.max_penetration_bits = std::bit_cast<std::uint32_t>(pen);
-    m.max_resisted_penetration_bits = std::bit_cast<std::uint32_t>(res);
-    m.max_filter_need_bits = std::bit_cast<std::uint32_t>(need);
+    m.max_penetration_bits = bit_cast<std::uint32_t>(pen);
+    m.max_resisted_penetration_bits = bit_cast<std::uint32_t>(res);
+    m.max_filter_need_bits = bit_cast<std::uint32_t>(need);
   }
   return m;
 }

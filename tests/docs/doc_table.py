@@ -36,6 +36,9 @@ SKIPPED = {
     "pseudoshadow run --vibration-out sound:NAME": "NAME stands for the reader's OpenAL device",
     "sudo apt-get install emscripten": "installs a package (about 400 MB) that the suite does not use",
     "bash tools/web_core_probe.sh": "needs Emscripten, which the suite does not install (docs/web.md)",
+    "npm ci --prefix web": "fetches puppeteer-core and pngjs from the npm registry; the suite installs nothing",
+    "cmake --build build --target web_page": "needs Emscripten, which the suite does not install (browser.golden builds it where it is)",
+    "python3 -m http.server -d build/web 8000": "a server that runs until it is stopped (browser.golden serves the page itself)",
 }
 
 SMALL_REPLAY = [("replay", "replay --size 128")]

@@ -5,6 +5,7 @@
 // would go unseen there (EsRendererGLTest compares the frames).
 #include <array>
 #include <cstdint>
+#include <cstring>
 #include <string>
 #include <vector>
 
@@ -113,6 +114,56 @@ TEST(Es30GLTest, TheEsTableHoldsEs30AndTheStandIns) {
   EXPECT_TRUE(ps_gl_is_es30("glTexStorage2D"));
   EXPECT_FALSE(ps_gl_is_es30("glProgramUniform1f"));
   EXPECT_FALSE(ps_gl_is_es30("glNamedFramebufferTexture"));
+}
+
+// WebGL2 fixes a buffer's kind at its first binding (index data or other data; its specification,
+// 5.1) and refuses an index buffer that was filled on another target. Mesa's ES 3.0 has no such
+// rule, so the stand-ins count what WebGL would refuse. A mesh's buffers are made the desktop way
+// (created and filled, then attached): the index data must reach the buffer through its element
+// binding, with nothing refused, and a binding against the kind must be counted.
+std::vector<std::uint32_t> read_bound(GLenum target, size_t count) {
+  std::vector<std::uint32_t> out(count);
+  const auto size = static_cast<GLsizeiptr>(count * sizeof(std::uint32_t));
+  if (const void* p = glMapBufferRange(target, 0, size, GL_MAP_READ_BIT)) {
+    std::memcpy(out.data(), p, static_cast<size_t>(size));
+    glUnmapBuffer(target);
+  }
+  return out;
+}
+
+TEST(Es30GLTest, BuffersKeepWebGLsKindsAndTheirData) {
+  ContextDesc desc;
+  desc.backend = Backend::kEgl;
+  desc.es = true;
+  auto context = create_context(desc);
+  ASSERT_TRUE(context.ok()) << context.error().message;
+  const std::vector<std::uint32_t> indices = {0, 1, 2, 2, 1, 3};
+  const std::vector<float> vertices(40, 0.5f);
+  const Buffer index_buffer = make_buffer(24, indices.data(), 0);
+  const Buffer vertex_buffer = make_buffer(160, vertices.data(), GL_DYNAMIC_STORAGE_BIT);
+  const std::uint32_t patch[2] = {7, 8};
+  glNamedBufferSubData(index_buffer.id(), 8, 8, patch);  // edited before its first binding
+  const VertexArray vao = make_vertex_array();
+  glVertexArrayVertexBuffer(vao.id(), 0, vertex_buffer.id(), 0, 16);
+  glVertexArrayElementBuffer(vao.id(), index_buffer.id());
+  glEnableVertexArrayAttrib(vao.id(), 0);
+  glVertexArrayAttribFormat(vao.id(), 0, 4, GL_FLOAT, GL_FALSE, 0);
+  glVertexArrayAttribBinding(vao.id(), 0, 0);
+  EXPECT_EQ(es30_webgl_buffer_conflicts(), 0) << "a mesh's buffers as the desktop makes them";
+  glBindVertexArray(vao.id());
+  EXPECT_EQ(read_bound(GL_ELEMENT_ARRAY_BUFFER, 6), (std::vector<std::uint32_t>{0, 1, 7, 8, 1, 3}));
+  glBindVertexArray(0);
+  glNamedBufferSubData(index_buffer.id(), 0, 4, &patch[1]);  // after: through COPY_WRITE, allowed
+  glBindBuffer(GL_COPY_READ_BUFFER, index_buffer.id());
+  EXPECT_EQ(read_bound(GL_COPY_READ_BUFFER, 2), (std::vector<std::uint32_t>{8, 1}));
+  glBindBuffer(GL_COPY_READ_BUFFER, 0);
+  EXPECT_EQ(es30_webgl_buffer_conflicts(), 0) << "an index buffer on the copy targets";
+  EXPECT_EQ(glGetError(), static_cast<GLenum>(GL_NO_ERROR));
+  // What WebGL refuses is counted: other data as indices, and indices as a uniform block.
+  glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, vertex_buffer.id());
+  EXPECT_EQ(es30_webgl_buffer_conflicts(), 1);
+  glBindBufferBase(GL_UNIFORM_BUFFER, 0, index_buffer.id());
+  EXPECT_EQ(es30_webgl_buffer_conflicts(), 2);
 }
 
 }  // namespace

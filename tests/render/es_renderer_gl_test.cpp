@@ -74,6 +74,7 @@ struct FrameOut {
   FrameStats stats;
   glm::dvec3 plane_n{0.0};
   GLenum error = GL_NO_ERROR;
+  int webgl_buffer_conflicts = 0;  // ES: bindings WebGL2 would refuse (gl/es30.h)
 };
 
 // Every frame of every case on a fresh context of the kind `desc` asks for. One context at a
@@ -105,6 +106,7 @@ std::vector<FrameOut> render_all(const gl::ContextDesc& desc, std::string& versi
       f.stats = r.value()->stats();
       f.plane_n = r.value()->reference().n;
       f.error = glGetError();
+      f.webgl_buffer_conflicts = gl::es30_webgl_buffer_conflicts();
       out.push_back(std::move(f));
     }
   }
@@ -144,6 +146,7 @@ TEST(EsRendererGLTest, Es30DrawsTheCoreContextsFramesWithTheFragmentReductions) 
     const std::string where = "frame " + std::to_string(i);
     EXPECT_EQ(b.error, static_cast<GLenum>(GL_NO_ERROR)) << where << ": a GL error on ES";
     EXPECT_EQ(a.error, static_cast<GLenum>(GL_NO_ERROR)) << where;
+    EXPECT_EQ(b.webgl_buffer_conflicts, 0) << where << ": a buffer bound as WebGL2 would refuse";
     EXPECT_TRUE(a.color == b.color) << where << ": the colour bytes differ";
     const double plane = glm::length(a.plane_n - b.plane_n);
     worst_plane = std::max(worst_plane, plane);
