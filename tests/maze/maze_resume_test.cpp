@@ -24,9 +24,19 @@
 namespace ps::maze {
 namespace {
 
-int run_child(const std::vector<std::string>& args, double kill_after_s = -1.0, bool* killed = nullptr) {
+// With kill_after_s >= 0 the child is killed that long after `log` has its first bytes (the
+// session's start), not after the spawn: a slow start (an ASan build on loaded cores took more
+// than 0.6 s) would otherwise be killed before the session exists, and leave nothing to resume.
+int run_child(const std::vector<std::string>& args, double kill_after_s = -1.0, bool* killed = nullptr,
+              const std::string& log = "") {
   const pid_t pid = test::spawn(args);
   if (kill_after_s >= 0.0) {
+    std::error_code ec;
+    for (int ms = 0; !log.empty() && ms < 120000; ms += 5) {
+      if (std::filesystem::file_size(log, ec) > 0 && !ec) break;
+      if (waitpid(pid, nullptr, WNOHANG) == pid) return -1;  // it ended before its session began
+      std::this_thread::sleep_for(std::chrono::milliseconds(5));
+    }
     std::this_thread::sleep_for(std::chrono::duration<double>(kill_after_s));
     kill(pid, SIGKILL);
   }
@@ -80,7 +90,8 @@ TEST(MazeResumeTest, KilledAtRandomMomentsThenResumedSummarizesAsTheUninterrupte
   ASSERT_TRUE(full) << full.error().message;
   ASSERT_EQ(full->passes, 2);
   const auto full_lines = test::read_lines(dir + "/full/session.jsonl");
-  // Paced at 16x, the ~40 s session takes ~2.5 s of wall time; kills fall anywhere in it.
+  // Paced at 16x, the ~40 s session takes ~2.5 s of wall time from its log's first line; kills
+  // fall anywhere in it.
   std::mt19937 rng(20261126);
   std::uniform_real_distribution<double> when(0.3, 2.3);
   int resumed = 0;
@@ -88,7 +99,7 @@ TEST(MazeResumeTest, KilledAtRandomMomentsThenResumedSummarizesAsTheUninterrupte
     const double after = when(rng);
     const std::string cut = dir + "/cut" + std::to_string(k);
     bool killed = false;
-    run_child(with({"--out", cut, "--pace", "16"}), after, &killed);
+    run_child(with({"--out", cut, "--pace", "16"}), after, &killed, cut + "/session.jsonl");
     if (!killed) continue;  // it finished first: nothing to resume
     const auto before = test::read_lines(cut + "/session.jsonl");
     ASSERT_EQ(run_child(maze_args({"--resume", cut})), 0) << "killed after " << after << " s";
